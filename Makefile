@@ -1,0 +1,123 @@
+# Hamilton-Jacobi numerics: a literate reproduction package.
+#
+#   make reproduce   build everything, run every example at the published
+#                    sizes, write results/ and report/out/report.html
+#   make test        unit tests (plain and under ASan+UBSan), then
+#                    `make check QUICK=1`
+#   make check       compare every published cell with the computed one;
+#                    fails when a cell is worse than its accepted verdict
+#   make paper1 | paper2 | paper3    one paper's results, then the report
+#   make bench       benchmarks (timings as ratios against a baseline)
+#   make clean
+#
+# QUICK=1 runs the reduced (coarser) sets into results-quick/.
+# SAN=1 builds with AddressSanitizer and UndefinedBehaviorSanitizer into
+# build/san/.  Dependencies (Debian packages) are installed on first use by
+# scripts/ensure-deps.
+
+SHELL := /bin/bash
+.DEFAULT_GOAL := all
+.DELETE_ON_ERROR:
+
+CC := gcc
+BUILD := build
+CPPFLAGS := -Icommon -Icommon/tests -D_POSIX_C_SOURCE=200809L -MMD -MP
+CFLAGS := -std=c11 -O2 -g -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes
+LDFLAGS :=
+LDLIBS := -lceres -lm
+TESTLIBS := -lcmocka
+
+ifeq ($(SAN),1)
+BUILD := build/san
+CFLAGS += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS += -fsanitize=address,undefined
+endif
+
+ifeq ($(QUICK),1)
+RESULTS := results-quick
+QUICKFLAG := --quick
+CHECKFLAGS := --quick
+else
+RESULTS := results
+QUICKFLAG :=
+CHECKFLAGS :=
+endif
+
+DEPS_OK := build/.deps-ok
+LIB := $(BUILD)/libhj.a
+COMMON_SRC := $(wildcard common/*.c)
+COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
+HJCHECK := $(BUILD)/bin/common/tools/hjcheck
+
+# Filled in by the papers' rules.mk fragments.
+PROGRAMS := $(HJCHECK)
+UNIT_TESTS := $(patsubst %.c,$(BUILD)/test/%,$(wildcard common/tests/test_*.c))
+CHECK_PAPERS :=
+REPORT_INPUTS :=
+BENCHES :=
+
+include paper1_fastsweeping/rules.mk
+-include paper2_toolbox/rules.mk
+-include paper3_ultrabee/rules.mk
+
+.PHONY: all deps reproduce test unit check report paper1 paper2 paper3 bench clean memcheck
+
+all: $(PROGRAMS) $(UNIT_TESTS)
+
+deps: $(DEPS_OK)
+$(DEPS_OK): scripts/ensure-deps
+	@scripts/ensure-deps
+	@mkdir -p $(@D) && touch $@
+
+$(BUILD)/obj/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(LIB): $(COMMON_OBJ)
+	@mkdir -p $(@D)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/bin/%: $(BUILD)/obj/%.o $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $(filter %.o,$^) $(LIB) $(LDLIBS) -o $@
+
+$(BUILD)/test/%: $(BUILD)/obj/%.o $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $(filter %.o,$^) $(LIB) $(TESTLIBS) $(LDLIBS) -o $@
+
+# ---- tests ---------------------------------------------------------------
+
+# Each unit test program is a cmocka group; run them all, count failures.
+unit: $(UNIT_TESTS)
+	@fail=0; for t in $(UNIT_TESTS); do $$t || fail=$$((fail+1)); done; \
+	if [ $$fail -ne 0 ]; then echo "unit ($(BUILD)): $$fail test program(s) failed"; exit 1; fi
+
+test:
+	$(MAKE) --no-print-directory unit
+	$(MAKE) --no-print-directory SAN=1 unit
+	$(MAKE) --no-print-directory QUICK=1 check
+
+memcheck: $(UNIT_TESTS)
+	@for t in $(UNIT_TESTS); do \
+	  valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite $$t >/dev/null || exit 1; \
+	done; echo "memcheck: no errors or definite leaks"
+
+# ---- results, check, report -------------------------------------------
+
+check: $(HJCHECK) $(CHECK_INPUTS)
+	$(HJCHECK) --results $(RESULTS) $(CHECKFLAGS) $(CHECK_PAPERS)
+
+REPORT := report/out/report.html
+reproduce: $(REPORT)
+report: $(REPORT)
+
+$(REPORT): $(HJCHECK) $(REPORT_INPUTS) report/build.sh report/intro.md $(wildcard */published/*.tsv */accepted.tsv)
+	$(HJCHECK) --results results --no-fail $(CHECK_PAPERS) > results/check-summary.txt
+	report/build.sh results report/out $(HJCHECK)
+
+bench: $(BENCHES)
+
+clean:
+	rm -rf build results results-quick report/out
+
+-include $(shell find build -name '*.d' 2>/dev/null)

@@ -1,0 +1,265 @@
+#include "hj_io.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char *dupstr(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *d = malloc(n);
+    if (d) memcpy(d, s, n);
+    return d;
+}
+
+int hj_out_open(hj_out *out, const char *path, hj_error *err)
+{
+    size_t n = strlen(path) + 32;
+    out->fp = NULL;
+    out->path = dupstr(path);
+    out->tmp = malloc(n);
+    if (!out->path || !out->tmp) {
+        free(out->path);
+        free(out->tmp);
+        out->path = out->tmp = NULL;
+        return hj_error_set(err, HJ_ENOMEM, "out of memory opening %s", path);
+    }
+    snprintf(out->tmp, n, "%s.tmp.%ld", path, (long)getpid());
+    out->fp = fopen(out->tmp, "w");
+    if (!out->fp) {
+        int e = errno;
+        free(out->path);
+        free(out->tmp);
+        out->path = out->tmp = NULL;
+        return hj_error_set(err, HJ_EIO, "cannot write %s: %s", path, strerror(e));
+    }
+    return HJ_OK;
+}
+
+static void out_release(hj_out *out)
+{
+    free(out->path);
+    free(out->tmp);
+    out->path = out->tmp = NULL;
+    out->fp = NULL;
+}
+
+void hj_out_abort(hj_out *out)
+{
+    if (out->fp) fclose(out->fp);
+    if (out->tmp) remove(out->tmp);
+    out_release(out);
+}
+
+int hj_out_commit(hj_out *out, hj_error *err)
+{
+    int bad = ferror(out->fp) != 0;
+    bad |= fflush(out->fp) != 0;
+    int e = errno;
+    bad |= fclose(out->fp) != 0;
+    out->fp = NULL;
+    if (bad) {
+        remove(out->tmp);
+        int rc = hj_error_set(err, HJ_EIO, "error writing %s: %s", out->path, strerror(e));
+        out_release(out);
+        return rc;
+    }
+    if (rename(out->tmp, out->path) != 0) {
+        e = errno;
+        remove(out->tmp);
+        int rc = hj_error_set(err, HJ_EIO, "cannot rename onto %s: %s", out->path, strerror(e));
+        out_release(out);
+        return rc;
+    }
+    out_release(out);
+    return HJ_OK;
+}
+
+/* ---- TSV tables ------------------------------------------------------ */
+
+static char *read_line(FILE *fp, int *toolong)
+{
+    size_t cap = 256, len = 0;
+    char *buf = malloc(cap);
+    int c;
+    *toolong = 0;
+    if (!buf) return NULL;
+    while ((c = fgetc(fp)) != EOF && c != '\n') {
+        if (len + 1 >= cap) {
+            if (cap > (1u << 20)) { *toolong = 1; free(buf); return NULL; }
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) { free(buf); return NULL; }
+            buf = nb;
+            cap *= 2;
+        }
+        buf[len++] = (char)c;
+    }
+    if (c == EOF && len == 0) { free(buf); return NULL; }
+    if (len > 0 && buf[len - 1] == '\r') len--;
+    buf[len] = '\0';
+    return buf;
+}
+
+/* Split s at tabs in place; returns count, fills at most max pointers. */
+static int split_tabs(char *s, char **parts, int max)
+{
+    int n = 0;
+    char *p = s;
+    for (;;) {
+        char *t = strchr(p, '\t');
+        if (n < max) parts[n] = p;
+        n++;
+        if (!t) break;
+        *t = '\0';
+        p = t + 1;
+    }
+    return n;
+}
+
+static int push_meta(hj_table *t, const char *line)
+{
+    /* "# key: value" with key a single word */
+    const char *p = line + 1;
+    while (*p == ' ') p++;
+    const char *k = p;
+    while (*p && *p != ':' && *p != ' ' && *p != '\t') p++;
+    if (*p != ':' || p == k) return HJ_OK;
+    size_t klen = (size_t)(p - k);
+    p++;
+    while (*p == ' ' || *p == '\t') p++;
+    char **nk = realloc(t->meta_key, sizeof(char *) * (size_t)(t->nmeta + 1));
+    if (!nk) return HJ_ENOMEM;
+    t->meta_key = nk;
+    char **nv = realloc(t->meta_val, sizeof(char *) * (size_t)(t->nmeta + 1));
+    if (!nv) return HJ_ENOMEM;
+    t->meta_val = nv;
+    char *key = malloc(klen + 1);
+    char *val = dupstr(p);
+    if (!key || !val) { free(key); free(val); return HJ_ENOMEM; }
+    memcpy(key, k, klen);
+    key[klen] = '\0';
+    t->meta_key[t->nmeta] = key;
+    t->meta_val[t->nmeta] = val;
+    t->nmeta++;
+    return HJ_OK;
+}
+
+int hj_table_read(hj_table *t, const char *path, hj_error *err)
+{
+    memset(t, 0, sizeof *t);
+    FILE *fp = fopen(path, "r");
+    if (!fp) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    int lineno = 0, rc = HJ_OK, toolong = 0;
+    char *line;
+    size_t rowcap = 0;
+    while ((line = read_line(fp, &toolong)) != NULL) {
+        lineno++;
+        if (line[0] == '#') {
+            if (push_meta(t, line) != HJ_OK) { free(line); rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
+            free(line);
+            continue;
+        }
+        if (line[0] == '\0') { free(line); continue; }
+        int n = 1;
+        for (const char *q = line; *q; q++) n += *q == '\t';
+        char **parts = malloc(sizeof(char *) * (size_t)n);
+        if (!parts) { free(line); rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
+        split_tabs(line, parts, n);
+        char **copy = malloc(sizeof(char *) * (size_t)n);
+        int ok = copy != NULL;
+        for (int i = 0; ok && i < n; i++) {
+            copy[i] = dupstr(parts[i]);
+            if (!copy[i]) { for (int j = 0; j < i; j++) free(copy[j]); ok = 0; }
+        }
+        free(parts);
+        free(line);
+        if (!ok) { free(copy); rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
+        if (!t->cols) {
+            t->cols = copy;
+            t->ncols = n;
+            continue;
+        }
+        if (n != t->ncols) {
+            for (int i = 0; i < n; i++) free(copy[i]);
+            free(copy);
+            rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %d cells, expected %d (tab-separated)", path, lineno, n, t->ncols);
+            break;
+        }
+        if ((size_t)t->nrows == rowcap) {
+            size_t nc = rowcap ? 2 * rowcap : 16;
+            char ***nr = realloc(t->cells, nc * sizeof(char **));
+            if (!nr) {
+                for (int i = 0; i < n; i++) free(copy[i]);
+                free(copy);
+                rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path);
+                break;
+            }
+            t->cells = nr;
+            rowcap = nc;
+        }
+        t->cells[t->nrows++] = copy;
+    }
+    if (rc == HJ_OK && toolong) rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: line too long", path, lineno + 1);
+    if (rc == HJ_OK && ferror(fp)) rc = hj_error_set(err, HJ_EIO, "error reading %s", path);
+    if (rc == HJ_OK && !t->cols) rc = hj_error_set(err, HJ_EFORMAT, "%s: no header line with column names", path);
+    fclose(fp);
+    if (rc != HJ_OK) hj_table_free(t);
+    return rc;
+}
+
+void hj_table_free(hj_table *t)
+{
+    for (int r = 0; r < t->nrows; r++) {
+        for (int c = 0; c < t->ncols; c++) free(t->cells[r][c]);
+        free(t->cells[r]);
+    }
+    free(t->cells);
+    if (t->cols)
+        for (int c = 0; c < t->ncols; c++) free(t->cols[c]);
+    free(t->cols);
+    for (int i = 0; i < t->nmeta; i++) {
+        free(t->meta_key[i]);
+        free(t->meta_val[i]);
+    }
+    free(t->meta_key);
+    free(t->meta_val);
+    memset(t, 0, sizeof *t);
+}
+
+int hj_table_col(const hj_table *t, const char *name)
+{
+    for (int c = 0; c < t->ncols; c++)
+        if (strcmp(t->cols[c], name) == 0) return c;
+    return -1;
+}
+
+const char *hj_table_meta(const hj_table *t, const char *key)
+{
+    for (int i = 0; i < t->nmeta; i++)
+        if (strcmp(t->meta_key[i], key) == 0) return t->meta_val[i];
+    return NULL;
+}
+
+int hj_mkdirs(const char *path, hj_error *err)
+{
+    char *p = dupstr(path);
+    if (!p) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+    for (char *s = p + 1; ; s++) {
+        if (*s == '/' || *s == '\0') {
+            char c = *s;
+            *s = '\0';
+            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+                int e = errno;
+                int rc = hj_error_set(err, HJ_EIO, "cannot create directory %s: %s", p, strerror(e));
+                free(p);
+                return rc;
+            }
+            *s = c;
+            if (c == '\0') break;
+        }
+    }
+    free(p);
+    return HJ_OK;
+}

@@ -1,0 +1,325 @@
+/*
+# eikonal: solve your own Eikonal problem from the command line
+
+**Problem.** |grad phi| = f(x, y) on a rectangle, with phi given at point
+sources.  f comes from a grid file: plain text (one row of numbers per
+line, whitespace separated) or a PGM image (P2 or P5; a pixel value v maps
+to f = fmin + (fmax - fmin) v / maxval, see `--pgm-range`).  In both the
+first row is the top of the domain (largest y), as in an image.  Between
+the map's nodes f is interpolated bilinearly.
+
+**Method.** The library solver of paper 1 (common/hj_fsm.h): third order
+WENO fast sweeping, sources treated by Richardson extrapolation of first
+order sweeps in [-2h, 2h]^2 (`--strategy richardson`, the default) or with
+the neighbouring nodes frozen at first order (`--strategy first-order`).
+The rectangle's boundary is outflow.
+
+**Output.** A TSV grid (x, y, phi) in gnuplot's format (blank line after
+each row), to `--out FILE` (written atomically) or stdout with `--out -`.
+
+Example:
+
+    eikonal --speed-const 1 --domain -1,1,-1,1 --N 200 --source 0,0 --out dist.tsv
+*/
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_cli.h"
+#include "hj_fsm.h"
+#include "hj_io.h"
+
+static const char *prog = "eikonal";
+
+typedef struct {
+    int mx, my;       /* map nodes per row, rows */
+    double *v;        /* row-major, row 0 = bottom (flipped on reading) */
+    double xmin, xmax, ymin, ymax;
+    double constant;  /* used when v == NULL */
+} speed_map;
+
+static double map_speed(double x, double y, void *ctx)
+{
+    const speed_map *m = ctx;
+    if (!m->v) return m->constant;
+    double u = (x - m->xmin) / (m->xmax - m->xmin) * (m->mx - 1);
+    double w = (y - m->ymin) / (m->ymax - m->ymin) * (m->my - 1);
+    /* clamp: the Richardson boxes may reach half a cell outside */
+    u = u < 0 ? 0 : u > m->mx - 1 ? m->mx - 1 : u;
+    w = w < 0 ? 0 : w > m->my - 1 ? m->my - 1 : w;
+    int i = (int)u, j = (int)w;
+    if (i > m->mx - 2) i = m->mx - 2;
+    if (j > m->my - 2) j = m->my - 2;
+    const double a = u - i, b = w - j;
+    const double *r0 = m->v + (long)j * m->mx, *r1 = r0 + m->mx;
+    return (1 - b) * ((1 - a) * r0[i] + a * r0[i + 1]) + b * ((1 - a) * r1[i] + a * r1[i + 1]);
+}
+
+/* Read a whitespace-separated grid; rows are lines. */
+static int read_text_map(const char *path, speed_map *m, hj_error *err)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    size_t cap = 1024, n = 0;
+    double *v = malloc(cap * sizeof *v);
+    int rows = 0, cols = -1, c, lineno = 0, rc = HJ_OK;
+    char tok[128];
+    int tl = 0, incount = 0;
+    if (!v) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
+    for (;;) {
+        c = fgetc(f);
+        if (c == EOF || isspace(c)) {
+            if (tl > 0) {
+                tok[tl] = '\0';
+                char *end;
+                double x = strtod(tok, &end);
+                if (*end) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: '%s' is not a number", path, lineno + 1, tok); break; }
+                if (!isfinite(x) || x < 0) { rc = hj_error_set(err, HJ_ENONFINITE, "%s:%d: speed %s must be finite and >= 0", path, lineno + 1, tok); break; }
+                if (n == cap) {
+                    double *nv = realloc(v, 2 * cap * sizeof *v);
+                    if (!nv) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
+                    v = nv;
+                    cap *= 2;
+                }
+                v[n++] = x;
+                incount++;
+                tl = 0;
+            }
+            if (c == '\n' || c == EOF) {
+                if (incount > 0) {
+                    if (cols < 0) cols = incount;
+                    else if (incount != cols) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %d values, previous rows have %d", path, lineno + 1, incount, cols); break; }
+                    rows++;
+                }
+                incount = 0;
+                lineno++;
+            }
+            if (c == EOF) break;
+        } else {
+            if (tl >= (int)sizeof tok - 1) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: token too long", path, lineno + 1); break; }
+            tok[tl++] = (char)c;
+        }
+    }
+    fclose(f);
+    if (rc == HJ_OK && (rows < 2 || cols < 2)) rc = hj_error_set(err, HJ_EFORMAT, "%s: need at least 2 x 2 values", path);
+    if (rc) { free(v); return rc; }
+    m->mx = cols;
+    m->my = rows;
+    m->v = v;
+    return HJ_OK;
+}
+
+static int pgm_int(FILE *f, long *out)
+{
+    int c;
+    do {
+        c = fgetc(f);
+        if (c == '#') while (c != '\n' && c != EOF) c = fgetc(f);
+    } while (c != EOF && isspace(c));
+    if (c == EOF || !isdigit(c)) return -1;
+    long v = 0;
+    while (c != EOF && isdigit(c)) {
+        v = v * 10 + (c - '0');
+        if (v > 100000000) return -1;
+        c = fgetc(f);
+    }
+    *out = v;
+    return 0;
+}
+
+static int read_pgm_map(const char *path, speed_map *m, double fmin, double fmax, hj_error *err)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    char magic[3] = {0};
+    long w, h, maxval;
+    if (fread(magic, 1, 2, f) != 2 || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '5') || pgm_int(f, &w) ||
+        pgm_int(f, &h) || pgm_int(f, &maxval) || w < 2 || h < 2 || maxval < 1 || maxval > 65535) {
+        fclose(f);
+        return hj_error_set(err, HJ_EFORMAT, "%s: not a PGM (P2/P5) image of at least 2 x 2 pixels", path);
+    }
+    if ((double)w * h > 1e9) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "%s: image too large", path); }
+    double *v = malloc(sizeof *v * (size_t)(w * h));
+    if (!v) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "out of memory for %s", path); }
+    int rc = HJ_OK;
+    for (long k = 0; k < w * h && rc == HJ_OK; k++) {
+        long p;
+        if (magic[1] == '2') {
+            if (pgm_int(f, &p)) rc = HJ_EFORMAT;
+        } else {
+            int b0 = fgetc(f), b1 = maxval > 255 ? fgetc(f) : 0;
+            if (b0 == EOF || b1 == EOF) rc = HJ_EFORMAT;
+            p = maxval > 255 ? (b0 << 8 | b1) : b0;
+        }
+        if (rc == HJ_OK && p > maxval) rc = HJ_EFORMAT;
+        if (rc == HJ_OK) v[k] = fmin + (fmax - fmin) * (double)p / (double)maxval;
+    }
+    fclose(f);
+    if (rc) { free(v); return hj_error_set(err, HJ_EFORMAT, "%s: truncated or malformed pixel data", path); }
+    m->mx = (int)w;
+    m->my = (int)h;
+    m->v = v;
+    return HJ_OK;
+}
+
+/* Images list the top row first; the solver wants row 0 at the bottom. */
+static void flip_rows(speed_map *m)
+{
+    for (int j = 0; j < m->my / 2; j++)
+        for (int i = 0; i < m->mx; i++) {
+            double *a = &m->v[(long)j * m->mx + i], *b = &m->v[(long)(m->my - 1 - j) * m->mx + i];
+            double t = *a;
+            *a = *b;
+            *b = t;
+        }
+}
+
+static int parse_doubles(const char *s, double *out, int n)
+{
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", s);
+    char *p = buf;
+    for (int k = 0; k < n; k++) {
+        char *comma = strchr(p, ',');
+        if ((comma == NULL) != (k == n - 1)) return -1;
+        if (comma) *comma = '\0';
+        if (hj_parse_double(p, "value", -1e300, 1e300, &out[k], NULL)) return -1;
+        p = comma ? comma + 1 : p;
+    }
+    return 0;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: %s (--speed FILE | --speed-const F) --source X,Y[,VALUE] ... [options]\n"
+               "Solves |grad phi| = f with phi = VALUE (default 0) at each source; see the top of eikonal.c.\n"
+               "  --speed FILE        speed map: plain text grid or PGM (first row = top)\n"
+               "  --pgm-range A,B     a PGM pixel v maps to f = A + (B - A) v / maxval (default 0,1)\n"
+               "  --speed-const F     uniform speed F > 0\n"
+               "  --domain X0,X1,Y0,Y1  the rectangle (default: [0, columns-1] x [0, rows-1] of the map)\n"
+               "  --N N               intervals in x (default: the map's columns - 1, or 100)\n"
+               "  --source X,Y[,V]    a point source (a grid node); repeat for more (at most 64)\n"
+               "  --strategy S        richardson (default) | first-order\n"
+               "  --delta X --eps X --max-iter N   as in the paper 1 examples\n"
+               "  --out FILE          output grid x y phi (default phi.tsv; - for stdout)\n"
+               "  --help\n", prog);
+}
+
+int main(int argc, char **argv)
+{
+    const char *speed_file = NULL, *out_path = "phi.tsv";
+    double pgm[2] = {0, 1}, dom[4] = {0, 0, 0, 0}, cst = -1;
+    int have_dom = 0, nsrc = 0;
+    long N = -1;
+    hj_inflow src[64];
+    hj_fsm_options opt = hj_fsm_default_options();
+    opt.strategy = HJ_BC_RICHARDSON;
+    hj_error err;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
+        if (strncmp(a, "--", 2)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", a);
+        if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
+        i++;
+        int rc = HJ_OK;
+        if (!strcmp(a, "--speed")) speed_file = v;
+        else if (!strcmp(a, "--out")) out_path = v;
+        else if (!strcmp(a, "--speed-const")) rc = hj_parse_double(v, "--speed-const", 1e-300, 1e300, &cst, &err);
+        else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 20000, &N, &err);
+        else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 0, 1, &opt.delta, &err);
+        else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &opt.eps, &err);
+        else if (!strcmp(a, "--max-iter")) {
+            long m;
+            rc = hj_parse_long(v, "--max-iter", 1, 10000000, &m, &err);
+            opt.max_iter = (int)m;
+        } else if (!strcmp(a, "--pgm-range")) {
+            if (parse_doubles(v, pgm, 2) || pgm[0] < 0 || pgm[1] < pgm[0])
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range wants A,B with 0 <= A <= B, got '%s'", v);
+        } else if (!strcmp(a, "--domain")) {
+            if (parse_doubles(v, dom, 4) || !(dom[1] > dom[0]) || !(dom[3] > dom[2]))
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "--domain wants X0,X1,Y0,Y1 with X0 < X1, Y0 < Y1, got '%s'", v);
+            have_dom = 1;
+        } else if (!strcmp(a, "--source")) {
+            double s[3] = {0, 0, 0};
+            if (nsrc >= 64) hj_cli_fail(prog, HJ_EXIT_USAGE, "at most 64 sources");
+            if (parse_doubles(v, s, 2) && parse_doubles(v, s, 3))
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "--source wants X,Y or X,Y,VALUE (finite numbers), got '%s'", v);
+            src[nsrc++] = (hj_inflow){.type = HJ_INFLOW_POINT, .x = s[0], .y = s[1], .value = s[2], .richardson = 1};
+        } else if (!strcmp(a, "--strategy")) {
+            if (!strcmp(v, "richardson")) opt.strategy = HJ_BC_RICHARDSON;
+            else if (!strcmp(v, "first-order")) opt.strategy = HJ_BC_FIRST_ORDER;
+            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--strategy must be richardson or first-order, got '%s'", v);
+        } else {
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
+        }
+        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    }
+    if (!speed_file && cst < 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give --speed FILE or --speed-const F (see --help)");
+    if (speed_file && cst >= 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give only one of --speed and --speed-const");
+    if (nsrc == 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give at least one --source X,Y");
+
+    speed_map m = {0};
+    if (speed_file) {
+        size_t len = strlen(speed_file);
+        int is_pgm = len > 4 && !strcmp(speed_file + len - 4, ".pgm");
+        int rc = is_pgm ? read_pgm_map(speed_file, &m, pgm[0], pgm[1], &err) : read_text_map(speed_file, &m, &err);
+        if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+        flip_rows(&m);
+        if (!have_dom) {
+            dom[0] = 0; dom[1] = m.mx - 1; dom[2] = 0; dom[3] = m.my - 1;
+        }
+        if (N < 0) N = m.mx - 1;
+    } else {
+        m.constant = cst;
+        if (!have_dom) { dom[0] = 0; dom[1] = 1; dom[2] = 0; dom[3] = 1; }
+        if (N < 0) N = 100;
+    }
+    m.xmin = dom[0]; m.xmax = dom[1]; m.ymin = dom[2]; m.ymax = dom[3];
+    hj_grid2 g;
+    g.nx = (int)N;
+    g.h = (dom[1] - dom[0]) / N;
+    g.x0 = dom[0];
+    g.y0 = dom[2];
+    double ny = (dom[3] - dom[2]) / g.h;
+    if (fabs(ny - round(ny)) > 1e-6 * ny || round(ny) < 8)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "the domain height %g is not a whole number (>= 8) of cells of size h = %g", dom[3] - dom[2], g.h);
+    g.ny = (int)round(ny);
+    if (g.ny > 20000) hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %d rows: at most 20000", g.ny);
+    double have = hj_physical_memory();
+    if (have > 0 && hj_fsm_memory(&g) > 0.8 * have)
+        hj_cli_fail(prog, HJ_EXIT_RUN, "a %dx%d grid needs %.3g GB, more than this machine has", g.nx, g.ny, hj_fsm_memory(&g) / 1e9);
+    for (int s = 0; s < nsrc; s++) {
+        double fi = (src[s].x - g.x0) / g.h, fj = (src[s].y - g.y0) / g.h;
+        if (fi < 0 || fj < 0 || fi > g.nx || fj > g.ny)
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "source (%g, %g) is outside the domain", src[s].x, src[s].y);
+        if (fabs(fi - round(fi)) > 1e-9 || fabs(fj - round(fj)) > 1e-9)
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "source (%g, %g) is not a grid node; the nearest node is (%.10g, %.10g)", src[s].x,
+                        src[s].y, g.x0 + round(fi) * g.h, g.y0 + round(fj) * g.h);
+    }
+    double *phi = malloc(sizeof(double) * (size_t)(g.nx + 1) * (size_t)(g.ny + 1));
+    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for the %dx%d grid", g.nx, g.ny);
+    hj_speed sp = {map_speed, NULL, &m};
+    hj_fsm_stats st;
+    int rc = hj_fsm_solve(&g, &sp, src, nsrc, &opt, phi, &st, &err);
+    if (rc) { free(phi); free(m.v); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
+    hj_out out = {0};
+    FILE *fp = stdout;
+    if (strcmp(out_path, "-")) {
+        if (hj_out_open(&out, out_path, &err)) { free(phi); free(m.v); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
+        fp = out.fp;
+    }
+    fprintf(fp, "# eikonal: %dx%d intervals, h = %g, %d WENO iterations\n# x\ty\tphi\n", g.nx, g.ny, g.h, st.iterations);
+    for (int j = 0; j <= g.ny; j++) {
+        for (int i = 0; i <= g.nx; i++)
+            fprintf(fp, "%.10g\t%.10g\t%.12g\n", g.x0 + i * g.h, g.y0 + j * g.h, phi[(long)j * (g.nx + 1) + i]);
+        fputc('\n', fp);
+    }
+    free(phi);
+    free(m.v);
+    if (fp != stdout && hj_out_commit(&out, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    if (fp == stdout && fflush(stdout)) hj_cli_fail(prog, HJ_EXIT_RUN, "error writing stdout");
+    return 0;
+}

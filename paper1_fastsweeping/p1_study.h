@@ -1,0 +1,69 @@
+/* p1_study.h -- the convergence study shared by the paper 1 examples.
+ *
+ * An example program describes its problem (domain, speed, exact solution,
+ * inflow pieces, boxes excluded from the error) as p1_case values and
+ * hands them to p1_main(), which parses the command line, solves on every
+ * N, measures the errors exactly as the paper says, and writes
+ *
+ *   <out>/<table>.tsv      one row per case and N: errors, pairwise
+ *                          orders, iterations, seconds (the checked table)
+ *   <out>/<table>.fit.tsv  fitted orders e = C h^p (Ceres, see hj_fit.h)
+ *   <out>/<table>.fit.gp   the same as gnuplot variables, for the figure
+ *   <out>/<table>.<case>.grid.tsv  solution and error on the grid of the
+ *                          --grid-N run, in gnuplot's grid format
+ *
+ * All files are written under temporary names and renamed when complete.
+ */
+#ifndef P1_STUDY_H
+#define P1_STUDY_H
+
+#include "hj_fsm.h"
+
+typedef struct {
+    double xmin, xmax, ymin, ymax;
+} p1_box;
+
+typedef struct {
+    const char *name;       /* case key in the table ("a", "b", or "-") */
+    p1_box domain;          /* square computational domain */
+    hj_speed speed;
+    double (*exact)(double x, double y);
+    const hj_inflow *inflow;
+    int ninflow;
+    const p1_box *exclude;  /* nodes inside these boxes are not measured */
+    int nexclude;
+    double eps;             /* WENO epsilon ... */
+    int eps_times_h2;       /* ... times h^2 when set (Example 2) */
+} p1_case;
+
+typedef struct {
+    const char *program;
+    const char *table;      /* e.g. "table3.1" */
+    hj_bc_strategy strategy;
+    const p1_case *cases;
+    int ncases;
+    const long *sizes;      /* the published N */
+    int nsizes;
+    int nquick;             /* --quick runs the first nquick sizes */
+} p1_study;
+
+/* Run the study from the command line; returns the process exit status. */
+int p1_main(int argc, char **argv, const p1_study *study, const char *usage_extra);
+
+/* Distance helpers for examples with circles of radius r centred at (cx, cy). */
+typedef struct {
+    double cx, cy, r;
+} p1_circle;
+double p1_circle_level(double x, double y, void *circle);
+int p1_circle_local(double x, double y, hj_curve_local *out, void *circle);
+
+/* The four edges of a box as inflow pieces with phi = 0 (Example 2). */
+double p1_edge_level(double x, double y, void *edge);
+int p1_edge_local(double x, double y, hj_curve_local *out, void *edge);
+typedef struct {
+    int axis;     /* 0: the line x = at; 1: the line y = at */
+    double at;
+    double inward; /* +1 or -1: the side of the domain */
+} p1_edge;
+
+#endif

@@ -1,0 +1,49 @@
+# Paper 1: Huang, Shu & Zhang (2008), fast sweeping WENO with inflow
+# boundary treatments.  Included by the top-level Makefile.
+
+P1 := paper1_fastsweeping
+P1_EXAMPLES := example1 example2 example3 example4
+P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal
+P1_LIBOBJ := $(BUILD)/obj/$(P1)/p1_study.o
+$(P1_BINS): $(P1_LIBOBJ)
+$(BUILD)/obj/$(P1)/%.o: CPPFLAGS += -I$(P1)
+
+PROGRAMS += $(P1_BINS)
+UNIT_TESTS += $(patsubst %.c,$(BUILD)/test/%,$(wildcard $(P1)/tests/test_*.c))
+$(patsubst %.c,$(BUILD)/test/%,$(wildcard $(P1)/tests/test_*.c)): $(P1_LIBOBJ)
+
+P1_OUT := $(RESULTS)/paper1
+P1_TABLES := table3.1 table3.2 table3.3 table3.4 table3.5
+P1_RESULTS := $(P1_TABLES:%=$(P1_OUT)/%.tsv)
+
+$(P1_OUT)/table3.1.tsv: $(BUILD)/bin/$(P1)/example1
+	@mkdir -p $(@D)
+	$< $(QUICKFLAG) --out-dir $(@D)
+$(P1_OUT)/table3.2.tsv: $(BUILD)/bin/$(P1)/example2
+	@mkdir -p $(@D)
+	$< $(QUICKFLAG) --strategy richardson --out-dir $(@D)
+$(P1_OUT)/table3.3.tsv: $(BUILD)/bin/$(P1)/example2
+	@mkdir -p $(@D)
+	$< $(QUICKFLAG) --strategy lax-wendroff --out-dir $(@D)
+$(P1_OUT)/table3.4.tsv: $(BUILD)/bin/$(P1)/example3
+	@mkdir -p $(@D)
+	$< $(QUICKFLAG) --out-dir $(@D)
+$(P1_OUT)/table3.5.tsv: $(BUILD)/bin/$(P1)/example4
+	@mkdir -p $(@D)
+	$< $(QUICKFLAG) --out-dir $(@D)
+
+# Figures: convergence (with the Ceres fit) and contours of the solution.
+P1_FIGS := $(P1_TABLES:%=$(P1_OUT)/fig/%.conv.svg) $(P1_TABLES:%=$(P1_OUT)/fig/%.contour.svg)
+$(P1_OUT)/fig/%.conv.svg: $(P1_OUT)/%.tsv common/plot/convergence.gp
+	@mkdir -p $(@D)
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$@.tmp'; title='$*'" common/plot/convergence.gp && mv $@.tmp $@
+$(P1_OUT)/fig/%.contour.svg: $(P1_OUT)/%.tsv common/plot/contour.gp
+	@mkdir -p $(@D)
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$@.tmp'; title='$*'" common/plot/contour.gp && mv $@.tmp $@
+
+CHECK_PAPERS += paper1=$(P1)
+CHECK_INPUTS += $(P1_RESULTS)
+REPORT_INPUTS += $(P1_RESULTS) $(P1_FIGS) $(P1_EXAMPLES:%=$(P1)/%.c)
+
+paper1: $(P1_RESULTS) $(P1_FIGS)
+	$(MAKE) --no-print-directory report

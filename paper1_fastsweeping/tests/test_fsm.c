@@ -1,0 +1,221 @@
+/* Unit tests of the fast sweeping solver (common/hj_fsm) and the geometry
+ * helpers of paper 1. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_fsm.h"
+#include "p1_study.h"
+
+static const double PI = 3.14159265358979323846;
+
+static double one(double x, double y, void *c) { (void)x, (void)y, (void)c; return 1.0; }
+static void zero_grad(double x, double y, double g[2], void *c) { (void)x, (void)y, (void)c; g[0] = g[1] = 0; }
+
+static double ex1_speed(double x, double y, void *c)
+{
+    (void)c;
+    const double sx = sin(PI * x / 2), sy = sin(PI * y / 2);
+    return PI / 2 * sqrt(sx * sx + sy * sy);
+}
+static double ex1_exact(double x, double y) { return -cos(PI * x / 2) - cos(PI * y / 2); }
+
+static double max_error(const hj_grid2 *g, const double *phi, double (*exact)(double, double), double skip_r)
+{
+    double mx = 0;
+    for (int j = 0; j <= g->ny; j++)
+        for (int i = 0; i <= g->nx; i++) {
+            double x = g->x0 + i * g->h, y = g->y0 + j * g->h;
+            if (hypot(x, y) < skip_r) continue;
+            double e = fabs(phi[j * (g->nx + 1) + i] - exact(x, y));
+            if (e > mx) mx = e;
+        }
+    return mx;
+}
+
+/* Lax-Wendroff on a circle with f = 1 and g = 0 gives the distance exactly,
+ * on both sides of the circle. */
+static void lax_wendroff_circle_is_exact(void **state)
+{
+    (void)state;
+    p1_circle c = {0.1, -0.2, 0.5};
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &c};
+    hj_speed sp = {one, zero_grad, NULL};
+    const double pts[][2] = {{0.7, -0.2}, {0.3, 0.1}, {0.1, 0.2}, {-0.35, -0.25}};
+    for (int k = 0; k < 4; k++) {
+        double v;
+        assert_int_equal(hj_fsm_lax_wendroff_value(&sp, &piece, pts[k][0], pts[k][1], 0.01, &v, NULL), HJ_OK);
+        assert_close(v, fabs(p1_circle_level(pts[k][0], pts[k][1], &c)), 1e-15, 0);
+    }
+}
+
+/* A straight inflow edge x = 0 with non-trivial data g(y) = sin(y) and
+ * f = |grad phi| of phi = sin y + x/2 + x^2 (1 + y)/4 + 0.3 x^3: the Taylor
+ * value misses the cubic term, so its error is O(s^3). */
+static double lw_exact(double x, double y) { return sin(y) + 0.5 * x + 0.25 * x * x * (1 + y) + 0.3 * x * x * x; }
+static double lw_speed(double x, double y, void *c)
+{
+    (void)c;
+    double px = 0.5 + 0.5 * x * (1 + y) + 0.9 * x * x, py = cos(y) + 0.25 * x * x;
+    return hypot(px, py);
+}
+static int lw_edge_local(double x, double y, hj_curve_local *L, void *c)
+{
+    (void)c;
+    L->dist = fabs(x);
+    L->foot[0] = 0;
+    L->foot[1] = y;
+    L->n[0] = x >= 0 ? 1 : -1;
+    L->n[1] = 0;
+    L->kappa = 0;
+    /* tau = (-n_y, n_x) = (0, 1) for x >= 0: g_t = g'(y) */
+    L->g = sin(y);
+    L->g_t = cos(y);
+    L->g_tt = -sin(y);
+    return 0;
+}
+static double lw_edge_level(double x, double y, void *c) { (void)y, (void)c; return x; }
+
+static void lax_wendroff_third_order(void **state)
+{
+    (void)state;
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = lw_edge_level, .local = lw_edge_local};
+    hj_speed sp = {lw_speed, NULL, NULL}; /* gradient by differences */
+    double prev = 0;
+    for (int k = 0; k < 4; k++) {
+        double s = 0.08 / (1 << k), v;
+        assert_int_equal(hj_fsm_lax_wendroff_value(&sp, &piece, s, 0.3, 0.01, &v, NULL), HJ_OK);
+        double e = fabs(v - lw_exact(s, 0.3));
+        if (k) assert_true(prev / e > 6.5); /* ~8 for an O(s^3) remainder */
+        prev = e;
+    }
+}
+
+/* Example 2 (a) with Lax-Wendroff: the exact solution is a fixed point of the
+ * WENO update and the boundary values are exact, so the result is exact to
+ * round-off (Table 3.3). */
+static double ex2a_speed(double x, double y, void *c) { (void)c; return hypot(1 - fabs(x), 1 - fabs(y)); }
+static void ex2a_grad(double x, double y, double g[2], void *c)
+{
+    double f = ex2a_speed(x, y, c);
+    g[0] = f > 0 ? -(1 - fabs(x)) * (x > 0 ? 1 : -1) / f : 0;
+    g[1] = f > 0 ? -(1 - fabs(y)) * (y > 0 ? 1 : -1) / f : 0;
+}
+static double ex2a_exact(double x, double y) { return (1 - fabs(x)) * (1 - fabs(y)); }
+
+static void polynomial_case_to_roundoff(void **state)
+{
+    (void)state;
+    static p1_edge e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
+    hj_inflow box[4];
+    for (int k = 0; k < 4; k++)
+        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &e[k]};
+    hj_grid2 g = {40, 40, -1, -1, 2.0 / 40};
+    hj_speed sp = {ex2a_speed, ex2a_grad, NULL};
+    hj_fsm_options o = hj_fsm_default_options();
+    o.eps = 1e-6 * g.h * g.h;
+    double *phi = malloc(sizeof(double) * 41 * 41);
+    hj_fsm_stats st;
+    assert_int_equal(hj_fsm_solve(&g, &sp, box, 4, &o, phi, &st, NULL), HJ_OK);
+    assert_true(max_error(&g, phi, ex2a_exact, -1) < 1e-12);
+    assert_int_equal(st.ncat[0], 160);          /* the boundary nodes */
+    assert_int_equal(st.ncat[2], 4 * 39 - 4 + 4 * 37 - 4); /* two rings */
+    free(phi);
+}
+
+/* Example 1 on small grids: Richardson boundary values and the third order
+ * scheme converge at third order or better; first order sweeps alone at
+ * about first order. */
+static void point_source_orders(void **state)
+{
+    (void)state;
+    hj_inflow src = {.type = HJ_INFLOW_POINT, .x = 0, .y = 0, .value = -2, .richardson = 1};
+    hj_speed sp = {ex1_speed, NULL, NULL};
+    double e_weno[3], e_fo[3];
+    for (int k = 0; k < 3; k++) {
+        int N = 20 << k;
+        hj_grid2 g = {N, N, -1, -1, 2.0 / N};
+        double *phi = malloc(sizeof(double) * (N + 1) * (N + 1));
+        hj_fsm_options o = hj_fsm_default_options();
+        o.strategy = HJ_BC_RICHARDSON;
+        hj_fsm_stats st;
+        assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, NULL), HJ_OK);
+        assert_int_equal(st.ncat[0], 1);
+        assert_int_equal(st.ncat[2], 24);
+        e_weno[k] = max_error(&g, phi, ex1_exact, -1);
+        o.first_order_only = 1;
+        assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, NULL), HJ_OK);
+        e_fo[k] = max_error(&g, phi, ex1_exact, 0.2); /* away from the Richardson box */
+        free(phi);
+    }
+    for (int k = 1; k < 3; k++) {
+        assert_true(log2(e_weno[k - 1] / e_weno[k]) > 2.7);
+        double p = log2(e_fo[k - 1] / e_fo[k]);
+        assert_true(p > 0.7 && p < 1.5);
+    }
+}
+
+/* Results do not depend on run order: two solves give bitwise equal output. */
+static void deterministic(void **state)
+{
+    (void)state;
+    p1_circle c = {0.01, 0, 0.45}; /* misses every node: no Category I */
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &c};
+    hj_speed sp = {one, zero_grad, NULL};
+    hj_grid2 g = {32, 32, -1, -1, 2.0 / 32};
+    double *a = malloc(sizeof(double) * 33 * 33), *b = malloc(sizeof(double) * 33 * 33);
+    hj_fsm_options o = hj_fsm_default_options();
+    hj_fsm_stats st;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &piece, 1, &o, a, &st, NULL), HJ_OK);
+    assert_int_equal(st.ncat[0], 0);
+    assert_int_equal(hj_fsm_solve(&g, &sp, &piece, 1, &o, b, &st, NULL), HJ_OK);
+    assert_memory_equal(a, b, sizeof(double) * 33 * 33);
+    free(a);
+    free(b);
+}
+
+static double neg_speed(double x, double y, void *c) { (void)x, (void)y, (void)c; return -1; }
+static double nan_speed(double x, double y, void *c) { (void)x, (void)y, (void)c; return NAN; }
+
+static void bad_input(void **state)
+{
+    (void)state;
+    double phi[41 * 41];
+    hj_fsm_stats st;
+    hj_error err;
+    hj_fsm_options o = hj_fsm_default_options();
+    hj_grid2 g = {40, 40, -1, -1, 0.05};
+    hj_speed sp = {one, zero_grad, NULL};
+    hj_inflow off = {.type = HJ_INFLOW_POINT, .x = 0.01, .y = 0, .value = 0, .richardson = 1};
+    o.strategy = HJ_BC_RICHARDSON;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &off, 1, &o, phi, &st, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "not a grid node"));
+    hj_inflow src = {.type = HJ_INFLOW_POINT, .x = 0, .y = 0, .value = 0, .richardson = 1};
+    o.strategy = HJ_BC_LAX_WENDROFF;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, &err), HJ_EINVAL);
+    o.strategy = HJ_BC_RICHARDSON;
+    hj_speed neg = {neg_speed, NULL, NULL}, nan_sp = {nan_speed, NULL, NULL};
+    assert_int_equal(hj_fsm_solve(&g, &neg, &src, 1, &o, phi, &st, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_fsm_solve(&g, &nan_sp, &src, 1, &o, phi, &st, &err), HJ_ENONFINITE);
+    hj_grid2 tiny = {2, 2, -1, -1, 1};
+    assert_int_equal(hj_fsm_solve(&tiny, &sp, &src, 1, &o, phi, &st, &err), HJ_EINVAL);
+    o.eps = NAN;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, &err), HJ_EINVAL);
+    o = hj_fsm_default_options();
+    o.strategy = HJ_BC_RICHARDSON;
+    o.max_iter = 1;
+    o.delta = 0;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, &err), HJ_ENOCONV);
+    assert_int_equal(hj_fsm_solve(&g, &sp, &src, 0, &o, phi, &st, &err), HJ_EINVAL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(lax_wendroff_circle_is_exact), cmocka_unit_test(lax_wendroff_third_order),
+        cmocka_unit_test(polynomial_case_to_roundoff), cmocka_unit_test(point_source_orders),
+        cmocka_unit_test(deterministic), cmocka_unit_test(bad_input),
+    };
+    return cmocka_run_group_tests_name("hj_fsm", tests, NULL, NULL);
+}
