@@ -298,9 +298,15 @@ static int classify(work *w, const hj_grid2 *g, const hj_inflow *in, int nin, hj
 
 /* Richardson extrapolation (2.9) for the Category III nodes of piece c:
  * first order solutions on h, h/2, h/4 in the box of those nodes (for a
- * point source exactly [-2h, 2h]^2; for a curve the nodes' bounding box
- * widened by one node, so that every Category III node is inside the local
- * domain).  Every fine node on an inflow piece is fixed at its data. */
+ * point source exactly [-2h, 2h]^2, as in Example 1; for a curve the nodes'
+ * bounding box widened by two nodes).  Every fine node on an inflow piece is
+ * fixed at its data.  Why two: near a corner of the box domain a Category
+ * III node belongs to the nearer edge, so an edge's nodes start one node in
+ * from the corner; widened by one, the box's end column then lies off the
+ * neighbouring edge, has no inflow data, and its outflow value spoils the
+ * corner nodes (Example 2 (a): 3.6e-7 instead of exact).  Widened by two,
+ * the box reaches the neighbouring edge and the local solution equals the
+ * global first order one (exact for Example 2 (a)). */
 static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int nin, int c,
                       int max_iter, hj_error *err)
 {
@@ -316,10 +322,10 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
         }
     if (ilo > ihi) return HJ_OK; /* no Category III nodes for this piece */
     if (in[c].type == HJ_INFLOW_CURVE) {
-        ilo = ilo > 0 ? ilo - 1 : 0;
-        jlo = jlo > 0 ? jlo - 1 : 0;
-        ihi = ihi < w->nx ? ihi + 1 : w->nx;
-        jhi = jhi < w->ny ? jhi + 1 : w->ny;
+        ilo = ilo > 2 ? ilo - 2 : 0;
+        jlo = jlo > 2 ? jlo - 2 : 0;
+        ihi = ihi < w->nx - 2 ? ihi + 2 : w->nx;
+        jhi = jhi < w->ny - 2 ? jhi + 2 : w->ny;
     }
     const int mx = ihi - ilo, my = jhi - jlo;
     const int ratios[3] = {1, 2, 4};

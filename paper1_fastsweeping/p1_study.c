@@ -169,6 +169,11 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
     if ((rc = hj_out_open(&gp, path, err))) { hj_out_abort(&fit); return rc; }
     fprintf(fit.fp, "# fitted orders e = C h^p (Ceres, Huber loss, see common/hj_fit.h)\ncase\tquantity\tp\tp_se\tC\tp_lsq\tn\n");
     fprintf(gp.fp, "# gnuplot variables for the convergence figure of %s\n", st->table);
+    fprintf(gp.fp, "hN = %.17g\ncase_keys = \"", st->cases[0].domain.xmax - st->cases[0].domain.xmin);
+    for (int ci = 0; ci < st->ncases; ci++) fprintf(gp.fp, "%s%s", ci ? " " : "", st->cases[ci].name);
+    fprintf(gp.fp, "\"\ncase_names = \"");
+    for (int ci = 0; ci < st->ncases; ci++) fprintf(gp.fp, "%s%s", ci ? " " : "", st->cases[ci].name[0] == '-' ? "sol" : st->cases[ci].name);
+    fprintf(gp.fp, "\"\n");
     for (int ci = 0; ci < st->ncases; ci++) {
         const char *cn = st->cases[ci].name;
         const char *gn = cn[0] == '-' ? "sol" : cn;
@@ -229,7 +234,7 @@ static void usage(FILE *f, const p1_study *st, const char *extra)
             "  --eps X             WENO epsilon (default: the paper's for this example)\n"
             "  --eps-h2 C          WENO epsilon = C h^2\n"
             "  --l1 M              mean (mean |e| over measured nodes, default) | integral (h^2 sum |e|)\n"
-            "  --exclude M         closed (nodes on a box edge are not measured) | open (they are)\n"
+            "  --exclude M         closed (default: nodes on a box edge are not measured) | open (they are)\n"
             "  --band B            Category III: horizontal/vertical distance < B h to a curve (default 3)\n"
             "  --max-iter N        at most N iterations (default 10000)\n"
             "  --grid-N N          write the solution grid of this N (default 80)\n"
@@ -245,7 +250,7 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
     s.out_dir = ".";
     s.delta = 1e-11;
     s.band = 3;
-    s.open_boxes = 1;
+    s.open_boxes = 0; /* closed: see the overview (Example 4's band reaches y = +-3) */
     s.l1_integral = 1;
     s.eps = -1;
     s.stop_norm = HJ_STOP_L1_MEAN;

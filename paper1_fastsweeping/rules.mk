@@ -33,13 +33,13 @@ $(P1_OUT)/table3.5.tsv: $(BUILD)/bin/$(P1)/example4
 	$< $(QUICKFLAG) --out-dir $(@D)
 
 # Figures: convergence (with the Ceres fit) and contours of the solution.
-P1_FIGS := $(P1_TABLES:%=$(P1_OUT)/fig/%.conv.svg) $(P1_TABLES:%=$(P1_OUT)/fig/%.contour.svg)
-$(P1_OUT)/fig/%.conv.svg: $(P1_OUT)/%.tsv common/plot/convergence.gp
+P1_FIGS := $(P1_TABLES:%=$(P1_OUT)/fig/%.conv.png) $(P1_TABLES:%=$(P1_OUT)/fig/%.contour.png)
+$(P1_OUT)/fig/%.conv.png: $(P1_OUT)/%.tsv common/plot/convergence.gp
 	@mkdir -p $(@D)
-	gnuplot -e "table='$(P1_OUT)/$*'; out='$@.tmp'; title='$*'" common/plot/convergence.gp && mv $@.tmp $@
-$(P1_OUT)/fig/%.contour.svg: $(P1_OUT)/%.tsv common/plot/contour.gp
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='$*'" common/plot/convergence.gp && mv $(@D)/.tmp-$(@F) $@
+$(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	@mkdir -p $(@D)
-	gnuplot -e "table='$(P1_OUT)/$*'; out='$@.tmp'; title='$*'" common/plot/contour.gp && mv $@.tmp $@
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='$*'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
 CHECK_PAPERS += paper1=$(P1)
 CHECK_INPUTS += $(P1_RESULTS)

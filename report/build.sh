@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# build.sh RESULTS OUTDIR HJCHECK -- assemble report/out/report.html.
+#
+# The report is generated, never edited: report/intro.md, the comparison
+# rules (hjcheck --rules), the check summary, then for each paper its
+# overview.md and, for every row of its report.tsv (source, tables,
+# figures), the program's own literate comment, the published-vs-computed
+# table of each table it makes (from results/<paper>/<table>.check.tsv),
+# the fitted orders (<table>.fit.tsv) and its figures.  Markdown goes
+# through cmark (CommonMark); tables are emitted as HTML blocks.
+set -euo pipefail
+res=$1 out=$2 hjcheck=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$out/fig"
+
+# The first /* ... */ comment of a C file, headings pushed two levels down.
+literate() {
+    awk 'BEGIN { on = 0 }
+         !on && /^\/\*/ { on = 1; sub(/^\/\*+ ?/, ""); if ($0 == "") next }
+         on && /\*\// { sub(/ *\*\/.*$/, ""); if ($0 != "") print; exit }
+         on { sub(/^ \* ?/, ""); if ($0 ~ /^#/) $0 = "##" $0; print }' "$1"
+    printf '\n*Source: `%s`*\n\n' "$1"
+}
+
+html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
+
+# Published beside computed, from a .check.tsv.
+check_table() {
+    local f=$1 name=$2
+    if [ ! -f "$f" ]; then
+        printf '\n**%s: not computed** (no %s)\n\n' "$name" "$f"
+        return
+    fi
+    awk -F'\t' -v name="$name" '
+        function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
+        /^#/ || $1 == "table" { next }
+        { n++; split($8, v, " "); cnt[v[1]]++
+          cls = v[1]; if ($8 ~ /round-off/) cls = "match";
+          row[n] = sprintf("<tr class=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>",
+                           cls, esc($2), esc($3), esc($5), esc($6), esc($7), esc($8), esc($9), esc($10)) }
+        END {
+          printf "\n<p class=\"tsum\"><b>%s</b>: %d match, %d close, %d differ", name, cnt["match"], cnt["close"], cnt["differs"]
+          if (cnt["missing"]) printf ", %d missing", cnt["missing"]
+          if (cnt["ambiguous"]) printf ", %d ambiguous", cnt["ambiguous"]
+          printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>published</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n"
+          for (i = 1; i <= n; i++) print row[i]
+          print "</table>\n"
+        }' "$f"
+}
+
+fit_table() {
+    local f=$1
+    [ -f "$f" ] || return 0
+    awk -F'\t' '
+        /^#/ || $1 == "case" { next }
+        { rows = rows sprintf("<tr><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n",
+                              $1, $2, ($3 == "nan" ? "-" : sprintf("%.2f", $3)),
+                              ($4 == "nan" || $4 == "" ? "-" : sprintf("%.2f", $4)),
+                              ($6 == "nan" ? "-" : sprintf("%.2f", $6)), $7) }
+        END { if (rows != "") printf "\n<table class=\"fit\">\n<tr><th>case</th><th>error</th><th>fitted order p</th><th>std. error</th><th>least-squares p</th><th>points</th></tr>\n%s</table>\n\n", rows }' "$f"
+}
+
+md=$tmp/report.md
+{
+    cat report/intro.md
+    printf '\n## How a cell is judged\n\n'
+    "$hjcheck" --rules
+    printf '\n## Summary of `make check`\n\n```\n'
+    cat "$res/check-summary.txt"
+    printf '```\n\n'
+    for entry in paper1:paper1_fastsweeping paper2:paper2_toolbox paper3:paper3_ultrabee; do
+        name=${entry%%:*} dir=${entry#*:}
+        [ -f "$dir/report.tsv" ] || continue
+        if [ -f "$dir/overview.md" ]; then cat "$dir/overview.md"; printf '\n'; fi
+        tail -n +2 "$dir/report.tsv" | while IFS=$'\t' read -r src tables figs; do
+            [ -n "$src" ] || continue
+            literate "$dir/$src"
+            for t in $tables; do
+                [ "$t" = - ] && continue
+                check_table "$res/$name/$t.check.tsv" "$name $t"
+                fit_table "$res/$name/$t.fit.tsv"
+            done
+            for f in $figs; do
+                case $f in
+                -) ;;
+                *.md) if [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'; else printf '\n*missing: %s*\n\n' "$f"; fi ;;
+                *) if [ -f "$res/$name/$f" ]; then
+                       dst="$name-$(basename "$f")"
+                       cp "$res/$name/$f" "$out/fig/$dst"
+                       printf '\n![%s](fig/%s)\n\n' "$f" "$dst"
+                   else
+                       printf '\n*missing figure: %s*\n\n' "$f"
+                   fi ;;
+                esac
+            done
+        done
+    done
+} > "$md"
+
+cmark --unsafe "$md" > "$tmp/body.html"
+{
+    cat <<'HEAD'
+<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<title>Hamilton-Jacobi numerics: reproduction report</title>
+<style>
+body { font-family: Georgia, serif; max-width: 60em; margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #222; }
+h1, h2, h3, h4 { font-family: Helvetica, Arial, sans-serif; }
+h2 { border-bottom: 1px solid #ccc; margin-top: 2em; }
+pre, code { font-size: 0.9em; }
+pre { background: #f6f6f6; padding: 0.6em; overflow-x: auto; }
+table { border-collapse: collapse; margin: 0.8em 0; font-family: Helvetica, Arial, sans-serif; font-size: 0.85em; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: left; vertical-align: top; }
+th { background: #eee; }
+tr.match td:nth-child(6) { background: #dff0d8; }
+tr.close td:nth-child(6) { background: #fcf8e3; }
+tr.differs td:nth-child(6) { background: #f2dede; }
+tr.missing td:nth-child(6) { background: #f2dede; font-weight: bold; }
+tr.ambiguous td:nth-child(6) { background: #e8e8f8; }
+img { max-width: 100%; }
+</style></head><body>
+HEAD
+    cat "$tmp/body.html"
+    printf '</body></html>\n'
+} > "$out/report.html.tmp"
+mv "$out/report.html.tmp" "$out/report.html"
+echo "report: $out/report.html"
