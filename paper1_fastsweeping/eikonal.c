@@ -192,6 +192,15 @@ static int parse_doubles(const char *s, double *out, int n)
     return 0;
 }
 
+/* The options that take a value (all others but --help, --quick are unknown). */
+static int takes_value(const char *a)
+{
+    static const char *const opts[] = {"--speed", "--out", "--speed-const", "--N", "--delta", "--eps", "--max-iter", "--pgm-range", "--domain", "--source", "--strategy"};
+    for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
+        if (!strcmp(a, opts[k])) return 1;
+    return 0;
+}
+
 static void usage(FILE *f)
 {
     fprintf(f, "usage: %s (--speed FILE | --speed-const F) --source X,Y[,VALUE] ... [options]\n"
@@ -222,13 +231,14 @@ int main(int argc, char **argv)
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--help")) { usage(stdout); return 0; }
         if (strncmp(a, "--", 2)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", a);
+        if (!takes_value(a)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
         if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
         i++;
         int rc = HJ_OK;
         if (!strcmp(a, "--speed")) speed_file = v;
         else if (!strcmp(a, "--out")) out_path = v;
         else if (!strcmp(a, "--speed-const")) rc = hj_parse_double(v, "--speed-const", 1e-300, 1e300, &cst, &err);
-        else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 20000, &N, &err);
+        else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 10000, &N, &err);
         else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 0, 1, &opt.delta, &err);
         else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &opt.eps, &err);
         else if (!strcmp(a, "--max-iter")) {
@@ -287,7 +297,7 @@ int main(int argc, char **argv)
     if (fabs(ny - round(ny)) > 1e-6 * ny || round(ny) < 8)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "the domain height %g is not a whole number (>= 8) of cells of size h = %g", dom[3] - dom[2], g.h);
     g.ny = (int)round(ny);
-    if (g.ny > 20000) hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %d rows: at most 20000", g.ny);
+    if (g.ny > 10000) hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %d rows: at most 10000", g.ny);
     double have = hj_physical_memory();
     if (have > 0 && hj_fsm_memory(&g) > 0.8 * have)
         hj_cli_fail(prog, HJ_EXIT_RUN, "a %dx%d grid needs %.3g GB, more than this machine has", g.nx, g.ny, hj_fsm_memory(&g) / 1e9);

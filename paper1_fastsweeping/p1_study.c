@@ -220,6 +220,15 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
     return hj_out_commit(&tab, err);
 }
 
+/* The options that take a value (all others but --help, --quick are unknown). */
+static int takes_value(const char *a)
+{
+    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy"};
+    for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
+        if (!strcmp(a, opts[k])) return 1;
+    return 0;
+}
+
 static void usage(FILE *f, const p1_study *st, const char *extra)
 {
     fprintf(f,
@@ -267,15 +276,16 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
         if (!strcmp(a, "--help")) { usage(stdout, st, usage_extra); return 0; }
         if (!strcmp(a, "--quick")) { s.nsizes = st->nquick; continue; }
         if (strncmp(a, "--", 2) != 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", a);
+        if (!takes_value(a)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
         if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
         i++;
-        if (!strcmp(a, "--sizes")) rc = hj_parse_long_list(v, "--sizes", 8, 20000, s.sizes, MAX_SIZES, &s.nsizes, &err);
+        if (!strcmp(a, "--sizes")) rc = hj_parse_long_list(v, "--sizes", 8, 10000, s.sizes, MAX_SIZES, &s.nsizes, &err);
         else if (!strcmp(a, "--out-dir")) s.out_dir = v;
         else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 0, 1, &s.delta, &err);
         else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &s.eps, &err), s.eps_h2 = 0;
         else if (!strcmp(a, "--eps-h2")) rc = hj_parse_double(v, "--eps-h2", 1e-300, 1e6, &s.eps, &err), s.eps_h2 = 1;
         else if (!strcmp(a, "--band")) rc = hj_parse_double(v, "--band", 1, 10, &s.band, &err);
-        else if (!strcmp(a, "--grid-N")) rc = hj_parse_long(v, "--grid-N", 8, 20000, &s.grid_N, &err);
+        else if (!strcmp(a, "--grid-N")) rc = hj_parse_long(v, "--grid-N", 8, 10000, &s.grid_N, &err);
         else if (!strcmp(a, "--max-iter")) {
             long m;
             rc = hj_parse_long(v, "--max-iter", 1, 10000000, &m, &err);

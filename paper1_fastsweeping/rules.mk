@@ -41,9 +41,22 @@ $(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	@mkdir -p $(@D)
 	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='$*'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
+# Studies shown in the report (Markdown written by studies.sh).
+P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/treatments.md
+$(P1_OUT)/eps-scan.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+	@mkdir -p $(@D)
+	$(P1)/studies.sh eps-scan $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
+$(P1_OUT)/treatments.md: $(BUILD)/bin/$(P1)/example1 $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+	@mkdir -p $(@D)
+	$(P1)/studies.sh treatments $(<D) > $@.tmp && mv $@.tmp $@
+
 CHECK_PAPERS += paper1=$(P1)
 CHECK_INPUTS += $(P1_RESULTS)
-REPORT_INPUTS += $(P1_RESULTS) $(P1_FIGS) $(P1_EXAMPLES:%=$(P1)/%.c)
+REPORT_INPUTS += $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES) $(P1_EXAMPLES:%=$(P1)/%.c) $(P1)/report.tsv $(P1)/overview.md
 
-paper1: $(P1_RESULTS) $(P1_FIGS)
+paper1: $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES)
 	$(MAKE) --no-print-directory report
+
+# The command-line tests run the built programs of the same build.
+$(BUILD)/obj/$(P1)/tests/test_cli.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
+$(BUILD)/test/$(P1)/tests/test_cli: | $(P1_BINS)

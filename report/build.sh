@@ -16,6 +16,10 @@ mkdir -p "$out/fig"
 
 # The first /* ... */ comment of a C file, headings pushed two levels down.
 literate() {
+    if [ ! -f "$1" ]; then
+        printf '\n**Missing source: `%s`**\n\n' "$1"
+        return
+    fi
     awk 'BEGIN { on = 0 }
          !on && /^\/\*/ { on = 1; sub(/^\/\*+ ?/, ""); if ($0 == "") next }
          on && /\*\// { sub(/ *\*\/.*$/, ""); if ($0 != "") print; exit }

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# studies.sh -- two small studies for the report, each printed as Markdown.
+#
+#   studies.sh eps-scan BINDIR PUBLISHED   Example 2 (b), Lax-Wendroff: L1 error
+#       for several WENO eps = C h^2.  Near the centre (f = 0) the discrete
+#       problem has several fixed points; this shows how the one reached
+#       depends on eps (the reason given for Table 3.3 (b)).
+#   studies.sh treatments BINDIR           Category III treatments compared:
+#       first order values (refs. [7,16]) against the paper's Richardson and
+#       Lax-Wendroff values, Examples 1 and 2 (b), L1 errors and fitted order.
+set -euo pipefail
+what=$1 bin=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+l1_row() { # table file, case -> "<td>e1</td><td>e2</td>..." of the L1 column
+    awk -F'\t' -v c="$2" '!/^#/ && $1 == c { printf "<td>%s</td>", $4 }' "$1"
+}
+
+case $what in
+eps-scan)
+    pub=$3
+    printf '\n#### Sensitivity of Example 2 (b) to the WENO epsilon\n\n'
+    printf 'L1 error of Example 2 (b) with the Lax-Wendroff treatment for eps = C h^2 (computed by `studies.sh eps-scan`; the default is C = 1e-6).\n\n'
+    printf '<table>\n<tr><th>C</th><th>N = 80</th><th>N = 160</th><th>N = 320</th><th>N = 640</th></tr>\n'
+    for C in 1e-4 1e-5 1e-6 1e-7; do
+        "$bin/example2" --strategy lax-wendroff --eps-h2 "$C" --out-dir "$tmp/$C" > /dev/null
+        printf '<tr><td>%s</td>%s</tr>\n' "$C" "$(l1_row "$tmp/$C/table3.3.tsv" b)"
+    done
+    printf '<tr><td>paper</td>%s</tr>\n</table>\n\n' "$(awk -F'\t' '!/^#/ && $1 == "b" { printf "<td>%s</td>", $3 }' "$pub")"
+    ;;
+treatments)
+    printf '\n#### Category III treatments compared\n\n'
+    printf 'L1 errors with the Category III nodes fixed by first order sweeps (the practice of refs. [7,16]) or by the paper'"'"'s treatments (computed by `studies.sh treatments`).\n\n'
+    printf '<table>\n<tr><th>example</th><th>treatment</th><th>N = 40</th><th>N = 80</th><th>N = 160</th><th>N = 320</th><th>N = 640</th><th>fitted order</th></tr>\n'
+    for s in first-order richardson; do
+        "$bin/example1" --strategy $s --out-dir "$tmp/e1$s" > /dev/null
+        printf '<tr><td>1</td><td>%s</td>%s<td>%s</td></tr>\n' $s "$(l1_row "$tmp/e1$s/table3.1.tsv" -)" \
+            "$(awk -F'\t' '$2 == "L1" { printf "%.2f", $3 }' "$tmp/e1$s/table3.1.fit.tsv")"
+    done
+    for s in first-order richardson lax-wendroff; do
+        "$bin/example2" --strategy $s --out-dir "$tmp/e2$s" > /dev/null
+        t=table3.2; [ $s = lax-wendroff ] && t=table3.3
+        printf '<tr><td>2 (b)</td><td>%s</td><td>-</td>%s<td>%s</td></tr>\n' $s "$(l1_row "$tmp/e2$s/$t.tsv" b)" \
+            "$(awk -F'\t' '$1 == "b" && $2 == "L1" { printf "%.2f", $3 }' "$tmp/e2$s/$t.fit.tsv")"
+    done
+    printf '</table>\n\n'
+    ;;
+*) echo "usage: studies.sh eps-scan BINDIR PUBLISHED | treatments BINDIR" >&2; exit 2 ;;
+esac

@@ -1,0 +1,204 @@
+/* Command-line behaviour of the paper 1 programs: bad input gives one clear
+ * message and a non-zero exit, and never a half-written result file. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#ifndef HJ_BIN_DIR
+#error "HJ_BIN_DIR must name the directory of the built programs"
+#endif
+#define P1 HJ_BIN_DIR "/paper1_fastsweeping/"
+
+static char dir[64];
+static char err_text[4096];
+
+/* Run a shell command with stderr captured; returns the exit status. */
+static int run(const char *cmd)
+{
+    char full[2048], path[128];
+    snprintf(path, sizeof path, "%s/stderr.txt", dir);
+    snprintf(full, sizeof full, "%s > %s/stdout.txt 2> %s", cmd, dir, path);
+    int st = system(full);
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(err_text, 1, sizeof err_text - 1, f) : 0;
+    err_text[n] = '\0';
+    if (f) fclose(f);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static int lines(const char *s)
+{
+    int n = 0;
+    for (; *s; s++) n += *s == '\n';
+    return n;
+}
+
+/* exit status, one line on stderr, containing what */
+static void expect_failure(const char *cmd, int status, const char *what)
+{
+    int st = run(cmd);
+    if (st != status || lines(err_text) != 1 || !strstr(err_text, what))
+        fail_msg("'%s': status %d (expected %d), stderr:\n%s(expected one line containing '%s')", cmd, st, status,
+                 err_text, what);
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    strcpy(dir, "/tmp/hj_test_cli.XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void bad_options(void **state)
+{
+    (void)state;
+    expect_failure(P1 "example1 --bogus", 2, "unknown option '--bogus'");
+    expect_failure(P1 "example1 --sizes 0", 2, "between 8 and 10000");
+    expect_failure(P1 "example1 --sizes -40", 2, "between 8 and 10000");
+    expect_failure(P1 "example1 --sizes 40,nan", 2, "not an integer");
+    expect_failure(P1 "example1 --sizes 1000000", 2, "between 8 and 10000");
+    expect_failure(P1 "example1 --delta nan", 2, "must be finite");
+    expect_failure(P1 "example3 --eps inf", 2, "must be finite");
+    expect_failure(P1 "example2 --strategy magic", 2, "--strategy must be");
+    expect_failure(P1 "example4 --sizes", 2, "needs a value");
+    expect_failure(P1 "example1 stray", 2, "unexpected argument");
+}
+
+static void help_works(void **state)
+{
+    (void)state;
+    assert_int_equal(run(P1 "example1 --help"), 0);
+    assert_int_equal(run(P1 "eikonal --help"), 0);
+}
+
+static void unwritable_output_leaves_nothing(void **state)
+{
+    (void)state;
+    char cmd[512], path[256];
+    snprintf(path, sizeof path, "%s/ro", dir);
+    mkdir(path, 0555);
+    snprintf(cmd, sizeof cmd, P1 "example3 --sizes 16 --grid-N 16 --out-dir %s", path);
+    if (geteuid() != 0) { /* root writes anywhere: the check only means something otherwise */
+        expect_failure(cmd, 1, "cannot write");
+    }
+    snprintf(cmd, sizeof cmd, P1 "example3 --sizes 16 --out-dir /proc/hj-no-such-dir");
+    expect_failure(cmd, 1, "cannot create directory");
+}
+
+static void results_complete(void **state)
+{
+    (void)state;
+    char cmd[512], path[256];
+    snprintf(cmd, sizeof cmd, P1 "example3 --sizes 16,32 --grid-N 16 --out-dir %s/ok", dir);
+    assert_int_equal(run(cmd), 0);
+    snprintf(path, sizeof path, "%s/ok/table3.4.tsv", dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[1024];
+    int n = 0;
+    while (fgets(line, sizeof line, f)) n++;
+    fclose(f);
+    assert_int_equal(n, 4); /* comment, header, two rows */
+    /* no temporary files left behind */
+    snprintf(cmd, sizeof cmd, "ls %s/ok | grep -c tmp", dir);
+    assert_int_not_equal(run(cmd), 0);
+}
+
+static void eikonal_bad_files(void **state)
+{
+    (void)state;
+    char cmd[512], path[256];
+    expect_failure(P1 "eikonal --speed /nonexistent.txt --source 0,0", 1, "cannot read /nonexistent.txt");
+    snprintf(path, sizeof path, "%s/ragged.txt", dir);
+    FILE *f = fopen(path, "w");
+    fprintf(f, "1 1 1\n1 1\n1 1 1\n");
+    fclose(f);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
+    expect_failure(cmd, 1, "2 values, previous rows have 3");
+    f = fopen(path, "w");
+    fprintf(f, "1 1 1\n1 nan 1\n1 1 1\n");
+    fclose(f);
+    expect_failure(cmd, 1, "must be finite");
+    f = fopen(path, "w");
+    fprintf(f, "1 1 x\n1 1 1\n");
+    fclose(f);
+    expect_failure(cmd, 1, "not a number");
+    snprintf(path, sizeof path, "%s/bad.pgm", dir);
+    f = fopen(path, "w");
+    fprintf(f, "P2\n3 3\n255\n1 2 3\n4 5\n");
+    fclose(f);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
+    expect_failure(cmd, 1, "truncated or malformed");
+    expect_failure(P1 "eikonal --speed-const 1 --source 0.013,0 --N 10", 2, "not a grid node");
+    expect_failure(P1 "eikonal --speed-const 1 --N 10", 2, "at least one --source");
+    expect_failure(P1 "eikonal --speed-const 0 --source 0,0", 2, "--speed-const must be between");
+}
+
+/* Max |phi - r| for r > 0.3 of an eikonal run with f = 1 and a source at
+ * the origin on N intervals. */
+static double distance_error(int N)
+{
+    char cmd[512], path[256];
+    snprintf(path, sizeof path, "%s/d.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --domain -1,1,-1,1 --N %d --source 0,0 --out %s", N, path);
+    assert_int_equal(run(cmd), 0);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[256];
+    double x, y, p, emax = 0;
+    int n = 0;
+    while (fgets(line, sizeof line, f))
+        if (sscanf(line, "%lf %lf %lf", &x, &y, &p) == 3) {
+            n++;
+            if (hypot(x, y) > 0.3 && fabs(p - hypot(x, y)) > emax) emax = fabs(p - hypot(x, y));
+        }
+    fclose(f);
+    assert_int_equal(n, (N + 1) * (N + 1));
+    return emax;
+}
+
+/* Uniform speed from a point: phi is the distance.  With f != 0 at the
+ * source phi is a cone, singular there, and the error is first order
+ * (0.0055 at N = 40, 0.0027 at N = 80 when written); the test asks for
+ * first order convergence. */
+static void eikonal_distance(void **state)
+{
+    (void)state;
+    const double e40 = distance_error(40), e80 = distance_error(80);
+    assert_true(e40 < 0.01);
+    assert_true(e80 < 0.6 * e40);
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+/* Too little memory: one message, exit 1 (the address space is limited
+ * with ulimit -v; AddressSanitizer cannot run under such a limit). */
+static void out_of_memory(void **state)
+{
+    (void)state;
+    expect_failure("ulimit -v 150000; exec " P1 "example1 --sizes 3000 --out-dir /tmp", 1, "out of memory");
+}
+#endif
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(bad_options),      cmocka_unit_test(help_works),        cmocka_unit_test(unwritable_output_leaves_nothing),
+        cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance),
+#if !defined(__SANITIZE_ADDRESS__)
+        cmocka_unit_test(out_of_memory),
+#endif
+    };
+    return cmocka_run_group_tests_name("paper1 command line", tests, setup, teardown);
+}
