@@ -483,6 +483,8 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
             w.fh[widx(&w, i, j)] = f * g->h;
         }
     if (rc == HJ_OK) rc = classify(&w, g, in, nin, opt->strategy, opt->band, err);
+    if (rc == HJ_OK)
+        for (long k = 0; k < (long)n; k++) stats->ncat[w.cat[k]]++;
 
     /* Category III values, then the first order initial guess. */
     if (rc == HJ_OK && opt->strategy == HJ_BC_RICHARDSON)
@@ -496,8 +498,6 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
                                                    err);
             }
     if (rc == HJ_OK) rc = first_order_guess(&w, opt->strategy != HJ_BC_FIRST_ORDER, opt->max_iter, &stats->fo_iterations, err);
-
-    for (long k = 0; k < (long)n; k++) stats->ncat[w.cat[k]]++;
 
     /* WENO Gauss-Seidel iterations on Category IV. */
     if (rc == HJ_OK && !opt->first_order_only) {

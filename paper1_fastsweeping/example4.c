@@ -22,18 +22,6 @@ delta and norms as in Example 1.  `--quick` runs N = 80, 160.
 
 #include "p1_study.h"
 
-static double speed(double x, double y, void *ctx)
-{
-    (void)x, (void)y, (void)ctx;
-    return 1.0;
-}
-
-static void speed_grad(double x, double y, double g[2], void *ctx)
-{
-    (void)x, (void)y, (void)ctx;
-    g[0] = g[1] = 0;
-}
-
 static p1_circle circles[2] = {{-1, 0, 0.5}, {0, 0, 0.5}};
 
 static double exact(double x, double y)
@@ -54,7 +42,7 @@ int main(int argc, char **argv)
     const p1_case cases[] = {{
         .name = "-",
         .domain = {-3, 3, -3, 3},
-        .speed = {speed, speed_grad, NULL},
+        .speed = {p1_unit_speed, p1_unit_speed_grad, NULL},
         .exact = exact,
         .inflow = gamma,
         .ninflow = 2,

@@ -324,6 +324,18 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
 
 /* ---- geometry helpers ---------------------------------------------------- */
 
+double p1_unit_speed(double x, double y, void *ctx)
+{
+    (void)x, (void)y, (void)ctx;
+    return 1.0;
+}
+
+void p1_unit_speed_grad(double x, double y, double g[2], void *ctx)
+{
+    (void)x, (void)y, (void)ctx;
+    g[0] = g[1] = 0;
+}
+
 double p1_circle_level(double x, double y, void *vc)
 {
     const p1_circle *c = vc;

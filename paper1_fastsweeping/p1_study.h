@@ -50,6 +50,10 @@ typedef struct {
 /* Run the study from the command line; returns the process exit status. */
 int p1_main(int argc, char **argv, const p1_study *study, const char *usage_extra);
 
+/* f = 1 and its (zero) gradient: Examples 3 and 4. */
+double p1_unit_speed(double x, double y, void *ctx);
+void p1_unit_speed_grad(double x, double y, double grad[2], void *ctx);
+
 /* Distance helpers for examples with circles of radius r centred at (cx, cy). */
 typedef struct {
     double cx, cy, r;

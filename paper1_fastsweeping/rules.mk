@@ -3,7 +3,7 @@
 
 P1 := paper1_fastsweeping
 P1_EXAMPLES := example1 example2 example3 example4
-P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal
+P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal $(BUILD)/bin/$(P1)/bench_fsm
 P1_LIBOBJ := $(BUILD)/obj/$(P1)/p1_study.o
 $(P1_BINS): $(P1_LIBOBJ)
 $(BUILD)/obj/$(P1)/%.o: CPPFLAGS += -I$(P1)
@@ -60,3 +60,9 @@ paper1: $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES)
 # The command-line tests run the built programs of the same build.
 $(BUILD)/obj/$(P1)/tests/test_cli.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
 $(BUILD)/test/$(P1)/tests/test_cli: | $(P1_BINS)
+
+# Benchmark (never part of the tests): timings as ratios, see bench_fsm.c.
+.PHONY: bench-paper1
+BENCHES += bench-paper1
+bench-paper1: $(BUILD)/bin/$(P1)/bench_fsm
+	$< --N 640 --out-dir results/paper1

@@ -21,4 +21,27 @@
                      (double)(abs_tol), (double)(rel_tol));                                               \
     } while (0)
 
+/* A fresh temporary directory per test group (cmocka group setup and
+ * teardown): hj_test_dir() names it. */
+#include <stdlib.h>
+#include <string.h>
+static inline char *hj_test_dir(void)
+{
+    static char dir[64];
+    return dir;
+}
+static inline int hj_test_mkdir(void **state)
+{
+    (void)state;
+    strcpy(hj_test_dir(), "/tmp/hj_test.XXXXXX");
+    return mkdtemp(hj_test_dir()) ? 0 : -1;
+}
+static inline int hj_test_rmdir(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", hj_test_dir());
+    return system(cmd) == 0 ? 0 : -1;
+}
+
 #endif

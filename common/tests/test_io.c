@@ -8,22 +8,7 @@
 #include "hj_cli.h"
 #include "hj_io.h"
 
-static char dir[64];
-
-static int setup(void **state)
-{
-    (void)state;
-    strcpy(dir, "/tmp/hj_test_io.XXXXXX");
-    return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    return system(cmd) == 0 ? 0 : -1;
-}
+#define dir hj_test_dir()
 
 static void atomic_write_and_read_back(void **state)
 {
@@ -118,5 +103,5 @@ int main(void)
         cmocka_unit_test(atomic_write_and_read_back), cmocka_unit_test(abort_leaves_nothing),
         cmocka_unit_test(malformed_tables), cmocka_unit_test(unwritable_output), cmocka_unit_test(cli_parsing),
     };
-    return cmocka_run_group_tests_name("hj_io", tests, setup, teardown);
+    return cmocka_run_group_tests_name("hj_io", tests, hj_test_mkdir, hj_test_rmdir);
 }

@@ -13,7 +13,7 @@
 #endif
 #define P1 HJ_BIN_DIR "/paper1_fastsweeping/"
 
-static char dir[64];
+#define dir hj_test_dir()
 static char err_text[4096];
 
 /* Run a shell command with stderr captured; returns the exit status. */
@@ -44,21 +44,6 @@ static void expect_failure(const char *cmd, int status, const char *what)
     if (st != status || lines(err_text) != 1 || !strstr(err_text, what))
         fail_msg("'%s': status %d (expected %d), stderr:\n%s(expected one line containing '%s')", cmd, st, status,
                  err_text, what);
-}
-
-static int setup(void **state)
-{
-    (void)state;
-    strcpy(dir, "/tmp/hj_test_cli.XXXXXX");
-    return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    return system(cmd) == 0 ? 0 : -1;
 }
 
 static void bad_options(void **state)
@@ -200,5 +185,5 @@ int main(void)
         cmocka_unit_test(out_of_memory),
 #endif
     };
-    return cmocka_run_group_tests_name("paper1 command line", tests, setup, teardown);
+    return cmocka_run_group_tests_name("paper1 command line", tests, hj_test_mkdir, hj_test_rmdir);
 }
