@@ -57,6 +57,10 @@ CHECK_PAPERS :=
 REPORT_INPUTS :=
 BENCHES :=
 
+# The gate's own test runs the built hjcheck.
+$(BUILD)/obj/common/tests/test_hjcheck.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
+$(BUILD)/test/common/tests/test_hjcheck: | $(HJCHECK)
+
 include paper1_fastsweeping/rules.mk
 -include paper2_toolbox/rules.mk
 -include paper3_ultrabee/rules.mk

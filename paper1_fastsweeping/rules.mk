@@ -36,10 +36,10 @@ $(P1_OUT)/table3.5.tsv: $(BUILD)/bin/$(P1)/example4
 P1_FIGS := $(P1_TABLES:%=$(P1_OUT)/fig/%.conv.png) $(P1_TABLES:%=$(P1_OUT)/fig/%.contour.png)
 $(P1_OUT)/fig/%.conv.png: $(P1_OUT)/%.tsv common/plot/convergence.gp
 	@mkdir -p $(@D)
-	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='$*'" common/plot/convergence.gp && mv $(@D)/.tmp-$(@F) $@
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='Table $(subst table,,$*): errors against N'" common/plot/convergence.gp && mv $(@D)/.tmp-$(@F) $@
 $(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	@mkdir -p $(@D)
-	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='$*'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
+	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='Table $(subst table,,$*): contours of the computed solution (N = 80)'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Studies shown in the report (Markdown written by studies.sh).
 P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/treatments.md

@@ -1,0 +1,131 @@
+/* The accuracy-regression gate: hjcheck on small synthetic tables.  It must
+ * fail when a cell becomes worse than its accepted verdict, skip rows a quick
+ * run did not compute, never compare ambiguous cells, and reject malformed
+ * published tables. */
+#include "hj_test.h"
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#ifndef HJ_BIN_DIR
+#error "HJ_BIN_DIR must name the directory of the built programs"
+#endif
+#define HJCHECK HJ_BIN_DIR "/common/tools/hjcheck"
+#define dir hj_test_dir()
+
+static char out_text[8192];
+
+static void write_file(const char *rel, const char *text)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static int run_check(const char *flags)
+{
+    char cmd[1024], path[256];
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    snprintf(cmd, sizeof cmd, "%s --results %s/res %s p=%s/paper > %s 2>&1", HJCHECK, dir, flags, dir, path);
+    int st = system(cmd);
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(out_text, 1, sizeof out_text - 1, f) : 0;
+    out_text[n] = '\0';
+    if (f) fclose(f);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static const char *published =
+    "# source: synthetic\n# key: N\n# kind: L1=error L1_order=order iter=count\n"
+    "N\tL1\tL1_order\titer\n"
+    "40\t1.00E-03\t-\t10\n"
+    "80\t1.25E-04\t3.00\t?\n";
+
+static int make_tree(void **state)
+{
+    if (hj_test_mkdir(state)) return -1;
+    char path[256];
+    snprintf(path, sizeof path, "%s/paper", dir);
+    mkdir(path, 0777);
+    snprintf(path, sizeof path, "%s/paper/published", dir);
+    mkdir(path, 0777);
+    snprintf(path, sizeof path, "%s/res", dir);
+    mkdir(path, 0777);
+    snprintf(path, sizeof path, "%s/res/p", dir);
+    mkdir(path, 0777);
+    return 0;
+}
+
+static void all_match(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\textra\n40\t1.02e-3\t-\t10\t7\n80\t1.26e-4\t2.97\t12\t7\n");
+    assert_int_equal(run_check(""), 0);
+    assert_non_null(strstr(out_text, "p t: 4 match, 0 close, 0 differ, 1 ambiguous"));
+    assert_non_null(strstr(out_text, "check: 4 passed, 0 failed"));
+}
+
+static void regression_fails(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    /* L1 at N=80 off by a factor 3: differs, and not accepted */
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t3.75e-4\t1.42\t12\n");
+    assert_int_equal(run_check(""), 1);
+    assert_non_null(strstr(out_text, "check: 2 passed, 2 failed"));
+    /* --no-fail reports the same but exits 0 (the report uses it) */
+    assert_int_equal(run_check("--no-fail"), 0);
+    /* accepting the cells with a reason makes the gate pass */
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\n"
+                                     "t\tN=80\tL1\tdiffers\tsynthetic\n"
+                                     "t\tN=80\tL1_order\tdiffers\tsynthetic\n");
+    assert_int_equal(run_check(""), 0);
+    /* an accepted 'close' is exceeded by a 'differs' */
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tL1\tclose\tsynthetic\n"
+                                     "t\tN=80\tL1_order\tdiffers\tsynthetic\n");
+    assert_int_equal(run_check(""), 1);
+    remove(strcat(strcpy(out_text, dir), "/paper/accepted.tsv"));
+}
+
+static void missing_and_quick(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n");
+    /* full mode: the N=80 row is missing and fails */
+    assert_int_equal(run_check(""), 1);
+    assert_non_null(strstr(out_text, "2 missing"));
+    /* quick mode: the uncomputed row is skipped */
+    assert_int_equal(run_check("--quick"), 0);
+    assert_non_null(strstr(out_text, "skipped (quick)"));
+    /* a non-finite computed value is never a match */
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\tnan\t-\t10\n80\t1.25e-4\t3.0\t10\n");
+    assert_int_equal(run_check(""), 1);
+}
+
+static void malformed_published(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", "# source: x\nN\tL1\n40\t1e-3\n");
+    assert_int_equal(run_check(""), 2);
+    assert_non_null(strstr(out_text, "needs '# key:' and '# kind:'"));
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=speed\nN\tL1\n40\t1e-3\n");
+    assert_int_equal(run_check(""), 2);
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\nN\tL1\n40\t1e-3x\n");
+    assert_int_equal(run_check(""), 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(all_match),
+        cmocka_unit_test(regression_fails),
+        cmocka_unit_test(missing_and_quick),
+        cmocka_unit_test(malformed_published),
+    };
+    return cmocka_run_group_tests_name("hjcheck", tests, make_tree, hj_test_rmdir);
+}
