@@ -50,6 +50,43 @@ static void lax_wendroff_circle_is_exact(void **state)
     }
 }
 
+/* Data that varies along a curved boundary: phi = x + 0.3 (f = 1) on the
+ * circle of radius 0.5.  The Taylor value is exact (phi_ss = 0) only with
+ * the right sign of the curvature term kappa g_t^2 on each side; with the
+ * sign flipped it is off by s^2 sin^2(theta) / (r |cos theta|). */
+static double kappa_sign = 1.0;
+static int linear_on_circle_local(double x, double y, hj_curve_local *L, void *c)
+{
+    int rc = p1_circle_local(x, y, L, c);
+    const double r = ((p1_circle *)c)->r, th = atan2(L->foot[1], L->foot[0]);
+    const double side = L->kappa > 0 ? 1.0 : -1.0; /* tau = (-n_y, n_x): t runs with theta outside */
+    L->g = r * cos(th) + 0.3;
+    L->g_t = -side * sin(th);
+    L->g_tt = -cos(th) / r;
+    L->kappa *= kappa_sign;
+    return rc;
+}
+
+static void lax_wendroff_curvature_sign(void **state)
+{
+    (void)state;
+    p1_circle c = {0, 0, 0.5};
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = linear_on_circle_local, .ctx = &c};
+    hj_speed sp = {one, zero_grad, NULL};
+    /* inflow sides: outside where cos(theta) > 0, inside where cos(theta) < 0 */
+    const double pts[][2] = {{0.55, 0.1}, {0.45, 0.3}, {-0.4, 0.1}, {-0.3, -0.25}};
+    for (int k = 0; k < 4; k++) {
+        double v;
+        kappa_sign = 1.0;
+        assert_int_equal(hj_fsm_lax_wendroff_value(&sp, &piece, pts[k][0], pts[k][1], 0.01, &v, NULL), HJ_OK);
+        assert_close(v, pts[k][0] + 0.3, 1e-14, 0);
+        kappa_sign = -1.0;
+        assert_int_equal(hj_fsm_lax_wendroff_value(&sp, &piece, pts[k][0], pts[k][1], 0.01, &v, NULL), HJ_OK);
+        assert_true(fabs(v - (pts[k][0] + 0.3)) > 1e-5);
+    }
+    kappa_sign = 1.0;
+}
+
 /* A straight inflow edge x = 0 with non-trivial data g(y) = sin(y) and
  * f = |grad phi| of phi = sin y + x/2 + x^2 (1 + y)/4 + 0.3 x^3: the Taylor
  * value misses the cubic term, so its error is O(s^3). */
@@ -219,7 +256,8 @@ static void bad_input(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(lax_wendroff_circle_is_exact), cmocka_unit_test(lax_wendroff_third_order),
+        cmocka_unit_test(lax_wendroff_circle_is_exact), cmocka_unit_test(lax_wendroff_curvature_sign),
+        cmocka_unit_test(lax_wendroff_third_order),
         cmocka_unit_test(polynomial_case_to_roundoff), cmocka_unit_test(point_source_orders),
         cmocka_unit_test(deterministic), cmocka_unit_test(bad_input),
     };
