@@ -19,7 +19,7 @@ hj_fsm_options hj_fsm_default_options(void)
     o.eps = 1e-6;
     o.delta = 1e-11;
     o.band = 3;
-    o.stop_norm = HJ_STOP_L1_MEAN;
+    o.stop_norm = HJ_STOP_L1_INTEGRAL;
     o.max_iter = 10000;
     return o;
 }
@@ -517,7 +517,9 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
                     sum += d;
                     if (d > mx) mx = d;
                 }
-            const double change = opt->stop_norm == HJ_STOP_LINF ? mx : sum / nodes;
+            const double change = opt->stop_norm == HJ_STOP_LINF          ? mx
+                                  : opt->stop_norm == HJ_STOP_L1_INTEGRAL ? sum * g->h * g->h
+                                                                          : sum / nodes;
             stats->iterations = it;
             stats->change = change;
             if (opt->progress) opt->progress(it, change, opt->progress_ctx);

@@ -79,7 +79,9 @@ typedef struct {
 } hj_inflow;
 
 typedef enum { HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER } hj_bc_strategy;
-typedef enum { HJ_STOP_L1_MEAN, HJ_STOP_LINF } hj_stop_norm;
+/* Norms of (2.8): mean |change| over the nodes, h^2 sum |change| (the L1
+ * integral, as the paper's L1 errors), max |change|. */
+typedef enum { HJ_STOP_L1_MEAN, HJ_STOP_L1_INTEGRAL, HJ_STOP_LINF } hj_stop_norm;
 
 typedef struct {
     hj_bc_strategy strategy;
@@ -102,8 +104,9 @@ typedef struct {
     long ncat[4];      /* number of nodes in Categories I, II, III, IV */
 } hj_fsm_stats;
 
-/* Default options: Lax-Wendroff, eps = 1e-6, delta = 1e-11 in L1 mean,
- * band = 3, max_iter = 10000. */
+/* Default options: Lax-Wendroff, eps = 1e-6, delta = 1e-11 in the L1
+ * integral norm, band = 3, max_iter = 10000 (the reading of paper 1's
+ * illegible delta that reproduces its iteration counts). */
 hj_fsm_options hj_fsm_default_options(void);
 
 /* Bytes of work memory hj_fsm_solve() needs for grid g. */
