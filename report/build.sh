@@ -102,7 +102,18 @@ md=$tmp/report.md
     done
 } > "$md"
 
-cmark --unsafe "$md" > "$tmp/body.html"
+# Anchors and a table of contents for the level-2 and level-3 headings
+# (outside code blocks); cmark itself adds no ids.
+awk 'BEGIN { n = 0 }
+     /^```/ { code = !code; print; next }
+     !code && /^###? / { lvl = ($0 ~ /^### /) ? 3 : 2; t = $0; sub(/^###? /, "", t); n++
+                        gsub(/&/, "\\&amp;", t); gsub(/</, "\\&lt;", t); gsub(/`/, "", t)
+                        printf "\n<h%d id=\"s%d\">%s</h%d>\n\n", lvl, n, t, lvl
+                        toc = toc sprintf("%s<li><a href=\"#s%d\">%s</a></li>\n", (lvl == 3 ? "<li style=\"list-style:none\"><ul>" : ""), n, t) (lvl == 3 ? "</ul></li>\n" : "")
+                        next }
+     { print }
+     END { printf "%s", toc > TOCFILE }' TOCFILE="$tmp/toc.html" "$md" > "$tmp/anchored.md"
+cmark --unsafe "$tmp/anchored.md" > "$tmp/body.html"
 {
     cat <<'HEAD'
 <!DOCTYPE html>
@@ -125,7 +136,12 @@ tr.ambiguous td:nth-child(6) { background: #e8e8f8; }
 img { max-width: 100%; }
 </style></head><body>
 HEAD
-    cat "$tmp/body.html"
+    # title (the first h1), then the contents, then the rest
+    sed -n '1,/<\/h1>/p' "$tmp/body.html"
+    printf '<nav><h2>Contents</h2>\n<ul>\n'
+    cat "$tmp/toc.html"
+    printf '</ul></nav>\n'
+    sed '1,/<\/h1>/d' "$tmp/body.html"
     printf '</body></html>\n'
 } > "$out/report.html.tmp"
 mv "$out/report.html.tmp" "$out/report.html"
