@@ -137,11 +137,11 @@ img { max-width: 100%; }
 </style></head><body>
 HEAD
     # title (the first h1), then the contents, then the rest
-    sed -n '1,/<\/h1>/p' "$tmp/body.html"
+    sed -n '0,/<\/h1>/p' "$tmp/body.html"
     printf '<nav><h2>Contents</h2>\n<ul>\n'
     cat "$tmp/toc.html"
     printf '</ul></nav>\n'
-    sed '1,/<\/h1>/d' "$tmp/body.html"
+    sed '0,/<\/h1>/d' "$tmp/body.html"
     printf '</body></html>\n'
 } > "$out/report.html.tmp"
 mv "$out/report.html.tmp" "$out/report.html"
