@@ -55,7 +55,7 @@ CHECK_INPUTS += $(P1_RESULTS)
 REPORT_INPUTS += $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES) $(P1_EXAMPLES:%=$(P1)/%.c) $(P1)/report.tsv $(P1)/overview.md
 
 paper1: $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES)
-	$(MAKE) --no-print-directory report
+	$(MAKE) --no-print-directory report-now
 
 # The command-line tests run the built programs of the same build.
 $(BUILD)/obj/$(P1)/tests/test_cli.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
