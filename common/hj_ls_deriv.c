@@ -1,0 +1,410 @@
+/* hj_ls_deriv.c -- upwind (ENO/WENO) and centered derivatives.
+ *
+ * The row kernels work on n consecutive nodes of a row along dimension 0
+ * and differentiate along an arbitrary stride s, so that every inner loop
+ * runs over unit-stride arrays (and vectorises) whatever the direction of
+ * the derivative.  First the divided differences D1_{i+k+1/2}, k = -3..2,
+ * are stored as six rows; the schemes then read them node by node.
+ */
+#include "hj_ls_deriv.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const names[HJ_LS_NSCHEMES] = {
+    "upwindFirstFirst", "upwindFirstENO2", "upwindFirstENO3a", "upwindFirstENO3b",
+    "upwindFirstWENO5a", "upwindFirstWENO5b", "upwindFirstWENO3",
+};
+static const int orders[HJ_LS_NSCHEMES] = {1, 2, 3, 3, 5, 5, 3};
+
+const char *hj_ls_scheme_name(int scheme)
+{
+    return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? names[scheme] : NULL;
+}
+
+int hj_ls_scheme_order(int scheme) { return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? orders[scheme] : 0; }
+
+/* D[k][i] = D1_{i+k+1/2} for k = kmin..kmax, row k + 3 of w. */
+static void first_differences(const double *restrict p, ptrdiff_t s, long n, double dx, double *restrict w, int kmin,
+                              int kmax)
+{
+    const double inv = 1.0 / dx;
+    for (int k = kmin; k <= kmax; k++) {
+        double *restrict D = w + (size_t)(k + 3) * (size_t)n;
+        const double *restrict a = p + k * s, *restrict b = p + (k + 1) * s;
+        for (long i = 0; i < n; i++) D[i] = (b[i] - a[i]) * inv;
+    }
+}
+
+/* Branch-free select c ? a : b on the bits (exact); gcc does not
+ * if-convert the nested selections of ENO3 by itself. */
+static inline double sel(int c, double a, double b)
+{
+    uint64_t ua, ub;
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    const uint64_t m = (uint64_t)0 - (uint64_t)(c != 0);
+    const uint64_t u = (ua & m) | (ub & ~m);
+    double r;
+    memcpy(&r, &u, sizeof r);
+    return r;
+}
+
+void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx, int k, double *D)
+{
+    const double inv = 1.0 / dx;
+    const double *a = p + k * s, *b = p + (k + 1) * s;
+    for (long i = 0; i < n; i++) D[i] = (b[i] - a[i]) * inv;
+}
+
+#define AMIN(a, b) (fabs(a) <= fabs(b) ? (a) : (b))
+
+/* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
+ * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
+static inline double weno5(double v1, double v2, double v3, double v4, double v5, double c1, double c2, double c3)
+{
+    const double t1 = v1 - 2 * v2 + v3, u1 = v1 - 4 * v2 + 3 * v3;
+    const double t2 = v2 - 2 * v3 + v4, u2 = v2 - v4;
+    const double t3 = v3 - 2 * v4 + v5, u3 = 3 * v3 - 4 * v4 + v5;
+    const double s1 = 13.0 / 12 * t1 * t1 + 0.25 * u1 * u1;
+    const double s2 = 13.0 / 12 * t2 * t2 + 0.25 * u2 * u2;
+    const double s3 = 13.0 / 12 * t3 * t3 + 0.25 * u3 * u3;
+    double m = v1 * v1;
+    m = v2 * v2 > m ? v2 * v2 : m;
+    m = v3 * v3 > m ? v3 * v3 : m;
+    m = v4 * v4 > m ? v4 * v4 : m;
+    m = v5 * v5 > m ? v5 * v5 : m;
+    const double eps = 1e-6 * m + 1e-99;
+    /* alpha_k = d_k / (s_k + eps)^2, multiplied through by the product of
+     * the three (s_k + eps)^2 / eps^2 >= 1, which saves two divisions.
+     * Since s_k <= 21 m and eps >= 1e-6 m, each factor is at most about
+     * 5e14: no overflow, and no underflow even when phi is flat. */
+    const double ie = 1 / eps;
+    double q1 = s1 * ie + 1, q2 = s2 * ie + 1, q3 = s3 * ie + 1;
+    q1 *= q1, q2 *= q2, q3 *= q3;
+    const double a1 = 0.1 * q2 * q3, a2 = 0.6 * q1 * q3, a3 = 0.3 * q1 * q2;
+    return (a1 * c1 + a2 * c2 + a3 * c3) / (a1 + a2 + a3);
+}
+
+/* WENO3 from v1, v2, v3 (v1 farthest upwind): candidates -v1/2 + 3 v2/2
+ * and (v2 + v3)/2, ideal weights 1/3 and 2/3, eps = 1e-6. */
+static inline double weno3(double v1, double v2, double v3)
+{
+    const double eps = 1e-6, s1 = eps + (v2 - v1) * (v2 - v1), s2 = eps + (v3 - v2) * (v3 - v2);
+    const double a1 = (1.0 / 3) / (s1 * s1), a2 = (2.0 / 3) / (s2 * s2);
+    return (a1 * (1.5 * v2 - 0.5 * v1) + a2 * 0.5 * (v2 + v3)) / (a1 + a2);
+}
+
+/* Direct ENO3 candidates, O&F (3.25)-(3.27). */
+#define PHI1(v1, v2, v3) ((v1) / 3 - 7 * (v2) / 6 + 11 * (v3) / 6)
+#define PHI2(v2, v3, v4) (-(v2) / 6 + 5 * (v3) / 6 + (v4) / 3)
+#define PHI3(v3, v4, v5) ((v3) / 3 + 5 * (v4) / 6 - (v5) / 6)
+
+/* Divided difference table around node i, scaled so that no dx appears:
+ * e2[j] = dx D2_j, f3[j] = 3 dx^2 D3_{j+1/2}.  Comparisons use f3 before
+ * the division by 3 so that the direct form can take the same decisions
+ * bit for bit. */
+#define TABLE                                                                        \
+    const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], \
+                 p2 = D[5][i];                                                       \
+    const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), \
+                 e2p1 = 0.5 * (p1 - z0), e2p2 = 0.5 * (p2 - p1);                     \
+    const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20, f3p1 = e2p2 - e2p1;
+
+/* AVX2 clone where the CPU has it (no FMA: results are bitwise the same
+ * as the baseline SSE2 code). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+#define HJ_LS_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define HJ_LS_CLONES
+#endif
+
+HJ_LS_CLONES
+void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *restrict dl,
+                      double *restrict dr, double *w)
+{
+    const double *D[6];
+    for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
+    switch (scheme) {
+    case HJ_LS_UPWIND_FIRST:
+        first_differences(p, s, n, dx, w, -1, 0);
+        for (long i = 0; i < n; i++) {
+            dl[i] = D[2][i];
+            dr[i] = D[3][i];
+        }
+        break;
+    case HJ_LS_ENO2:
+        first_differences(p, s, n, dx, w, -2, 1);
+        for (long i = 0; i < n; i++) {
+            const double m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i];
+            const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
+            dl[i] = m1 + AMIN(e2m1, e20);
+            dr[i] = z0 - AMIN(e20, e2p1);
+        }
+        break;
+    case HJ_LS_ENO3A:
+        first_differences(p, s, n, dx, w, -3, 2);
+        for (long i = 0; i < n; i++) {
+            TABLE
+            /* all candidates, then branch-free selection (vectorises) */
+            const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3);
+            const double lc = m1 + e20 - f3m1 / 3, ld = m1 + e20 - f30 / 3;
+            const double r3 = z0 - e20 - f3m1 / 3, r2 = z0 - e20 - f30 / 3;
+            const double r2b = z0 - e2p1 + 2 * (f30 / 3), r1 = z0 - e2p1 + 2 * (f3p1 / 3);
+            const double l1 = sel(fabs(f3m2) <= fabs(f3m1), la, lb), l2 = sel(fabs(f3m1) <= fabs(f30), lc, ld);
+            const double q1 = sel(fabs(f3m1) <= fabs(f30), r3, r2), q2 = sel(fabs(f30) <= fabs(f3p1), r2b, r1);
+            dl[i] = sel(fabs(e2m1) <= fabs(e20), l1, l2);
+            dr[i] = sel(fabs(e20) <= fabs(e2p1), q1, q2);
+        }
+        break;
+    case HJ_LS_ENO3B:
+        first_differences(p, s, n, dx, w, -3, 2);
+        for (long i = 0; i < n; i++) {
+            const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
+            /* Undivided differences of the v's: the same decisions as ENO3A. */
+            const double u2m1 = m1 - m2, u20 = z0 - m1, u2p1 = p1 - z0;
+            const double u3m2 = 0.5 * (m1 - m2) - 0.5 * (m2 - m3), u3m1 = 0.5 * u20 - 0.5 * u2m1;
+            const double u30 = 0.5 * u2p1 - 0.5 * u20, u3p1 = 0.5 * (p2 - p1) - 0.5 * u2p1;
+            const double c1 = PHI1(m3, m2, m1), c2 = PHI2(m2, m1, z0), c3 = PHI3(m1, z0, p1);
+            const double d3 = PHI3(z0, m1, m2), d2 = PHI2(p1, z0, m1), d1 = PHI1(p2, p1, z0);
+            const double l1 = sel(fabs(u3m2) <= fabs(u3m1), c1, c2), l2 = sel(fabs(u3m1) <= fabs(u30), c2, c3);
+            const double q1 = sel(fabs(u3m1) <= fabs(u30), d3, d2), q2 = sel(fabs(u30) <= fabs(u3p1), d2, d1);
+            dl[i] = sel(fabs(u2m1) <= fabs(u20), l1, l2);
+            dr[i] = sel(fabs(u20) <= fabs(u2p1), q1, q2);
+        }
+        break;
+    case HJ_LS_WENO5A:
+        first_differences(p, s, n, dx, w, -3, 2);
+        for (long i = 0; i < n; i++) {
+            TABLE
+            const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3), ld = m1 + e20 - f30 / 3;
+            const double r1 = z0 - e2p1 + 2 * (f3p1 / 3), r2 = z0 - e2p1 + 2 * (f30 / 3), r3 = z0 - e20 - f3m1 / 3;
+            dl[i] = weno5(m3, m2, m1, z0, p1, la, lb, ld);
+            dr[i] = weno5(p2, p1, z0, m1, m2, r1, r2, r3);
+        }
+        break;
+    case HJ_LS_WENO5B:
+        first_differences(p, s, n, dx, w, -3, 2);
+        for (long i = 0; i < n; i++) {
+            const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
+            dl[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1));
+            dr[i] = weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2));
+        }
+        break;
+    case HJ_LS_WENO3:
+        first_differences(p, s, n, dx, w, -2, 1);
+        for (long i = 0; i < n; i++) {
+            const double m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i];
+            dl[i] = weno3(m2, m1, z0);
+            dr[i] = weno3(p1, z0, m1);
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+HJ_LS_CLONES
+void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v,
+                             double *restrict out, double *w)
+{
+    if (scheme != HJ_LS_WENO5A && scheme != HJ_LS_WENO5B && scheme != HJ_LS_WENO3) {
+        /* cheap schemes: both sides, then select */
+        double *dl = w + (size_t)6 * (size_t)n, *dr = dl + n;
+        hj_ls_upwind_row(scheme, p, s, n, dx, dl, dr, w + (size_t)8 * (size_t)n);
+        for (long i = 0; i < n; i++) {
+            const double l = dl[i], r = dr[i]; /* unconditional loads: vectorises */
+            out[i] = v[i] > 0 ? l : r;
+        }
+        return;
+    }
+    const double *D[6];
+    if (s == 1) {
+        /* along the row: one row of differences, read at six offsets */
+        const double inv = 1.0 / dx;
+        for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
+        for (int k = 0; k < 6; k++) D[k] = w + k;
+    } else {
+        for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
+        first_differences(p, s, n, dx, w, -3, 2);
+    }
+    hj_ls_upwind_select_diffs(scheme, D, n, v, out);
+}
+
+HJ_LS_CLONES
+void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const double *v, double *restrict out)
+{
+    /* The right derivative is the left formula on the mirrored stencil
+     * (p2, p1, z0, m1, m2, m3): bitwise the same as hj_ls_upwind_row.  One
+     * loop per scheme with branch-free selects, so that it vectorises. */
+#define MIRROR                                                                                           \
+    const int left = v[i] > 0;                                                                           \
+    const double a0 = D[0][i], a1 = D[1][i], a2 = D[2][i], a3 = D[3][i], a4 = D[4][i], a5 = D[5][i];     \
+    const double m3 = left ? a0 : a5, m2 = left ? a1 : a4, m1 = left ? a2 : a3;                          \
+    const double z0 = left ? a3 : a2, p1 = left ? a4 : a1;
+    if (scheme == HJ_LS_WENO5A)
+        for (long i = 0; i < n; i++) {
+            MIRROR
+            const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
+            const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;
+            out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),
+                           m1 + e20 - f30 / 3);
+        }
+    else if (scheme == HJ_LS_WENO5B)
+        for (long i = 0; i < n; i++) {
+            MIRROR
+            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1));
+        }
+    else
+        for (long i = 0; i < n; i++) {
+            MIRROR
+            (void)m3, (void)p1;
+            out[i] = weno3(m2, m1, z0);
+        }
+#undef MIRROR
+}
+
+static int check_dim(const hj_ls_grid *g, int d, hj_error *err)
+{
+    if (d < 0 || d >= g->dim)
+        return hj_error_set(err, HJ_EINVAL, "dimension mismatch: derivative in dimension %d of a %d-D grid", d, g->dim);
+    return HJ_OK;
+}
+
+int hj_ls_upwind(const hj_ls_grid *g, int scheme, double *data, int d, double *dl, double *dr, hj_error *err)
+{
+    int rc = check_dim(g, d, err);
+    if (rc) return rc;
+    if (!hj_ls_scheme_name(scheme)) return hj_error_set(err, HJ_EINVAL, "unknown upwind scheme %d", scheme);
+    hj_ls_fill_ghosts(g, data);
+    const long n = g->N[0];
+    int fail = 0;
+#ifdef _OPENMP
+#pragma omp parallel reduction(| : fail)
+#endif
+    {
+        double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n);
+        if (!w) fail = 1;
+        else {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 32)
+#endif
+            for (size_t r = 0; r < g->rows; r++) {
+                long i[HJ_LS_MAXDIM];
+                const size_t k = hj_ls_row(g, r, i);
+                hj_ls_upwind_row(scheme, data + k, g->stride[d], n, g->dx[d], dl + k, dr + k, w);
+            }
+        }
+        free(w);
+    }
+    if (fail) return hj_error_set(err, HJ_ENOMEM, "out of memory for the derivative workspace");
+    return HJ_OK;
+}
+
+int hj_ls_centered_first(const hj_ls_grid *g, double *data, int d, double *out, hj_error *err)
+{
+    int rc = check_dim(g, d, err);
+    if (rc) return rc;
+    hj_ls_fill_ghosts(g, data);
+    const ptrdiff_t s = g->stride[d];
+    const double f = 0.5 / g->dx[d];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, i);
+        const double *p = data + k;
+        double *o = out + k;
+        for (long j = 0; j < g->N[0]; j++) o[j] = (p[j + s] - p[j - s]) * f;
+    }
+    return HJ_OK;
+}
+
+int hj_ls_hessian(const hj_ls_grid *g, double *data, int a, int b, double *out, hj_error *err)
+{
+    int rc = check_dim(g, a, err);
+    if (!rc) rc = check_dim(g, b, err);
+    if (rc) return rc;
+    hj_ls_fill_ghosts(g, data);
+    const ptrdiff_t sa = g->stride[a], sb = g->stride[b];
+    const double fa = 1 / (g->dx[a] * g->dx[a]), fab = 0.25 / (g->dx[a] * g->dx[b]);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, i);
+        const double *p = data + k;
+        double *o = out + k;
+        if (a == b)
+            for (long j = 0; j < g->N[0]; j++) o[j] = (p[j + sa] - 2 * p[j] + p[j - sa]) * fa;
+        else
+            for (long j = 0; j < g->N[0]; j++)
+                o[j] = (p[j + sa + sb] - p[j + sa - sb] - p[j - sa + sb] + p[j - sa - sb]) * fab;
+    }
+    return HJ_OK;
+}
+
+int hj_ls_laplacian(const hj_ls_grid *g, double *data, double *out, hj_error *err)
+{
+    (void)err;
+    hj_ls_fill_ghosts(g, data);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, i);
+        const double *p = data + k;
+        double *o = out + k;
+        for (long j = 0; j < g->N[0]; j++) o[j] = 0;
+        for (int d = 0; d < g->dim; d++) {
+            const ptrdiff_t s = g->stride[d];
+            const double f = 1 / (g->dx[d] * g->dx[d]);
+            for (long j = 0; j < g->N[0]; j++) o[j] += (p[j + s] - 2 * p[j] + p[j - s]) * f;
+        }
+    }
+    return HJ_OK;
+}
+
+void hj_ls_curvature_at(const hj_ls_grid *g, const double *p, double *kappa, double *grad_mag)
+{
+    double c[HJ_LS_MAXDIM], c2 = 0, num = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const ptrdiff_t s = g->stride[d];
+        c[d] = (p[s] - p[-s]) * (0.5 / g->dx[d]);
+        c2 += c[d] * c[d];
+    }
+    for (int a = 0; a < g->dim; a++) {
+        const ptrdiff_t sa = g->stride[a];
+        const double xx = (p[sa] - 2 * p[0] + p[-sa]) / (g->dx[a] * g->dx[a]);
+        num += xx * (c2 - c[a] * c[a]);
+        for (int b = 0; b < a; b++) {
+            const ptrdiff_t sb = g->stride[b];
+            const double xy = (p[sa + sb] - p[sa - sb] - p[-sa + sb] + p[-sa - sb]) * (0.25 / (g->dx[a] * g->dx[b]));
+            num -= 2 * c[a] * c[b] * xy;
+        }
+    }
+    const double mag = sqrt(c2);
+    *kappa = mag > 0 ? num / (mag * mag * mag) : 0.0;
+    if (grad_mag) *grad_mag = mag;
+}
+
+int hj_ls_curvature(const hj_ls_grid *g, double *data, double *kappa, double *grad_mag, hj_error *err)
+{
+    (void)err;
+    hj_ls_fill_ghosts(g, data);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++)
+            hj_ls_curvature_at(g, data + k + j, kappa + k + j, grad_mag ? grad_mag + k + j : NULL);
+    }
+    return HJ_OK;
+}

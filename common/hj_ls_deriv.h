@@ -1,0 +1,107 @@
+/* hj_ls_deriv.h -- spatial derivative approximations of the level set
+ * kernel (Mitchell's toolbox, section 3.4; Osher & Fedkiw ch. 3).
+ *
+ * Upwind first derivatives (section 3.4.1).  For dimension d the left
+ * approximation D-phi(x_i) serves flow coming from lower indices, the right
+ * one D+phi(x_i) flow from higher indices.  With the first divided
+ * differences D1_{j+1/2} = (phi_{j+1} - phi_j) / dx:
+ *   FIRST   D- = D1_{i-1/2}, D+ = D1_{i+1/2}                       (order 1)
+ *   ENO2    adds the smaller (in modulus) neighbouring second divided
+ *           difference (O&F (3.22))                                (order 2)
+ *   ENO3A   third order ENO from the divided difference table: the stencil
+ *           grows one node at a time toward the smaller divided difference
+ *           (O&F (3.18)-(3.24))                                    (order 3)
+ *   ENO3B   the same scheme in direct form: the three candidates by
+ *           O&F (3.25)-(3.27) from v1..v5, the stencil picked by the same
+ *           comparisons written in undivided differences of the v's
+ *   WENO5A  fifth order WENO: the three ENO3 candidates (from the table)
+ *           blended with the weights of O&F (3.28)-(3.37) and the epsilon of
+ *           (3.38), eps = 1e-6 max v_k^2 + 1e-99                   (order 5)
+ *   WENO5B  the same with the candidates by (3.25)-(3.27)
+ *   WENO3   third order WENO (section 4 "future feature"): candidates
+ *           -v1/2 + 3 v2/2 and (v2 + v3)/2, ideal weights 1/3, 2/3,
+ *           smoothness (v2 - v1)^2, (v3 - v2)^2, eps = 1e-6     (order 3)
+ * The A and B forms are the same schemes computed differently; they agree
+ * to round-off (tests/test_ls_deriv.c).  Paper ambiguity: the toolbox says
+ * ENO3b picks "the smallest smoothness estimate (3.32)-(3.34)", which is a
+ * different stencil choice from ENO3a at some nodes and would contradict
+ * its own statement that the two are equivalent; we keep ENO's choice.
+ *
+ * Centered approximations (section 3.4.2), second order: first derivative,
+ * Hessian entries, Laplacian, mean curvature with gradient magnitude.
+ *
+ * All array functions take arrays laid out on the grid (hj_ls_grid.h),
+ * write interior nodes only, and fill the ghost layer of their input first
+ * (which is why the input is not const).  They never print or exit.
+ */
+#ifndef HJ_LS_DERIV_H
+#define HJ_LS_DERIV_H
+
+#include <stddef.h>
+
+#include "hj_error.h"
+#include "hj_ls_grid.h"
+
+enum {
+    HJ_LS_UPWIND_FIRST,
+    HJ_LS_ENO2,
+    HJ_LS_ENO3A,
+    HJ_LS_ENO3B,
+    HJ_LS_WENO5A,
+    HJ_LS_WENO5B,
+    HJ_LS_WENO3,
+    HJ_LS_NSCHEMES
+};
+
+/* The toolbox name of a scheme ("upwindFirstENO3a", ...), or NULL. */
+const char *hj_ls_scheme_name(int scheme);
+/* Formal order of accuracy on smooth data. */
+int hj_ls_scheme_order(int scheme);
+
+/* Doubles of workspace hj_ls_upwind_row needs per node of a row. */
+#define HJ_LS_ROW_WORK 16
+
+/* Row kernel: left and right derivatives along the direction of stride s
+ * for the n nodes p[0], p[1], ..., p[n-1]; every p[i + k s] with |k| <= 3
+ * must be valid.  w holds HJ_LS_ROW_WORK * n doubles.  An unknown scheme
+ * leaves dl and dr untouched (the array functions check schemes). */
+void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *dl, double *dr, double *w);
+
+/* The upwind side only: out[i] = D-phi where v[i] > 0, else D+phi, with
+ * the same values as hj_ls_upwind_row (bitwise).  For WENO only the needed
+ * side is computed (half the work); w as above. */
+void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v,
+                             double *out, double *w);
+
+/* The WENO part of hj_ls_upwind_row_select from precomputed first
+ * differences: D[k][i] = D1_{i+k-3+1/2} along the direction, k = 0..5
+ * (WENO5A, WENO5B, WENO3 only; other schemes leave out untouched).  Lets a
+ * caller reuse differences between neighbouring rows. */
+void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const double *v, double *out);
+
+/* D[i] = (p[i + (k+1) s] - p[i + k s]) / dx for i < n: one row of the
+ * differences above (k = -3..2), computed exactly as the kernels do. */
+void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx, int k, double *D);
+
+/* Left (dl) and right (dr) upwind derivatives in dimension d of data. */
+int hj_ls_upwind(const hj_ls_grid *g, int scheme, double *data, int d, double *dl, double *dr, hj_error *err);
+
+/* Centered first derivative in dimension d. */
+int hj_ls_centered_first(const hj_ls_grid *g, double *data, int d, double *out, hj_error *err);
+
+/* Hessian entry d^2 phi / dx_i dx_j (i = j: the second derivative). */
+int hj_ls_hessian(const hj_ls_grid *g, double *data, int i, int j, double *out, hj_error *err);
+
+/* Laplacian, sum of the second derivatives. */
+int hj_ls_laplacian(const hj_ls_grid *g, double *data, double *out, hj_error *err);
+
+/* Mean curvature kappa = div(grad phi / |grad phi|) (toolbox curvatureSecond)
+ * and the centered gradient magnitude (grad_mag may be NULL).  Where
+ * |grad phi| = 0 the curvature is set to 0. */
+int hj_ls_curvature(const hj_ls_grid *g, double *data, double *kappa, double *grad_mag, hj_error *err);
+
+/* Curvature and gradient magnitude at one node from its centered stencil
+ * (p is the node, the grid gives strides and spacings). */
+void hj_ls_curvature_at(const hj_ls_grid *g, const double *p, double *kappa, double *grad_mag);
+
+#endif

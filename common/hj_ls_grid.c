@@ -1,0 +1,193 @@
+/* hj_ls_grid.c -- grids, ghosted arrays and boundary conditions. */
+#include "hj_ls_grid.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "hj_cli.h"
+
+int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
+                    hj_error *err)
+{
+    if (dim < 1 || dim > HJ_LS_MAXDIM)
+        return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
+    g->dim = dim;
+    g->total = 1;
+    g->nodes = 1;
+    for (int d = 0; d < dim; d++) {
+        if (!isfinite(min[d]) || !isfinite(max[d]))
+            return hj_error_set(err, HJ_ENONFINITE, "grid bounds in dimension %d are not finite", d);
+        if (!(max[d] > min[d]))
+            return hj_error_set(err, HJ_EINVAL, "grid max must exceed min in dimension %d", d);
+        if (N[d] < 2) return hj_error_set(err, HJ_EINVAL, "grid needs N >= 2 in dimension %d, got %ld", d, N[d]);
+        if (bc[d].type < HJ_LS_BC_PERIODIC || bc[d].type > HJ_LS_BC_EXTRAP_TOWARD)
+            return hj_error_set(err, HJ_EINVAL, "unknown boundary condition %d in dimension %d", bc[d].type, d);
+        if (!isfinite(bc[d].lo) || !isfinite(bc[d].hi))
+            return hj_error_set(err, HJ_ENONFINITE, "boundary data in dimension %d are not finite", d);
+        g->N[d] = N[d];
+        g->min[d] = min[d];
+        g->max[d] = max[d];
+        g->dx[d] = (max[d] - min[d]) / (double)(N[d] - 1);
+        g->bc[d] = bc[d];
+        g->ext[d] = N[d] + 2 * HJ_LS_GHOST;
+        /* Overflow-safe product: "grid too large" before any allocation. */
+        if ((size_t)g->ext[d] > SIZE_MAX / sizeof(double) / g->total)
+            return hj_error_set(err, HJ_ENOMEM, "grid too large: the array size overflows");
+        g->stride[d] = (ptrdiff_t)g->total;
+        g->total *= (size_t)g->ext[d];
+        g->nodes *= (size_t)N[d];
+    }
+    const double mem = hj_physical_memory();
+    if (mem > 0 && (double)g->total * sizeof(double) > mem)
+        return hj_error_set(err, HJ_ENOMEM, "grid too large: one array needs %.3g GB, the machine has %.3g GB",
+                            (double)g->total * sizeof(double) / 1e9, mem / 1e9);
+    g->offset = 0;
+    for (int d = 0; d < dim; d++) g->offset += (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
+    g->rows = g->nodes / (size_t)N[0];
+    return HJ_OK;
+}
+
+int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
+                       const hj_ls_bc *bc, hj_error *err)
+{
+    if (dim < 1 || dim > HJ_LS_MAXDIM)
+        return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
+    long N[HJ_LS_MAXDIM];
+    double mx[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) {
+        if (!(dx[d] > 0) || !isfinite(dx[d]))
+            return hj_error_set(err, HJ_EINVAL, "grid spacing must be positive and finite in dimension %d", d);
+        const double n = floor((max[d] - min[d]) / dx[d] + 0.5) + 1;
+        if (!(n >= 2) || n > 1e15)
+            return hj_error_set(err, HJ_EINVAL, "grid spacing gives %g nodes in dimension %d", n, d);
+        N[d] = (long)n;
+        mx[d] = min[d] + (double)(N[d] - 1) * dx[d];
+    }
+    int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    if (rc) return rc;
+    for (int d = 0; d < dim; d++) g->dx[d] = dx[d];
+    return HJ_OK;
+}
+
+double *hj_ls_alloc(const hj_ls_grid *g) { return calloc(g->total, sizeof(double)); }
+
+void hj_ls_free(double *a) { free(a); }
+
+size_t hj_ls_index(const hj_ls_grid *g, const long *i)
+{
+    ptrdiff_t k = (ptrdiff_t)g->offset;
+    for (int d = 0; d < g->dim; d++) k += i[d] * g->stride[d];
+    return (size_t)k;
+}
+
+void hj_ls_coord(const hj_ls_grid *g, const long *i, double *x)
+{
+    for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)i[d] * g->dx[d];
+}
+
+size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i)
+{
+    size_t k = g->offset;
+    i[0] = 0;
+    for (int d = 1; d < g->dim; d++) {
+        i[d] = (long)(r % (size_t)g->N[d]);
+        r /= (size_t)g->N[d];
+        k += (size_t)i[d] * (size_t)g->stride[d];
+    }
+    return k;
+}
+
+/* Fill the 2 HJ_LS_GHOST ghosts of one line: p points at interior node 0,
+ * s is the stride along the line, n its number of interior nodes. */
+static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc *bc)
+{
+    double *lo = p, *hi = p + (n - 1) * s;
+    for (long k = 1; k <= HJ_LS_GHOST; k++) {
+        double *gl = lo - k * s, *gh = hi + k * s;
+        switch (bc->type) {
+        case HJ_LS_BC_PERIODIC:
+            /* k <= HJ_LS_GHOST may exceed n on tiny grids: wrap fully. */
+            *gl = p[((n - k % n) % n) * s];
+            *gh = p[((k - 1) % n) * s];
+            break;
+        case HJ_LS_BC_DIRICHLET:
+            *gl = bc->lo;
+            *gh = bc->hi;
+            break;
+        case HJ_LS_BC_NEUMANN:
+            *gl = *lo + (double)k * dx * bc->lo;
+            *gh = *hi + (double)k * dx * bc->hi;
+            break;
+        default: { /* extrapolation away from / toward zero */
+            const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
+            const double sl = *lo > 0 ? 1.0 : (*lo < 0 ? -1.0 : 0.0);
+            const double sh = *hi > 0 ? 1.0 : (*hi < 0 ? -1.0 : 0.0);
+            *gl = *lo + (double)k * dir * sl * fabs(*lo - lo[s]);
+            *gh = *hi + (double)k * dir * sh * fabs(*hi - hi[-s]);
+        }
+        }
+    }
+}
+
+void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a)
+{
+    for (int d = 0; d < g->dim; d++) {
+        /* Lines along d over the full extent of the other dimensions, so
+         * that corners take the ghosts already filled in earlier dimensions. */
+        const size_t nlines = g->total / (size_t)g->ext[d];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+        for (size_t l = 0; l < nlines; l++) {
+            size_t r = l, k = (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
+            for (int e = 0; e < g->dim; e++) {
+                if (e == d) continue;
+                k += (r % (size_t)g->ext[e]) * (size_t)g->stride[e];
+                r /= (size_t)g->ext[e];
+            }
+            fill_line(a + k, g->stride[d], g->N[d], g->dx[d], &g->bc[d]);
+        }
+    }
+}
+
+void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx)
+{
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        double *p = a + hj_ls_row(g, r, i);
+        hj_ls_coord(g, i, x);
+        for (long j = 0; j < g->N[0]; j++) {
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            p[j] = f(x, ctx);
+        }
+    }
+}
+
+void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src)
+{
+    long i[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++) dst[k + (size_t)j] = src[k + (size_t)j];
+    }
+}
+
+void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms)
+{
+    double m = 0, s1 = 0, s2 = 0;
+    long i[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++) {
+            const double e = fabs(a[k + (size_t)j] - (b ? b[k + (size_t)j] : 0.0));
+            m = e > m ? e : m;
+            s1 += e;
+            s2 += e * e;
+        }
+    }
+    if (max) *max = m;
+    if (avg) *avg = s1 / (double)g->nodes;
+    if (rms) *rms = sqrt(s2 / (double)g->nodes);
+}

@@ -1,0 +1,102 @@
+/* hj_ls_grid.h -- Cartesian grids of any dimension and arrays with ghost
+ * layers for the level set kernel (Mitchell's toolbox, sections 3.1-3.2).
+ *
+ * A grid is a fixed rectangular mesh in dim = 1..HJ_LS_MAXDIM dimensions
+ * with N[d] nodes from min[d] to max[d] (dx[d] = (max - min) / (N - 1))
+ * and one boundary condition per dimension.  Node coordinates are computed
+ * on the fly (hj_ls_coord); there are no dim x N^d coordinate arrays.
+ *
+ * Every array on the grid carries HJ_LS_GHOST ghost nodes on both sides of
+ * every dimension, allocated once with the array (hj_ls_alloc), unlike the
+ * toolbox, which reallocates them on every call (its section 3.2 names this
+ * as a future improvement).  Dimension 0 is contiguous; the node with
+ * interior index (i_0, ..., i_{dim-1}), 0 <= i_d < N[d], sits at
+ *     offset + sum_d i_d stride[d],
+ * and ghost nodes have i_d in [-HJ_LS_GHOST, 0) or [N[d], N[d] + HJ_LS_GHOST).
+ *
+ * Boundary conditions (toolbox addGhost*):
+ *   PERIODIC      ghost i = node i mod N (the period is N dx, so max is the
+ *                 last node before the period repeats, as in the toolbox);
+ *   DIRICHLET     ghosts below take lo, ghosts above take hi;
+ *   NEUMANN       linear, with outward normal derivative lo (below) and hi
+ *                 (above): ghost at distance k dx = boundary value + k dx s;
+ *   EXTRAP_AWAY   linear from the two outermost nodes with slope magnitude
+ *                 |phi_b - phi_{b-1}| directed away from zero:
+ *                 ghost k = phi_b + k sign(phi_b) |phi_b - phi_{b-1}|;
+ *   EXTRAP_TOWARD the same toward zero (sign flipped).
+ * Ghosts are filled dimension by dimension over the full (ghosted) extent of
+ * the other dimensions, so corner ghosts are defined too.
+ */
+#ifndef HJ_LS_GRID_H
+#define HJ_LS_GRID_H
+
+#include <stddef.h>
+
+#include "hj_error.h"
+
+#define HJ_LS_MAXDIM 8
+/* Ghost width: the widest stencil of the kernel (ENO3, WENO5) reaches 3. */
+#define HJ_LS_GHOST 3
+
+enum { HJ_LS_BC_PERIODIC, HJ_LS_BC_DIRICHLET, HJ_LS_BC_NEUMANN, HJ_LS_BC_EXTRAP_AWAY, HJ_LS_BC_EXTRAP_TOWARD };
+
+typedef struct {
+    int type;      /* HJ_LS_BC_* */
+    double lo, hi; /* Dirichlet values or Neumann outward derivatives */
+} hj_ls_bc;
+
+typedef struct {
+    int dim;
+    long N[HJ_LS_MAXDIM];
+    double min[HJ_LS_MAXDIM], max[HJ_LS_MAXDIM], dx[HJ_LS_MAXDIM];
+    hj_ls_bc bc[HJ_LS_MAXDIM];
+    long ext[HJ_LS_MAXDIM];        /* N + 2 HJ_LS_GHOST */
+    ptrdiff_t stride[HJ_LS_MAXDIM]; /* stride[0] = 1 */
+    size_t total;                  /* doubles per array, ghosts included */
+    size_t nodes;                  /* interior nodes, prod N */
+    size_t offset;                 /* index of interior node (0, ..., 0) */
+    size_t rows;                   /* interior rows along dimension 0 */
+} hj_ls_grid;
+
+/* Grid with N[d] >= 2 nodes from min[d] to max[d] > min[d].  Fails with
+ * HJ_EINVAL for a bad dimension, bound or boundary condition, and with
+ * HJ_ENOMEM when one array would not fit in memory ("grid too large"). */
+int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
+                    hj_error *err);
+
+/* The same with a spacing instead of a node count: N = round((max - min) /
+ * dx) + 1 and max is moved to min + (N - 1) dx (the toolbox's processGrid). */
+int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
+                       const hj_ls_bc *bc, hj_error *err);
+
+/* A zeroed array on g (ghosts included), or NULL.  Free with hj_ls_free. */
+double *hj_ls_alloc(const hj_ls_grid *g);
+void hj_ls_free(double *a);
+
+/* Index of the interior node i[0..dim-1] (entries may be ghost indices). */
+size_t hj_ls_index(const hj_ls_grid *g, const long *i);
+
+/* Coordinates x[0..dim-1] of node i (ghost indices give ghost coordinates). */
+void hj_ls_coord(const hj_ls_grid *g, const long *i, double *x);
+
+/* Index of the first node of interior row r (0 <= r < g->rows), a line of
+ * N[0] nodes along dimension 0; i[1..dim-1] receives its node index
+ * (i[0] = 0).  Rows are numbered with dimension 1 fastest. */
+size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i);
+
+/* Fill the ghost layer of a according to the grid's boundary conditions. */
+void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
+
+/* a(x) = f(x, ctx) at every interior node. */
+typedef double (*hj_ls_field_fn)(const double *x, void *ctx);
+void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx);
+
+/* Copy the interior nodes of src to dst. */
+void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src);
+
+/* Maximum, average and root mean square of |a - b| over interior nodes
+ * (b may be NULL for |a|).  Summed in row order: the result does not depend
+ * on the number of threads. */
+void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms);
+
+#endif

@@ -1,0 +1,133 @@
+/* hj_ls_ode.c -- TVD Runge-Kutta integrators of order 1, 2, 3. */
+#include "hj_ls_ode.h"
+
+#include <float.h>
+#include <math.h>
+#include <time.h>
+
+void hj_ls_ode_defaults(hj_ls_ode_opts *o)
+{
+    o->factor_cfl = 0.5;
+    o->max_step = DBL_MAX;
+    o->post = NULL;
+    o->post_ctx = NULL;
+    o->single_step = 0;
+}
+
+static double wall(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* dst = a y + b (u + dt f) over the interior; returns 1 if a value of dst
+ * is not finite.  dst may alias y or u. */
+static int combine(const hj_ls_grid *g, double *dst, double a, const double *y, double b, const double *u, double dt,
+                   const double *f)
+{
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32) reduction(| : bad)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        int rb = 0;
+        for (long j = 0; j < g->N[0]; j++) {
+            const size_t q = k + (size_t)j;
+            const double v = a * y[q] + b * (u[q] + dt * f[q]);
+            dst[q] = v;
+            rb |= !(v - v == 0); /* NaN or Inf */
+        }
+        bad |= rb;
+    }
+    return bad;
+}
+
+static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *err)
+{
+    if (isnan(b) || b == -INFINITY) return hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at t = %g", t);
+    if (!(b > 0)) return hj_error_set(err, HJ_EINVAL, "zero CFL bound at t = %g", t);
+    if (b == INFINITY && !(o->max_step < DBL_MAX))
+        return hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", t);
+    return HJ_OK;
+}
+
+int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
+              const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
+{
+    hj_ls_ode_opts o;
+    if (opts) o = *opts;
+    else hj_ls_ode_defaults(&o);
+    if (order < 1 || order > 3)
+        return hj_error_set(err, HJ_EINVAL, "integrator order must be 1, 2 or 3, got %d", order);
+    if (ntspan < 2) return hj_error_set(err, HJ_EINVAL, "tspan needs a start and at least one output time");
+    for (int k = 0; k < ntspan; k++) {
+        if (!isfinite(tspan[k])) return hj_error_set(err, HJ_ENONFINITE, "tspan[%d] is not finite", k);
+        if (k && !(tspan[k] > tspan[k - 1])) return hj_error_set(err, HJ_EINVAL, "tspan must increase");
+    }
+    if (!(o.factor_cfl > 0) || !isfinite(o.factor_cfl))
+        return hj_error_set(err, HJ_EINVAL, "FactorCFL must be positive, got %g", o.factor_cfl);
+    if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
+
+    hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};
+    const double start = wall();
+    double *f = hj_ls_alloc(g), *u = order > 1 ? hj_ls_alloc(g) : NULL;
+    int rc = HJ_OK;
+    if (!f || (order > 1 && !u)) {
+        rc = hj_error_set(err, HJ_ENOMEM, "out of memory for the integrator's stage arrays");
+        goto done;
+    }
+    double t = tspan[0];
+    for (int k = 1; k < ntspan && rc == HJ_OK; k++) {
+        const double tk = tspan[k];
+        /* Steps shorter than this are round-off of the previous step. */
+        const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
+        while (tk - t > small) {
+            double b;
+            if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
+            st.evals++;
+            if ((rc = check_bound(b, t, &o, err))) goto done;
+            double dt = o.factor_cfl * b;
+            dt = dt < o.max_step ? dt : o.max_step;
+            int last = 0;
+            if (dt >= tk - t) dt = tk - t, last = 1;
+            int bad;
+            if (order == 1)
+                bad = combine(g, y, 0, y, 1, y, dt, f);
+            else {
+                combine(g, u, 0, y, 1, y, dt, f);
+                if ((rc = term->eval(term, t + dt, u, f, &b, err))) goto done;
+                st.evals++;
+                st.cfl_violations += b < dt / o.factor_cfl;
+                if (order == 2)
+                    bad = combine(g, y, 0.5, y, 0.5, u, dt, f);
+                else {
+                    combine(g, u, 0.75, y, 0.25, u, dt, f);
+                    if ((rc = term->eval(term, t + 0.5 * dt, u, f, &b, err))) goto done;
+                    st.evals++;
+                    st.cfl_violations += b < dt / o.factor_cfl;
+                    bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f);
+                }
+            }
+            t = last ? tk : t + dt;
+            st.steps++;
+            st.t = t;
+            if (bad) {
+                rc = hj_error_set(err, HJ_ENONFINITE, "blow-up: NaN or Inf in the state at t = %.17g after step %ld",
+                                  t, st.steps);
+                goto done;
+            }
+            if (o.post && (rc = o.post(t, y, o.post_ctx, err))) goto done;
+            if (o.single_step) goto done;
+        }
+        if (out && (rc = out(k, t, y, out_ctx, err))) goto done;
+    }
+done:
+    hj_ls_free(f);
+    hj_ls_free(u);
+    st.seconds = wall() - start;
+    if (stats) *stats = st;
+    return rc;
+}

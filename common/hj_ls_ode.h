@@ -1,0 +1,62 @@
+/* hj_ls_ode.h -- explicit TVD Runge-Kutta integration with CFL-limited
+ * steps (Mitchell's toolbox, section 3.5: odeCFL1, odeCFL2, odeCFL3).
+ *
+ * Solves D_t y = G(t, y), G given by a term (hj_ls_term.h), by the method
+ * of lines.  Order 1 is forward Euler; order 2 Heun's TVD scheme
+ *     u1 = y + dt G(y),  y' = (y + u1 + dt G(u1)) / 2;
+ * order 3 Shu and Osher's TVD scheme
+ *     u1 = y + dt G(y),  u2 = 3/4 y + 1/4 (u1 + dt G(u1)),
+ *     y' = 1/3 y + 2/3 (u2 + dt G(u2)).
+ * The step is dt = min(FactorCFL * bound, MaxStep, time to the next output
+ * time), with bound the CFL bound returned by the term at the start of the
+ * step (as in the toolbox, later stages are not re-limited; a stage whose
+ * bound is below dt / FactorCFL is counted in the statistics).
+ *
+ * Memory: the state y plus two arrays (one stage, one time derivative),
+ * whatever the order.
+ *
+ * Errors (returned, never printed): a NaN or infinite bound without a
+ * finite MaxStep, a zero bound, the term's own errors, and a blow-up: NaN
+ * or Inf in the state after a step, reported with the time and the step
+ * number (HJ_ENONFINITE).
+ */
+#ifndef HJ_LS_ODE_H
+#define HJ_LS_ODE_H
+
+#include "hj_error.h"
+#include "hj_ls_grid.h"
+#include "hj_ls_term.h"
+
+/* Called after every full step; may change y (e.g. a mask, section 3.7.2). */
+typedef int (*hj_ls_post_fn)(double t, double *y, void *ctx, hj_error *err);
+
+typedef struct {
+    double factor_cfl;   /* FactorCFL, default 0.5 */
+    double max_step;     /* MaxStep, default DBL_MAX */
+    hj_ls_post_fn post;  /* PostTimestep, default NULL */
+    void *post_ctx;
+    int single_step;     /* SingleStep: return after one step */
+} hj_ls_ode_opts;
+
+/* Stats (the library does not print them; the caller may). */
+typedef struct {
+    long steps;          /* time steps taken */
+    long evals;          /* term evaluations */
+    long cfl_violations; /* later stages whose bound was below dt / FactorCFL */
+    double t;            /* time reached */
+    double seconds;      /* wall-clock time spent */
+} hj_ls_ode_stats;
+
+/* Receives the solution at output time tspan[k], k = 1 .. ntspan - 1. */
+typedef int (*hj_ls_output_fn)(int k, double t, const double *y, void *ctx, hj_error *err);
+
+void hj_ls_ode_defaults(hj_ls_ode_opts *o);
+
+/* Integrate y from tspan[0] through the increasing times tspan[1..ntspan-1]
+ * with the TVD RK scheme of the given order (1, 2, 3).  y is updated in
+ * place and holds the solution at the last time reached; out (may be NULL)
+ * is called at every output time.  opts and stats may be NULL. */
+int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
+              const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
+
+#endif

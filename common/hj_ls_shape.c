@@ -1,0 +1,126 @@
+/* hj_ls_shape.c -- basic shapes and set operations. */
+#include "hj_ls_shape.h"
+
+#include <math.h>
+
+/* Parameters of a shape, evaluated node by node through hj_ls_fill. */
+typedef struct {
+    int dim;
+    int use[HJ_LS_MAXDIM];
+    const double *c, *lo, *hi, *n; /* center or point, box corners, normal */
+    double r, nn;
+} shape;
+
+static double cylinder_at(const double *x, void *ctx)
+{
+    const shape *s = ctx;
+    double q = 0;
+    for (int d = 0; d < s->dim; d++)
+        if (s->use[d]) q += (x[d] - s->c[d]) * (x[d] - s->c[d]);
+    return sqrt(q) - s->r;
+}
+
+/* Intersection of the two hyperplanes of every dimension; an infinite
+ * bound gives -inf, which the maximum ignores. */
+static double rectangle_at(const double *x, void *ctx)
+{
+    const shape *s = ctx;
+    double m = -INFINITY;
+    for (int d = 0; d < s->dim; d++) {
+        const double lo = s->lo[d] - x[d], hi = x[d] - s->hi[d];
+        m = lo > m ? lo : m;
+        m = hi > m ? hi : m;
+    }
+    return m;
+}
+
+static double hyperplane_at(const double *x, void *ctx)
+{
+    const shape *s = ctx;
+    double q = 0;
+    for (int d = 0; d < s->dim; d++) q += s->n[d] * (x[d] - s->c[d]);
+    return q / s->nn;
+}
+
+int hj_ls_shape_cylinder(const hj_ls_grid *g, const int *ignore, int nignore, const double *center, double radius,
+                         double *out, hj_error *err)
+{
+    if (!(radius > 0) || !isfinite(radius)) return hj_error_set(err, HJ_EINVAL, "sphere radius must be positive");
+    shape s = {.dim = g->dim, .c = center, .r = radius};
+    for (int d = 0; d < g->dim; d++) s.use[d] = 1;
+    for (int q = 0; q < nignore; q++) {
+        if (ignore[q] < 0 || ignore[q] >= g->dim)
+            return hj_error_set(err, HJ_EINVAL, "dimension mismatch: cylinder ignores dimension %d of a %d-D grid",
+                                ignore[q], g->dim);
+        s.use[ignore[q]] = 0;
+    }
+    hj_ls_fill(g, out, cylinder_at, &s);
+    return HJ_OK;
+}
+
+int hj_ls_shape_sphere(const hj_ls_grid *g, const double *center, double radius, double *out, hj_error *err)
+{
+    return hj_ls_shape_cylinder(g, NULL, 0, center, radius, out, err);
+}
+
+int hj_ls_shape_rectangle_corners(const hj_ls_grid *g, const double *lower, const double *upper, double *out,
+                                  hj_error *err)
+{
+    for (int d = 0; d < g->dim; d++)
+        if (!(lower[d] < upper[d]) || lower[d] == INFINITY || upper[d] == -INFINITY)
+            return hj_error_set(err, HJ_EINVAL, "rectangle needs lower < upper in dimension %d", d);
+    shape s = {.dim = g->dim, .lo = lower, .hi = upper};
+    hj_ls_fill(g, out, rectangle_at, &s);
+    return HJ_OK;
+}
+
+int hj_ls_shape_rectangle_center(const hj_ls_grid *g, const double *center, const double *widths, double *out,
+                                 hj_error *err)
+{
+    double lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
+    for (int d = 0; d < g->dim; d++) {
+        if (!(widths[d] > 0))
+            return hj_error_set(err, HJ_EINVAL, "rectangle width must be positive in dimension %d", d);
+        lo[d] = center[d] - 0.5 * widths[d];
+        hi[d] = center[d] + 0.5 * widths[d];
+    }
+    return hj_ls_shape_rectangle_corners(g, lo, hi, out, err);
+}
+
+int hj_ls_shape_hyperplane(const hj_ls_grid *g, const double *normal, const double *point, double *out, hj_error *err)
+{
+    double nn = 0;
+    for (int d = 0; d < g->dim; d++) nn += normal[d] * normal[d];
+    nn = sqrt(nn);
+    if (!(nn > 0) || !isfinite(nn)) return hj_error_set(err, HJ_EINVAL, "hyperplane normal must be nonzero and finite");
+    shape s = {.dim = g->dim, .c = point, .n = normal, .nn = nn};
+    hj_ls_fill(g, out, hyperplane_at, &s);
+    return HJ_OK;
+}
+
+/* out = op(a, b) over interior nodes. */
+#define SETOP(name, expr)                                                            \
+    void name(const hj_ls_grid *g, const double *a, const double *b, double *out)    \
+    {                                                                                \
+        long idx[HJ_LS_MAXDIM];                                                      \
+        for (size_t r = 0; r < g->rows; r++) {                                       \
+            const size_t k0 = hj_ls_row(g, r, idx);                                  \
+            for (long j = 0; j < g->N[0]; j++) {                                     \
+                const double p = a[k0 + (size_t)j], q = b[k0 + (size_t)j];           \
+                out[k0 + (size_t)j] = (expr);                                        \
+            }                                                                        \
+        }                                                                            \
+    }
+
+SETOP(hj_ls_shape_union, p < q ? p : q)
+SETOP(hj_ls_shape_intersection, p > q ? p : q)
+SETOP(hj_ls_shape_difference, p > -q ? p : -q)
+
+void hj_ls_shape_complement(const hj_ls_grid *g, const double *a, double *out)
+{
+    long idx[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k0 = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) out[k0 + (size_t)j] = -a[k0 + (size_t)j];
+    }
+}

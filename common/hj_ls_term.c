@@ -1,0 +1,660 @@
+/* hj_ls_term.c -- the HJ PDE terms, evaluated row by row. */
+#include "hj_ls_term.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- row driver ------------------------------------------------------ */
+
+/* Context of one row: its first node k, node index and coordinates (x[0]
+ * of node j is x0 + j dx[0]), a per-thread workspace. */
+typedef struct {
+    size_t k;
+    long idx[HJ_LS_MAXDIM];
+    double x[HJ_LS_MAXDIM];
+    double *ws;
+    double *tmax; /* per node of a row: running maximum of the inverse CFL
+                   * bound over the rows of this thread (NaN sticks) */
+    size_t r;       /* this row's number */
+    size_t cache_r; /* row whose differences along dimension 1 the ring holds */
+    int head;       /* ring slot of the difference k = -3 */
+} row_ctx;
+
+/* A row evaluator: writes ydot on the row, *inv = the row's largest inverse
+ * CFL bound (NaN if one was NaN); returns 0 or an error code with the node
+ * j of the row that failed. */
+typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad_j);
+
+/* Run f on every row in parallel.  Returns the largest inverse CFL bound
+ * in *maxinv; on failure the code of the first failing node in row order
+ * (deterministic whatever the number of threads), with a message naming
+ * `what` and the node. */
+static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                    double *ydot, double *maxinv, const char *what, hj_error *err)
+{
+    double m = 0;
+    int nan_seen = 0, nomem = 0;
+    size_t bad_row = (size_t)-1;
+    long bad_j = -1;
+    int bad_code = 0;
+#ifdef _OPENMP
+#pragma omp parallel reduction(max : m) reduction(| : nan_seen, nomem)
+#endif
+    {
+        row_ctx rc;
+        const long n = g->N[0];
+        rc.ws = malloc(sizeof(double) * (ws_doubles + (size_t)n));
+        if (!rc.ws) nomem = 1;
+        else {
+            rc.tmax = rc.ws + ws_doubles;
+            for (long j = 0; j < n; j++) rc.tmax[j] = 0;
+            rc.cache_r = (size_t)-1;
+            rc.head = 0;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 32)
+#endif
+            for (size_t r = 0; r < g->rows; r++) {
+                rc.k = hj_ls_row(g, r, rc.idx);
+                rc.r = r;
+                hj_ls_coord(g, rc.idx, rc.x);
+                double inv = 0;
+                long j = -1;
+                int code = f(term, t, y, ydot, &rc, &inv, &j);
+                if (code) {
+#ifdef _OPENMP
+#pragma omp critical(hj_ls_term_fail)
+#endif
+                    if (r < bad_row) bad_row = r, bad_j = j, bad_code = code;
+                }
+                if (inv != inv) nan_seen = 1;
+                else m = inv > m ? inv : m;
+            }
+            for (long j = 0; j < n; j++) {
+                if (rc.tmax[j] != rc.tmax[j]) nan_seen = 1;
+                else m = rc.tmax[j] > m ? rc.tmax[j] : m;
+            }
+        }
+        free(rc.ws);
+    }
+    if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the %s workspace", what);
+    if (bad_code) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        hj_ls_row(g, bad_row, idx);
+        idx[0] = bad_j;
+        hj_ls_coord(g, idx, x);
+        char pos[256];
+        int len = 0;
+        for (int d = 0; d < g->dim && len < 200; d++)
+            len += snprintf(pos + len, sizeof pos - (size_t)len, "%s%g", d ? ", " : "", x[d]);
+        return hj_error_set(err, bad_code, "%s returned a non-finite value at x = (%s), t = %g", what, pos, t);
+    }
+    if (nan_seen || m == INFINITY)
+        return hj_error_set(err, HJ_ENONFINITE, "%s: non-finite CFL bound at t = %g", what, t);
+    *maxinv = m;
+    return HJ_OK;
+}
+
+static inline double scalar_at(const hj_ls_scalar *s, double t, const double *x, double phi, size_t k)
+{
+    return s->fn ? s->fn(t, x, phi, s->ctx) : s->array ? s->array[k] : s->value;
+}
+
+static double bound_of(double maxinv) { return maxinv > 0 ? 1 / maxinv : INFINITY; }
+
+/* ---- convection ------------------------------------------------------ */
+
+/* Vector reductions: "omp simd" lets gcc vectorise them without
+ * -ffast-math; the lane order is fixed at compile time, not by threads. */
+#ifdef _OPENMP
+#define SIMD_REDUCE(...) _Pragma(HJ_LS_STR(omp simd reduction(__VA_ARGS__)))
+#else
+#define SIMD_REDUCE(...)
+#endif
+#define HJ_LS_STR(x) #x
+
+static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const hj_ls_convection *c = term;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    double *acc = rc->ws, *cfl = acc + n, *v = cfl + n, *dl = v + n, *w = dl + n;
+    for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
+    for (int d = 0; d < g->dim; d++) {
+        if (c->velocity_fn || c->velocity_array[d]) {
+            if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
+            else memcpy(v, c->velocity_array[d] + rc->k, sizeof(double) * (size_t)n);
+            long j = 0;
+            while (j < n && v[j] == 0) j++; /* NaN counts as flow: it reaches the CFL bound */
+            if (j == n) continue;           /* no flow along d on this row: no derivative */
+        } else {
+            if (c->velocity[d] == 0) continue;
+            for (long j = 0; j < n; j++) v[j] = c->velocity[d];
+        }
+        if (d == 1 && (c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3)) {
+            /* Rows r - 1 and r are neighbours in dimension 1 (rows are
+             * numbered with dimension 1 fastest): five of the six rows of
+             * differences are the previous row's, shifted by one. */
+            double *ring = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
+            const double *y0 = y + rc->k;
+            if (rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0) {
+                rc->head = (rc->head + 1) % 6;
+                double *slot = ring + (size_t)((rc->head + 5) % 6) * (size_t)n;
+                hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], 2, slot);
+            } else {
+                rc->head = 0;
+                for (int k = 0; k < 6; k++)
+                    hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], k - 3, ring + (size_t)k * (size_t)n);
+            }
+            rc->cache_r = rc->r;
+            const double *D[6];
+            for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
+            hj_ls_upwind_select_diffs(c->scheme, D, n, v, dl);
+        } else
+            hj_ls_upwind_row_select(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], v, dl, w);
+        const double idx = 1 / g->dx[d];
+        for (long j = 0; j < n; j++) {
+            acc[j] -= v[j] * dl[j];
+            cfl[j] += fabs(v[j]) * idx;
+        }
+    }
+    /* Elementwise running maximum (no reduction chain in the row loop); a
+     * NaN or infinite velocity shows up there as a non-finite bound. */
+    double *out = ydot + rc->k, *tm = rc->tmax;
+    for (long j = 0; j < n; j++) {
+        out[j] = acc[j];
+        tm[j] = (cfl[j] > tm[j] || cfl[j] != cfl[j]) ? cfl[j] : tm[j];
+    }
+    (void)bad;
+    *inv = 0;
+    return HJ_OK;
+}
+
+static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_convection *c = (const hj_ls_convection *)term;
+    const hj_ls_grid *g = c->grid;
+    if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
+    hj_ls_fill_ghosts(g, y);
+    double m;
+    int rc = for_rows(g, (size_t)(5 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, c, t, y, ydot, &m,
+                      "convection velocity", err);
+    if (rc) return rc;
+    *bound = bound_of(m);
+    return HJ_OK;
+}
+
+void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = convection_eval;
+    c->grid = g;
+    c->scheme = scheme;
+}
+
+/* ---- normal motion and reinitialization ------------------------------ */
+
+/* Godunov |grad phi| for speed a at one node from the left and right
+ * derivatives of every dimension (stride n in dl, dr); the upwind
+ * components go to p. */
+static inline double godunov(int dim, const double *dl, const double *dr, long n, double a, double *p)
+{
+    double s = 0;
+    for (int d = 0; d < dim; d++) {
+        const double l = dl[d * n], r = dr[d * n];
+        double pl, pr;
+        if (a >= 0) pl = l > 0 ? l : 0, pr = r < 0 ? r : 0;
+        else pl = l < 0 ? l : 0, pr = r > 0 ? r : 0;
+        p[d] = pl * pl >= pr * pr ? pl : pr;
+        s += p[d] * p[d];
+    }
+    return sqrt(s);
+}
+
+/* Speed a (normal) or S(phi_0) (reinit) times Godunov |grad phi|. */
+typedef struct {
+    const hj_ls_grid *grid;
+    int scheme;
+    const hj_ls_scalar *speed; /* normal motion */
+    const double *initial;     /* reinitialization */
+    double smear2;             /* max dx^2 */
+} godunov_term;
+
+static int godunov_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const godunov_term *c = term;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const int dim = g->dim;
+    double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
+    for (int d = 0; d < dim; d++)
+        hj_ls_upwind_row(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl + d * n, dr + d * n, w);
+    double m = 0, x[HJ_LS_MAXDIM];
+    memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    for (long j = 0; j < n; j++) {
+        const size_t k = rc->k + (size_t)j;
+        double a;
+        if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
+        else {
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            a = scalar_at(c->speed, t, x, y[k], k);
+            if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
+        }
+        double p[HJ_LS_MAXDIM];
+        const double mag = godunov(dim, dl + j, dr + j, n, a, p);
+        ydot[k] = c->initial ? -a * (mag - 1) : -a * mag;
+        double s = 0;
+        for (int d = 0; d < dim; d++) s += (mag > 0 ? fabs(p[d]) / mag : 1.0) / g->dx[d];
+        s *= fabs(a);
+        m = s > m ? s : m;
+    }
+    *inv = m;
+    return HJ_OK;
+}
+
+static int godunov_eval(const hj_ls_grid *g, const godunov_term *gt, double t, double *y, double *ydot, double *bound,
+                        const char *what, hj_error *err)
+{
+    if (!hj_ls_scheme_name(gt->scheme)) return hj_error_set(err, HJ_EINVAL, "%s: unknown scheme %d", what, gt->scheme);
+    hj_ls_fill_ghosts(g, y);
+    double m;
+    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
+                      what, err);
+    if (rc) return rc;
+    *bound = bound_of(m);
+    return HJ_OK;
+}
+
+static int normal_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_normal *c = (const hj_ls_normal *)term;
+    godunov_term gt = {c->grid, c->scheme, &c->speed, NULL, 0};
+    return godunov_eval(c->grid, &gt, t, y, ydot, bound, "normal speed", err);
+}
+
+void hj_ls_normal_init(hj_ls_normal *c, const hj_ls_grid *g, int scheme)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = normal_eval;
+    c->grid = g;
+    c->scheme = scheme;
+}
+
+static int reinit_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_reinit *c = (const hj_ls_reinit *)term;
+    if (!c->initial) return hj_error_set(err, HJ_EINVAL, "reinitialization needs the initial data");
+    double h = 0;
+    for (int d = 0; d < c->grid->dim; d++) h = c->grid->dx[d] > h ? c->grid->dx[d] : h;
+    godunov_term gt = {c->grid, c->scheme, NULL, c->initial, h * h};
+    return godunov_eval(c->grid, &gt, t, y, ydot, bound, "reinitialization", err);
+}
+
+void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const double *initial)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = reinit_eval;
+    c->grid = g;
+    c->scheme = scheme;
+    c->initial = initial;
+}
+
+/* ---- Lax-Friedrichs ---------------------------------------------------- */
+
+typedef struct {
+    const hj_ls_lax_friedrichs *lf;
+    double gmin[HJ_LS_MAXDIM], gmax[HJ_LS_MAXDIM]; /* global gradient range */
+} lf_pass;
+
+/* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
+ * carries nothing.  The range is kept in the workspace tail and merged by
+ * the caller; here rows only update thread-local ranges. */
+static int lf_range_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    (void)t, (void)ydot, (void)bad;
+    const lf_pass *ps = term;
+    const hj_ls_grid *g = ps->lf->grid;
+    const long n = g->N[0];
+    double *dl = rc->ws, *dr = dl + n, *w = dr + n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
+    for (int d = 0; d < g->dim; d++) {
+        hj_ls_upwind_row(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl, dr, w);
+        double lo = range[2 * d], hi = range[2 * d + 1];
+        for (long j = 0; j < n; j++) {
+            const double a = dl[j] < dr[j] ? dl[j] : dr[j], b = dl[j] < dr[j] ? dr[j] : dl[j];
+            lo = a < lo ? a : lo;
+            hi = b > hi ? b : hi;
+        }
+        range[2 * d] = lo, range[2 * d + 1] = hi;
+    }
+    *inv = 0;
+    return HJ_OK;
+}
+
+static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const lf_pass *ps = term;
+    const hj_ls_lax_friedrichs *c = ps->lf;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const int dim = g->dim;
+    double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
+    for (int d = 0; d < dim; d++)
+        hj_ls_upwind_row(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl + d * n, dr + d * n, w);
+    double m = 0, x[HJ_LS_MAXDIM];
+    memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    for (long j = 0; j < n; j++) {
+        const size_t k = rc->k + (size_t)j;
+        x[0] = g->min[0] + (double)j * g->dx[0];
+        double p[HJ_LS_MAXDIM], lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
+        for (int d = 0; d < dim; d++) {
+            const double l = dl[d * n + j], r = dr[d * n + j];
+            p[d] = 0.5 * (l + r);
+            lo[d] = c->dissipation == HJ_LS_LLLF ? (l < r ? l : r) : ps->gmin[d];
+            hi[d] = c->dissipation == HJ_LS_LLLF ? (l < r ? r : l) : ps->gmax[d];
+        }
+        const double H = c->ham(t, x, y[k], p, c->ctx);
+        if (!isfinite(H)) { *bad = j; return HJ_ENONFINITE; }
+        double diss = 0, s = 0;
+        for (int d = 0; d < dim; d++) {
+            const double l = dl[d * n + j], r = dr[d * n + j];
+            double a;
+            if (c->dissipation == HJ_LS_LLF) {
+                /* local range in d only */
+                const double sl = lo[d], sh = hi[d];
+                lo[d] = l < r ? l : r, hi[d] = l < r ? r : l;
+                a = c->partial(t, x, lo, hi, d, c->ctx);
+                lo[d] = sl, hi[d] = sh;
+            } else
+                a = c->partial(t, x, lo, hi, d, c->ctx);
+            if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
+            a = fabs(a);
+            diss += a * 0.5 * (r - l);
+            s += a / g->dx[d];
+        }
+        ydot[k] = -(H - diss);
+        m = s > m ? s : m;
+    }
+    *inv = m;
+    return HJ_OK;
+}
+
+static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_lax_friedrichs *c = (const hj_ls_lax_friedrichs *)term;
+    const hj_ls_grid *g = c->grid;
+    if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown scheme");
+    if (!c->ham || !c->partial) return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks");
+    if (c->dissipation < HJ_LS_GLF || c->dissipation > HJ_LS_LLLF)
+        return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown dissipation %d", c->dissipation);
+    hj_ls_fill_ghosts(g, y);
+    lf_pass ps;
+    ps.lf = c;
+    const long n = g->N[0];
+    if (c->dissipation != HJ_LS_LLLF) {
+        /* Global range: each thread keeps its own in its workspace; min and
+         * max are exact, so the merge order does not matter. */
+        for (int d = 0; d < g->dim; d++) ps.gmin[d] = INFINITY, ps.gmax[d] = -INFINITY;
+        int nomem = 0;
+#ifdef _OPENMP
+#pragma omp parallel reduction(| : nomem)
+#endif
+        {
+            row_ctx rc;
+            const size_t tail = (size_t)(2 + HJ_LS_ROW_WORK) * (size_t)n;
+            rc.ws = malloc(sizeof(double) * (tail + 2 * HJ_LS_MAXDIM));
+            if (!rc.ws) nomem = 1;
+            else {
+                double *range = rc.ws + tail;
+                for (int d = 0; d < g->dim; d++) range[2 * d] = INFINITY, range[2 * d + 1] = -INFINITY;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 32)
+#endif
+                for (size_t r = 0; r < g->rows; r++) {
+                    double inv;
+                    long j;
+                    rc.k = hj_ls_row(g, r, rc.idx);
+                    lf_range_row(&ps, t, y, ydot, &rc, &inv, &j);
+                }
+#ifdef _OPENMP
+#pragma omp critical(hj_ls_lf_range)
+#endif
+                for (int d = 0; d < g->dim; d++) {
+                    ps.gmin[d] = range[2 * d] < ps.gmin[d] ? range[2 * d] : ps.gmin[d];
+                    ps.gmax[d] = range[2 * d + 1] > ps.gmax[d] ? range[2 * d + 1] : ps.gmax[d];
+                }
+            }
+            free(rc.ws);
+        }
+        if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the Lax-Friedrichs workspace");
+    }
+    double m;
+    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
+                      "Hamiltonian or partial callback", err);
+    if (rc) return rc;
+    *bound = bound_of(m);
+    return HJ_OK;
+}
+
+void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
+                               hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = lf_eval;
+    c->grid = g;
+    c->scheme = scheme;
+    c->dissipation = dissipation;
+    c->ham = ham;
+    c->partial = partial;
+    c->ctx = ctx;
+}
+
+/* ---- pointwise terms: curvature, Hessian trace, discount, forcing ----- */
+
+enum { PT_CURV, PT_HESS, PT_DISC, PT_FORC };
+typedef struct {
+    int kind;
+    const hj_ls_grid *grid;
+    const hj_ls_scalar *s;
+    const double *M;
+} point_term;
+
+static int point_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const point_term *c = term;
+    const hj_ls_grid *g = c->grid;
+    const int dim = g->dim;
+    double x[HJ_LS_MAXDIM], m = 0;
+    memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    double sdx = 0;
+    for (int d = 0; d < dim; d++) sdx += 1 / (g->dx[d] * g->dx[d]);
+    for (long j = 0; j < g->N[0]; j++) {
+        const size_t k = rc->k + (size_t)j;
+        x[0] = g->min[0] + (double)j * g->dx[0];
+        const double *p = y + k;
+        double v = 0, s = 0;
+        if (c->kind == PT_HESS) {
+            for (int a = 0; a < dim; a++)
+                for (int b = 0; b < dim; b++) {
+                    const ptrdiff_t sa = g->stride[a], sb = g->stride[b];
+                    const double hab = a == b ? (p[sa] - 2 * p[0] + p[-sa]) / (g->dx[a] * g->dx[a])
+                                              : (p[sa + sb] - p[sa - sb] - p[-sa + sb] + p[-sa - sb]) *
+                                                    (0.25 / (g->dx[a] * g->dx[b]));
+                    v -= c->M[a * dim + b] * hab;
+                }
+        } else {
+            const double a = scalar_at(c->s, t, x, y[k], k);
+            if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
+            if (c->kind == PT_CURV) {
+                double kappa, mag;
+                hj_ls_curvature_at(g, p, &kappa, &mag);
+                v = a * kappa * mag;
+                s = 2 * fabs(a) * sdx;
+            } else if (c->kind == PT_DISC) {
+                v = -a * y[k];
+                s = fabs(a);
+            } else
+                v = -a;
+        }
+        ydot[k] = v;
+        m = s > m ? s : m;
+    }
+    *inv = m;
+    return HJ_OK;
+}
+
+static int point_eval(const point_term *pt, double t, double *y, double *ydot, double *bound, const char *what,
+                      hj_error *err)
+{
+    const hj_ls_grid *g = pt->grid;
+    hj_ls_fill_ghosts(g, y);
+    double m;
+    int rc = for_rows(g, 1, point_row, pt, t, y, ydot, &m, what, err);
+    if (rc) return rc;
+    if (pt->kind == PT_HESS) {
+        m = 0;
+        for (int a = 0; a < g->dim; a++)
+            for (int b = 0; b < g->dim; b++)
+                m += fabs(pt->M[a * g->dim + b]) * (a == b ? 2 : 1) / (g->dx[a] * g->dx[b]);
+    }
+    *bound = bound_of(m);
+    return HJ_OK;
+}
+
+static int curvature_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_curvature_term *c = (const hj_ls_curvature_term *)term;
+    point_term pt = {PT_CURV, c->grid, &c->b, NULL};
+    return point_eval(&pt, t, y, ydot, bound, "curvature coefficient b", err);
+}
+
+void hj_ls_curvature_term_init(hj_ls_curvature_term *c, const hj_ls_grid *g)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = curvature_eval;
+    c->grid = g;
+}
+
+static int hessian_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_hessian_term *c = (const hj_ls_hessian_term *)term;
+    point_term pt = {PT_HESS, c->grid, NULL, c->M};
+    return point_eval(&pt, t, y, ydot, bound, "Hessian trace", err);
+}
+
+void hj_ls_hessian_term_init(hj_ls_hessian_term *c, const hj_ls_grid *g, const double *L, const double *R)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = hessian_eval;
+    c->grid = g;
+    const int n = g->dim;
+    /* trace(L H R) = trace(R L H) = sum_ij (RL)_ij H_ji, and H is symmetric */
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            double s = 0;
+            for (int k = 0; k < n; k++) s += R[i * n + k] * L[k * n + j];
+            c->M[i * n + j] = s;
+        }
+}
+
+static int discount_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_discount *c = (const hj_ls_discount *)term;
+    point_term pt = {PT_DISC, c->grid, &c->lambda, NULL};
+    return point_eval(&pt, t, y, ydot, bound, "discount factor", err);
+}
+
+void hj_ls_discount_init(hj_ls_discount *c, const hj_ls_grid *g)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = discount_eval;
+    c->grid = g;
+}
+
+static int forcing_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_forcing *c = (const hj_ls_forcing *)term;
+    point_term pt = {PT_FORC, c->grid, &c->F, NULL};
+    return point_eval(&pt, t, y, ydot, bound, "forcing", err);
+}
+
+void hj_ls_forcing_init(hj_ls_forcing *c, const hj_ls_grid *g)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = forcing_eval;
+    c->grid = g;
+}
+
+/* ---- restrict and sum ------------------------------------------------ */
+
+static int restrict_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_restrict *c = (const hj_ls_restrict *)term;
+    const hj_ls_grid *g = c->grid;
+    int rc = c->inner->eval(c->inner, t, y, ydot, bound, err);
+    if (rc) return rc;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double *p = ydot + hj_ls_row(g, r, idx);
+        if (c->positive)
+            for (long j = 0; j < g->N[0]; j++) p[j] = p[j] > 0 ? p[j] : 0;
+        else
+            for (long j = 0; j < g->N[0]; j++) p[j] = p[j] < 0 ? p[j] : 0;
+    }
+    return HJ_OK;
+}
+
+void hj_ls_restrict_init(hj_ls_restrict *c, const hj_ls_grid *g, const hj_ls_term *inner, int positive)
+{
+    memset(c, 0, sizeof *c);
+    c->base.eval = restrict_eval;
+    c->grid = g;
+    c->inner = inner;
+    c->positive = positive;
+}
+
+static int sum_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_sum *c = (const hj_ls_sum *)term;
+    const hj_ls_grid *g = c->grid;
+    double inv = 0, b;
+    int rc = c->terms[0]->eval(c->terms[0], t, y, ydot, &b, err);
+    if (rc) return rc;
+    inv += 1 / b;
+    for (int i = 1; i < c->n; i++) {
+        if ((rc = c->terms[i]->eval(c->terms[i], t, y, c->work, &b, err))) return rc;
+        inv += 1 / b;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+        for (size_t r = 0; r < g->rows; r++) {
+            long idx[HJ_LS_MAXDIM];
+            const size_t k = hj_ls_row(g, r, idx);
+            for (long j = 0; j < g->N[0]; j++) ydot[k + (size_t)j] += c->work[k + (size_t)j];
+        }
+    }
+    *bound = bound_of(inv);
+    return HJ_OK;
+}
+
+int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, hj_error *err)
+{
+    memset(c, 0, sizeof *c);
+    if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "a sum needs 1..%d terms", HJ_LS_SUM_MAX);
+    c->base.eval = sum_eval;
+    c->grid = g;
+    c->n = n;
+    for (int i = 0; i < n; i++) c->terms[i] = terms[i];
+    if (n > 1 && !(c->work = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory for a sum of terms");
+    return HJ_OK;
+}
+
+void hj_ls_sum_free(hj_ls_sum *c)
+{
+    hj_ls_free(c->work);
+    c->work = NULL;
+}

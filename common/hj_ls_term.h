@@ -1,0 +1,181 @@
+/* hj_ls_term.h -- approximations of the terms of the HJ PDE (Mitchell's
+ * toolbox, section 3.6):
+ *
+ *   0 = D_t phi + v.grad phi + a |grad phi| + S(phi_0)(|grad phi| - 1)
+ *       + H(x, grad phi) - b kappa |grad phi| + trace[L D^2 phi R]
+ *       + lambda phi + F.
+ *
+ * One calling convention for every term (the toolbox's schemeFunc):
+ *     term->eval(term, t, y, ydot, &step_bound, err)
+ * takes the state y (an array on the grid; its ghost layer is filled by the
+ * term, hence not const), writes G(t, y) = the negated sum of the terms into
+ * the interior of ydot, and returns the CFL bound on the time step
+ * (INFINITY if the term imposes none).  A term is a struct whose first
+ * member is an hj_ls_term; fill it with the matching *_init function, set
+ * the parameters, and pass &term.base to the integrator (hj_ls_ode.h).
+ *
+ * Evaluation is parallel over rows (OpenMP, dynamic chunks of rows so
+ * that a thread delayed by other processes does not hold up the others)
+ * and every node is computed independently; the CFL bound is a maximum,
+ * which does not depend on the order of evaluation, so results are bitwise
+ * identical for any number of threads and any schedule.  Callbacks must therefore be thread-safe.  Failures (a
+ * callback returning NaN, a NaN CFL bound, out of memory) are returned as
+ * error codes; terms never print or exit.
+ */
+#ifndef HJ_LS_TERM_H
+#define HJ_LS_TERM_H
+
+#include "hj_error.h"
+#include "hj_ls_deriv.h"
+#include "hj_ls_grid.h"
+
+typedef struct hj_ls_term hj_ls_term;
+typedef int (*hj_ls_term_fn)(const hj_ls_term *term, double t, double *y, double *ydot, double *step_bound,
+                             hj_error *err);
+struct hj_ls_term {
+    hj_ls_term_fn eval;
+};
+
+/* A scalar parameter a(t, x, phi): fn if set, else array (on the grid) if
+ * set, else the constant value (the toolbox's scalar / array /
+ * scalarGridFunc choices). */
+typedef double (*hj_ls_scalar_fn)(double t, const double *x, double phi, void *ctx);
+typedef struct {
+    double value;
+    const double *array;
+    hj_ls_scalar_fn fn;
+    void *ctx;
+} hj_ls_scalar;
+
+/* ---- convection (2): G = -v(x, t) . grad phi, upwinded per dimension. */
+/* Velocity callback, one call per row and dimension (vectorise it, as the
+ * toolbox asks of its callbacks): v[j] = v_d(t, x + j dx0 e_0) for
+ * j = 0 .. n-1, where x is the first node of the row. */
+typedef void (*hj_ls_velocity_fn)(double t, const double *x, double dx0, long n, int d, double *v, void *ctx);
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int scheme;                  /* HJ_LS_* upwind scheme */
+    double velocity[HJ_LS_MAXDIM]; /* constant velocity (default 0) */
+    const double *velocity_array[HJ_LS_MAXDIM]; /* v_d on the grid, or NULL */
+    hj_ls_velocity_fn velocity_fn; /* v_d(t, x), overrides the above */
+    void *ctx;
+} hj_ls_convection;
+/* CFL bound: 1 / max_x sum_d |v_d| / dx_d.  Rows on which v_d vanishes
+ * skip the derivative in d; only the upwind side is computed, and WENO
+ * differences along dimension 1 are reused from the neighbouring row (same
+ * bits as hj_ls_upwind).  A NaN or infinite velocity is reported as a
+ * non-finite CFL bound. */
+void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme);
+
+/* ---- normal motion (3): G = -a |grad phi|, Godunov upwinding
+ * (|grad phi|^2 = sum_d max(max(D-,0)^2, min(D+,0)^2) for a > 0, with the
+ * roles swapped for a < 0).  CFL bound 1 / max_x sum_d |a| |p_d| / (|grad
+ * phi| dx_d), p the upwind gradient (|a| / dx_d where grad phi = 0). */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int scheme;
+    hj_ls_scalar speed;
+} hj_ls_normal;
+void hj_ls_normal_init(hj_ls_normal *c, const hj_ls_grid *g, int scheme);
+
+/* ---- reinitialization (4): G = -S(phi_0)(|grad phi| - 1) with the
+ * smeared sign S = phi_0 / sqrt(phi_0^2 + max dx^2) of the initial data
+ * (Osher & Fedkiw (7.5)) and Godunov upwinding as for normal motion with
+ * speed S.  initial is an array on the grid. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int scheme;
+    const double *initial;
+} hj_ls_reinit;
+void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const double *initial);
+
+/* ---- general Hamiltonian (5) by Lax-Friedrichs, toolbox (25)-(26):
+ * G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2), with alpha_d
+ * = partial(t, x, pmin, pmax, d) bounding |dH/dp_d| over the box
+ * [pmin, pmax] of gradients:
+ *   GLF   the box is the global range of p-, p+ over the grid,
+ *   LLF   local range in dimension d, global in the others,
+ *   LLLF  local range in every dimension.
+ * CFL bound 1 / max_x sum_d alpha_d / dx_d.  A NaN from either callback is
+ * an HJ_ENONFINITE error naming the node. */
+enum { HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF };
+typedef double (*hj_ls_ham_fn)(double t, const double *x, double phi, const double *p, void *ctx);
+typedef double (*hj_ls_partial_fn)(double t, const double *x, const double *pmin, const double *pmax, int d,
+                                   void *ctx);
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int scheme;
+    int dissipation; /* HJ_LS_GLF, HJ_LS_LLF or HJ_LS_LLLF */
+    hj_ls_ham_fn ham;
+    hj_ls_partial_fn partial;
+    void *ctx;
+} hj_ls_lax_friedrichs;
+void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
+                               hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);
+
+/* ---- mean curvature (6): G = b kappa |grad phi|, centered second order
+ * (hj_ls_curvature_at).  CFL bound 1 / max_x 2 b sum_d 1/dx_d^2. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    hj_ls_scalar b;
+} hj_ls_curvature_term;
+void hj_ls_curvature_term_init(hj_ls_curvature_term *c, const hj_ls_grid *g);
+
+/* ---- trace of the Hessian (7), a section 4 extra: G = -trace(L D^2phi R)
+ * = -sum_ij M_ij phi_{x_j x_i} with M = R L (constant, dim x dim, row
+ * major).  CFL bound 1 / (sum_i 2 |M_ii| / dx_i^2 + sum_{i != j} |M_ij| /
+ * (dx_i dx_j)), the explicit diffusion limit.  Stable (diffusive) only if
+ * -(M + M^T)/2 is positive semidefinite: the term does not check. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    double M[HJ_LS_MAXDIM * HJ_LS_MAXDIM];
+} hj_ls_hessian_term;
+void hj_ls_hessian_term_init(hj_ls_hessian_term *c, const hj_ls_grid *g, const double *L, const double *R);
+
+/* ---- discount (8): G = -lambda phi, bound 1 / max |lambda| (explicit
+ * decay limit); forcing (9): G = -F, no bound (INFINITY).  Section 4
+ * extras. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    hj_ls_scalar lambda;
+} hj_ls_discount;
+void hj_ls_discount_init(hj_ls_discount *c, const hj_ls_grid *g);
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    hj_ls_scalar F;
+} hj_ls_forcing;
+void hj_ls_forcing_init(hj_ls_forcing *c, const hj_ls_grid *g);
+
+/* ---- restrict update (10): the inner term's G clipped to >= 0 (positive)
+ * or <= 0; its CFL bound unchanged (toolbox termRestrictUpdate). */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    const hj_ls_term *inner;
+    int positive;
+} hj_ls_restrict;
+void hj_ls_restrict_init(hj_ls_restrict *c, const hj_ls_grid *g, const hj_ls_term *inner, int positive);
+
+/* ---- sum of terms: G = sum_i G_i, bound (sum_i 1 / bound_i)^-1 (toolbox
+ * section 3.6.5).  Holds one work array, allocated by init (HJ_ENOMEM) and
+ * released by hj_ls_sum_free. */
+#define HJ_LS_SUM_MAX 16
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int n;
+    const hj_ls_term *terms[HJ_LS_SUM_MAX];
+    double *work;
+} hj_ls_sum;
+int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, hj_error *err);
+void hj_ls_sum_free(hj_ls_sum *c);
+
+#endif

@@ -1,0 +1,351 @@
+/* Unit tests of common/hj_ls_deriv: orders of accuracy of every upwind
+ * scheme and of the centered approximations on smooth data, agreement of
+ * the two forms of ENO3 and WENO5 to round-off, and argument errors. */
+#include "hj_test.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ls_deriv.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* Smooth periodic test function along dimension `dir` and its derivative. */
+static double f_smooth(double x) { return sin(2 * PI * x) + 0.3 * cos(4 * PI * x + 1); }
+static double df_smooth(double x) { return 2 * PI * cos(2 * PI * x) - 1.2 * PI * sin(4 * PI * x + 1); }
+
+typedef struct {
+    int dir;
+} dirctx;
+
+static double field(const double *x, void *ctx) { return f_smooth(x[((dirctx *)ctx)->dir]); }
+
+/* Periodic grid on [0, 1)^dim with n nodes per dimension. */
+static void periodic_grid(hj_ls_grid *g, int dim, long n)
+{
+    double mn[3] = {0, 0, 0}, mx[3];
+    long N[3] = {n, n, n};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    for (int d = 0; d < 3; d++) mx[d] = 1 - 1.0 / (double)n;
+    assert_int_equal(hj_ls_grid_init(g, dim, mn, mx, N, bc, NULL), HJ_OK);
+}
+
+/* Max error of left and right derivatives in dimension dir. */
+static double upwind_error(int scheme, int dim, int dir, long n)
+{
+    hj_ls_grid g;
+    periodic_grid(&g, dim, n);
+    double *a = hj_ls_alloc(&g), *l = hj_ls_alloc(&g), *r = hj_ls_alloc(&g), *ex = hj_ls_alloc(&g);
+    dirctx c = {dir};
+    hj_ls_fill(&g, a, field, &c);
+    assert_int_equal(hj_ls_upwind(&g, scheme, a, dir, l, r, NULL), HJ_OK);
+    double e = 0;
+    long i[3];
+    for (size_t row = 0; row < g.rows; row++) {
+        size_t k = hj_ls_row(&g, row, i);
+        for (long j = 0; j < n; j++) {
+            i[0] = j;
+            double x = (double)i[dir] * g.dx[dir];
+            double el = fabs(l[k + j] - df_smooth(x)), er = fabs(r[k + j] - df_smooth(x));
+            e = el > e ? el : e;
+            e = er > e ? er : e;
+        }
+    }
+    hj_ls_free(a), hj_ls_free(l), hj_ls_free(r), hj_ls_free(ex);
+    return e;
+}
+
+/* Observed order at least the formal order minus 0.2 on smooth data.  The
+ * WENO schemes are measured where they are asymptotic: WENO5 over n = 256
+ * to 1024 (at n = 64..256 it shows 4.6-4.8, the known loss of the
+ * Jiang-Shu weights near critical points of phi', and at n >= 4096 it hits
+ * round-off); WENO3 over n = 1024 to 4096 (below it is second order, for
+ * the same reason, until eps = 1e-6 dominates the smoothness indicators). */
+static void smooth_orders(void **state)
+{
+    (void)state;
+    for (int s = 0; s < HJ_LS_NSCHEMES; s++) {
+        long n1 = 64, n2 = 128;
+        if (s == HJ_LS_WENO5A || s == HJ_LS_WENO5B) n1 = 256, n2 = 1024;
+        if (s == HJ_LS_WENO3) n1 = 1024, n2 = 4096;
+        double e1 = upwind_error(s, 1, 0, n1), e2 = upwind_error(s, 1, 0, n2);
+        double p = log(e1 / e2) / log((double)n2 / (double)n1);
+        if (!(p > hj_ls_scheme_order(s) - 0.2))
+            fail_msg("%s: observed order %.3f, formal %d (errors %.3e %.3e)", hj_ls_scheme_name(s), p,
+                     hj_ls_scheme_order(s), e1, e2);
+    }
+}
+
+/* The same derivative along dimension 1 of a 2-D grid (strided kernel path)
+ * and dimension 2 of a 3-D grid gives exactly the 1-D errors. */
+static void strided_equals_contiguous(void **state)
+{
+    (void)state;
+    for (int s = 0; s < HJ_LS_NSCHEMES; s++) {
+        double e1 = upwind_error(s, 1, 0, 32);
+        assert_close(upwind_error(s, 2, 1, 32), e1, 0, 0);
+        assert_close(upwind_error(s, 3, 2, 32), e1, 0, 0);
+    }
+}
+
+/* Six dimensions: the derivative along the last one (3 nodes in the
+ * others, 32 along it) equals the 1-D result to round-off, and the ghost layer
+ * of a corner node is periodic in every dimension. */
+static double last_coord(const double *x, void *ctx)
+{
+    (void)ctx;
+    return f_smooth(x[5]) + 0.25 * x[0] * x[0] - x[2]; /* the other dims do not matter for d/dx_5 */
+}
+
+static void six_dimensions(void **state)
+{
+    (void)state;
+    hj_ls_grid g, g1;
+    double mn[6] = {0, 0, 0, 0, 0, 0}, mx[6] = {2.0 / 3, 2.0 / 3, 2.0 / 3, 2.0 / 3, 2.0 / 3, 1 - 1.0 / 32};
+    long N[6] = {3, 3, 3, 3, 3, 32};
+    hj_ls_bc bc[6];
+    for (int d = 0; d < 6; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_PERIODIC, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 6, mn, mx, N, bc, NULL), HJ_OK);
+    assert_int_equal(hj_ls_grid_init(&g1, 1, mn + 5, mx + 5, N + 5, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), *l = hj_ls_alloc(&g), *r = hj_ls_alloc(&g);
+    double *a1 = hj_ls_alloc(&g1), *l1 = hj_ls_alloc(&g1), *r1 = hj_ls_alloc(&g1);
+    dirctx c = {0};
+    hj_ls_fill(&g, a, last_coord, NULL);
+    hj_ls_fill(&g1, a1, field, &c);
+    assert_int_equal(hj_ls_upwind(&g, HJ_LS_WENO5A, a, 5, l, r, NULL), HJ_OK);
+    assert_int_equal(hj_ls_upwind(&g1, HJ_LS_WENO5A, a1, 0, l1, r1, NULL), HJ_OK);
+    long i[6] = {2, 1, 0, 2, 1, 0};
+    for (long j = 0; j < 32; j++) {
+        i[5] = j;
+        assert_close(l[hj_ls_index(&g, i)], l1[g1.offset + (size_t)j], 1e-12, 0);
+        assert_close(r[hj_ls_index(&g, i)], r1[g1.offset + (size_t)j], 1e-12, 0);
+    }
+    long gi[6] = {-1, 3, -2, 0, 4, 33}, wi[6] = {2, 0, 1, 0, 1, 1};
+    assert_close(a[hj_ls_index(&g, gi)], a[hj_ls_index(&g, wi)], 0, 0);
+    hj_ls_free(a), hj_ls_free(l), hj_ls_free(r), hj_ls_free(a1), hj_ls_free(l1), hj_ls_free(r1);
+}
+
+/* Kinked test function of firstDerivSpatialTest1 (section 2.7.2). */
+static double kinked(const double *x, void *ctx)
+{
+    (void)ctx;
+    double t = x[0];
+    if (t < 0.25) return sin(2 * PI * t + PI / 2);
+    if (t < 0.5) return sin(2 * PI * t - PI / 2);
+    return sin(2 * PI * t) + 1;
+}
+
+static double noisy(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sin(37 * x[0]) + 0.01 * cos(1e4 * x[0] * x[0]);
+}
+
+static double max_diff(const hj_ls_grid *g, const double *a, const double *b)
+{
+    double m;
+    hj_ls_norms(g, a, b, &m, NULL, NULL);
+    return m;
+}
+
+/* ENO3a == ENO3b and WENO5a == WENO5b to round-off, on smooth, kinked and
+ * rough data. */
+static void forms_agree(void **state)
+{
+    (void)state;
+    hj_ls_field_fn fs[3] = {field, kinked, noisy};
+    dirctx c = {0};
+    for (int k = 0; k < 3; k++) {
+        hj_ls_grid g;
+        periodic_grid(&g, 1, 80);
+        double *a = hj_ls_alloc(&g), *l1 = hj_ls_alloc(&g), *r1 = hj_ls_alloc(&g), *l2 = hj_ls_alloc(&g),
+               *r2 = hj_ls_alloc(&g);
+        hj_ls_fill(&g, a, fs[k], &c);
+        const int pairs[2][2] = {{HJ_LS_ENO3A, HJ_LS_ENO3B}, {HJ_LS_WENO5A, HJ_LS_WENO5B}};
+        for (int q = 0; q < 2; q++) {
+            hj_ls_upwind(&g, pairs[q][0], a, 0, l1, r1, NULL);
+            hj_ls_upwind(&g, pairs[q][1], a, 0, l2, r2, NULL);
+            double scale;
+            hj_ls_norms(&g, l1, NULL, &scale, NULL, NULL);
+            assert_close(max_diff(&g, l1, l2), 0, 1e-13 * scale, 0);
+            assert_close(max_diff(&g, r1, r2), 0, 1e-13 * scale, 0);
+        }
+        hj_ls_free(a), hj_ls_free(l1), hj_ls_free(r1), hj_ls_free(l2), hj_ls_free(r2);
+    }
+}
+
+/* hj_ls_upwind_row_select (the upwind side only, as convection uses it)
+ * gives bitwise the values of the two-sided kernel, for every scheme, along
+ * the row (stride 1) and across rows, with velocities of both signs. */
+static double mixed(const double *x, void *ctx)
+{
+    (void)ctx;
+    return kinked(x, NULL) * cos(3 * x[1]) + noisy(x, NULL) * x[1];
+}
+
+static void select_equals_two_sided(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    periodic_grid(&g, 2, 24);
+    double *a = hj_ls_alloc(&g);
+    hj_ls_fill(&g, a, mixed, NULL);
+    hj_ls_fill_ghosts(&g, a);
+    const long n = g.N[0];
+    double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n), *dl = malloc(sizeof(double) * (size_t)n),
+           *dr = malloc(sizeof(double) * (size_t)n), *out = malloc(sizeof(double) * (size_t)n),
+           *v = malloc(sizeof(double) * (size_t)n);
+    for (long j = 0; j < n; j++) v[j] = (j % 3 == 0) ? -1.5 : (j % 3 == 1 ? 2.0 : 0.0);
+    long idx[2];
+    for (int s = 0; s < HJ_LS_NSCHEMES; s++)
+        for (int d = 0; d < 2; d++)
+            for (size_t r = 0; r < g.rows; r++) {
+                const double *p = a + hj_ls_row(&g, r, idx);
+                hj_ls_upwind_row(s, p, g.stride[d], n, g.dx[d], dl, dr, w);
+                hj_ls_upwind_row_select(s, p, g.stride[d], n, g.dx[d], v, out, w);
+                for (long j = 0; j < n; j++) {
+                    const double want = v[j] > 0 ? dl[j] : dr[j];
+                    if (memcmp(&want, &out[j], sizeof want))
+                        fail_msg("%s, dim %d, row %zu, node %ld: %.17g != %.17g", hj_ls_scheme_name(s), d, r, j,
+                                 out[j], want);
+                }
+            }
+    free(w), free(dl), free(dr), free(out), free(v);
+    hj_ls_free(a);
+}
+
+/* Centered derivatives of phi = sin(2 pi x) cos(2 pi y) + x y^2 on a 2-D
+ * periodic grid: second order for the first derivative, the Hessian and the
+ * Laplacian. */
+static double f2(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sin(2 * PI * x[0]) * cos(2 * PI * x[1]);
+}
+
+static void centered_orders(void **state)
+{
+    (void)state;
+    double err[2][4];
+    for (int m = 0; m < 2; m++) {
+        hj_ls_grid g;
+        periodic_grid(&g, 2, 32 << m);
+        double *a = hj_ls_alloc(&g), *o = hj_ls_alloc(&g), *ex = hj_ls_alloc(&g);
+        hj_ls_fill(&g, a, f2, NULL);
+        long i[2];
+        double x[2];
+        /* exact values, one kind at a time */
+        for (int kind = 0; kind < 4; kind++) {
+            for (size_t r = 0; r < g.rows; r++) {
+                size_t k = hj_ls_row(&g, r, i);
+                for (long j = 0; j < g.N[0]; j++) {
+                    i[0] = j;
+                    hj_ls_coord(&g, i, x);
+                    double sx = sin(2 * PI * x[0]), cx = cos(2 * PI * x[0]);
+                    double sy = sin(2 * PI * x[1]), cy = cos(2 * PI * x[1]), w = 2 * PI;
+                    ex[k + j] = kind == 0 ? w * cx * cy : kind == 1 ? -w * w * sx * cy
+                              : kind == 2 ? -w * w * cx * sy : -2 * w * w * sx * cy;
+                }
+            }
+            if (kind == 0) hj_ls_centered_first(&g, a, 0, o, NULL);
+            if (kind == 1) hj_ls_hessian(&g, a, 0, 0, o, NULL);
+            if (kind == 2) hj_ls_hessian(&g, a, 1, 0, o, NULL);
+            if (kind == 3) hj_ls_laplacian(&g, a, o, NULL);
+            err[m][kind] = max_diff(&g, o, ex);
+        }
+        hj_ls_free(a), hj_ls_free(o), hj_ls_free(ex);
+    }
+    for (int kind = 0; kind < 4; kind++) {
+        double p = log(err[0][kind] / err[1][kind]) / log(2.0);
+        if (!(p > 1.9 && p < 2.1)) fail_msg("centered kind %d: order %.3f", kind, p);
+    }
+}
+
+/* Curvature of phi = |x| - 0.5 (signed distance to a circle / sphere):
+ * kappa = (dim - 1) / |x| and |grad phi| = 1, second order away from 0. */
+static double sphere(const double *x, void *ctx)
+{
+    int dim = *(int *)ctx;
+    double s = 0;
+    for (int d = 0; d < dim; d++) s += x[d] * x[d];
+    return sqrt(s) - 0.5;
+}
+
+static double curvature_error(int dim, long n, double *gerr)
+{
+    hj_ls_grid g;
+    double mn[3] = {-1, -1, -1}, mx[3] = {1, 1, 1};
+    long N[3] = {n, n, n};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL);
+    double *a = hj_ls_alloc(&g), *k = hj_ls_alloc(&g), *m = hj_ls_alloc(&g);
+    hj_ls_fill(&g, a, sphere, &dim);
+    hj_ls_curvature(&g, a, k, m, NULL);
+    double e = 0, ge = 0;
+    long i[3];
+    double x[3];
+    for (size_t r = 0; r < g.rows; r++) {
+        size_t b = hj_ls_row(&g, r, i);
+        for (long j = 0; j < n; j++) {
+            i[0] = j;
+            hj_ls_coord(&g, i, x);
+            double rad = 0;
+            for (int d = 0; d < dim; d++) rad += x[d] * x[d];
+            rad = sqrt(rad);
+            if (rad < 0.4 || rad > 0.6) continue; /* a band around the circle */
+            double ek = fabs(k[b + j] - (dim - 1) / rad), eg = fabs(m[b + j] - 1);
+            e = ek > e ? ek : e;
+            ge = eg > ge ? eg : ge;
+        }
+    }
+    hj_ls_free(a), hj_ls_free(k), hj_ls_free(m);
+    *gerr = ge;
+    return e;
+}
+
+static void curvature_order(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        double g1, g2;
+        double e1 = curvature_error(dim, 41, &g1), e2 = curvature_error(dim, 81, &g2);
+        double p = log(e1 / e2) / log(80.0 / 40.0), pg = log(g1 / g2) / log(2.0);
+        if (!(p > 1.8) || !(pg > 1.8)) fail_msg("dim %d: curvature order %.3f, |grad| order %.3f", dim, p, pg);
+    }
+}
+
+static void bad_arguments(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    periodic_grid(&g, 2, 8);
+    double *a = hj_ls_alloc(&g);
+    hj_error err;
+    assert_int_equal(hj_ls_upwind(&g, HJ_LS_WENO5A, a, 2, a, a, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "dimension mismatch"));
+    assert_int_equal(hj_ls_upwind(&g, 99, a, 0, a, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_hessian(&g, a, 0, -1, a, &err), HJ_EINVAL);
+    assert_null(hj_ls_scheme_name(HJ_LS_NSCHEMES));
+    hj_ls_free(a);
+}
+
+int main(void)
+{
+#ifdef _OPENMP
+    /* One thread: CI machines are shared, and spinning OpenMP barriers on a
+     * busy machine only slow the tests down (threads are tested in
+     * test_ls_ode's threads_bitwise). */
+    omp_set_num_threads(1);
+#endif
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(smooth_orders),   cmocka_unit_test(strided_equals_contiguous),
+        cmocka_unit_test(six_dimensions),  cmocka_unit_test(forms_agree),
+        cmocka_unit_test(select_equals_two_sided), cmocka_unit_test(centered_orders),
+        cmocka_unit_test(curvature_order), cmocka_unit_test(bad_arguments),
+    };
+    return cmocka_run_group_tests_name("hj_ls_deriv", tests, NULL, NULL);
+}

@@ -1,0 +1,179 @@
+/* Unit tests of common/hj_ls_grid: grid set-up, indexing, and the ghost
+ * values of every boundary condition in one and two dimensions (the
+ * toolbox's ghostCell script, with the values checked instead of looked at). */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ls_grid.h"
+
+static hj_ls_grid grid1(int type, double lo, double hi, long n)
+{
+    hj_ls_grid g;
+    double mn = 0, mx = 1;
+    hj_ls_bc bc = {type, lo, hi};
+    assert_int_equal(hj_ls_grid_init(&g, 1, &mn, &mx, &n, &bc, NULL), HJ_OK);
+    return g;
+}
+
+/* phi_i = values[i] on a 1-D grid of n nodes; returns the array. */
+static double *line(const hj_ls_grid *g, const double *v)
+{
+    double *a = hj_ls_alloc(g);
+    assert_non_null(a);
+    for (long i = 0; i < g->N[0]; i++) a[g->offset + (size_t)i] = v[i];
+    hj_ls_fill_ghosts(g, a);
+    return a;
+}
+
+#define AT(a, g, i) ((a)[(size_t)((ptrdiff_t)(g).offset + (i))])
+
+static void ghosts_1d(void **state)
+{
+    (void)state;
+    const double v[5] = {-2, -1, 0.5, 2, 4};
+    hj_ls_grid g = grid1(HJ_LS_BC_PERIODIC, 0, 0, 5);
+    double *a = line(&g, v);
+    assert_close(AT(a, g, -1), 4, 0, 0);
+    assert_close(AT(a, g, -3), 0.5, 0, 0);
+    assert_close(AT(a, g, 5), -2, 0, 0);
+    assert_close(AT(a, g, 7), 0.5, 0, 0);
+    hj_ls_free(a);
+
+    g = grid1(HJ_LS_BC_DIRICHLET, 7, -7, 5);
+    a = line(&g, v);
+    for (int k = 1; k <= 3; k++) {
+        assert_close(AT(a, g, -k), 7, 0, 0);
+        assert_close(AT(a, g, 4 + k), -7, 0, 0);
+    }
+    hj_ls_free(a);
+
+    /* Neumann: outward normal derivative 1 below, 2 above; dx = 0.25. */
+    g = grid1(HJ_LS_BC_NEUMANN, 1, 2, 5);
+    a = line(&g, v);
+    assert_close(AT(a, g, -2), -2 + 2 * 0.25 * 1, 1e-15, 0);
+    assert_close(AT(a, g, 7), 4 + 3 * 0.25 * 2, 1e-15, 0);
+    hj_ls_free(a);
+
+    /* Extrapolation away from zero: lower end -2 (slope 1 away = down). */
+    g = grid1(HJ_LS_BC_EXTRAP_AWAY, 0, 0, 5);
+    a = line(&g, v);
+    assert_close(AT(a, g, -1), -3, 0, 0);
+    assert_close(AT(a, g, -3), -5, 0, 0);
+    assert_close(AT(a, g, 5), 6, 0, 0);
+    assert_close(AT(a, g, 6), 8, 0, 0);
+    hj_ls_free(a);
+    g = grid1(HJ_LS_BC_EXTRAP_TOWARD, 0, 0, 5);
+    a = line(&g, v);
+    assert_close(AT(a, g, -1), -1, 0, 0);
+    assert_close(AT(a, g, 5), 2, 0, 0);
+    hj_ls_free(a);
+}
+
+/* 2-D: periodic in x, Dirichlet in y; corners follow both. */
+static void ghosts_2d(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[2] = {0, 0}, mx[2] = {1, 1};
+    long N[2] = {4, 3};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_DIRICHLET, -1, 9}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    assert_int_equal(g.total, (size_t)(10 * 9));
+    double *a = hj_ls_alloc(&g);
+    for (long j = 0; j < 3; j++)
+        for (long i = 0; i < 4; i++) {
+            long ix[2] = {i, j};
+            a[hj_ls_index(&g, ix)] = 10 * j + i;
+        }
+    hj_ls_fill_ghosts(&g, a);
+    long p[2];
+    p[0] = -1, p[1] = 1;
+    assert_close(a[hj_ls_index(&g, p)], 13, 0, 0);
+    p[0] = 5, p[1] = 2;
+    assert_close(a[hj_ls_index(&g, p)], 21, 0, 0);
+    p[0] = 2, p[1] = -2;
+    assert_close(a[hj_ls_index(&g, p)], -1, 0, 0);
+    p[0] = -3, p[1] = 4; /* corner: x first (periodic), then y overwrites */
+    assert_close(a[hj_ls_index(&g, p)], 9, 0, 0);
+    hj_ls_free(a);
+}
+
+static void coords_and_rows(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[3] = {-1, 0, 2}, mx[3] = {1, 1, 3};
+    long N[3] = {5, 3, 2};
+    hj_ls_bc bc[3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, N, bc, NULL), HJ_OK);
+    assert_int_equal(g.rows, 6);
+    long i[3];
+    size_t k = hj_ls_row(&g, 4, i);
+    assert_int_equal(i[1], 1);
+    assert_int_equal(i[2], 1);
+    assert_int_equal(k, hj_ls_index(&g, i));
+    double x[3];
+    hj_ls_coord(&g, i, x);
+    assert_close(x[0], -1, 0, 0);
+    assert_close(x[1], 0.5, 1e-15, 0);
+    assert_close(x[2], 3, 1e-15, 0);
+    /* init by dx moves max to the last node */
+    double dx[1] = {0.3}, a = 0, b = 1;
+    hj_ls_bc p = {0, 0, 0};
+    assert_int_equal(hj_ls_grid_init_dx(&g, 1, &a, &b, dx, &p, NULL), HJ_OK);
+    assert_int_equal(g.N[0], 4);
+    assert_close(g.max[0], 0.9, 1e-15, 0);
+}
+
+static void errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    hj_error err;
+    double mn[8] = {0}, mx[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+    long N[8] = {100000, 100000, 100000, 100000, 100000, 100000, 100000, 100000};
+    hj_ls_bc bc[8] = {{0, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 8, mn, mx, N, bc, &err), HJ_ENOMEM);
+    assert_non_null(strstr(err.msg, "too large"));
+    assert_int_equal(hj_ls_grid_init(&g, 0, mn, mx, N, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init(&g, 9, mn, mx, N, bc, &err), HJ_EINVAL);
+    long n1 = 1;
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, &n1, bc, &err), HJ_EINVAL);
+    double bad = NAN;
+    long n5 = 5;
+    assert_int_equal(hj_ls_grid_init(&g, 1, &bad, mx, &n5, bc, &err), HJ_ENONFINITE);
+    hj_ls_bc ub = {42, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, &n5, &ub, &err), HJ_EINVAL);
+}
+
+/* Norms of a known field: |x| on [-1, 1]. */
+static double absx(const double *x, void *ctx)
+{
+    (void)ctx;
+    return fabs(x[0]);
+}
+
+static void norms(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(HJ_LS_BC_PERIODIC, 0, 0, 5);
+    double *a = hj_ls_alloc(&g);
+    hj_ls_fill(&g, a, absx, NULL);
+    double mx, avg, rms;
+    hj_ls_norms(&g, a, NULL, &mx, &avg, &rms);
+    assert_close(mx, 1, 0, 0);
+    assert_close(avg, 2.5 / 5, 1e-15, 0);
+    assert_close(rms, sqrt((0 + 0.0625 + 0.25 + 0.5625 + 1) / 5), 1e-15, 0);
+    hj_ls_free(a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(coords_and_rows),
+        cmocka_unit_test(errors),    cmocka_unit_test(norms),
+    };
+    return cmocka_run_group_tests_name("hj_ls_grid", tests, NULL, NULL);
+}

@@ -1,0 +1,252 @@
+/* Unit tests of common/hj_ls_ode: order of accuracy of the three TVD RK
+ * integrators, output times, options (MaxStep, PostTimestep, SingleStep,
+ * stats), error reports (zero / NaN / infinite CFL bound, blow-up), and
+ * bitwise identical results for 1 and 2 OpenMP threads. */
+#include "hj_test.h"
+
+#include <float.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "hj_ls_ode.h"
+
+static hj_ls_grid grid1(long n)
+{
+    hj_ls_grid g;
+    double mn = 0, mx = 1;
+    hj_ls_bc bc = {HJ_LS_BC_PERIODIC, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, &mn, &mx, &n, &bc, NULL), HJ_OK);
+    return g;
+}
+
+static double minus_cos(double t, const double *x, double phi, void *ctx)
+{
+    (void)x, (void)phi, (void)ctx;
+    return -cos(t);
+}
+
+/* y' = -y + cos t (discount 1 plus forcing -cos t, as a sum of terms),
+ * y(0) = 2: y(1) = 1.5 e^-1 + (cos 1 + sin 1) / 2.  Steps fixed by
+ * MaxStep. */
+static double ode_error(int order, double h)
+{
+    hj_ls_grid g = grid1(4);
+    hj_ls_discount dc;
+    hj_ls_forcing fc;
+    hj_ls_discount_init(&dc, &g);
+    dc.lambda.value = 1;
+    hj_ls_forcing_init(&fc, &g);
+    fc.F.fn = minus_cos;
+    const hj_ls_term *terms[2] = {&dc.base, &fc.base};
+    hj_ls_sum sum;
+    assert_int_equal(hj_ls_sum_init(&sum, &g, terms, 2, NULL), HJ_OK);
+    double *y = hj_ls_alloc(&g);
+    for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 2;
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.max_step = h;
+    double span[2] = {0, 1};
+    hj_error err;
+    int rc = hj_ls_ode(order, &g, &sum.base, span, 2, y, &o, NULL, NULL, NULL, &err);
+    if (rc) fail_msg("%s", err.msg);
+    const double exact = 1.5 * exp(-1.0) + 0.5 * (cos(1.0) + sin(1.0));
+    double e = fabs(y[g.offset] - exact);
+    hj_ls_free(y);
+    hj_ls_sum_free(&sum);
+    return e;
+}
+
+static void integrator_orders(void **state)
+{
+    (void)state;
+    for (int order = 1; order <= 3; order++) {
+        double e1 = ode_error(order, 0.02), e2 = ode_error(order, 0.01);
+        double p = log(e1 / e2) / log(2.0);
+        if (!(fabs(p - order) < 0.1)) fail_msg("RK%d: observed order %.3f (errors %.3e %.3e)", order, p, e1, e2);
+    }
+}
+
+/* A constant G = 1 term with a configurable CFL bound. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *g;
+    double bound, rate;
+} const_term;
+
+static int const_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    (void)t, (void)err;
+    const const_term *c = (const const_term *)term;
+    for (long j = 0; j < c->g->N[0]; j++) ydot[c->g->offset + (size_t)j] = c->rate * (1 + y[c->g->offset + (size_t)j]);
+    *bound = c->bound;
+    return HJ_OK;
+}
+
+typedef struct {
+    int calls;
+    double times[8];
+} record;
+
+static int on_output(int k, double t, const double *y, void *ctx, hj_error *err)
+{
+    (void)k, (void)y, (void)err;
+    record *r = ctx;
+    r->times[r->calls++] = t;
+    return HJ_OK;
+}
+
+static int post_clamp(double t, double *y, void *ctx, hj_error *err)
+{
+    (void)t, (void)err;
+    record *r = ctx;
+    r->calls++;
+    y[HJ_LS_GHOST] = 0; /* node 0 of the 1-D grid */
+    return HJ_OK;
+}
+
+static void outputs_and_options(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(4);
+    const_term c = {{const_eval}, &g, 0.3, 0};
+    double *y = hj_ls_alloc(&g);
+    double span[4] = {0, 0.25, 0.5, 1};
+    record r = {0, {0}};
+    hj_ls_ode_stats st;
+    assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 4, y, NULL, on_output, &r, &st, NULL), HJ_OK);
+    assert_int_equal(r.calls, 3);
+    assert_close(r.times[0], 0.25, 0, 0);
+    assert_close(r.times[2], 1, 0, 0);
+    /* dt = 0.15: 2 steps to 0.25, 2 to 0.5, 4 to 1 */
+    assert_int_equal(st.steps, 8);
+    assert_int_equal(st.evals, 24);
+    /* FactorCFL and SingleStep */
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = 0.9;
+    o.single_step = 1;
+    double span1[2] = {0, 1};
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span1, 2, y, &o, NULL, NULL, &st, NULL), HJ_OK);
+    assert_int_equal(st.steps, 1);
+    assert_close(st.t, 0.27, 1e-15, 0);
+    /* PostTimestep called after every step and may change y */
+    o.single_step = 0;
+    o.post = post_clamp;
+    o.post_ctx = &r;
+    r.calls = 0;
+    c.rate = 1;
+    for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, &st, NULL), HJ_OK);
+    assert_int_equal(r.calls, st.steps);
+    assert_close(y[g.offset], 0, 0, 0);
+    assert_true(y[g.offset + 1] > 0);
+    hj_ls_free(y);
+}
+
+static void error_reports(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(4);
+    const_term c = {{const_eval}, &g, 0, 1};
+    double *y = hj_ls_alloc(&g), span[2] = {0, 1};
+    hj_error err;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "zero CFL bound"));
+    c.bound = NAN;
+    assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "non-finite CFL bound"));
+    c.bound = INFINITY;
+    assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
+    /* with MaxStep an infinite bound is fine */
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.max_step = 0.25;
+    for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_OK);
+    assert_close(y[g.offset], pow(1.25, 4) - 1, 1e-14, 0);
+    /* blow-up: y' = 1e300 (1 + y) overflows at the second step */
+    c.bound = 1, c.rate = 1e300;
+    hj_ls_ode_stats st;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "blow-up"));
+    assert_non_null(strstr(err.msg, "after step 2"));
+    assert_int_equal(hj_ls_ode(4, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    double bad[2] = {1, 0};
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, bad, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    hj_ls_free(y);
+}
+
+static double bump(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sqrt((x[0] - 0.1) * (x[0] - 0.1) + (x[1] + 0.2) * (x[1] + 0.2)) - 0.4;
+}
+
+static void swirl(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)ctx;
+    for (long j = 0; j < n; j++) {
+        const double x0 = x[0] + (double)j * dx0;
+        v[j] = d == 0 ? -x[1] * (1 + t) : x0 * x0 - 0.3;
+    }
+}
+
+/* WENO5 + RK3 convection and normal motion on 2-D with 1 and 2 threads:
+ * bitwise the same state. */
+static void threads_bitwise(void **state)
+{
+    (void)state;
+#ifdef _OPENMP
+    hj_ls_grid g;
+    double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    long N[2] = {41, 37};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[2] = {0, 0.05};
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_WENO5A);
+    c.velocity_fn = swirl;
+    hj_ls_normal nm;
+    hj_ls_normal_init(&nm, &g, HJ_LS_WENO5B);
+    nm.speed.value = 0.5;
+    const hj_ls_term *terms[2] = {&c.base, &nm.base};
+    hj_ls_sum sum;
+    assert_int_equal(hj_ls_sum_init(&sum, &g, terms, 2, NULL), HJ_OK);
+    for (int th = 1; th <= 2; th++) {
+        omp_set_num_threads(th);
+        assert_int_equal(omp_get_max_threads(), th);
+        double *y = th == 1 ? a : b;
+        hj_ls_fill(&g, y, bump, NULL);
+        assert_int_equal(hj_ls_ode(3, &g, &sum.base, span, 2, y, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+    }
+    long idx[2];
+    for (size_t r = 0; r < g.rows; r++) {
+        size_t k = hj_ls_row(&g, r, idx);
+        assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
+    }
+    omp_set_num_threads(1);
+    hj_ls_sum_free(&sum);
+    hj_ls_free(a), hj_ls_free(b);
+#else
+    skip();
+#endif
+}
+
+int main(void)
+{
+#ifdef _OPENMP
+    /* One thread: CI machines are shared, and spinning OpenMP barriers on a
+     * busy machine only slow the tests down (threads are tested in
+     * test_ls_ode's threads_bitwise). */
+    omp_set_num_threads(1);
+#endif
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(integrator_orders),
+        cmocka_unit_test(outputs_and_options),
+        cmocka_unit_test(error_reports),
+        cmocka_unit_test(threads_bitwise),
+    };
+    return cmocka_run_group_tests_name("hj_ls_ode", tests, NULL, NULL);
+}

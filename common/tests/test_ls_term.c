@@ -1,0 +1,388 @@
+/* Unit tests of common/hj_ls_term: every term against an exact solution or
+ * an exact identity, orders of convection with each accuracy level, the
+ * combined CFL bound of a sum, and the error reports of callbacks. */
+#include "hj_test.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <string.h>
+
+#include "hj_ls_ode.h"
+#include "hj_ls_term.h"
+
+static const double PI = 3.14159265358979323846;
+
+static hj_ls_grid grid(int dim, long n, double lo, double hi, int bc)
+{
+    hj_ls_grid g;
+    double mn[3] = {lo, lo, lo}, mx[3] = {hi, hi, hi};
+    long N[3] = {n, n, n};
+    hj_ls_bc b[3] = {{bc, 0, 0}, {bc, 0, 0}, {bc, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, b, NULL), HJ_OK);
+    return g;
+}
+
+static double wave(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sin(2 * PI * x[0]) + 0.5 * cos(2 * PI * x[0]);
+}
+
+/* Translation of a smooth periodic profile by v = 1 for t = 0.25: max
+ * error at n nodes. */
+static double translation_error(int scheme, int order, long n)
+{
+    hj_ls_grid g = grid(1, n, 0, 1 - 1.0 / (double)n, HJ_LS_BC_PERIODIC);
+    double *y = hj_ls_alloc(&g), *ex = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, wave, NULL);
+    for (long j = 0; j < n; j++) {
+        double x = (double)j / (double)n - 0.25;
+        ex[g.offset + (size_t)j] = wave(&x, NULL);
+    }
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, scheme);
+    c.velocity[0] = 1;
+    double span[2] = {0, 0.25};
+    assert_int_equal(hj_ls_ode(order, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+    double e;
+    hj_ls_norms(&g, y, ex, &e, NULL, NULL);
+    hj_ls_free(y), hj_ls_free(ex);
+    return e;
+}
+
+/* Orders of the toolbox's accuracy levels (space, time): low 1, medium 2,
+ * high 3; veryHigh (WENO5 with RK3) at least 3. */
+static void convection_orders(void **state)
+{
+    (void)state;
+    const int scheme[4] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A}, order[4] = {1, 2, 3, 3};
+    const double expect[4] = {1, 2, 3, 3};
+    for (int l = 0; l < 4; l++) {
+        double e1 = translation_error(scheme[l], order[l], 80), e2 = translation_error(scheme[l], order[l], 160);
+        double p = log(e1 / e2) / log(2.0);
+        if (!(p > expect[l] - 0.25)) fail_msg("level %d: order %.3f (errors %.3e %.3e)", l, p, e1, e2);
+    }
+}
+
+static void shear(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t, (void)ctx;
+    for (long j = 0; j < n; j++) v[j] = d == 0 ? x[1] : -(x[0] + (double)j * dx0);
+}
+
+static double disc(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sqrt((x[0] - 0.3) * (x[0] - 0.3) + x[1] * x[1]) - 0.3;
+}
+
+/* The convection term equals, bit for bit, the upwind derivatives of
+ * hj_ls_upwind selected by the sign of v and summed in dimension order, on
+ * a 3-D grid (this covers the reuse of differences between neighbouring
+ * rows along dimension 1). */
+static double blob(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sin(3 * x[0] + 1) * cos(2 * x[1] - x[2]) + fabs(x[1] - 0.1);
+}
+
+static void convection_equals_upwind_sum(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[3] = {-1, -1, -1}, mx[3] = {1, 0.8, 1.2};
+    long N[3] = {13, 11, 9};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_NEUMANN, 0.5, -1}};
+    assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, N, bc, NULL), HJ_OK);
+    const double vel[3] = {0.7, -1.3, 0.4};
+    double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *l = hj_ls_alloc(&g), *r = hj_ls_alloc(&g),
+           *ex = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, blob, NULL);
+    const int schemes[3] = {HJ_LS_WENO5A, HJ_LS_WENO5B, HJ_LS_WENO3};
+    for (int q = 0; q < 3; q++) {
+        hj_ls_convection c;
+        hj_ls_convection_init(&c, &g, schemes[q]);
+        for (int d = 0; d < 3; d++) c.velocity[d] = vel[d];
+        double b;
+        assert_int_equal(c.base.eval(&c.base, 0, y, f, &b, NULL), HJ_OK);
+        memset(ex, 0, sizeof(double) * g.total);
+        for (int d = 0; d < 3; d++) {
+            assert_int_equal(hj_ls_upwind(&g, schemes[q], y, d, l, r, NULL), HJ_OK);
+            for (size_t k = 0; k < g.total; k++) ex[k] -= vel[d] * (vel[d] > 0 ? l[k] : r[k]);
+        }
+        long idx[3];
+        for (size_t row = 0; row < g.rows; row++) {
+            size_t k = hj_ls_row(&g, row, idx);
+            assert_memory_equal(f + k, ex + k, sizeof(double) * (size_t)g.N[0]);
+        }
+    }
+    hj_ls_free(y), hj_ls_free(f), hj_ls_free(l), hj_ls_free(r), hj_ls_free(ex);
+}
+
+/* The same rotation given as arrays and as a callback: identical. */
+static void convection_arrays_equal_callback(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *v0 = hj_ls_alloc(&g), *v1 = hj_ls_alloc(&g), *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g);
+    long idx[2];
+    double x[2];
+    for (size_t r = 0; r < g.rows; r++) {
+        size_t k = hj_ls_row(&g, r, idx);
+        hj_ls_coord(&g, idx, x);
+        shear(0, x, g.dx[0], g.N[0], 0, v0 + k, NULL);
+        shear(0, x, g.dx[0], g.N[0], 1, v1 + k, NULL);
+    }
+    hj_ls_convection c1, c2;
+    hj_ls_convection_init(&c1, &g, HJ_LS_ENO3B);
+    c1.velocity_fn = shear;
+    hj_ls_convection_init(&c2, &g, HJ_LS_ENO3B);
+    c2.velocity_array[0] = v0, c2.velocity_array[1] = v1;
+    hj_ls_fill(&g, a, disc, NULL);
+    hj_ls_fill(&g, b, disc, NULL);
+    double span[2] = {0, 0.5};
+    assert_int_equal(hj_ls_ode(2, &g, &c1.base, span, 2, a, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+    assert_int_equal(hj_ls_ode(2, &g, &c2.base, span, 2, b, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+    double e;
+    hj_ls_norms(&g, a, b, &e, NULL, NULL);
+    assert_close(e, 0, 0, 0);
+    hj_ls_free(v0), hj_ls_free(v1), hj_ls_free(a), hj_ls_free(b);
+}
+
+/* Convection by the velocity v = (1, 0) through the Lax-Friedrichs term
+ * with H = v.p and alpha = |v|: LF reduces to the upwind scheme. */
+static double ham_linear(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)x, (void)phi, (void)ctx;
+    return 0.7 * p[0] - 0.4 * p[1];
+}
+static double partial_linear(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)t, (void)x, (void)pmin, (void)pmax, (void)ctx;
+    return d == 0 ? 0.7 : 0.4;
+}
+
+static void lax_friedrichs_linear_is_upwind(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 31, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), *f2 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, disc, NULL);
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_WENO5A);
+    c.velocity[0] = 0.7, c.velocity[1] = -0.4;
+    double b1, b2, e;
+    assert_int_equal(c.base.eval(&c.base, 0, y, f1, &b1, NULL), HJ_OK);
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++) {
+        hj_ls_lax_friedrichs lf;
+        hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_WENO5A, diss, ham_linear, partial_linear, NULL);
+        assert_int_equal(lf.base.eval(&lf.base, 0, y, f2, &b2, NULL), HJ_OK);
+        hj_ls_norms(&g, f1, f2, &e, NULL, NULL);
+        assert_close(e, 0, 1e-12, 0);
+        assert_close(b2, b1, 0, 1e-14);
+    }
+    hj_ls_free(y), hj_ls_free(f1), hj_ls_free(f2);
+}
+
+/* H = |p|: LF with GLF, LLF, LLLF all converge to the expanding circle
+ * phi = |x| - (r0 + t); normal motion with a = 1 likewise. */
+static double ham_norm(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)x, (void)phi, (void)ctx;
+    return sqrt(p[0] * p[0] + p[1] * p[1]);
+}
+static double partial_norm(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)t, (void)x, (void)pmin, (void)pmax, (void)d, (void)ctx;
+    return 1; /* |dH/dp_d| <= 1 */
+}
+
+static double circle(const double *x, void *ctx)
+{
+    double r0 = *(double *)ctx;
+    return sqrt(x[0] * x[0] + x[1] * x[1]) - r0;
+}
+
+static double expansion_error(const hj_ls_term *term, const hj_ls_grid *g)
+{
+    double r0 = 0.3, r1 = 0.5;
+    double *y = hj_ls_alloc(g), *ex = hj_ls_alloc(g);
+    hj_ls_fill(g, y, circle, &r0);
+    hj_ls_fill(g, ex, circle, &r1);
+    double span[2] = {0, 0.2};
+    hj_error err;
+    if (hj_ls_ode(2, g, term, span, 2, y, NULL, NULL, NULL, NULL, &err)) fail_msg("%s", err.msg);
+    double e = 0;
+    long idx[2];
+    for (size_t r = 0; r < g->rows; r++) {
+        size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++)
+            if (fabs(ex[k + j]) < 0.1) e = fabs(y[k + j] - ex[k + j]) > e ? fabs(y[k + j] - ex[k + j]) : e;
+    }
+    hj_ls_free(y), hj_ls_free(ex);
+    return e;
+}
+
+static void normal_and_lf_expanding_circle(void **state)
+{
+    (void)state;
+    for (int m = 0; m < 4; m++) {
+        double e[2];
+        for (int q = 0; q < 2; q++) {
+            hj_ls_grid g = grid(2, q ? 81 : 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+            if (m == 3) {
+                hj_ls_normal nm;
+                hj_ls_normal_init(&nm, &g, HJ_LS_ENO2);
+                nm.speed.value = 1;
+                e[q] = expansion_error(&nm.base, &g);
+            } else {
+                hj_ls_lax_friedrichs lf;
+                hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, m, ham_norm, partial_norm, NULL);
+                e[q] = expansion_error(&lf.base, &g);
+            }
+        }
+        if (!(e[1] < 0.6 * e[0]) || !(e[1] < 0.02)) fail_msg("method %d: errors %.3e %.3e", m, e[0], e[1]);
+    }
+}
+
+static double ham_nan(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)p, (void)phi, (void)ctx;
+    return x[0] > 0.5 ? NAN : 0;
+}
+
+static void callback_errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), b;
+    hj_error err;
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_UPWIND_FIRST, HJ_LS_LLF, ham_nan, partial_norm, NULL);
+    assert_int_equal(lf.base.eval(&lf.base, 0, y, f, &b, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "x = (0.6, -1)"));
+    hj_ls_normal nm;
+    hj_ls_normal_init(&nm, &g, HJ_LS_UPWIND_FIRST);
+    nm.speed.value = NAN;
+    assert_int_equal(nm.base.eval(&nm.base, 0, y, f, &b, &err), HJ_ENONFINITE);
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, 42);
+    assert_int_equal(c.base.eval(&c.base, 0, y, f, &b, &err), HJ_EINVAL);
+    hj_ls_free(y), hj_ls_free(f);
+}
+
+/* Motion by mean curvature of a circle: r(t)^2 = r0^2 - 2 t. */
+static void curvature_shrinking_circle(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 81, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double r0 = 0.5, t1 = 0.05, r1 = sqrt(r0 * r0 - 2 * t1);
+    double *y = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, circle, &r0);
+    hj_ls_curvature_term c;
+    hj_ls_curvature_term_init(&c, &g);
+    c.b.value = 1;
+    double span[2] = {0, t1};
+    hj_ls_ode_stats st;
+    assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st, NULL), HJ_OK);
+    /* radius along the x axis by linear interpolation of the zero crossing */
+    long idx[2] = {0, 40};
+    double rr = -1;
+    for (long j = 40; j < 80; j++) {
+        idx[0] = j;
+        double a = y[hj_ls_index(&g, idx)];
+        idx[0] = j + 1;
+        double b = y[hj_ls_index(&g, idx)];
+        if (a <= 0 && b > 0) rr = (double)(j - 40) * g.dx[0] + g.dx[0] * a / (a - b);
+    }
+    assert_close(rr, r1, 2e-3, 0);
+    hj_ls_free(y);
+}
+
+/* Trace of the Hessian with L = I, R = -I: G = Laplacian (heat equation):
+ * sin(2 pi x) sin(2 pi y) decays as exp(-8 pi^2 t). */
+static double sines(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sin(2 * PI * x[0]) * sin(2 * PI * x[1]);
+}
+
+static void hessian_heat(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 64, 0, 1 - 1.0 / 64, HJ_LS_BC_PERIODIC);
+    double L[4] = {1, 0, 0, 1}, R[4] = {-1, 0, 0, -1};
+    hj_ls_hessian_term h;
+    hj_ls_hessian_term_init(&h, &g, L, R);
+    double *y = hj_ls_alloc(&g), *ex = hj_ls_alloc(&g), t1 = 0.01;
+    hj_ls_fill(&g, y, sines, NULL);
+    hj_ls_fill(&g, ex, sines, NULL);
+    double span[2] = {0, t1};
+    assert_int_equal(hj_ls_ode(2, &g, &h.base, span, 2, y, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+    double e, m;
+    hj_ls_norms(&g, ex, NULL, &m, NULL, NULL);
+    for (size_t k = 0; k < g.total; k++) ex[k] *= exp(-8 * PI * PI * t1);
+    hj_ls_norms(&g, y, ex, &e, NULL, NULL);
+    assert_true(e < 2e-3 * m);
+    hj_ls_free(y), hj_ls_free(ex);
+}
+
+/* Restrict update keeps only non-negative G; sum combines CFL bounds as
+ * (sum 1 / b_i)^-1. */
+static void restrict_and_sum(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 21, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double r0 = 0.4, *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), b1, b2, bs;
+    hj_ls_fill(&g, y, circle, &r0);
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    c.velocity[0] = 1;
+    hj_ls_restrict rs;
+    hj_ls_restrict_init(&rs, &g, &c.base, 1);
+    assert_int_equal(rs.base.eval(&rs.base, 0, y, f, &b1, NULL), HJ_OK);
+    double mn = 0;
+    long idx[2];
+    for (size_t r = 0; r < g.rows; r++) {
+        size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) mn = f[k + j] < mn ? f[k + j] : mn;
+    }
+    assert_close(mn, 0, 0, 0);
+    assert_close(b1, g.dx[0], 0, 1e-15); /* |v| / dx = 1 / dx */
+    hj_ls_curvature_term k;
+    hj_ls_curvature_term_init(&k, &g);
+    k.b.value = 0.5;
+    assert_int_equal(k.base.eval(&k.base, 0, y, f, &b2, NULL), HJ_OK);
+    assert_close(b2, 1 / (2 * 0.5 * 2 / (g.dx[0] * g.dx[0])), 0, 1e-14);
+    const hj_ls_term *terms[2] = {&rs.base, &k.base};
+    hj_ls_sum s;
+    assert_int_equal(hj_ls_sum_init(&s, &g, terms, 2, NULL), HJ_OK);
+    assert_int_equal(s.base.eval(&s.base, 0, y, f, &bs, NULL), HJ_OK);
+    assert_close(bs, 1 / (1 / b1 + 1 / b2), 0, 1e-14);
+    hj_ls_sum_free(&s);
+    hj_ls_free(y), hj_ls_free(f);
+}
+
+int main(void)
+{
+#ifdef _OPENMP
+    /* One thread: CI machines are shared, and spinning OpenMP barriers on a
+     * busy machine only slow the tests down (threads are tested in
+     * test_ls_ode's threads_bitwise). */
+    omp_set_num_threads(1);
+#endif
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(convection_orders),
+        cmocka_unit_test(convection_equals_upwind_sum),
+        cmocka_unit_test(convection_arrays_equal_callback),
+        cmocka_unit_test(lax_friedrichs_linear_is_upwind),
+        cmocka_unit_test(normal_and_lf_expanding_circle),
+        cmocka_unit_test(callback_errors),
+        cmocka_unit_test(curvature_shrinking_circle),
+        cmocka_unit_test(hessian_heat),
+        cmocka_unit_test(restrict_and_sum),
+    };
+    return cmocka_run_group_tests_name("hj_ls_term", tests, NULL, NULL);
+}

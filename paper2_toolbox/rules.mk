@@ -1,0 +1,42 @@
+# Paper 2: Mitchell (2004), "A Toolbox of Level Set Methods" -- the level
+# set kernel lives in common/hj_ls_*; this fragment builds its programs,
+# Figure 22, Table 2 and the convectionDemo benchmark.  Included by the
+# top-level Makefile.
+
+P2 := paper2_toolbox
+
+# OpenMP for the kernel and the paper 2 programs; -O3 lets gcc vectorise
+# the row kernels (results are bitwise the same for any thread count).
+LDFLAGS += -fopenmp
+$(BUILD)/obj/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/$(P2)/%.o: CFLAGS += -fopenmp -O3
+
+P2_OUT := $(RESULTS)/paper2
+P2_BIN := $(BUILD)/bin/$(P2)
+P2_PROGS := fig22_derivatives bench_table2 bench_convection
+PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)
+
+# Figure 22: errors and fitted orders, then the four-panel figure.
+$(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.md &: $(P2_BIN)/fig22_derivatives
+	@mkdir -p $(P2_OUT)
+	$< $(QUICKFLAG) --out-dir $(P2_OUT)
+$(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
+	gnuplot -e "dat='$<'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig22.gp && mv $(@D)/.tmp-$(@F) $@
+
+P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg
+REPORT_INPUTS += $(P2_RESULTS) $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
+                 $(P2)/report.tsv $(P2)/overview.md
+
+# Benchmarks (never part of the tests): Table 2 and convectionDemo 101^3.
+BENCHES += bench-paper2
+.PHONY: bench-paper2
+bench-paper2: $(P2_BIN)/bench_table2 $(P2_BIN)/bench_convection
+	@mkdir -p $(P2_OUT)
+	$(P2_BIN)/bench_table2 --out-dir $(P2_OUT)
+	OMP_WAIT_POLICY=passive $(P2_BIN)/bench_convection --out-dir $(P2_OUT)
+
+paper2: $(P2_RESULTS)
+	$(MAKE) --no-print-directory report-now
+
+# The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
+$(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
