@@ -107,6 +107,17 @@ static void missing_and_quick(void **state)
     assert_int_equal(run_check(""), 1);
 }
 
+/* CPU-time ratios are compared but never fail the gate. */
+static void ratios_not_gated(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", "# key: N\n# kind: cpu_ratio=ratio\nN\tcpu_ratio\n80\t8.0\n");
+    write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t30\n");
+    assert_int_equal(run_check(""), 0);
+    assert_non_null(strstr(out_text, "0 match, 0 close, 1 differ"));
+    assert_non_null(strstr(out_text, "check: 1 passed, 0 failed"));
+}
+
 static void malformed_published(void **state)
 {
     (void)state;
@@ -125,6 +136,7 @@ int main(void)
         cmocka_unit_test(all_match),
         cmocka_unit_test(regression_fails),
         cmocka_unit_test(missing_and_quick),
+        cmocka_unit_test(ratios_not_gated),
         cmocka_unit_test(malformed_published),
     };
     return cmocka_run_group_tests_name("hjcheck", tests, make_tree, hj_test_rmdir);

@@ -1,0 +1,228 @@
+/*
+# Two-dimensional examples of the UB-HJB scheme (Tables 6-10)
+
+**Problems.** Section 4, Examples 1-3 of Bokanowski, Cristiani & Zidani
+(2010), all with data -1 inside Omega_0 and 1 outside, solved with the
+UB-HJB scheme on the SSD narrow band (CFL = 0.9 over the band nodes,
+value 1 outside the domain):
+
+* Table 6 -- Example 1, advection of the square [0.5, 1.5] x [-0.5, 0.5]
+  by f = (-2, -1) up to T = 1 on [-2, 2]^2 (exact: the moved square).
+* Table 7 -- the same square rotated by f = (-x2, x1) up to T = 2 pi
+  (exact: the initial square).
+* Tables 8 and 9 -- Example 2, the rendez-vous problem (13),
+  theta_t + theta_x1 + |theta_x2| = 0 (f = (1, a), a = +-1), T = 1, on
+  [-1, 2]^2, target the box |x|_inf <= r with r = 0.1 (Table 8) and
+  r = dx (Table 9).  Exact: [T - r, T + r] x [-T - r, T + r].  In
+  Table 9 the L1 error is taken against the thin target r = 0 itself,
+  whose exact set is the segment {T} x [-T, T] of measure zero, so that
+  the L1 error is the area of the computed set {V <= 0}: this is what the
+  published values are (0.166 = about 1.3 dx x 2.1 at N = 51).  Its
+  Hausdorff distance is taken against the r = dx set (the segment
+  thickened by dx), since no grid segment crosses the segment itself.
+* Table 10 -- Example 3, deformation of the half plane x2 <= 0 by
+  f(t, x) = -s(t) max(1 - |x|, 0) (-2 pi x2, 2 pi x1), s = +1 before T/2
+  and -1 after, T = 6, on [-1, 1]^2 (the paper does not give the domain;
+  the flow vanishes outside the unit disc), errors at t = 3 and t = 6.
+  Exact by characteristics: theta(t, x) = phi(R(2 pi a(x) t1) x),
+  t1 = min(t, T - t), with the rotation R of the flow as written (the
+  paper's formula has the opposite angle, see the overview).
+
+**Method.** p3_ub.h: dimension-split Ultra-Bee fluxes with the errata,
+cell averages (7b) of the data, band maintenance of section 3.5.  The
+grid has N nodes per direction including both ends (dx = L/(N-1)).
+
+**Measured.** L1 error = dx^2 #{cells whose sign differs from the exact
+sign at the centre}, Hausdorff distance between the computed front (the
+boundary cells of {V <= 0}) and the exact front sampled where it crosses
+the grid segments, Haus/dx, total CPU time (initialisation and steps) and
+its ratio between successive N (the published "Order" column).  CPU
+seconds themselves are not compared (2008 laptop).
+
+**Parameters.** N = 50, 100, 200, 400 (Tables 6, 7), 51, 101, 201, 401
+(Tables 8, 9), 50, 100, 200 (Table 10); `--quick` runs the two smallest
+sizes of each table.
+
+**Output.** table6.tsv ... table10.tsv.  The level set (RK2-ENO2)
+columns are left empty: they need the common level set kernel.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_cli.h"
+#include "p3_prog.h"
+#include "p3_ub.h"
+
+static const double PI = 3.14159265358979323846;
+
+typedef struct {
+    int example;           /* 1 translation, 2 rotation, 3 rendez-vous, 4 deformation */
+    double lo[2], hi[2];   /* the initial box (Examples 1, 2) */
+    double r;              /* rendez-vous target half width */
+    double T, t;           /* final time; time of the exact solution */
+} ex2d;
+
+static void dyn(double t, const double *x, int a, double *f, void *vctx)
+{
+    const ex2d *e = vctx;
+    switch (e->example) {
+    case 1: f[0] = -2; f[1] = -1; break;
+    case 2: f[0] = -x[1]; f[1] = x[0]; break;
+    case 3: f[0] = 1; f[1] = a ? 1 : -1; break;
+    default: {
+        const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
+        const double s = t < e->T / 2 ? 1 : -1;
+        f[0] = -s * amp * (-2 * PI * x[1]);
+        f[1] = -s * amp * (2 * PI * x[0]);
+    }
+    }
+}
+
+static double avg0(const double *blo, const double *bhi, void *vctx)
+{
+    const ex2d *e = vctx;
+    if (e->example == 4) { /* half plane x2 <= 0 */
+        const double lo[2] = {-1e9, -1e9}, hi[2] = {1e9, 0};
+        return p3_avg_box(2, blo, bhi, lo, hi);
+    }
+    return p3_avg_box(2, blo, bhi, e->lo, e->hi);
+}
+
+static int inside(const double *x, void *vctx)
+{
+    const ex2d *e = vctx;
+    double y[2] = {x[0], x[1]};
+    switch (e->example) {
+    case 1: y[0] = x[0] + 2 * e->t; y[1] = x[1] + e->t; break;
+    case 2: { /* back along the rotation by -t */
+        const double c = cos(e->t), s = sin(e->t);
+        y[0] = c * x[0] + s * x[1];
+        y[1] = -s * x[0] + c * x[1];
+        break;
+    }
+    case 3:
+        if (e->r == 0) return x[0] == e->T && fabs(x[1]) <= e->T; /* the segment of the thin target */
+        return x[0] >= e->T - e->r && x[0] <= e->T + e->r && fabs(x[1]) <= e->T + e->r;
+    default: {
+        const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
+        const double t1 = e->t < e->T - e->t ? e->t : e->T - e->t, th = 2 * PI * amp * t1;
+        return sin(th) * x[0] + cos(th) * x[1] <= 0;
+    }
+    }
+    return y[0] >= e->lo[0] && y[0] <= e->hi[0] && y[1] >= e->lo[1] && y[1] <= e->hi[1];
+}
+
+typedef struct {
+    double cpu, l1, haus, dx, steps, band;
+    double l1b, hausb; /* Table 10: at t = 6 */
+} run_result;
+
+static int run(ex2d *e, int n, run_result *res, hj_error *err)
+{
+    p3_problem pb = {.d = 2, .n = n, .ncontrols = e->example == 3 ? 2 : 1, .dyn = dyn, .cfl = 0.9, .boundary = 1, .snap = P3_SNAP,
+                     .avg0 = avg0, .ctx = e};
+    const double dom = e->example == 3 ? -1 : e->example == 4 ? -1 : -2, domhi = e->example == 3 ? 2 : e->example == 4 ? 1 : 2;
+    for (int k = 0; k < 2; k++) {
+        pb.lo[k] = dom;
+        pb.hi[k] = domhi;
+        pb.bbox_lo[k] = e->example == 4 ? dom : e->lo[k];
+        pb.bbox_hi[k] = e->example == 4 ? (k ? 0 : domhi) : e->hi[k];
+    }
+    if (e->example == 3 && e->r == 0) { /* thin target: r = dx */
+        const double dx = (domhi - dom) / (n - 1);
+        e->lo[0] = e->lo[1] = -dx;
+        e->hi[0] = e->hi[1] = dx;
+        pb.bbox_lo[0] = pb.bbox_lo[1] = -dx;
+        pb.bbox_hi[0] = pb.bbox_hi[1] = dx;
+        e->r = -dx; /* marks the thin case for the exact solution */
+    }
+    const double rr = fabs(e->r);
+    p3_solver sv;
+    const double c0 = p3_cpu();
+    int rc = p3_solver_init(&sv, &pb, P3_SSD, err);
+    const double tstop = e->example == 4 ? e->T / 2 : e->T;
+    if (!rc) rc = p3_solver_run(&sv, tstop, err);
+    res->cpu = p3_cpu() - c0;
+    if (rc) { p3_solver_free(&sv); return rc; }
+    const double r_saved = e->r;
+    e->r = rr;
+    e->t = tstop;
+    rc = p3_solver_errors(&sv, inside, e, &res->l1, &res->haus, err);
+    if (!rc && r_saved < 0) { /* thin target: L1 against r = 0 (see above) */
+        double haus0;
+        e->r = 0;
+        rc = p3_solver_errors(&sv, inside, e, &res->l1, &haus0, err);
+    }
+    res->dx = sv.dx[0];
+    if (!rc && e->example == 4) {
+        const double c1 = p3_cpu();
+        rc = p3_solver_run(&sv, e->T, err);
+        res->cpu += p3_cpu() - c1;
+        e->t = e->T;
+        if (!rc) rc = p3_solver_errors(&sv, inside, e, &res->l1b, &res->hausb, err);
+    }
+    e->r = r_saved;
+    res->steps = (double)sv.steps;
+    res->band = sv.steps ? sv.band_sum / (double)sv.steps : 0;
+    p3_solver_free(&sv);
+    return rc;
+}
+
+typedef struct {
+    const char *table;
+    ex2d e;
+    long sizes[4];
+    int nsizes;
+} table_spec;
+
+int main(int argc, char **argv)
+{
+    p3_args a = {.prog = "examples2d"};
+    p3_args_parse(&a, argc, argv, "Tables 6-10: UB-HJB on the 2-D examples 1-3 of section 4.", NULL);
+    const table_spec specs[] = {
+        {"table6", {1, {0.5, -0.5}, {1.5, 0.5}, 0, 1, 0}, {50, 100, 200, 400}, 4},
+        {"table7", {2, {0.5, -0.5}, {1.5, 0.5}, 0, 2 * PI, 0}, {50, 100, 200, 400}, 4},
+        {"table8", {3, {-0.1, -0.1}, {0.1, 0.1}, 0.1, 1, 0}, {51, 101, 201, 401}, 4},
+        {"table9", {3, {0, 0}, {0, 0}, 0, 1, 0}, {51, 101, 201, 401}, 4},
+        {"table10", {4, {0, 0}, {0, 0}, 0, 6, 0}, {50, 100, 200}, 3},
+    };
+    hj_error err;
+    for (size_t s = 0; s < sizeof specs / sizeof *specs; s++) {
+        const table_spec *sp = &specs[s];
+        if (!p3_want(&a, atol(sp->table + 5))) continue;
+        long sizes[P3_MAX_SIZES];
+        int ns = a.nsizes ? a.nsizes : a.quick ? 2 : sp->nsizes;
+        memcpy(sizes, a.nsizes ? a.sizes : sp->sizes, sizeof(long) * (size_t)ns);
+        hj_out out;
+        char name[64];
+        snprintf(name, sizeof name, "%s.tsv", sp->table);
+        if (p3_open(&out, a.out_dir, name, &err)) p3_die(a.prog, &err);
+        FILE *fp = out.fp;
+        fprintf(fp, "# %s: UB-HJB on the SSD band, computed by examples2d%s\n", sp->table, a.quick ? " --quick" : "");
+        if (sp->e.example == 4)
+            fprintf(fp, "N\tcpu\tcpu_ratio\tL1_t3\thaus_t3\tL1_t6\thaus_t6\tsteps\tband\n");
+        else
+            fprintf(fp, "N\tcpu\tcpu_ratio\tL1\thaus\thaus_dx\tsteps\tband\tls_L1\tls_haus\tls_haus_dx\n");
+        double prev = NAN;
+        for (int i = 0; i < ns; i++) {
+            if (a.max_n && sizes[i] > a.max_n) continue;
+            ex2d e = sp->e;
+            run_result r;
+            hj_progress("%s N=%ld ...\n", sp->table, sizes[i]);
+            if (run(&e, (int)sizes[i], &r, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            char b[6][32];
+            if (sp->e.example == 4)
+                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%s\t%.0f\t%.0f\n", sizes[i], r.cpu, p3_num(b[0], r.cpu / prev),
+                        p3_num(b[1], r.l1), p3_num(b[2], r.haus), p3_num(b[3], r.l1b), p3_num(b[4], r.hausb), r.steps,
+                        r.band);
+            else
+                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t-\t-\t-\n", sizes[i], r.cpu,
+                        p3_num(b[0], r.cpu / prev), p3_num(b[1], r.l1), p3_num(b[2], r.haus),
+                        p3_num(b[3], r.haus / r.dx), r.steps, r.band);
+            prev = r.cpu;
+        }
+        if (hj_out_commit(&out, &err)) p3_die(a.prog, &err);
+    }
+    return 0;
+}

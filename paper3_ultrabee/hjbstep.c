@@ -1,0 +1,113 @@
+/*
+# One HJB time step on FLS and on SSD (Table 5)
+
+**Problem.** Section 3.5: the target problem (4) in d = 3 with
+f(x, y, z, a) = (a, 1, 1) and N_a = 11 controls a_i = -1 + 2 i / 10, the
+unit ball as target, on [-2, 2]^3, CFL = 0.9.
+
+**Method.** The UB-HJB scheme of p3_ub.h, on the narrow band kept in the
+classical full-matrix narrow band (FLS) and in the sparse semi-dynamic
+structure (SSD) behind the same interface.
+
+**Measured.** |D^0| (the nodes of the initial band), the CPU time of one
+time step (band extension, scheme for the 11 controls, band reduction;
+not the initialisation), averaged over the first `STEPS` steps, its ratio
+between successive N (the published "Order") and SSD/FLS.  FLS needs
+9 N^3 bytes: at N = 1600 it does not fit in this machine (36.9 GB) and
+the store refuses it with "out of memory" (as on the paper's 4 GB laptop
+from N = 800 on); the cell is then empty.  The
+the process's peak resident memory is reported (after all runs of that N).
+An extra column runs the same step on SSDA (contiguous arrays per line).
+
+**Parameters.** N = 50, 100, 200, 400, 800, 1600; `--quick`: 50, 100.
+
+**Output.** table5.tsv.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_cli.h"
+#include "p3_prog.h"
+#include "p3_ub.h"
+
+enum { STEPS = 3, NA = 11 };
+
+static const double CENTRE[3] = {0, 0, 0};
+
+static void dyn(double t, const double *x, int a, double *f, void *ctx)
+{
+    (void)t;
+    (void)x;
+    (void)ctx;
+    f[0] = -1 + 2.0 * a / (NA - 1);
+    f[1] = 1;
+    f[2] = 1;
+}
+
+static double avg0(const double *blo, const double *bhi, void *ctx)
+{
+    (void)ctx;
+    return p3_avg_ball(3, blo, bhi, CENTRE, 1.0, 4);
+}
+
+static int uniform(const double *blo, const double *bhi, void *ctx)
+{
+    (void)ctx;
+    return p3_ball_uniform(3, blo, bhi, CENTRE, 1.0);
+}
+
+/* Seconds per step, |D^0| and peak memory; HJ_ENOMEM when the store does not fit. */
+static int run(p3_kind kind, int n, double *secs, size_t *d0, double *peak, hj_error *err)
+{
+    p3_problem pb = {.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn, .target = 1,
+                     .cfl = 0.9, .boundary = 1, .snap = P3_SNAP, .avg0 = avg0, .uniform = uniform,
+                     .bbox_lo = {-1, -1, -1}, .bbox_hi = {1, 1, 1}};
+    p3_solver sv;
+    int rc = p3_solver_init(&sv, &pb, kind, err);
+    if (rc) { p3_solver_free(&sv); return rc; }
+    *d0 = p3_store_count(sv.s);
+    const double t0 = p3_cpu();
+    for (int s = 0; s < STEPS && !rc; s++) rc = p3_solver_step(&sv, 10.0, err);
+    *secs = (p3_cpu() - t0) / STEPS;
+    *peak = p3_peak_mb();
+    p3_solver_free(&sv);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    p3_args a = {.prog = "hjbstep"};
+    p3_args_parse(&a, argc, argv, "Table 5: CPU time of one UB-HJB step, FLS against SSD.", NULL);
+    static const long published[] = {50, 100, 200, 400, 800, 1600};
+    const long *sizes = a.nsizes ? a.sizes : published;
+    const int ns = a.nsizes ? a.nsizes : a.quick ? 2 : 6;
+    hj_error err;
+    hj_out out;
+    if (p3_open(&out, a.out_dir, "table5.tsv", &err)) p3_die(a.prog, &err);
+    fprintf(out.fp, "# table5: CPU seconds of one UB-HJB step (mean of %d), 11 controls, computed by hjbstep%s\n", STEPS,
+            a.quick ? " --quick" : "");
+    fprintf(out.fp, "N\tD0\tFLS\tFLS_ratio\tSSD\tSSD_ratio\tSSD_over_FLS\tSSDA\tSSDA_over_FLS\tpeak_MB\n");
+    double prev[2] = {NAN, NAN};
+    for (int i = 0; i < ns; i++) {
+        if (a.max_n && sizes[i] > a.max_n) continue;
+        static const p3_kind kinds[3] = {P3_FLS, P3_SSD, P3_SSDA};
+        double t[3] = {NAN, NAN, NAN}, peak[3] = {NAN, NAN, NAN};
+        size_t d0 = 0;
+        for (int k = 0; k < 3; k++) {
+            hj_progress("table5 N=%ld %s ...\n", sizes[i], p3_kind_name(kinds[k]));
+            const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &peak[k], &err);
+            if (rc == HJ_ENOMEM) { t[k] = NAN; continue; }
+            if (rc) { hj_out_abort(&out); p3_die(a.prog, &err); }
+        }
+        char b[8][32];
+        fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
+                p3_num(b[1], t[0] / prev[0]), p3_num(b[2], t[1]), p3_num(b[3], t[1] / prev[1]), p3_num(b[4], t[1] / t[0]),
+                p3_num(b[5], t[2]), p3_num(b[6], t[2] / t[0]), p3_peak_mb());
+        fflush(out.fp);
+        prev[0] = t[0];
+        prev[1] = t[1];
+    }
+    if (hj_out_commit(&out, &err)) p3_die(a.prog, &err);
+    return 0;
+}

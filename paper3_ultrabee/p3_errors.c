@@ -1,0 +1,320 @@
+/* p3_errors.c -- L1 error and Hausdorff distance of section 4 (see p3_ub.h). */
+#include "p3_ub.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* sign(V) = -1 for V <= ZERO: cells cut in half by the front have V = 0 up to
+ * the round-off of the fluxes, and must not flip sign with it. */
+#define ZERO 1e-12
+
+/* ---- Hausdorff distance between point sets, by bucketing ----------------- */
+
+typedef struct {
+    int d;
+    const double *p;
+    double h, origin[P3_DMAX];
+    int64_t base;
+    int64_t *key; /* bucket key of each point, sorted with order[] */
+    size_t *order, n;
+} bucket_set;
+
+static int64_t bucket_key(const bucket_set *b, const int64_t *c)
+{
+    int64_t k = 0;
+    for (int i = 0; i < b->d; i++) k = k * b->base + c[i];
+    return k;
+}
+
+static void bucket_of(const bucket_set *b, const double *x, int64_t *c)
+{
+    for (int i = 0; i < b->d; i++) c[i] = (int64_t)floor((x[i] - b->origin[i]) / b->h);
+}
+
+static const bucket_set *sort_set;
+static int by_key(const void *x, const void *y)
+{
+    const int64_t a = sort_set->key[*(const size_t *)x], c = sort_set->key[*(const size_t *)y];
+    return (a > c) - (a < c);
+}
+
+static int bucket_build(bucket_set *b, int d, const double *p, size_t n, double h, const double *origin, int64_t base)
+{
+    b->d = d;
+    b->p = p;
+    b->n = n;
+    b->h = h;
+    b->base = base;
+    memcpy(b->origin, origin, sizeof b->origin);
+    b->key = malloc((n ? n : 1) * sizeof *b->key);
+    b->order = malloc((n ? n : 1) * sizeof *b->order);
+    if (!b->key || !b->order) return HJ_ENOMEM;
+    for (size_t i = 0; i < n; i++) {
+        int64_t c[P3_DMAX];
+        bucket_of(b, &p[i * d], c);
+        b->key[i] = bucket_key(b, c);
+        b->order[i] = i;
+    }
+    sort_set = b;
+    qsort(b->order, n, sizeof *b->order, by_key);
+    /* keys in sorted order, for bisection */
+    int64_t *sk = malloc((n ? n : 1) * sizeof *sk);
+    if (!sk) return HJ_ENOMEM;
+    for (size_t i = 0; i < n; i++) sk[i] = b->key[b->order[i]];
+    free(b->key);
+    b->key = sk;
+    return HJ_OK;
+}
+
+static double dist2(int d, const double *x, const double *y)
+{
+    double s = 0;
+    for (int i = 0; i < d; i++) s += (x[i] - y[i]) * (x[i] - y[i]);
+    return s;
+}
+
+/* Distance from x to the nearest point of b: rings of buckets of growing
+ * Chebyshev radius until the ring is farther than the best point found. */
+static double nearest(const bucket_set *b, const double *x)
+{
+    const int d = b->d;
+    int64_t c[P3_DMAX], q[P3_DMAX];
+    bucket_of(b, x, c);
+    double best = INFINITY;
+    for (int r = 0; r <= 64; r++) {
+        if ((r - 1) * b->h > 0 && ((double)(r - 1) * b->h) * ((double)(r - 1) * b->h) > best) return sqrt(best);
+        long side = 2 * r + 1, total = 1;
+        for (int i = 0; i < d; i++) total *= side;
+        for (long s = 0; s < total; s++) {
+            long t = s;
+            int shell = 0;
+            for (int i = 0; i < d; i++) {
+                const int o = (int)(t % side) - r;
+                q[i] = c[i] + o;
+                shell |= o == r || o == -r;
+                t /= side;
+            }
+            if (!shell && r > 0) continue;
+            const int64_t key = bucket_key(b, q);
+            size_t lo = 0, hi = b->n;
+            while (lo < hi) {
+                size_t mid = lo + (hi - lo) / 2;
+                if (b->key[mid] < key) lo = mid + 1; else hi = mid;
+            }
+            for (; lo < b->n && b->key[lo] == key; lo++) {
+                const double e = dist2(d, x, &b->p[b->order[lo] * d]);
+                best = e < best ? e : best;
+            }
+        }
+    }
+    /* far away: plain search */
+    for (size_t i = 0; i < b->n; i++) {
+        const double e = dist2(d, x, &b->p[i * d]);
+        best = e < best ? e : best;
+    }
+    return sqrt(best);
+}
+
+int p3_hausdorff(int d, const double *a, size_t na, const double *b, size_t nb, double h, double *out, hj_error *err)
+{
+    if (na == 0 || nb == 0) { *out = (na == 0 && nb == 0) ? 0 : INFINITY; return HJ_OK; }
+    double origin[P3_DMAX] = {0}, top[P3_DMAX] = {0};
+    for (int i = 0; i < d; i++) origin[i] = top[i] = a[i];
+    for (size_t s = 0; s < na + nb; s++) {
+        const double *x = s < na ? &a[s * d] : &b[(s - na) * d];
+        for (int i = 0; i < d; i++) {
+            origin[i] = x[i] < origin[i] ? x[i] : origin[i];
+            top[i] = x[i] > top[i] ? x[i] : top[i];
+        }
+    }
+    double span = 0;
+    for (int i = 0; i < d; i++) span = top[i] - origin[i] > span ? top[i] - origin[i] : span;
+    for (int i = 0; i < d; i++) origin[i] -= 100 * h; /* room for the rings */
+    const int64_t base = (int64_t)(span / h) + 300;
+    bucket_set A = {0}, B = {0};
+    int rc = bucket_build(&A, d, a, na, h, origin, base);
+    if (!rc) rc = bucket_build(&B, d, b, nb, h, origin, base);
+    if (rc) {
+        free(A.key); free(A.order); free(B.key); free(B.order);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (Hausdorff distance)");
+    }
+    double hd = 0;
+    for (size_t i = 0; i < na; i++) { double e = nearest(&B, &a[i * d]); hd = e > hd ? e : hd; }
+    for (size_t i = 0; i < nb; i++) { double e = nearest(&A, &b[i * d]); hd = e > hd ? e : hd; }
+    free(A.key); free(A.order); free(B.key); free(B.order);
+    *out = hd;
+    return HJ_OK;
+}
+
+/* ---- growing point lists ------------------------------------------------------ */
+
+typedef struct {
+    double *p;
+    size_t n, cap;
+    int d, failed;
+} points;
+
+static void push(points *s, const double *x)
+{
+    if (s->failed) return;
+    if (s->n == s->cap) {
+        size_t cap = s->cap ? 2 * s->cap : 1024;
+        double *np = realloc(s->p, cap * s->d * sizeof *np);
+        if (!np) { s->failed = 1; return; }
+        s->p = np;
+        s->cap = cap;
+    }
+    memcpy(&s->p[s->n * s->d], x, s->d * sizeof *x);
+    s->n++;
+}
+
+/* ---- the computed front and the line values ------------------------------------ */
+
+typedef struct {
+    p3_solver *sv;
+    points *front;
+    signed char *line; /* per line: 0 empty, +-2 non-empty with stored +-1 nodes of that value,
+                          4 non-empty without; empty lines get +-1 from fill_lines */
+} front_ctx;
+
+static int visit_front(const int *idx, double *v, void *vctx)
+{
+    front_ctx *c = vctx;
+    p3_solver *sv = c->sv;
+    const int d = sv->pb->d, n = sv->pb->n;
+    int64_t line = 0;
+    for (int k = 0; k < d - 1; k++) line = line * n + idx[k];
+    if (*v == 1 || *v == -1) c->line[line] = (signed char)(2 * *v);
+    else if (c->line[line] == 0) c->line[line] = 4; /* non-empty, value not known yet */
+    if (*v > ZERO) return 0;
+    /* a cell of the computed set {V <= 0} with a face neighbour outside it */
+    int j[P3_DMAX];
+    memcpy(j, idx, sizeof j);
+    for (int k = 0; k < d; k++)
+        for (int s = -1; s <= 1; s += 2) {
+            j[k] = idx[k] + s;
+            if (j[k] >= 0 && j[k] < n) {
+                const double *p = p3_store_find(sv->s, j);
+                if (p && *p > ZERO) {
+                    double x[P3_DMAX];
+                    p3_centre(sv, idx, x);
+                    push(c->front, x);
+                    return 0;
+                }
+            }
+            j[k] = idx[k];
+        }
+    return 0;
+}
+
+/* Empty lines take the value of a neighbouring line (breadth first). */
+static int fill_lines(signed char *line, int64_t nl, int dl, int n, hj_error *err)
+{
+    int64_t *queue = malloc((size_t)nl * sizeof *queue), head = 0, tail = 0;
+    if (!queue) return hj_error_set(err, HJ_ENOMEM, "out of memory (line values)");
+    for (int64_t l = 0; l < nl; l++)
+        if (line[l] == 2 || line[l] == -2) queue[tail++] = l;
+    while (head < tail) {
+        const int64_t l = queue[head++];
+        const signed char c = line[l] > 0 ? 1 : -1;
+        int64_t stride = 1;
+        for (int k = dl - 1; k >= 0; k--) {
+            const int i = (int)((l / stride) % n);
+            if (i > 0 && line[l - stride] == 0) { line[l - stride] = c; queue[tail++] = l - stride; }
+            if (i < n - 1 && line[l + stride] == 0) { line[l + stride] = c; queue[tail++] = l + stride; }
+            stride *= n;
+        }
+    }
+    for (int64_t l = 0; l < nl; l++)
+        if (line[l] == 0) line[l] = 1; /* no front anywhere: outside */
+    free(queue);
+    return HJ_OK;
+}
+
+/* The point where the exact front crosses the segment [x, y] (bisection). */
+static void crossing(int d, const double *x, const double *y, int in_x, p3_inside_fn inside, void *ctx, double tol,
+                     double *out)
+{
+    double a[P3_DMAX], b[P3_DMAX], m[P3_DMAX];
+    memcpy(a, x, d * sizeof *a);
+    memcpy(b, y, d * sizeof *b);
+    for (int it = 0; it < 60; it++) {
+        double len2 = dist2(d, a, b);
+        if (len2 <= tol * tol) break;
+        for (int i = 0; i < d; i++) m[i] = 0.5 * (a[i] + b[i]);
+        if (inside(m, ctx) == in_x) memcpy(a, m, d * sizeof *a); else memcpy(b, m, d * sizeof *b);
+    }
+    for (int i = 0; i < d; i++) out[i] = 0.5 * (a[i] + b[i]);
+}
+
+int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err)
+{
+    const p3_problem *pb = sv->pb;
+    const int d = pb->d, n = pb->n;
+    int64_t nl = 1;
+    for (int k = 0; k < d - 1; k++) nl *= n;
+    signed char *line = calloc((size_t)nl, 1);
+    double *vals = malloc((size_t)n * sizeof *vals);
+    signed char *in = malloc((size_t)n);
+    points front = {NULL, 0, 0, d, 0}, exact = {NULL, 0, 0, d, 0};
+    int rc = HJ_OK;
+    if (!line || !vals || !in) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (errors)"); goto done; }
+    front_ctx fc = {sv, &front, line};
+    p3_store_foreach(sv->s, visit_front, &fc);
+    if ((rc = fill_lines(line, nl, d - 1, n, err))) goto done;
+    double cellvol = 1, hmin = sv->dx[0];
+    for (int k = 0; k < d; k++) {
+        cellvol *= sv->dx[k];
+        hmin = sv->dx[k] < hmin ? sv->dx[k] : hmin;
+    }
+    int64_t wrong = 0;
+    for (int64_t l = 0; l < nl; l++) {
+        int idx[P3_DMAX];
+        int64_t r = l;
+        for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
+        /* the values of the line: stored ones, gaps from the stored neighbour */
+        for (int i = 0; i < n; i++) {
+            idx[d - 1] = i;
+            const double *p = (line[l] == 1 || line[l] == -1) ? NULL : p3_store_find(sv->s, idx);
+            vals[i] = p ? *p : (line[l] == 1 || line[l] == -1) ? line[l] : NAN;
+        }
+        double last = NAN;
+        for (int i = 0; i < n; i++) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
+        last = NAN;
+        for (int i = n - 1; i >= 0; i--) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
+        for (int i = 0; i < n; i++) {
+            double x[P3_DMAX];
+            idx[d - 1] = i;
+            p3_centre(sv, idx, x);
+            in[i] = (signed char)(inside(x, ctx) != 0);
+            wrong += (vals[i] <= ZERO) != (in[i] != 0);
+        }
+        /* exact front: crossings towards the +e_k neighbours */
+        for (int i = 0; i < n; i++) {
+            double x[P3_DMAX], y[P3_DMAX], c[P3_DMAX];
+            idx[d - 1] = i;
+            p3_centre(sv, idx, x);
+            for (int k = 0; k < d; k++) {
+                if (idx[k] + 1 >= n) continue;
+                idx[k]++; /* the neighbour's own centre, as p3_centre rounds it */
+                p3_centre(sv, idx, y);
+                idx[k]--;
+                const int in_y = k == d - 1 ? in[i + 1] : inside(y, ctx) != 0;
+                if (in_y == in[i]) continue;
+                crossing(d, x, y, in[i], inside, ctx, 1e-6 * hmin, c);
+                push(&exact, c);
+            }
+        }
+    }
+    if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
+    *l1 = cellvol * (double)wrong;
+    rc = p3_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
+done:
+    free(line);
+    free(vals);
+    free(in);
+    free(front.p);
+    free(exact.p);
+    return rc;
+}

@@ -1,0 +1,47 @@
+/* p3_prog.h -- what the paper-3 programs share: the command line
+ * (--help, --quick, --out-dir, --sizes, --max-n, --tables), a CPU clock, peak memory
+ * and the output tables.  p3_args_parse() and p3_die() are for main()
+ * only (they print and exit, as hj_cli_fail does); the rest returns codes. */
+#ifndef P3_PROG_H
+#define P3_PROG_H
+
+#include <stdio.h>
+
+#include "hj_error.h"
+#include "hj_io.h"
+
+#define P3_MAX_SIZES 16
+
+typedef struct {
+    const char *prog;
+    const char *out_dir;
+    int quick;
+    long sizes[P3_MAX_SIZES]; /* --sizes overrides the program's list */
+    int nsizes;
+    long max_n;               /* --max-n: skip the sizes above it (0: none) */
+    long tables[P3_MAX_SIZES]; /* --tables: only these table numbers (none: all) */
+    int ntables;
+} p3_args;
+
+/* Whether table number t was asked for (all when --tables is absent). */
+int p3_want(const p3_args *a, long t);
+
+/* Parse the common options; usage is printed for --help (then exit 0).
+ * `extra` (may be NULL) is appended to the usage text. */
+void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra);
+
+/* Print "prog: message" and exit 1 (a run that failed). */
+_Noreturn void p3_die(const char *prog, const hj_error *err);
+
+/* CPU time of the process in seconds. */
+double p3_cpu(void);
+/* Peak resident memory of the process in MB (getrusage). */
+double p3_peak_mb(void);
+
+/* Open DIR/NAME for an atomic write (hj_out), creating DIR. */
+int p3_open(hj_out *out, const char *dir, const char *name, hj_error *err);
+
+/* "%.4g", or "-" for a NaN (no value). */
+const char *p3_num(char *buf, double v);
+
+#endif

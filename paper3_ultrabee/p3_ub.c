@@ -1,0 +1,485 @@
+/* p3_ub.c -- UB-HJB scheme on a narrow band (see p3_ub.h). */
+#include "p3_ub.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- the one-dimensional Ultra-Bee fluxes (8)-(9) ------------------------ */
+
+static inline double clip(double x, double lo, double hi)
+{
+    x = x < lo ? lo : x;
+    return x > hi ? hi : x;
+}
+
+/* W^L_{i+1/2} from node i when mu_i >= 0 (wm, wi, wp = W_{i-1}, W_i, W_{i+1}). */
+static inline double flux_left(double wm, double wi, double wp, double mu)
+{
+    if (mu > 0) {
+        const double mx = wi > wm ? wi : wm, mn = wi < wm ? wi : wm;
+        return clip(wp, mx + (wi - mx) / mu, mn + (wi - mn) / mu);
+    }
+    return wi != wm ? wp : wi;
+}
+
+/* W^R_{i-1/2} from node i when mu_i <= 0. */
+static inline double flux_right(double wm, double wi, double wp, double mu)
+{
+    if (mu < 0) {
+        const double mx = wi > wp ? wi : wp, mn = wi < wp ? wi : wp;
+        return clip(wm, mx + (wi - mx) / -mu, mn + (wi - mn) / -mu);
+    }
+    return wi != wp ? wm : wi;
+}
+
+double p3_ub_update(const double *w, const double *mu)
+{
+    const double m = mu[1];
+    if (m > 0) {
+        const double fl = flux_left(w[1], w[2], w[3], m);
+        /* left face: from node j-1 if it also flows right, else (8) */
+        const double fr = mu[0] >= 0 ? flux_left(w[0], w[1], w[2], mu[0]) : (w[2] == w[3] ? w[2] : w[1]);
+        return w[2] - m * (fl - fr);
+    }
+    if (m < 0) {
+        const double fr = flux_right(w[1], w[2], w[3], m);
+        const double fl = mu[2] <= 0 ? flux_right(w[2], w[3], w[4], mu[2]) : (w[2] == w[1] ? w[2] : w[3]);
+        return w[2] - m * (fl - fr);
+    }
+    return w[2];
+}
+
+/* ---- geometry ------------------------------------------------------------ */
+
+void p3_centre(const p3_solver *sv, const int *idx, double *x)
+{
+    for (int k = 0; k < sv->pb->d; k++) x[k] = sv->pb->lo[k] + idx[k] * sv->dx[k];
+}
+
+static void unlin(int d, int n, int64_t k, int *idx)
+{
+    for (int i = d - 1; i >= 0; i--) {
+        idx[i] = (int)(k % n);
+        k /= n;
+    }
+}
+
+static int64_t linear(int d, int n, const int *idx)
+{
+    int64_t k = 0;
+    for (int i = 0; i < d; i++) k = k * n + idx[i];
+    return k;
+}
+
+/* The 3^d - 1 offsets of Neigh(I). */
+static int offsets(int d, int off[][P3_DMAX])
+{
+    int m = 0, total = 1;
+    for (int i = 0; i < d; i++) total *= 3;
+    for (int c = 0; c < total; c++) {
+        int r = c, zero = 1;
+        for (int i = 0; i < d; i++) {
+            off[m][i] = r % 3 - 1;
+            zero &= off[m][i] == 0;
+            r /= 3;
+        }
+        if (!zero) m++;
+    }
+    return m;
+}
+
+static int shifted(const p3_solver *sv, const int *idx, const int *o, int *j)
+{
+    for (int i = 0; i < sv->pb->d; i++) {
+        j[i] = idx[i] + o[i];
+        if (j[i] < 0 || j[i] >= sv->pb->n) return 0;
+    }
+    return 1;
+}
+
+/* ---- averages of the initial data (7b) ----------------------------------- */
+
+double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi)
+{
+    double frac = 1;
+    for (int k = 0; k < d; k++) {
+        const double a = blo[k] > clo[k] ? blo[k] : clo[k], b = bhi[k] < chi[k] ? bhi[k] : chi[k];
+        double f = b > a ? (b - a) / (bhi[k] - blo[k]) : 0;
+        /* faces that coincide up to round-off of the grid coordinates */
+        f = f < 1e-9 ? 0 : f > 1 - 1e-9 ? 1 : f;
+        frac *= f;
+    }
+    return 1 - 2 * frac;
+}
+
+int p3_ball_uniform(int d, const double *blo, const double *bhi, const double *c, double r)
+{
+    double near = 0, far = 0;
+    for (int k = 0; k < d; k++) {
+        const double q = c[k] < blo[k] ? blo[k] - c[k] : c[k] > bhi[k] ? c[k] - bhi[k] : 0;
+        const double f = fabs(c[k] - blo[k]) > fabs(c[k] - bhi[k]) ? fabs(c[k] - blo[k]) : fabs(c[k] - bhi[k]);
+        near += q * q;
+        far += f * f;
+    }
+    return near >= r * r || far <= r * r;
+}
+
+double p3_avg_ball(int d, const double *blo, const double *bhi, const double *c, double r, int m)
+{
+    double near = 0, far = 0; /* squared distances from c to the box */
+    for (int k = 0; k < d; k++) {
+        const double q = c[k] < blo[k] ? blo[k] - c[k] : c[k] > bhi[k] ? c[k] - bhi[k] : 0;
+        const double f = fabs(c[k] - blo[k]) > fabs(c[k] - bhi[k]) ? fabs(c[k] - blo[k]) : fabs(c[k] - bhi[k]);
+        near += q * q;
+        far += f * f;
+    }
+    if (near >= r * r) return 1;
+    if (far <= r * r) return -1;
+    long total = 1, in = 0;
+    for (int k = 0; k < d; k++) total *= m;
+    for (long s = 0; s < total; s++) {
+        long q = s;
+        double r2 = 0;
+        for (int k = 0; k < d; k++) {
+            const double x = blo[k] + ((double)(q % m) + 0.5) / m * (bhi[k] - blo[k]) - c[k];
+            r2 += x * x;
+            q /= m;
+        }
+        in += r2 <= r * r;
+    }
+    return 1 - 2.0 * (double)in / (double)total;
+}
+
+/* ---- workspace ------------------------------------------------------------ */
+
+static int reserve(p3_solver *sv, size_t m, hj_error *err)
+{
+    if (m <= sv->cap) return HJ_OK;
+    size_t cap = sv->cap ? sv->cap : 1024;
+    while (cap < m) cap *= 2;
+    const int d = sv->pb->d;
+#define GROW(p, count)                                                            \
+    do {                                                                          \
+        void *np = realloc(sv->p, (count) * sizeof *sv->p);                       \
+        if (!np) return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)"); \
+        sv->p = np;                                                               \
+    } while (0)
+    GROW(lin, cap);
+    GROW(ptr, cap);
+    GROW(v0, cap);
+    GROW(w, cap);
+    GROW(wn, cap);
+    GROW(vmin, cap);
+    GROW(f, cap * (size_t)d);
+    GROW(mu, cap * (size_t)d);
+    GROW(link, cap * 2 * (size_t)d);
+#undef GROW
+    sv->cap = cap;
+    return HJ_OK;
+}
+
+void p3_solver_free(p3_solver *sv)
+{
+    p3_store_free(sv->s);
+    free(sv->lin);
+    free(sv->ptr);
+    free(sv->v0);
+    free(sv->w);
+    free(sv->wn);
+    free(sv->vmin);
+    free(sv->f);
+    free(sv->mu);
+    free(sv->link);
+    memset(sv, 0, sizeof *sv);
+}
+
+/* ---- initialisation -------------------------------------------------------- */
+
+/* Whether the cells around idx all have the value v of cell idx: sure when
+ * the data average over the whole block is +-1, else checked cell by cell
+ * (sampled averages may call a cell uniform that the block test would not). */
+static int uniform_block(const p3_solver *sv, const int *idx, double v, const double *blo, const double *bhi)
+{
+    const p3_problem *pb = sv->pb;
+    if (pb->uniform) {
+        if (pb->uniform(blo, bhi, pb->ctx)) return 1;
+    } else {
+        const double b = pb->avg0(blo, bhi, pb->ctx);
+        if (b == 1 || b == -1) return b == v;
+    }
+    int off[81][P3_DMAX], j[P3_DMAX];
+    const int noff = offsets(pb->d, off);
+    for (int o = 0; o < noff; o++) {
+        double clo[P3_DMAX], chi[P3_DMAX];
+        for (int k = 0; k < pb->d; k++) {
+            j[k] = idx[k] + off[o][k];
+            clo[k] = pb->lo[k] + (j[k] - 0.5) * sv->dx[k];
+            chi[k] = clo[k] + sv->dx[k];
+        }
+        if (pb->avg0(clo, chi, pb->ctx) != v) return 0;
+    }
+    return 1;
+}
+
+int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *err)
+{
+    memset(sv, 0, sizeof *sv);
+    sv->pb = pb;
+    if (pb->d < 2 || pb->d > P3_DMAX || pb->n < 3 || pb->ncontrols < 1 || !pb->dyn || !pb->avg0 || !(pb->cfl > 0) ||
+        pb->cfl > 1)
+        return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, data, 0 < cfl <= 1");
+    const int d = pb->d, n = pb->n;
+    for (int k = 0; k < d; k++) {
+        if (!(pb->hi[k] > pb->lo[k])) return hj_error_set(err, HJ_EINVAL, "problem: empty domain");
+        sv->dx[k] = (pb->hi[k] - pb->lo[k]) / (n - 1);
+    }
+    int rc = p3_store_new(&sv->s, kind, d, n, err);
+    if (rc) return rc;
+    /* scan the cells of the bounding box, widened by two cells */
+    int lo[P3_DMAX], hi[P3_DMAX], idx[P3_DMAX];
+    long cells = 1;
+    for (int k = 0; k < d; k++) {
+        lo[k] = (int)floor((pb->bbox_lo[k] - pb->lo[k]) / sv->dx[k]) - 2;
+        hi[k] = (int)ceil((pb->bbox_hi[k] - pb->lo[k]) / sv->dx[k]) + 2;
+        lo[k] = lo[k] < 0 ? 0 : lo[k];
+        hi[k] = hi[k] > n - 1 ? n - 1 : hi[k];
+        if (hi[k] < lo[k]) return HJ_OK; /* Omega_0 outside the domain */
+        cells *= hi[k] - lo[k] + 1;
+    }
+    for (long c = 0; c < cells; c++) {
+        long r = c;
+        for (int k = d - 1; k >= 0; k--) {
+            idx[k] = lo[k] + (int)(r % (hi[k] - lo[k] + 1));
+            r /= hi[k] - lo[k] + 1;
+        }
+        double clo[P3_DMAX], chi[P3_DMAX], blo[P3_DMAX], bhi[P3_DMAX];
+        for (int k = 0; k < d; k++) {
+            clo[k] = pb->lo[k] + (idx[k] - 0.5) * sv->dx[k];
+            chi[k] = clo[k] + sv->dx[k];
+            blo[k] = clo[k] - sv->dx[k];
+            bhi[k] = chi[k] + sv->dx[k];
+        }
+        const double v = pb->avg0(clo, chi, pb->ctx);
+        if (v == -1 && pb->reached) pb->reached(idx, 0.0, pb->ctx);
+        /* D^0: the cells whose 3^d block is not uniform (FS: every cell) */
+        if ((kind == P3_FS || !uniform_block(sv, idx, v, blo, bhi)) && (rc = p3_store_insert(sv->s, idx, v, err)))
+            return rc;
+    }
+    return HJ_OK;
+}
+
+/* ---- one step ---------------------------------------------------------------- */
+
+typedef struct {
+    p3_solver *sv;
+    size_t m;
+} collect_ctx;
+
+static int collect(const int *idx, double *v, void *vctx)
+{
+    collect_ctx *c = vctx;
+    p3_solver *sv = c->sv;
+    sv->lin[c->m] = linear(sv->pb->d, sv->pb->n, idx);
+    sv->ptr[c->m] = v;
+    sv->v0[c->m] = *v;
+    c->m++;
+    return 0;
+}
+
+/* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the +-1 node
+ * it neighbours. */
+static int expand_band(p3_solver *sv, int off[][P3_DMAX], int noff, hj_error *err)
+{
+    const int d = sv->pb->d;
+    int rc = reserve(sv, p3_store_count(sv->s), err);
+    if (rc) return rc;
+    collect_ctx c = {sv, 0};
+    p3_store_foreach(sv->s, collect, &c);
+    for (size_t i = 0; i < c.m; i++) {
+        int idx[P3_DMAX], j[P3_DMAX];
+        unlin(d, sv->pb->n, sv->lin[i], idx);
+        for (int o = 0; o < noff; o++) {
+            if (!shifted(sv, idx, off[o], j) || p3_store_find(sv->s, j)) continue;
+            if (sv->v0[i] != 1 && sv->v0[i] != -1)
+                return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
+            if ((rc = p3_store_insert(sv->s, j, sv->v0[i], err))) return rc;
+        }
+    }
+    return HJ_OK;
+}
+
+/* Value slots temporarily hold the node's position in the snapshot, so that
+ * the store's own neighbour search gives the links. */
+static int snapshot(p3_solver *sv, size_t *m, hj_error *err)
+{
+    const int d = sv->pb->d;
+    int rc = reserve(sv, p3_store_count(sv->s), err);
+    if (rc) return rc;
+    collect_ctx c = {sv, 0};
+    p3_store_foreach(sv->s, collect, &c);
+    *m = c.m;
+    for (size_t i = 0; i < c.m; i++) *sv->ptr[i] = (double)i;
+    for (size_t i = 0; i < c.m; i++) {
+        int idx[P3_DMAX];
+        unlin(d, sv->pb->n, sv->lin[i], idx);
+        for (int k = 0; k < d; k++)
+            for (int s = 0; s < 2; s++) {
+                int32_t *l = &sv->link[i * 2 * d + 2 * k + s];
+                idx[k] += s ? 1 : -1;
+                if (idx[k] < 0 || idx[k] >= sv->pb->n) *l = -2;
+                else {
+                    const double *p = p3_store_find(sv->s, idx);
+                    *l = p ? (int32_t)*p : -1;
+                }
+                idx[k] -= s ? 1 : -1;
+            }
+    }
+    return HJ_OK;
+}
+
+static double time_step(p3_solver *sv, size_t m, double tmax)
+{
+    const p3_problem *pb = sv->pb;
+    double rate = 0, f[P3_DMAX], x[P3_DMAX];
+    for (int a = 0; a < pb->ncontrols; a++)
+        for (size_t i = 0; i < m; i++) {
+            int idx[P3_DMAX];
+            unlin(pb->d, pb->n, sv->lin[i], idx);
+            p3_centre(sv, idx, x);
+            pb->dyn(sv->t, x, a, f, pb->ctx);
+            for (int k = 0; k < pb->d; k++) {
+                const double r = fabs(f[k]) / sv->dx[k];
+                rate = r > rate ? r : rate;
+            }
+        }
+    const double left = tmax - sv->t;
+    double dt = rate * left <= pb->cfl ? left : pb->cfl / rate;
+    return pb->dtmax > 0 && dt > pb->dtmax ? pb->dtmax : dt;
+}
+
+/* mu of direction k at the cell next to node i (s = 0: left, 1: right). */
+static double mu_beside(p3_solver *sv, size_t i, int k, int s, int a, double dt)
+{
+    int idx[P3_DMAX];
+    double x[P3_DMAX], f[P3_DMAX];
+    unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
+    p3_centre(sv, idx, x);
+    x[k] += s ? sv->dx[k] : -sv->dx[k];
+    sv->pb->dyn(sv->t, x, a, f, sv->pb->ctx);
+    return dt / sv->dx[k] * f[k];
+}
+
+/* One sweep in direction k for control a: wn = UB update of w. */
+static void sweep(p3_solver *sv, size_t m, int k, int a, double dt)
+{
+    const int d = sv->pb->d;
+    const double bnd = sv->pb->boundary;
+    for (size_t i = 0; i < m; i++) {
+        double w5[5], mu3[3];
+        w5[2] = sv->w[i];
+        mu3[1] = sv->mu[i * d + k];
+        for (int s = 0; s < 2; s++) {
+            const int32_t n1 = sv->link[i * 2 * d + 2 * k + s];
+            double w1, w2, m1;
+            if (n1 >= 0) {
+                const int32_t n2 = sv->link[(size_t)n1 * 2 * d + 2 * k + s];
+                w1 = sv->w[n1];
+                m1 = sv->mu[(size_t)n1 * d + k];
+                w2 = n2 >= 0 ? sv->w[n2] : n2 == -1 ? sv->v0[n1] : bnd;
+            } else {
+                /* not stored: the value of this node at t_n; outside: boundary */
+                w1 = w2 = n1 == -1 ? sv->v0[i] : bnd;
+                m1 = mu_beside(sv, i, k, s, a, dt);
+            }
+            w5[s ? 3 : 1] = w1;
+            w5[s ? 4 : 0] = w2;
+            mu3[s ? 2 : 0] = m1;
+        }
+        sv->wn[i] = p3_ub_update(w5, mu3);
+    }
+}
+
+static int equal_to_neighbours(p3_solver *sv, size_t i, int off[][P3_DMAX], int noff)
+{
+    int idx[P3_DMAX], j[P3_DMAX];
+    const double v = sv->vmin[i];
+    unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
+    for (int o = 0; o < noff; o++) {
+        if (!shifted(sv, idx, off[o], j)) continue;
+        const double *p = p3_store_find(sv->s, j);
+        if ((p ? *p : sv->v0[i]) != v) return 0;
+    }
+    return 1;
+}
+
+int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
+{
+    const p3_problem *pb = sv->pb;
+    const int d = pb->d;
+    int off[81][P3_DMAX];
+    const int noff = offsets(d, off);
+    int rc;
+    if (!(tmax > sv->t)) return HJ_OK;
+    if (p3_store_kind(sv->s) != P3_FS && (rc = expand_band(sv, off, noff, err))) return rc;
+    size_t m;
+    if ((rc = snapshot(sv, &m, err))) return rc;
+    sv->band_sum += (double)m;
+    sv->band_max = m > sv->band_max ? m : sv->band_max;
+    const double dt = time_step(sv, m, tmax), snap = pb->snap > 0 ? pb->snap : 1e-12;
+    for (int a = 0; a < pb->ncontrols; a++) {
+        for (size_t i = 0; i < m; i++) {
+            int idx[P3_DMAX];
+            double x[P3_DMAX];
+            unlin(d, pb->n, sv->lin[i], idx);
+            p3_centre(sv, idx, x);
+            pb->dyn(sv->t, x, a, &sv->f[i * d], pb->ctx);
+            for (int k = 0; k < d; k++) sv->mu[i * d + k] = dt / sv->dx[k] * sv->f[i * d + k];
+        }
+        memcpy(sv->w, sv->v0, m * sizeof *sv->w);
+        for (int k = 0; k < d; k++) {
+            sweep(sv, m, k, a, dt);
+            double *tmp = sv->w;
+            sv->w = sv->wn;
+            sv->wn = tmp;
+        }
+        for (size_t i = 0; i < m; i++)
+            if (a == 0 || sv->w[i] < sv->vmin[i]) sv->vmin[i] = sv->w[i];
+    }
+    for (size_t i = 0; i < m; i++) {
+        double v = sv->vmin[i];
+        if (pb->target && sv->v0[i] < v) v = sv->v0[i];
+        v = v > 1 - snap ? 1 : v < -1 + snap ? -1 : v;
+        sv->vmin[i] = v;
+        *sv->ptr[i] = v;
+        if (pb->reached && v == -1 && sv->v0[i] != -1) {
+            int idx[P3_DMAX];
+            unlin(d, pb->n, sv->lin[i], idx);
+            pb->reached(idx, sv->t + dt, pb->ctx);
+        }
+    }
+    /* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to all their neighbours */
+    if (p3_store_kind(sv->s) != P3_FS) {
+        size_t r = 0;
+        for (size_t i = 0; i < m; i++)
+            if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, off, noff))
+                sv->lin[r++] = sv->lin[i];
+        for (size_t i = 0; i < r; i++) {
+            int idx[P3_DMAX];
+            unlin(d, pb->n, sv->lin[i], idx);
+            p3_store_remove(sv->s, idx);
+        }
+    }
+    sv->t = dt == tmax - sv->t ? tmax : sv->t + dt;
+    sv->steps++;
+    return HJ_OK;
+}
+
+int p3_solver_run(p3_solver *sv, double T, hj_error *err)
+{
+    while (sv->t < T) {
+        int rc = p3_solver_step(sv, T, err);
+        if (rc) return rc;
+    }
+    return HJ_OK;
+}

@@ -1,0 +1,392 @@
+/*
+# Storage comparison of section 3.3-3.4 (Tables 1-4)
+
+**Problem.** A fixed front on the grid of n nodes per direction on
+[-2, 2]^d (end points included), stored in each structure of section 3:
+FS (full), FLS (full + unsorted band list), LS (one sorted list with
+compressed keys), CRS (one dynamic list per first index) and SSD (a static
+(d-1)-dimensional array of lists along the last index), all behind the
+interface of p3_store.h; SSDC is the variant of Remark 3.1 and SSDA the
+same line heads with contiguous sorted arrays instead of linked lists.  Fronts
+(p3_front.h): Example 1, six nested spheres (radii 0.3 k: the paper does not give them, these reproduce its N_nb
+exactly in d = 2 and 3);
+Example 2, the cylinder rho <= 0.5, |x_d| <= 1.6 along the last axis
+(fitted to the published N_nb in the same way, within 5 %).  The band is F+ u F-, the
+nodes with a face neighbour on the other side, stored with values +-1.
+
+**Measured.**
+* Tables 1, 2 -- neighbour search: for every band node (every node for
+  FS) the values of its 2d face neighbours are looked up in the structure;
+  CPU seconds (repeated until 0.05 s and averaged), and the ratios between
+  successive n (the published "Order") and SSD/FLS.
+* Table 3 -- update (d = 3): insert every face neighbour of F+ that is not
+  stored (value ND), then remove every node of F-; only the inserts and
+  removes are timed.
+* Table 4 -- memory (d = 3, Example 1): bytes allocated by the structure
+  holding the band, in MB (10^6 bytes), and its ratio between successive
+  n.  The published "Out of mem." cells came from a 4 GB laptop: the
+  full structures at n = 800 are built once under a 4 GB address-space
+  limit (setrlimit RLIMIT_AS), where they must fail cleanly with "out of
+  memory" (column *_4GB), and once without it.
+
+Timings are compared only as ratios (the published ones come from a
+2 GHz 2008 laptop).  LS and CRS get slow as O(N^d) per sweep in d >= 3: a
+size whose predicted time (previous time x ratio of the last two sizes,
+or x 2^d) exceeds 60 s (5 s with `--quick`) is not run ('-'), like the published ">1e3" cells.
+
+**Parameters.** Published sizes: Table 1 d = 2: 400, 800, 1600; d = 3:
+100, 200, 400, 800; d = 4: 25, 50, 100, 200.  Table 2: d = 3 and 4 as in
+Table 1.  Table 3: 50 ... 800.  Table 4: 100 ... 800.  `--quick`: the two
+smallest sizes of each group.
+
+**Output.** table1.tsv ... table4.tsv.
+*/
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+
+#include "hj_cli.h"
+#include "p3_front.h"
+#include "p3_prog.h"
+#include "p3_store.h"
+
+static double BUDGET = 60.0; /* seconds; 5 with --quick */
+
+typedef struct {
+    p3_store *s;
+    hj_error *err;
+    int rc;
+    size_t nb;
+    int64_t *plus; /* F+ nodes (linear), for the update test */
+    size_t nplus, capplus;
+    int64_t *minus;
+    size_t nminus, capminus;
+    int n, d;
+} build_ctx;
+
+static int64_t lin(int d, int n, const int *idx)
+{
+    int64_t k = 0;
+    for (int i = 0; i < d; i++) k = k * n + idx[i];
+    return k;
+}
+
+static void unlin(int d, int n, int64_t k, int *idx)
+{
+    for (int i = d - 1; i >= 0; i--) { idx[i] = (int)(k % n); k /= n; }
+}
+
+static int push(int64_t **a, size_t *n, size_t *cap, int64_t v)
+{
+    if (*n == *cap) {
+        size_t c = *cap ? 2 * *cap : 4096;
+        int64_t *p = realloc(*a, c * sizeof *p);
+        if (!p) return HJ_ENOMEM;
+        *a = p;
+        *cap = c;
+    }
+    (*a)[(*n)++] = v;
+    return HJ_OK;
+}
+
+static int add_node(const int *idx, int side, void *vctx)
+{
+    build_ctx *c = vctx;
+    c->nb++;
+    if (c->s && (c->rc = p3_store_insert(c->s, idx, side, c->err))) return 1;
+    if (c->plus) {
+        int64_t k = lin(c->d, c->n, idx);
+        if (side > 0 ? push(&c->plus, &c->nplus, &c->capplus, k) : push(&c->minus, &c->nminus, &c->capminus, k)) {
+            c->rc = hj_error_set(c->err, HJ_ENOMEM, "out of memory (update lists)");
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The store of the given kind holding the band of front f. */
+static int build(p3_store **s, p3_kind kind, const p3_front *f, size_t *nb, hj_error *err)
+{
+    int rc = p3_store_new(s, kind, f->d, f->n, err);
+    if (rc) return rc;
+    build_ctx c = {*s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
+    p3_front_band(f, add_node, &c, err);
+    *nb = c.nb;
+    if (c.rc) { p3_store_free(*s); *s = NULL; }
+    return c.rc;
+}
+
+/* ---- neighbour search ---------------------------------------------------- */
+
+typedef struct {
+    p3_store *s;
+    int d, n;
+    double sum;
+    size_t found;
+} search_ctx;
+
+static int search_node(const int *idx, double *v, void *vctx)
+{
+    search_ctx *c = vctx;
+    int j[P3_DMAX];
+    memcpy(j, idx, sizeof j);
+    c->sum += *v;
+    for (int k = 0; k < c->d; k++)
+        for (int s = -1; s <= 1; s += 2) {
+            j[k] = idx[k] + s;
+            if (j[k] >= 0 && j[k] < c->n) {
+                const double *p = p3_store_find(c->s, j);
+                if (p) { c->sum += *p; c->found++; }
+            }
+            j[k] = idx[k];
+        }
+    return 0;
+}
+
+/* Seconds per search over the band (FS: over the grid). */
+static double time_search(p3_store *s, const p3_front *f)
+{
+    search_ctx c = {s, f->d, f->n, 0, 0};
+    int reps = 0;
+    const double t0 = p3_cpu();
+    double t;
+    do {
+        p3_store_foreach(s, search_node, &c);
+        reps++;
+        t = p3_cpu() - t0;
+    } while (t < 0.05);
+    return c.sum == 12345.678 ? 0 : t / reps; /* the sum keeps the loop alive */
+}
+
+/* ---- update -------------------------------------------------------------- */
+
+static int cmp64(const void *a, const void *b)
+{
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+static int time_update(p3_kind kind, const p3_front *f, double *secs, hj_error *err)
+{
+    p3_store *s;
+    int rc = p3_store_new(&s, kind, f->d, f->n, err);
+    if (rc) return rc;
+    build_ctx c = {s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
+    c.plus = malloc(sizeof *c.plus);
+    c.capplus = 1;
+    if (!c.plus) { p3_store_free(s); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
+    p3_front_band(f, add_node, &c, err);
+    rc = c.rc;
+    /* the face neighbours of F+ that are not stored, each once */
+    int64_t *ins = NULL;
+    size_t nins = 0, capins = 0;
+    for (size_t i = 0; i < c.nplus && !rc; i++) {
+        int idx[P3_DMAX];
+        unlin(f->d, f->n, c.plus[i], idx);
+        for (int k = 0; k < f->d && !rc; k++)
+            for (int sg = -1; sg <= 1 && !rc; sg += 2) {
+                idx[k] += sg;
+                if (idx[k] >= 0 && idx[k] < f->n && !p3_store_find(s, idx) &&
+                    push(&ins, &nins, &capins, lin(f->d, f->n, idx)))
+                    rc = hj_error_set(err, HJ_ENOMEM, "out of memory (update lists)");
+                idx[k] -= sg;
+            }
+    }
+    if (!rc) {
+        qsort(ins, nins, sizeof *ins, cmp64);
+        size_t m = 0;
+        for (size_t i = 0; i < nins; i++)
+            if (m == 0 || ins[i] != ins[m - 1]) ins[m++] = ins[i];
+        nins = m;
+        const double t0 = p3_cpu();
+        for (size_t i = 0; i < nins && !rc; i++) {
+            int idx[P3_DMAX];
+            unlin(f->d, f->n, ins[i], idx);
+            rc = p3_store_insert(s, idx, 1.0, err);
+        }
+        for (size_t i = 0; i < c.nminus && !rc; i++) {
+            int idx[P3_DMAX];
+            unlin(f->d, f->n, c.minus[i], idx);
+            p3_store_remove(s, idx);
+        }
+        *secs = p3_cpu() - t0;
+    }
+    free(ins);
+    free(c.plus);
+    free(c.minus);
+    p3_store_free(s);
+    return rc;
+}
+
+/* ---- tables ----------------------------------------------------------------- */
+
+/* Whether a run predicted from the previous ones stays within the budget. */
+static int affordable(const double *prev, int i, int d)
+{
+    if (i == 0 || isnan(prev[i - 1])) return i == 0;
+    const double growth = i >= 2 && !isnan(prev[i - 2]) && prev[i - 2] > 0 ? prev[i - 1] / prev[i - 2] : (double)(1 << d);
+    return prev[i - 1] * (growth > 2 ? growth : 2) <= BUDGET;
+}
+
+static const p3_kind SEARCH_KINDS[] = {P3_FS, P3_FLS, P3_LS, P3_CRS, P3_SSD, P3_SSDC, P3_SSDA};
+enum { NSK = 7 };
+
+static void search_table(const p3_args *a, const char *table, int example, hj_error *err)
+{
+    static const long s2[] = {400, 800, 1600}, s3[] = {100, 200, 400, 800}, s4[] = {25, 50, 100, 200};
+    hj_out out;
+    char name[64];
+    snprintf(name, sizeof name, "%s.tsv", table);
+    if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
+    fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
+            example, a->quick ? " --quick" : "");
+    fprintf(out.fp, "d\tN\tN_nb");
+    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(SEARCH_KINDS[k]), p3_kind_name(SEARCH_KINDS[k]));
+    fprintf(out.fp, "\tSSD_over_FLS\n");
+    for (int d = example == 1 ? 2 : 3; d <= 4; d++) {
+        const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
+        const int ns = a->quick ? 2 : d == 2 ? 3 : 4;
+        double t[NSK][4];
+        for (int i = 0; i < ns; i++) {
+            if (a->max_n && sizes[i] > a->max_n) break;
+            p3_front f = {example, d, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
+            size_t nb = 0;
+            fprintf(out.fp, "%d\t%ld", d, sizes[i]);
+            char line[1024] = "";
+            for (int k = 0; k < NSK; k++) {
+                t[k][i] = NAN;
+                if (!affordable(t[k], i, d)) continue;
+                p3_store *s;
+                hj_progress("%s d=%d N=%ld %s ...\n", table, d, sizes[i], p3_kind_name(SEARCH_KINDS[k]));
+                const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
+                if (rc == HJ_ENOMEM) continue; /* beyond this machine: no value */
+                if (rc) p3_die(a->prog, err);
+                t[k][i] = time_search(s, &f);
+                p3_store_free(s);
+            }
+            for (int k = 0; k < NSK; k++) {
+                char b1[32], b2[32];
+                size_t len = strlen(line);
+                snprintf(line + len, sizeof line - len, "\t%s\t%s", p3_num(b1, t[k][i]),
+                         p3_num(b2, i ? t[k][i] / t[k][i - 1] : NAN));
+            }
+            char b3[32];
+            fprintf(out.fp, "\t%zu%s\t%s\n", nb, line, p3_num(b3, t[4][i] / t[1][i]));
+            fflush(out.fp);
+        }
+    }
+    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+}
+
+static const p3_kind UPDATE_KINDS[] = {P3_FLS, P3_LS, P3_CRS, P3_SSD, P3_SSDC, P3_SSDA};
+enum { NUK = 6 };
+
+static void update_table(const p3_args *a, hj_error *err)
+{
+    static const long sizes[] = {50, 100, 200, 400, 800};
+    hj_out out;
+    if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
+    fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
+            a->quick ? " --quick" : "");
+    fprintf(out.fp, "ex\tN\tN_nb");
+    for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(UPDATE_KINDS[k]), p3_kind_name(UPDATE_KINDS[k]));
+    fprintf(out.fp, "\tSSD_over_FLS\n");
+    for (int ex = 1; ex <= 2; ex++) {
+        const int ns = a->quick ? 2 : 5;
+        double t[NUK][5];
+        for (int i = 0; i < ns; i++) {
+            if (a->max_n && sizes[i] > a->max_n) break;
+            p3_front f = {ex, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
+            build_ctx count = {NULL, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f.n, 3};
+            p3_front_band(&f, add_node, &count, err);
+            fprintf(out.fp, "%d\t%ld\t%zu", ex, sizes[i], count.nb);
+            for (int k = 0; k < NUK; k++) {
+                t[k][i] = NAN;
+                if (!affordable(t[k], i, 3)) continue;
+                hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], p3_kind_name(UPDATE_KINDS[k]));
+                const int rc = time_update(UPDATE_KINDS[k], &f, &t[k][i], err);
+                if (rc == HJ_ENOMEM) { t[k][i] = NAN; continue; }
+                if (rc) p3_die(a->prog, err);
+            }
+            for (int k = 0; k < NUK; k++) {
+                char b1[32], b2[32];
+                fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k][i]), p3_num(b2, i ? t[k][i] / t[k][i - 1] : NAN));
+            }
+            char b3[32];
+            fprintf(out.fp, "\t%s\n", p3_num(b3, t[3][i] / t[0][i]));
+            fflush(out.fp);
+        }
+    }
+    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+}
+
+/* Try to build a full store under a 4 GB address-space limit. */
+static const char *under_4gb(p3_kind kind, int n)
+{
+    struct rlimit old, lim;
+    if (getrlimit(RLIMIT_AS, &old)) return "rlimit unavailable";
+    lim = old;
+    lim.rlim_cur = (rlim_t)4 << 30;
+    if (old.rlim_max != RLIM_INFINITY && old.rlim_max < lim.rlim_cur) lim.rlim_cur = old.rlim_max;
+    if (setrlimit(RLIMIT_AS, &lim)) return "rlimit unavailable";
+    p3_store *s;
+    hj_error err;
+    const int rc = p3_store_new(&s, kind, 3, n, &err);
+    if (!rc) p3_store_free(s);
+    setrlimit(RLIMIT_AS, &old);
+    return rc == HJ_ENOMEM ? "out_of_memory" : rc ? "error" : "ok";
+}
+
+static void memory_table(const p3_args *a, hj_error *err)
+{
+    static const long sizes[] = {100, 200, 400, 800};
+    hj_out out;
+    if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
+    fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
+            a->quick ? " --quick" : "");
+    fprintf(out.fp, "d\tN\tN_nb");
+    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(SEARCH_KINDS[k]), p3_kind_name(SEARCH_KINDS[k]));
+    fprintf(out.fp, "\tFS_4GB\tFLS_4GB\n");
+    double mb[NSK][4];
+    const int ns = a->quick ? 2 : 4;
+    for (int i = 0; i < ns; i++) {
+        if (a->max_n && sizes[i] > a->max_n) break;
+        p3_front f = {1, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
+        size_t nb = 0;
+        fprintf(out.fp, "3\t%ld", sizes[i]);
+        for (int k = 0; k < NSK; k++) {
+            p3_store *s;
+            mb[k][i] = NAN;
+            hj_progress("table4 N=%ld %s ...\n", sizes[i], p3_kind_name(SEARCH_KINDS[k]));
+            const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
+            if (rc == HJ_ENOMEM) continue;
+            if (rc) p3_die(a->prog, err);
+            mb[k][i] = (double)p3_store_bytes(s) / 1e6;
+            p3_store_free(s);
+        }
+        fprintf(out.fp, "\t%zu", nb);
+        for (int k = 0; k < NSK; k++) {
+            char b1[32], b2[32];
+            fprintf(out.fp, "\t%s\t%s", p3_num(b1, mb[k][i]), p3_num(b2, i ? mb[k][i] / mb[k][i - 1] : NAN));
+        }
+        fprintf(out.fp, "\t%s\t%s\n", under_4gb(P3_FS, f.n), under_4gb(P3_FLS, f.n));
+        fflush(out.fp);
+    }
+    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+}
+
+int main(int argc, char **argv)
+{
+    p3_args a = {.prog = "storage"};
+    p3_args_parse(&a, argc, argv, "Tables 1-4: neighbour search, update and memory of FS, FLS, LS, CRS, SSD.", NULL);
+    hj_error err;
+    if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
+    if (a.quick) BUDGET = 5.0;
+    if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
+    if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
+    if (p3_want(&a, 3)) update_table(&a, &err);
+    if (p3_want(&a, 4)) memory_table(&a, &err);
+    return 0;
+}

@@ -1,0 +1,142 @@
+/* Unit tests of p3_store: every kind holds the same set after the same
+ * random inserts and removes, finds the same neighbours, walks in order. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "p3_store.h"
+
+/* Reference: a plain array over the small grid, NaN = not stored. */
+typedef struct {
+    int d, n;
+    int64_t total;
+    double *v;
+} ref_grid;
+
+static int64_t lin(int d, int n, const int *idx)
+{
+    int64_t k = 0;
+    for (int i = 0; i < d; i++) k = k * n + idx[i];
+    return k;
+}
+
+static unsigned rnd(unsigned *state)
+{
+    *state = *state * 1103515245u + 12345u;
+    return (*state >> 16) & 0x7fff;
+}
+
+typedef struct {
+    int d, n;
+    int64_t last;
+    size_t seen;
+    const ref_grid *ref;
+    int ordered;
+} walk_ctx;
+
+static int check_visit(const int *idx, double *v, void *vctx)
+{
+    walk_ctx *w = vctx;
+    int64_t k = lin(w->d, w->n, idx);
+    if (w->ordered && k <= w->last) return 1;
+    w->last = k;
+    w->seen++;
+    return *v == w->ref->v[k] ? 0 : 2;
+}
+
+/* The same random sequence on every kind, checked against the array. */
+static void random_sequence_all_kinds(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 4; d++) {
+        const int n = d == 2 ? 40 : d == 3 ? 14 : 7;
+        for (int kind = P3_FLS; kind < P3_NKINDS; kind++) {
+            ref_grid ref = {d, n, 1, NULL};
+            for (int i = 0; i < d; i++) ref.total *= n;
+            ref.v = malloc((size_t)ref.total * sizeof *ref.v);
+            assert_non_null(ref.v);
+            for (int64_t i = 0; i < ref.total; i++) ref.v[i] = NAN;
+            p3_store *s;
+            assert_int_equal(p3_store_new(&s, kind, d, n, NULL), HJ_OK);
+            unsigned seed = 12345u + (unsigned)d;
+            for (int step = 0; step < 20000; step++) {
+                int idx[P3_DMAX];
+                for (int i = 0; i < d; i++) idx[i] = (int)(rnd(&seed) % (unsigned)n);
+                int64_t k = lin(d, n, idx);
+                unsigned op = rnd(&seed) % 3;
+                if (op == 0) {
+                    double v = (double)step;
+                    assert_int_equal(p3_store_insert(s, idx, v, NULL), HJ_OK);
+                    ref.v[k] = v;
+                } else if (op == 1) {
+                    p3_store_remove(s, idx);
+                    ref.v[k] = NAN;
+                } else {
+                    /* the node and its 2d neighbours */
+                    for (int nb = -1; nb < 2 * d; nb++) {
+                        int j[P3_DMAX];
+                        memcpy(j, idx, sizeof j);
+                        if (nb >= 0) {
+                            j[nb / 2] += nb % 2 ? 1 : -1;
+                            if (j[nb / 2] < 0 || j[nb / 2] >= n) continue;
+                        }
+                        double *p = p3_store_find(s, j), r = ref.v[lin(d, n, j)];
+                        if (isnan(r)) assert_null(p);
+                        else { assert_non_null(p); assert_true(*p == r); }
+                    }
+                }
+            }
+            size_t stored = 0;
+            for (int64_t i = 0; i < ref.total; i++) stored += !isnan(ref.v[i]);
+            assert_int_equal(p3_store_count(s), stored);
+            walk_ctx w = {d, n, -1, 0, &ref, kind != P3_FLS};
+            assert_int_equal(p3_store_foreach(s, check_visit, &w), 0);
+            assert_int_equal(w.seen, stored);
+            assert_true(p3_store_bytes(s) > 0);
+            p3_store_free(s);
+            free(ref.v);
+        }
+    }
+}
+
+static void full_storage_holds_every_node(void **state)
+{
+    (void)state;
+    p3_store *s;
+    assert_int_equal(p3_store_new(&s, P3_FS, 3, 5, NULL), HJ_OK);
+    assert_int_equal(p3_store_count(s), 125);
+    int idx[3] = {4, 0, 2};
+    double *p = p3_store_find(s, idx);
+    assert_non_null(p);
+    assert_true(*p == 1.0);
+    p3_store_remove(s, idx);
+    assert_non_null(p3_store_find(s, idx));
+    p3_store_free(s);
+}
+
+/* Full kinds beyond the machine fail cleanly; bad shapes are refused. */
+static void out_of_memory_and_bad_args(void **state)
+{
+    (void)state;
+    p3_store *s = (p3_store *)&s;
+    hj_error err;
+    assert_int_equal(p3_store_new(&s, P3_FS, 4, 3000, &err), HJ_ENOMEM);
+    assert_null(s);
+    assert_non_null(strstr(err.msg, "out of memory"));
+    assert_int_equal(p3_store_new(&s, P3_FLS, 4, 3000, &err), HJ_ENOMEM);
+    assert_int_equal(p3_store_new(&s, P3_SSD, 5, 10, &err), HJ_EINVAL);
+    assert_int_equal(p3_store_new(&s, P3_SSD, 3, 0, &err), HJ_EINVAL);
+    assert_int_equal(p3_kind_from_name("SSD"), P3_SSD);
+    assert_int_equal(p3_kind_from_name("XYZ"), -1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(random_sequence_all_kinds),
+        cmocka_unit_test(full_storage_holds_every_node),
+        cmocka_unit_test(out_of_memory_and_bad_args),
+    };
+    return cmocka_run_group_tests_name("p3_store", tests, NULL, NULL);
+}
