@@ -102,6 +102,29 @@ md=$tmp/report.md
     done
 } > "$md"
 
+# Pipe tables (GitHub style: a header row, a |---| row, body rows) become
+# HTML tables: CommonMark has no tables, and generated .md files and the
+# overviews use them.
+awk 'function cells(line, out,   n, i) {
+         sub(/^[ \t]*\|/, "", line); sub(/\|[ \t]*$/, "", line)
+         n = split(line, out, "|")
+         for (i = 1; i <= n; i++) { gsub(/^[ \t]+|[ \t]+$/, "", out[i]) }
+         return n }
+     function esc(t) { gsub(/&/, "\\&amp;", t); gsub(/</, "\\&lt;", t); gsub(/>/, "\\&gt;", t); gsub(/`/, "", t); return t }
+     /^```/ { code = !code }
+     holding && /^[ \t]*\|[ \t:|-]+\|?[ \t]*$/ && /---/ {
+         n = cells(held, h); printf "\n<table>\n<tr>"
+         for (i = 1; i <= n; i++) printf "<th>%s</th>", esc(h[i]); print "</tr>"
+         holding = 0; intable = 1; next }
+     holding { print held; holding = 0 }
+     !code && !intable && /^[ \t]*\|/ { held = $0; holding = 1; next }
+     intable && /^[ \t]*\|/ { n = cells($0, c); printf "<tr>"
+         for (i = 1; i <= n; i++) printf "<td>%s</td>", esc(c[i]); print "</tr>"; next }
+     intable { print "</table>\n"; intable = 0 }
+     { print }
+     END { if (holding) print held; if (intable) print "</table>" }' "$md" > "$tmp/tables.md"
+mv "$tmp/tables.md" "$md"
+
 # Anchors and a table of contents for the level-2 and level-3 headings
 # (outside code blocks); cmark itself adds no ids.
 awk 'BEGIN { n = 0 }
