@@ -13,7 +13,7 @@ $(BUILD)/obj/$(P2)/%.o: CFLAGS += -fopenmp -O3
 
 P2_OUT := $(RESULTS)/paper2
 P2_BIN := $(BUILD)/bin/$(P2)
-P2_PROGS := fig22_derivatives bench_table2 bench_convection
+P2_PROGS := fig21_shapes fig22_derivatives bench_table2 bench_convection
 PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)
 
 # Figure 22: errors and fitted orders, then the four-panel figure.
@@ -23,8 +23,15 @@ $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.md &: $(P2_BIN)/f
 $(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
 	gnuplot -e "dat='$<'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig22.gp && mv $(@D)/.tmp-$(@F) $@
 
-P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg
-REPORT_INPUTS += $(P2_RESULTS) $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
+# Figure 21: CSG shapes in 1-3 dimensions (section 2.7.1).
+$(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk $(P2_OUT)/fig21_checks.md &: $(P2_BIN)/fig21_shapes
+	@mkdir -p $(P2_OUT)
+	$< --out-dir $(P2_OUT)
+$(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_1d.tsv $(P2)/plot/fig21.gp
+	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
+
+P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.md
+REPORT_INPUTS += $(P2_RESULTS) $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
                  $(P2)/report.tsv $(P2)/overview.md
 
 # Benchmarks (never part of the tests): Table 2 and convectionDemo 101^3.
