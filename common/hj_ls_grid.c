@@ -153,6 +153,9 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a)
 
 void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx)
 {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 16)
+#endif
     for (size_t r = 0; r < g->rows; r++) {
         long i[HJ_LS_MAXDIM];
         double x[HJ_LS_MAXDIM];

@@ -87,7 +87,10 @@ size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i);
 /* Fill the ghost layer of a according to the grid's boundary conditions. */
 void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
 
-/* a(x) = f(x, ctx) at every interior node. */
+/* a(x) = f(x, ctx) at every interior node.  Rows are filled in parallel
+ * with OpenMP, so f must be thread-safe (as every callback of the kernel);
+ * each node is written once, so the result does not depend on the number
+ * of threads. */
 typedef double (*hj_ls_field_fn)(const double *x, void *ctx);
 void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx);
 

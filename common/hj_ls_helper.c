@@ -134,6 +134,35 @@ static int check_points(const hj_ls_grid *g, const double *points, long npoints,
     return HJ_OK;
 }
 
+/* Distance from x to the nearest point: through the k-d tree, or by
+ * trying every point (the reference the tree is tested against). */
+typedef struct {
+    const kdtree *tree;
+    const double *points;
+    long npoints;
+    int dim;
+} nearest_ctx;
+
+static double nearest_by_tree(const double *x, void *vctx)
+{
+    const nearest_ctx *c = vctx;
+    double best = INFINITY;
+    kd_nearest(c->tree, 0, c->npoints, 0, x, &best);
+    return sqrt(best);
+}
+
+static double nearest_by_all(const double *x, void *vctx)
+{
+    const nearest_ctx *c = vctx;
+    double best = INFINITY;
+    for (long i = 0; i < c->npoints; i++) {
+        double s = 0;
+        for (int d = 0; d < c->dim; d++) s += (x[d] - c->points[i * c->dim + d]) * (x[d] - c->points[i * c->dim + d]);
+        best = s < best ? s : best;
+    }
+    return sqrt(best);
+}
+
 int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoints, double *out, hj_error *err)
 {
     int rc = check_points(g, points, npoints, err);
@@ -142,21 +171,8 @@ int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoi
     if (!t.perm) return hj_error_set(err, HJ_ENOMEM, "out of memory for the point tree");
     for (long i = 0; i < npoints; i++) t.perm[i] = i;
     kd_build(&t, 0, npoints, 0);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 16)
-#endif
-    for (size_t r = 0; r < g->rows; r++) {
-        long idx[HJ_LS_MAXDIM];
-        double x[HJ_LS_MAXDIM];
-        const size_t k = hj_ls_row(g, r, idx);
-        hj_ls_coord(g, idx, x);
-        for (long j = 0; j < g->N[0]; j++) {
-            x[0] = g->min[0] + (double)j * g->dx[0];
-            double best = INFINITY;
-            kd_nearest(&t, 0, npoints, 0, x, &best);
-            out[k + (size_t)j] = sqrt(best);
-        }
-    }
+    nearest_ctx c = {&t, points, npoints, g->dim};
+    hj_ls_fill(g, out, nearest_by_tree, &c);
     free(t.perm);
     return HJ_OK;
 }
@@ -165,21 +181,7 @@ int hj_ls_unsigned_distance_brute(const hj_ls_grid *g, const double *points, lon
 {
     int rc = check_points(g, points, npoints, err);
     if (rc) return rc;
-    for (size_t r = 0; r < g->rows; r++) {
-        long idx[HJ_LS_MAXDIM];
-        double x[HJ_LS_MAXDIM];
-        const size_t k = hj_ls_row(g, r, idx);
-        hj_ls_coord(g, idx, x);
-        for (long j = 0; j < g->N[0]; j++) {
-            x[0] = g->min[0] + (double)j * g->dx[0];
-            double best = INFINITY;
-            for (long i = 0; i < npoints; i++) {
-                double s = 0;
-                for (int d = 0; d < g->dim; d++) s += (x[d] - points[i * g->dim + d]) * (x[d] - points[i * g->dim + d]);
-                best = s < best ? s : best;
-            }
-            out[k + (size_t)j] = sqrt(best);
-        }
-    }
+    nearest_ctx c = {NULL, points, npoints, g->dim};
+    hj_ls_fill(g, out, nearest_by_all, &c);
     return HJ_OK;
 }
