@@ -44,4 +44,35 @@ static inline int hj_test_rmdir(void **state)
     return system(cmd) == 0 ? 0 : -1;
 }
 
+/* One OpenMP thread: CI machines are shared, and spinning OpenMP barriers
+ * on a busy machine only slow the tests down (thread counts are tested
+ * where they matter, e.g. test_ls_ode's threads_bitwise). */
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+static inline void hj_test_one_thread(void)
+{
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+}
+
+/* Run a shell command; its stderr (and its stdout too with both set) is
+ * captured in text (at most cap - 1 bytes).  Returns the exit status, or -1
+ * if it did not exit normally. */
+#include <sys/wait.h>
+static inline int hj_test_shell(const char *cmd, int both, char *text, size_t cap)
+{
+    char full[4096], path[128];
+    snprintf(path, sizeof path, "%s/captured.txt", hj_test_dir());
+    if (both) snprintf(full, sizeof full, "%s > %s 2>&1", cmd, path);
+    else snprintf(full, sizeof full, "%s > /dev/null 2> %s", cmd, path);
+    int st = system(full);
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(text, 1, cap - 1, f) : 0;
+    text[n] = '\0';
+    if (f) fclose(f);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
 #endif

@@ -27,15 +27,9 @@ static void write_file(const char *rel, const char *text)
 
 static int run_check(const char *flags)
 {
-    char cmd[1024], path[256];
-    snprintf(path, sizeof path, "%s/out.txt", dir);
-    snprintf(cmd, sizeof cmd, "%s --results %s/res %s p=%s/paper > %s 2>&1", HJCHECK, dir, flags, dir, path);
-    int st = system(cmd);
-    FILE *f = fopen(path, "r");
-    size_t n = f ? fread(out_text, 1, sizeof out_text - 1, f) : 0;
-    out_text[n] = '\0';
-    if (f) fclose(f);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "%s --results %s/res %s p=%s/paper", HJCHECK, dir, flags, dir);
+    return hj_test_shell(cmd, 1, out_text, sizeof out_text);
 }
 
 static const char *published =

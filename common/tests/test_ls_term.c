@@ -367,12 +367,7 @@ static void restrict_and_sum(void **state)
 
 int main(void)
 {
-#ifdef _OPENMP
-    /* One thread: CI machines are shared, and spinning OpenMP barriers on a
-     * busy machine only slow the tests down (threads are tested in
-     * test_ls_ode's threads_bitwise). */
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(convection_orders),
         cmocka_unit_test(convection_equals_upwind_sum),

@@ -16,19 +16,8 @@
 #define dir hj_test_dir()
 static char err_text[4096];
 
-/* Run a shell command with stderr captured; returns the exit status. */
-static int run(const char *cmd)
-{
-    char full[2048], path[128];
-    snprintf(path, sizeof path, "%s/stderr.txt", dir);
-    snprintf(full, sizeof full, "%s > %s/stdout.txt 2> %s", cmd, dir, path);
-    int st = system(full);
-    FILE *f = fopen(path, "r");
-    size_t n = f ? fread(err_text, 1, sizeof err_text - 1, f) : 0;
-    err_text[n] = '\0';
-    if (f) fclose(f);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+/* Run a shell command with its stderr captured in err_text. */
+static int run(const char *cmd) { return hj_test_shell(cmd, 0, err_text, sizeof err_text); }
 
 static int lines(const char *s)
 {
