@@ -14,7 +14,6 @@ $(BUILD)/obj/$(P2)/%.o: CFLAGS += -fopenmp -O3
 P2_OUT := $(RESULTS)/paper2
 P2_BIN := $(BUILD)/bin/$(P2)
 P2_PROGS := fig21_shapes fig22_derivatives bench_table2 bench_convection
-PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)
 
 # Figure 22: errors and fitted orders, then the four-panel figure.
 $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.md &: $(P2_BIN)/fig22_derivatives
@@ -24,15 +23,27 @@ $(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
 	gnuplot -e "dat='$<'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig22.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Figure 21: CSG shapes in 1-3 dimensions (section 2.7.1).
-$(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk $(P2_OUT)/fig21_checks.md &: $(P2_BIN)/fig21_shapes
+$(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk $(P2_OUT)/fig21_checks.md &: $(P2_BIN)/fig21_shapes
 	@mkdir -p $(P2_OUT)
 	$< --out-dir $(P2_OUT)
 $(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_1d.tsv $(P2)/plot/fig21.gp
 	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
 
 P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.md
-REPORT_INPUTS += $(P2_RESULTS) $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
+# Tables held by make check against paper2_toolbox/published/<table>.tsv.
+P2_CHECK := $(P2_OUT)/fig21.tsv
+REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
                  $(P2)/report.tsv $(P2)/overview.md
+
+# The demos of section 2: one fragment each, mk/<demo>.mk, which adds its
+# program to P2_PROGS, its outputs to P2_RESULTS, its checked tables to
+# P2_CHECK and its source to REPORT_INPUTS.
+include $(sort $(wildcard $(P2)/mk/*.mk))
+
+PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)
+CHECK_PAPERS += paper2=$(P2)
+CHECK_INPUTS += $(P2_CHECK)
+REPORT_INPUTS += $(P2_RESULTS) $(P2_CHECK)
 
 # Benchmarks (never part of the tests): Table 2 and convectionDemo 101^3.
 BENCHES += bench-paper2
@@ -42,7 +53,7 @@ bench-paper2: $(P2_BIN)/bench_table2 $(P2_BIN)/bench_convection
 	$(P2_BIN)/bench_table2 --out-dir $(P2_OUT)
 	OMP_WAIT_POLICY=passive $(P2_BIN)/bench_convection --out-dir $(P2_OUT)
 
-paper2: $(P2_RESULTS)
+paper2: $(P2_RESULTS) $(P2_CHECK)
 	$(MAKE) --no-print-directory report-now
 
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).

@@ -31,12 +31,15 @@ html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 
 # Published beside computed, from a .check.tsv.
 check_table() {
-    local f=$1 name=$2
+    local f=$1 name=$2 label=${3:-published} src=${4:-}
     if [ ! -f "$f" ]; then
         printf '\n**%s: not computed** (no %s)\n\n' "$name" "$f"
         return
     fi
-    awk -F'\t' -v name="$name" '
+    if [ -n "$src" ] && [ -f "$src" ]; then
+        sed -n 's/^# source: *//p' "$src" | head -1 | html_escape | sed 's/^/\n<p class="tsrc"><i>Source of the '"$label"' values:<\/i> /; s/$/<\/p>/'
+    fi
+    awk -F'\t' -v name="$name" -v label="$label" '
         function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
         /^#/ || $1 == "table" { next }
         { n++; split($8, v, " "); cnt[v[1]]++
@@ -47,7 +50,7 @@ check_table() {
           printf "\n<p class=\"tsum\"><b>%s</b>: %d match, %d close, %d differ", name, cnt["match"], cnt["close"], cnt["differs"]
           if (cnt["missing"]) printf ", %d missing", cnt["missing"]
           if (cnt["ambiguous"]) printf ", %d ambiguous", cnt["ambiguous"]
-          printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>published</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n"
+          printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>%s</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n", label
           for (i = 1; i <= n; i++) print row[i]
           print "</table>\n"
         }' "$f"
@@ -82,7 +85,10 @@ md=$tmp/report.md
             literate "$dir/$src"
             for t in $tables; do
                 [ "$t" = - ] && continue
-                check_table "$res/$name/$t.check.tsv" "$name $t"
+                # Paper 2 publishes almost no numbers: its cells are checked
+                # against exact values and accepted runs (see the source line).
+                label=published; [ "$name" = paper2 ] && label=reference
+                check_table "$res/$name/$t.check.tsv" "$name $t" "$label" "$dir/published/$t.tsv"
                 fit_table "$res/$name/$t.fit.tsv"
             done
             for f in $figs; do
