@@ -1,0 +1,32 @@
+/* hj_ls_io.h -- writing arrays of the level set kernel as plain data:
+ * gnuplot-ready text blocks (1-3 D) and legacy VTK files (3-D fields for
+ * ParaView/VisIt; 1-D and 2-D work too).
+ *
+ * Text blocks: one line per interior node, the coordinates then one column
+ * per field ("%.*g" with 10 significant digits); dimension 0 runs fastest.
+ * In 2-D and 3-D a blank line ends every row along dimension 0, which is
+ * gnuplot's grid format (splot/contour of 2-D data; voxel grids read the
+ * 3-D lines point by point).  Several blocks in one file, separated by two
+ * blank lines, are gnuplot's `index` 0, 1, ...  (e.g. the time sequence of
+ * a demo).  Nothing here prints to stdout or exits.
+ */
+#ifndef HJ_LS_IO_H
+#define HJ_LS_IO_H
+
+#include <stdio.h>
+
+#include "hj_error.h"
+#include "hj_ls_grid.h"
+
+/* One block of nfields arrays on g to fp (an open stream, e.g. an hj_out's
+ * fp); a header line "# x y ... name1 name2" first when names is given.
+ * HJ_EIO on a write error. */
+int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *const *names,
+                      const double *const *fields, hj_error *err);
+
+/* A legacy ASCII VTK file (STRUCTURED_POINTS, one SCALARS section per
+ * field), written atomically (hj_out).  title is the one-line header. */
+int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, int nfields,
+                    const char *const *names, const double *const *fields, hj_error *err);
+
+#endif

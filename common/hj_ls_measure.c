@@ -1,0 +1,103 @@
+/* hj_ls_measure.c -- measure of {phi < 0}; see hj_ls_measure.h. */
+#include "hj_ls_measure.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* t_ax = a / (a - x): the fraction of the edge from a (< 0) to x (>= 0) on
+ * which the interpolant is negative. */
+static double edge_t(double a, double x) { return a / (a - x); }
+
+/* h(x) = x^3 / ((x - c)(x - d)) and its derivative, for the 2-2 split of a
+ * tetrahedron (see below). */
+static double h22(double x, double c, double d) { return x * x * x / ((x - c) * (x - d)); }
+static double h22_prime(double x, double c, double d)
+{
+    const double p = (x - c) * (x - d);
+    return (3 * x * x * p - x * x * x * (2 * x - c - d)) / (p * p);
+}
+
+double hj_ls_simplex_fraction(int d, const double *v)
+{
+    int neg[4], pos[4], nn = 0, np = 0;
+    for (int k = 0; k <= d; k++) {
+        if (v[k] < 0) neg[nn++] = k;
+        else pos[np++] = k;
+    }
+    if (nn == 0) return 0.0;
+    if (np == 0) return 1.0;
+    if (d == 1) return edge_t(v[neg[0]], v[pos[0]]);
+    /* One vertex alone on its side: the corner simplex it cuts off has
+     * the product of the edge fractions as its share. */
+    if (nn == 1 || np == 1) {
+        const int lone = nn == 1 ? neg[0] : pos[0];
+        const double a = nn == 1 ? v[lone] : -v[lone];
+        double f = 1;
+        for (int k = 0; k <= d; k++)
+            if (k != lone) f *= edge_t(a, nn == 1 ? v[k] : -v[k]);
+        return nn == 1 ? f : 1 - f;
+    }
+    /* Tetrahedron, two vertices on each side.  With g = -v (positive at
+     * the negative vertices a, b), the fraction where g > 0 is
+     *   sum_{i in {a,b}} g_i^3 / prod_{j != i} (g_i - g_j)
+     * = (h(g_a) - h(g_b)) / (g_a - g_b),  h(x) = x^3 / ((x - g_c)(x - g_d)),
+     * a divided difference; when g_a and g_b nearly coincide, h' at their
+     * midpoint replaces it (error O((g_a - g_b)^2)). */
+    const double ga = -v[neg[0]], gb = -v[neg[1]], gc = -v[pos[0]], gd = -v[pos[1]];
+    if (fabs(ga - gb) > 1e-4 * fmax(ga, gb)) return (h22(ga, gc, gd) - h22(gb, gc, gd)) / (ga - gb);
+    return h22_prime(0.5 * (ga + gb), gc, gd);
+}
+
+/* Sum of the simplex fractions of the cell whose lowest corner is node
+ * index base (offset into phi), times 1/d!: the cell's fraction. */
+static double cell_fraction(const hj_ls_grid *g, const double *phi, size_t base)
+{
+    const int d = g->dim;
+    if (d == 1) {
+        const double v[2] = {phi[base], phi[base + 1]};
+        return hj_ls_simplex_fraction(1, v);
+    }
+    /* Kuhn simplices: for each permutation p of the axes, the path
+     * 0 -> e_p0 -> e_p0 + e_p1 -> ... -> (1, ..., 1). */
+    static const int perm2[2][2] = {{0, 1}, {1, 0}};
+    static const int perm3[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    const int np = d == 2 ? 2 : 6;
+    double sum = 0;
+    for (int p = 0; p < np; p++) {
+        double v[4];
+        size_t k = base;
+        v[0] = phi[k];
+        for (int s = 0; s < d; s++) {
+            k += (size_t)g->stride[d == 2 ? perm2[p][s] : perm3[p][s]];
+            v[s + 1] = phi[k];
+        }
+        sum += hj_ls_simplex_fraction(d, v);
+    }
+    return sum / np;
+}
+
+int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
+{
+    if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
+    /* Cell rows: cells along dimension 0 of the interior rows whose other
+     * indices are all below N - 1. */
+    double *rowsum = calloc(g->rows, sizeof *rowsum);
+    if (!rowsum) return hj_error_set(err, HJ_ENOMEM, "measure: out of memory");
+#pragma omp parallel for schedule(static)
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM] = {0};
+        const size_t k0 = hj_ls_row(g, r, i);
+        int last = 0;
+        for (int e = 1; e < g->dim; e++) last |= i[e] >= g->N[e] - 1;
+        if (last) continue;
+        double s = 0;
+        for (long a = 0; a + 1 < g->N[0]; a++) s += cell_fraction(g, phi, k0 + (size_t)a);
+        rowsum[r] = s;
+    }
+    double total = 0, cell = 1;
+    for (size_t r = 0; r < g->rows; r++) total += rowsum[r];
+    for (int e = 0; e < g->dim; e++) cell *= g->dx[e];
+    free(rowsum);
+    *m = total * cell;
+    return HJ_OK;
+}

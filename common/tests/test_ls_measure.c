@@ -1,0 +1,150 @@
+/* Unit tests of common/hj_ls_measure (measure of {phi < 0}) and
+ * common/hj_ls_io (gnuplot blocks, legacy VTK). */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ls_io.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_shape.h"
+
+static const double PI = 3.14159265358979323846;
+
+static hj_ls_grid grid(int dim, long n)
+{
+    hj_ls_grid g;
+    const double mn[3] = {-1, -1, -1}, mx[3] = {1, 1, 1};
+    const long N[3] = {n, n, n};
+    const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
+    return g;
+}
+
+/* Corner fractions and the complement identity f(v) + f(-v) = 1 (zeros
+ * excluded), including the 2-2 split of a tetrahedron and its near-tie
+ * branch, which must agree with the divided difference. */
+static void simplex_fractions(void **state)
+{
+    (void)state;
+    const double tri[3] = {-1, 1, 1}, tet[4] = {-1, 1, 1, 1}, half[4] = {-1, -1, 1, 1};
+    assert_close(hj_ls_simplex_fraction(2, tri), 0.25, 1e-15, 0);
+    assert_close(hj_ls_simplex_fraction(3, tet), 0.125, 1e-15, 0);
+    assert_close(hj_ls_simplex_fraction(3, half), 0.5, 1e-12, 0);
+    srand(7);
+    for (int trial = 0; trial < 2000; trial++) {
+        const int d = 1 + trial % 3;
+        double v[4], w[4];
+        for (int k = 0; k <= d; k++) {
+            v[k] = (double)rand() / RAND_MAX - 0.5;
+            if (v[k] == 0) v[k] = 0.25;
+            w[k] = -v[k];
+        }
+        const double f = hj_ls_simplex_fraction(d, v);
+        assert_true(f >= 0 && f <= 1);
+        assert_close(f + hj_ls_simplex_fraction(d, w), 1.0, 1e-12, 0);
+    }
+    /* The near-tie branch (negative values 0.3 and 0.3 (1 + 5e-5)) against
+     * its complement, whose two negative values are far apart. */
+    const double a[4] = {-0.3, -0.3 * (1 + 5e-5), 0.2, 0.5}, b[4] = {0.3, 0.3 * (1 + 5e-5), -0.2, -0.5};
+    assert_close(hj_ls_simplex_fraction(3, a) + hj_ls_simplex_fraction(3, b), 1.0, 1e-9, 0);
+}
+
+/* A half-space is exact (its interpolant is linear); a disc and a ball
+ * converge at second order. */
+static void measures(void **state)
+{
+    (void)state;
+    for (int dim = 1; dim <= 3; dim++) {
+        hj_ls_grid g = grid(dim, 21);
+        double *phi = hj_ls_alloc(&g), m;
+        const double n[3] = {1, 0.3, -0.2}, p[3] = {0.1, 0, 0};
+        assert_int_equal(hj_ls_shape_hyperplane(&g, n, p, phi, NULL), HJ_OK);
+        assert_int_equal(hj_ls_measure(&g, phi, &m, NULL), HJ_OK);
+        /* {n . (x - p) < 0} in [-1, 1]^dim: x < 0.1 - 0.3 y + 0.2 z, all inside. */
+        assert_close(m, 1.1 * (dim >= 2 ? 2 : 1) * (dim == 3 ? 2 : 1), 1e-12, 0);
+        hj_ls_free(phi);
+    }
+    double e_prev = 0, e3_prev = 0;
+    for (long n = 21; n <= 81; n = 2 * n - 1) {
+        hj_ls_grid g2 = grid(2, n), g3 = grid(3, n);
+        double *a = hj_ls_alloc(&g2), *b = hj_ls_alloc(&g3), m2, m3;
+        const double c[3] = {0.05, -0.1, 0.02};
+        assert_int_equal(hj_ls_shape_sphere(&g2, c, 0.6, a, NULL), HJ_OK);
+        assert_int_equal(hj_ls_shape_sphere(&g3, c, 0.6, b, NULL), HJ_OK);
+        assert_int_equal(hj_ls_measure(&g2, a, &m2, NULL), HJ_OK);
+        assert_int_equal(hj_ls_measure(&g3, b, &m3, NULL), HJ_OK);
+        const double e2 = fabs(m2 / (PI * 0.36) - 1), e3 = fabs(m3 / (4.0 / 3.0 * PI * 0.216) - 1);
+        /* chords of a circle of radius R lose about dx^2 / (6 R) of its radius */
+        assert_true(e2 < 0.5 * g2.dx[0] * g2.dx[0] && e3 < 1.5 * g3.dx[0] * g3.dx[0]);
+        if (e_prev > 0) assert_true(e2 < 0.35 * e_prev && e3 < 0.35 * e3_prev); /* a quarter per halving */
+        e_prev = e2;
+        e3_prev = e3;
+        hj_ls_free(a), hj_ls_free(b);
+    }
+    hj_ls_grid g4;
+    const double mn[4] = {0, 0, 0, 0}, mx[4] = {1, 1, 1, 1};
+    const long N[4] = {3, 3, 3, 3};
+    const hj_ls_bc bc[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g4, 4, mn, mx, N, bc, NULL), HJ_OK);
+    double *z = hj_ls_alloc(&g4), m;
+    hj_error err;
+    assert_int_equal(hj_ls_measure(&g4, z, &m, &err), HJ_EINVAL);
+    hj_ls_free(z);
+}
+
+/* Block and VTK layouts: line counts, header, first values. */
+static void writers(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 3);
+    double *a = hj_ls_alloc(&g);
+    for (long j = 0; j < 3; j++)
+        for (long i = 0; i < 3; i++) {
+            const long ij[2] = {i, j};
+            a[hj_ls_index(&g, ij)] = (double)(10 * j + i);
+        }
+    char path[4200], line[256];
+    snprintf(path, sizeof path, "%s/block.dat", hj_test_dir());
+    FILE *fp = fopen(path, "w");
+    assert_non_null(fp);
+    const char *names[1] = {"phi"};
+    const double *fields[1] = {a};
+    assert_int_equal(hj_ls_write_block(fp, &g, 1, names, fields, NULL), HJ_OK);
+    fclose(fp);
+    fp = fopen(path, "r");
+    int lines = 0, blank = 0;
+    while (fgets(line, sizeof line, fp)) {
+        if (lines == 0) assert_string_equal(line, "# x y phi\n");
+        if (lines == 1) assert_string_equal(line, "-1 -1 0\n");
+        if (line[0] == '\n') blank++;
+        lines++;
+    }
+    fclose(fp);
+    assert_int_equal(lines, 1 + 9 + 3);
+    assert_int_equal(blank, 3);
+    snprintf(path, sizeof path, "%s/f.vtk", hj_test_dir());
+    assert_int_equal(hj_ls_write_vtk(path, &g, "test", 1, names, fields, NULL), HJ_OK);
+    fp = fopen(path, "r");
+    int n = 0;
+    double last = -1;
+    while (fgets(line, sizeof line, fp)) {
+        n++;
+        if (n == 5) assert_string_equal(line, "DIMENSIONS 3 3 1\n");
+        if (n > 10) last = atof(line);
+    }
+    fclose(fp);
+    assert_int_equal(n, 10 + 9);
+    assert_close(last, 22, 0, 0);
+    hj_ls_free(a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(simplex_fractions),
+        cmocka_unit_test(measures),
+        cmocka_unit_test_setup_teardown(writers, hj_test_mkdir, hj_test_rmdir),
+    };
+    return cmocka_run_group_tests_name("hj_ls_measure", tests, NULL, NULL);
+}
