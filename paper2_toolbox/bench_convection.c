@@ -51,33 +51,16 @@ enclosed volume, counted in grid cells), and the peak resident memory
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "hj_ls_ode.h"
+#include "hj_ls_shape.h"
+#include "p2_basic.h" /* the flow field of convectionDemo, shared with convection_demo */
 
 static const char *const PROG = "bench_convection";
-static const double PI = 3.14159265358979323846;
 
 enum { NLEVEL = 4 };
 static const char *const LEVEL[NLEVEL] = {"low", "medium", "high", "veryHigh"};
 static const int ORDER[NLEVEL] = {1, 2, 3, 3};
 static const int SCHEME[NLEVEL] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
 static const double PUBLISHED[NLEVEL] = {140, 684, 2433, 2585};
-
-static void rotation(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
-{
-    (void)t, (void)ctx;
-    if (d == 0)
-        for (long j = 0; j < n; j++) v[j] = 2 * PI * x[1];
-    else if (d == 1)
-        for (long j = 0; j < n; j++) v[j] = -2 * PI * (x[0] + (double)j * dx0);
-    else
-        for (long j = 0; j < n; j++) v[j] = 0;
-}
-
-static double sphere(const double *x, void *ctx)
-{
-    (void)ctx;
-    const double a = x[0] + 0.4;
-    return sqrt(a * a + x[1] * x[1] + x[2] * x[2]) - 0.35;
-}
 
 static double cpu_seconds(void)
 {
@@ -130,7 +113,8 @@ int main(int argc, char **argv)
     if (hj_ls_grid_init(&g, 3, mn, mx, N, bc, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     double *y0 = hj_ls_alloc(&g), *y = hj_ls_alloc(&g), *first = hj_ls_alloc(&g);
     if (!y0 || !y || !first) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-    hj_ls_fill(&g, y0, sphere, NULL);
+    const double center[3] = {-0.4, 0, 0};
+    if (hj_ls_shape_sphere(&g, center, 0.35, y0, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     double tspan[9];
     for (int k = 0; k < 9; k++) tspan[k] = k / 8.0;
 
@@ -153,7 +137,9 @@ int main(int argc, char **argv)
         const int L = (int)levels[li];
         hj_ls_convection c;
         hj_ls_convection_init(&c, &g, SCHEME[L]);
-        c.velocity_fn = rotation;
+        p2b_flow flow = {1, 1.0, 3}; /* convectionDemo's 'linear' */
+        c.velocity_fn = p2b_flow_velocity;
+        c.ctx = &flow;
         hj_ls_ode_stats st;
         double secs[8], cpu[8];
         int same = 1;

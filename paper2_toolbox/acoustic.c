@@ -1,0 +1,383 @@
+/*
+# acoustic: the acoustic capture game (Figure 18)
+
+**Problem.** Section 2.6.2, the toolbox's `acoustic`: the acoustic
+capture game (a homicidal chauffeur variant), in relative coordinates z =
+(x, y) with the pursuer at the origin,
+
+    dz/dt = W_p (0, -1) + (W_p / R) (y, -x) b + 2 W_e min(|z|, S) a   (24),
+
+|a| <= 1 (evader, a vector: avoids), |b| <= 1 (pursuer: captures).  The
+Hamiltonian of the text, H = -p2 W_p - (W_p / R) |p1 y - p2 x| + |p| 2 W_e
+min(|z|, S), times -1, in `termLaxFriedrichs` with the text's partial
+bounds alpha_1 = (W_p / R) |y| + 2 W_e min(|z|, S), alpha_2 = W_p + (W_p /
+R) |x| + 2 W_e min(|z|, S), inside `termRestrictUpdate` (the set never
+shrinks).  Parameters as the text: W_e = 1.3, W_p = 1.5, R = 0.8, S = 0.5.
+The released `acoustic.m` uses W_p = 1.0 (its thesis values); we follow
+the text, and `--Wp` changes it.
+
+**Where the text is silent** (it only calls the target "a wide but
+shallow horizontal rectangle near the origin") we follow `acoustic.m`: the
+target [-3.5, 3.5] x [-0.2, 0], the grid [-4, 4] x [-2, 3] with dx = 1/25
+(201 x 126 nodes), extrapolation boundaries, t = 4 with output every 0.5
+(the toolbox's 3 x 3 subplots), global dissipation, FactorCFL 0.75,
+default accuracy medium.
+
+**Options.** `--accuracy`, `--diss`, `--dx`, `--Wp`, `--tmax`; any of them:
+one run (`acoustic_run.dat`, areas on stdout).
+
+**Figure 18.** The evolution: the zero level set at t = 0, 0.5, ..., 4 on
+the toolbox grid, the target in grey.  The hole of the text appears at t
+= 1: a closed curve above the target at x = 0, y from about 0.8 to 1.8,
+which nowhere touches the target; by t = 1.5 the set has swallowed it.
+
+**Check** (`acoustic.tsv` against `published/acoustic.tsv`), accuracy
+medium, on dx = 0.08, 0.04, 0.02 (quick: the first two), at every output
+time:
+- the area of the set (second order measure): no exact value; reference
+  our own run, and the sequence in `acoustic_notes.md` shows the
+  convergence;
+- `increased` must be 0 (restricted update);
+- holes: the components of {phi >= 0} that are enclosed by the set (do
+  not reach the box boundary) and lie more than 1.5 dx from the target
+  (an enclosed pocket against the target, as below it at late times, is
+  not a hole in the text's sense): their number, area and distance
+  (min phi_0) to the target.  The text's claim is checked as: at t = 1
+  there is exactly one hole and its distance to the target is positive
+  (about 0.8, many cells) on every grid;
+- the game is symmetric under x -> -x (with a_x -> -a_x, b -> -b) and so
+  is the target: `flips`, the nodes whose membership of the set differs
+  from their mirror node's, must be 0; `asym` = max |phi(x, y) - phi(-x,
+  y)| is shown (round-off).  The callbacks and the target use x = (i -
+  (N - 1)/2) dx, exactly antisymmetric; with the grid's min + i dx the
+  rounding seeded an asymmetry that grew to 3e-8 by t = 4 on dx = 0.02.
+
+**Result** (full run, `acoustic_notes.md`): the area at t = 4 is 35.77,
+35.63, 35.70 on dx = 0.08, 0.04, 0.02 (at t = 1: 21.70, 22.65, 23.11, still
+moving by 2 %: the fronts are not yet resolved there).  At t = 1 each grid
+has exactly one hole, 0.84 from the target (0.80 on dx = 0.08); its area
+shrinks under refinement, 0.35, 0.20, 0.15 (differences 0.15, 0.06: a thin
+sliver whose area converges to about 0.1 if the ratio of the differences
+holds), so the hole is a feature of the solution, not of one grid.  No node
+increased; no node changed membership under the mirror (largest |phi -
+mirror| 3e-12).
+
+**Outputs.** `acoustic.tsv`, `acoustic_2d.dat` (9 index blocks, dx =
+1/25), `acoustic_notes.md`; plotted by `plot/fig18.gp`.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "hj_cli.h"
+#include "hj_io.h"
+#include "hj_ls_io.h"
+#include "hj_ls_ode.h"
+#include "hj_ls_term.h"
+#include "p2_reach.h"
+
+static const char *prog = "acoustic";
+
+typedef struct {
+    double We, Wp, R, S;
+    const hj_ls_grid *g; /* for the mirror-exact x coordinate (xsym) */
+} par;
+
+/* x of the node nearest to x0 as (i - (N - 1)/2) dx: exactly antisymmetric
+ * under i -> N - 1 - i on the toolbox grid (symmetric about x = 0), unlike
+ * min + i dx; rounding of the coordinates then cannot break the game's
+ * mirror symmetry. */
+static double xsym(const hj_ls_grid *g, double x0)
+{
+    const long i = lround((x0 - g->min[0]) / g->dx[0]);
+    return ((double)i - 0.5 * (double)(g->N[0] - 1)) * g->dx[0];
+}
+
+static void usage(void)
+{
+    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dx DX] [--Wp WP]\n"
+           "       [--tmax T] [--out-dir DIR] [--quick]\n"
+           "With none of the run options: Figure 18's data and the checks (acoustic.tsv, acoustic_2d.dat,\n"
+           "acoustic_notes.md).  With any of them: one run (defaults: medium, global, dx = 1/25, Wp = 1.5,\n"
+           "tmax = 4), its time sequence in acoustic_run.dat and its areas on stdout.\n"
+           "See the comment at the top of acoustic.c.\n", prog);
+}
+
+static void die(int rc, const hj_error *err)
+{
+    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
+}
+
+static double speed_bound(const par *q, double x, double y)
+{
+    const double r = sqrt(x * x + y * y);
+    return 2 * q->We * (r < q->S ? r : q->S);
+}
+
+/* hamFunc: minus the Hamiltonian of section 2.6.2 (terminal to initial value). */
+static double ham(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)phi;
+    const par *q = ctx;
+    const double xs = xsym(q->g, x[0]);
+    const double H = -p[1] * q->Wp - q->Wp / q->R * fabs(p[0] * x[1] - p[1] * xs) +
+                     sqrt(p[0] * p[0] + p[1] * p[1]) * speed_bound(q, xs, x[1]);
+    return -H;
+}
+
+static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)t, (void)pmin, (void)pmax;
+    const par *q = ctx;
+    const double xs = xsym(q->g, x[0]), e = speed_bound(q, xs, x[1]);
+    return d == 0 ? q->Wp / q->R * fabs(x[1]) + e : q->Wp + q->Wp / q->R * fabs(xs) + e;
+}
+
+/* Holes: connected components (4-neighbours) of {phi >= 0} that do not
+ * reach the grid's boundary.  A component with a node within 1.5 dx of the
+ * target ({phi0 < 1.5 dx}) is a pocket against the target, not a hole in
+ * the sense of section 2.6.2; the others are counted: their number, total
+ * area and the smallest phi0 (distance to the target) over their nodes. */
+typedef struct {
+    long n;
+    double area, gap;
+} hole_stat;
+
+static hole_stat holes(const hj_ls_grid *g, const double *phi, const double *phi0)
+{
+    const long nx = g->N[0], ny = g->N[1];
+    long *label = calloc((size_t)(nx * ny), sizeof(long)), *stack = malloc(sizeof(long) * (size_t)(nx * ny));
+    if (!label || !stack) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
+    hole_stat h = {0, 0, INFINITY};
+    long next = 1;
+    for (long s = 0; s < nx * ny; s++) {
+        if (label[s] || phi[hj_ls_index(g, (long[2]){s % nx, s / nx})] < 0) continue;
+        long top = 0, count = 0;
+        int boundary = 0;
+        double gap = INFINITY;
+        label[s] = next;
+        stack[top++] = s;
+        while (top) {
+            const long c = stack[--top], i = c % nx, j = c / nx;
+            count++;
+            boundary |= i == 0 || j == 0 || i == nx - 1 || j == ny - 1;
+            const double v = phi0[hj_ls_index(g, (long[2]){i, j})];
+            gap = v < gap ? v : gap;
+            const long ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};
+            for (int k = 0; k < 4; k++) {
+                if (ni[k] < 0 || ni[k] >= nx || nj[k] < 0 || nj[k] >= ny) continue;
+                const long q = nj[k] * nx + ni[k];
+                if (!label[q] && phi[hj_ls_index(g, (long[2]){ni[k], nj[k]})] >= 0) {
+                    label[q] = next;
+                    stack[top++] = q;
+                }
+            }
+        }
+        next++;
+        if (!boundary && gap > 1.5 * g->dx[0]) {
+            h.n++;
+            h.area += (double)count * g->dx[0] * g->dx[1];
+            h.gap = gap < h.gap ? gap : h.gap;
+        }
+    }
+    free(label);
+    free(stack);
+    if (!h.n) h.gap = NAN;
+    return h;
+}
+
+/* max |phi(x, y) - phi(-x, y)| (the game is symmetric under x -> -x, a_x
+ * -> -a_x, b -> -b); *flips: nodes whose membership of {phi < 0} differs
+ * from their mirror node's. */
+static double asymmetry(const hj_ls_grid *g, const double *phi, long *flips)
+{
+    double m = 0;
+    *flips = 0;
+    for (long j = 0; j < g->N[1]; j++)
+        for (long i = 0; i < g->N[0]; i++) {
+            const double a = phi[hj_ls_index(g, (long[2]){i, j})], b = phi[hj_ls_index(g, (long[2]){g->N[0] - 1 - i, j})];
+            const double e = fabs(a - b);
+            m = e > m ? e : m;
+            *flips += (a < 0) != (b < 0);
+        }
+    return m;
+}
+
+typedef struct {
+    const hj_ls_grid *g;
+    const double *phi0;
+    hole_stat hole[P2_MAXT];
+    double asym[P2_MAXT];
+    long flips[P2_MAXT];
+    p2_blocks *blocks;
+} snap;
+
+static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *err)
+{
+    snap *s = ctx;
+    if (k < P2_MAXT) {
+        s->hole[k] = holes(s->g, y, s->phi0);
+        s->asym[k] = asymmetry(s->g, y, &s->flips[k]);
+    }
+    return s->blocks ? p2_write_block(k, t, y, s->blocks, err) : HJ_OK;
+}
+
+typedef struct {
+    double dx;
+    p2_reach_log log;
+    snap sn;
+    hj_ls_ode_stats st;
+} result;
+
+static void run(const par *q, int acc, int diss, double dx, double tmax, const char *path, result *r)
+{
+    hj_error err;
+    hj_ls_grid g;
+    const double lo[2] = {-4, -2}, hi[2] = {4, 3}, dxs[2] = {dx, dx};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    die(hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
+    double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g);
+    if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
+    /* the target [-3.5, 3.5] x [-0.2, 0]: max of the four half-plane
+     * distances (as hj_ls_shape_rectangle_corners) at mirror-exact x */
+    for (long j = 0; j < g.N[1]; j++)
+        for (long i = 0; i < g.N[0]; i++) {
+            const double x = ((double)i - 0.5 * (double)(g.N[0] - 1)) * g.dx[0], yy = g.min[1] + (double)j * g.dx[1];
+            const double a = fabs(x) - 3.5, b = fabs(yy + 0.1) - 0.1;
+            y[hj_ls_index(&g, (long[2]){i, j})] = a > b ? a : b;
+        }
+    par qq = *q;
+    qq.g = &g;
+    q = &qq;
+    hj_ls_copy(&g, y0, y);
+    hj_out out;
+    p2_blocks b = {NULL, &g};
+    if (path) {
+        die(hj_out_open(&out, path, &err), &err);
+        b.fp = out.fp;
+    }
+    r->dx = dx;
+    r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
+    die(p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, p2_accuracy_scheme(acc), diss, ham, partial, (void *)q);
+    hj_ls_restrict rs;
+    hj_ls_restrict_init(&rs, &g, &lf.base, 0);
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = 0.75;
+    double ts[9];
+    p2_times(0, tmax, 8, ts);
+    hj_progress("acoustic: accuracy %s, dx = %g ...\n", p2_accuracy_name(acc), dx);
+    die(hj_ls_ode(p2_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err), &err);
+    if (path) die(hj_out_commit(&out, &err), &err);
+    p2_reach_log_free(&r->log);
+    r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
+    hj_ls_free(y);
+    hj_ls_free(y0);
+}
+
+int main(int argc, char **argv)
+{
+    const char *out_dir = ".";
+    int quick = 0, single = 0, acc = P2_MEDIUM, diss = HJ_LS_GLF;
+    double dx = 0.04, tmax = 4;
+    par q = {1.3, 1.5, 0.8, 0.5, NULL};
+    hj_error err;
+    static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
+    for (int i = 1; i < argc; i++) {
+        int v;
+        const char *s;
+        if (p2_next_option(argc, argv, &i, valued, 6, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+        if (v == P2_OPT_HELP) { usage(); return 0; }
+        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        int rc = 0;
+        switch (v) {
+        case 0: rc = p2_parse_accuracy(s, &acc, &err); break;
+        case 1: rc = p2_parse_dissipation(s, &diss, &err); break;
+        case 2: rc = hj_parse_double(s, "--dx", 0.002, 0.5, &dx, &err); break;
+        case 3: rc = hj_parse_double(s, "--Wp", 0.01, 100, &q.Wp, &err); break;
+        case 4: rc = hj_parse_double(s, "--tmax", 1e-9, 100, &tmax, &err); break;
+        default: out_dir = s;
+        }
+        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+        if (v < 5) single = 1;
+    }
+    die(hj_mkdirs(out_dir, &err), &err);
+#ifdef _OPENMP
+    /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in
+     * synchronisation on a shared machine; results do not depend on it). */
+    omp_set_num_threads(1);
+#endif
+    char path[4096];
+    static result R[8];
+    if (single) {
+        snprintf(path, sizeof path, "%s/acoustic_run.dat", out_dir);
+        run(&q, acc, diss, dx, tmax, path, &R[0]);
+        printf("# acoustic accuracy=%s diss=%s dx=%g Wp=%g: %ld steps\n# t\tarea\tincreased\tholes\thole_area\thole_gap\tasym\tflips\n",
+               p2_accuracy_name(acc), p2_dissipation_name(diss), dx, q.Wp, R[0].st.steps);
+        for (int k = 0; k < R[0].log.n; k++)
+            printf("%.4g\t%.6g\t%ld\t%ld\t%.4g\t%.3g\t%.3g\t%ld\n", R[0].log.t[k], R[0].log.measure[k],
+                   R[0].log.increased[k], R[0].sn.hole[k].n, R[0].sn.hole[k].area, R[0].sn.hole[k].gap, R[0].sn.asym[k],
+                   R[0].sn.flips[k]);
+        return 0;
+    }
+    /* Figure 18: the time sequence on the toolbox grid (dx = 1/25); the
+     * grid sequence dx = 0.08, 0.04, 0.02 (quick: 0.08, 0.04). */
+    static const double dxs[] = {0.08, 0.04, 0.02};
+    const int nd = quick ? 2 : 3;
+    for (int k = 0; k < nd; k++) {
+        snprintf(path, sizeof path, "%s/acoustic_2d.dat", out_dir);
+        run(&q, acc, diss, dxs[k], tmax, k == 1 ? path : NULL, &R[k]);
+    }
+    hj_out out;
+    snprintf(path, sizeof path, "%s/acoustic.tsv", out_dir);
+    die(hj_out_open(&out, path, &err), &err);
+    fprintf(out.fp, "# acoustic capture, accuracy medium: area of the reachable set, nodes where phi increased since the\n"
+                    "# previous output, holes = enclosed components of the complement not touching the target (their\n"
+                    "# number, area, distance to the target), asym = max |phi(x,y) - phi(-x,y)|, flips = nodes whose\n"
+                    "# membership of the set differs from their mirror node's\n"
+                    "dx\tt\tarea\tincreased\tholes\thole_area\thole_gap\tasym\tflips\n");
+    for (int k = 0; k < nd; k++)
+        for (int m = 0; m < R[k].log.n; m++) {
+            const hole_stat *h = &R[k].sn.hole[m];
+            fprintf(out.fp, "%.2f\t%.1f\t%.6g\t%ld\t%ld\t%.4g\t", dxs[k], R[k].log.t[m], R[k].log.measure[m],
+                    R[k].log.increased[m], h->n, h->area);
+            if (h->n) fprintf(out.fp, "%.3g\t", h->gap); else fputs("-\t", out.fp);
+            fprintf(out.fp, "%.3e\t%ld\n", R[k].sn.asym[m], R[k].sn.flips[m]);
+        }
+    die(hj_out_commit(&out, &err), &err);
+    snprintf(path, sizeof path, "%s/acoustic_notes.md", out_dir);
+    die(hj_out_open(&out, path, &err), &err);
+    fprintf(out.fp, "\nArea of the reachable set and of its holes (components of the complement enclosed by the set "
+                    "and more than 1.5 dx from the target) on three grids, accuracy medium:\n\n"
+                    "| t | area, dx = 0.08 | dx = 0.04 | dx = 0.02 | hole area (0.08 / 0.04 / 0.02) | hole distance to "
+                    "target |\n|---|---|---|---|---|---|\n");
+    for (int m = 0; m < R[0].log.n; m++) {
+        fprintf(out.fp, "| %.1f |", R[0].log.t[m]);
+        for (int k = 0; k < 3; k++)
+            if (k < nd) fprintf(out.fp, " %.3f |", R[k].log.measure[m]); else fputs(" - |", out.fp);
+        for (int k = 0; k < 3; k++)
+            if (k < nd) fprintf(out.fp, "%s%.3f", k ? " / " : " ", R[k].sn.hole[m].area); else fputs(" / -", out.fp);
+        const hole_stat *h = &R[nd - 1].sn.hole[m];
+        if (h->n) fprintf(out.fp, " | %.2f |\n", h->gap); else fputs(" | - |\n", out.fp);
+    }
+    long inc = 0, flips = 0;
+    double asym = 0;
+    for (int k = 0; k < nd; k++)
+        for (int m = 0; m < R[k].log.n; m++) {
+            inc += R[k].log.increased[m];
+            flips += R[k].sn.flips[m];
+            asym = R[k].sn.asym[m] > asym ? R[k].sn.asym[m] : asym;
+        }
+    fprintf(out.fp, "\nphi increased at %ld nodes between output times in all runs (the set never shrinks).  Mirror "
+                    "x -> -x: %ld nodes in all changed membership of the set; largest |phi(x, y) - phi(-x, y)|: "
+                    "%.1e.\n\n", inc, flips, asym);
+    die(hj_out_commit(&out, &err), &err);
+    return 0;
+}

@@ -1,0 +1,132 @@
+/* p2_air3d.c -- see p2_air3d.h. */
+#include "p2_air3d.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "hj_ls_term.h"
+#include "p2_reach.h"
+
+static const double PI = 3.14159265358979323846;
+
+void p2_air3d_defaults(p2_air3d_par *p)
+{
+    p->r = 5, p->va = 5, p->vb = 5, p->A = 1, p->B = 1;
+}
+
+int p2_air3d_grid(long Nx, hj_ls_grid *g, hj_error *err)
+{
+    const long N[3] = {Nx, (long)ceil((double)Nx * 20.0 / 26.0), Nx - 1};
+    const double lo[3] = {-6, -10, 0}, hi[3] = {20, 10, 2 * PI * (1 - 1.0 / (double)N[2])};
+    const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    return hj_ls_grid_init(g, 3, lo, hi, N, bc, err);
+}
+
+/* sqrt(x^2 + y^2) - r with y_j = (j - (N_y - 1) / 2) dy, exactly
+ * antisymmetric under j -> N_y - 1 - j (hj_ls_shape_cylinder's
+ * coordinates min + j dy are so only to round-off, which seeds an
+ * asymmetry that the ENO stencil choices can amplify). */
+int p2_air3d_target(const hj_ls_grid *g, const p2_air3d_par *p, double *phi, hj_error *err)
+{
+    if (g->dim != 3 || p->r <= 0) return hj_error_set(err, HJ_EINVAL, "air3D target: a 3-D grid and r > 0 are needed");
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[3] = {0, 0, 0};
+        const size_t k = hj_ls_row(g, r, i);
+        const double y = ((double)i[1] - 0.5 * (double)(g->N[1] - 1)) * g->dx[1];
+        for (long a = 0; a < g->N[0]; a++) {
+            const double x = g->min[0] + (double)a * g->dx[0];
+            phi[k + (size_t)a] = sqrt(x * x + y * y) - p->r;
+        }
+    }
+    return HJ_OK;
+}
+
+/* The callbacks look up cos psi, sin psi and y by node index, from
+ * tables built mirror-symmetric (cos(-psi) = cos psi, sin(-psi) = -sin psi,
+ * y_{N-1-j} = -y_j exactly), so that the reflection symmetry of the game
+ * is not broken by the rounding of the coordinates. */
+typedef struct {
+    const p2_air3d_par *q;
+    const hj_ls_grid *g;
+    double *cs, *sn, *ys;
+} cb_ctx;
+
+static void lookup(const cb_ctx *c, const double *x, double *cs, double *sn, double *y)
+{
+    const hj_ls_grid *g = c->g;
+    long k = lround((x[2] - g->min[2]) / g->dx[2]), j = lround((x[1] - g->min[1]) / g->dx[1]);
+    k = ((k % g->N[2]) + g->N[2]) % g->N[2];
+    *cs = c->cs[k], *sn = c->sn[k];
+    *y = j >= 0 && j < g->N[1] ? c->ys[j] : x[1];
+}
+
+static double ham(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)phi;
+    const cb_ctx *c = ctx;
+    const p2_air3d_par *q = c->q;
+    double cs, sn, y;
+    lookup(c, x, &cs, &sn, &y);
+    const double H = -q->va * p[0] + q->vb * (cs * p[0] + sn * p[1]) + q->A * fabs(y * p[0] - x[0] * p[1] - p[2]) -
+                     q->B * fabs(p[2]);
+    return -H;
+}
+
+static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)t, (void)pmin, (void)pmax;
+    const cb_ctx *c = ctx;
+    const p2_air3d_par *q = c->q;
+    double cs, sn, y;
+    lookup(c, x, &cs, &sn, &y);
+    switch (d) {
+    case 0: return fabs(-q->va + q->vb * cs) + q->A * fabs(y);
+    case 1: return fabs(q->vb * sn) + q->A * fabs(x[0]);
+    default: return q->A + q->B;
+    }
+}
+
+int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
+                   double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
+{
+    cb_ctx c = {p, g, NULL, NULL, NULL};
+    const long n3 = g->N[2], n2 = g->N[1];
+    c.cs = malloc(sizeof(double) * (size_t)(2 * n3 + n2));
+    if (!c.cs) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
+    c.sn = c.cs + n3, c.ys = c.sn + n3;
+    for (long k = 0; k <= n3 / 2; k++) {
+        const double a = 2 * PI * (double)k / (double)n3;
+        c.cs[k] = cos(a), c.sn[k] = k == 0 || 2 * k == n3 ? 0.0 : sin(a);
+        if (k) c.cs[n3 - k] = c.cs[k], c.sn[n3 - k] = -c.sn[k];
+    }
+    for (long j = 0; j < n2; j++) c.ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, g, p2_accuracy_scheme(acc), diss, ham, partial, &c);
+    hj_ls_restrict rs;
+    hj_ls_restrict_init(&rs, g, &lf.base, 0);
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = 0.75;
+    int rc = hj_ls_ode(p2_accuracy_order(acc), g, &rs.base, ts, nt, phi, &o, out, out_ctx, stats, err);
+    free(c.cs);
+    return rc;
+}
+
+double p2_air3d_asymmetry(const hj_ls_grid *g, const double *phi, long *flips)
+{
+    double m = 0;
+    long f = 0;
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[3] = {0, 0, 0};
+        const size_t k = hj_ls_row(g, r, i);
+        long j[3] = {0, g->N[1] - 1 - i[1], (g->N[2] - i[2]) % g->N[2]};
+        const size_t kr = hj_ls_index(g, j);
+        for (long a = 0; a < g->N[0]; a++) {
+            const double e = fabs(phi[k + (size_t)a] - phi[kr + (size_t)a]);
+            m = e > m ? e : m;
+            f += (phi[k + (size_t)a] < 0) != (phi[kr + (size_t)a] < 0);
+        }
+    }
+    if (flips) *flips = f;
+    return m;
+}

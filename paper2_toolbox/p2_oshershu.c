@@ -1,0 +1,233 @@
+/* p2_oshershu.c -- see p2_oshershu.h. */
+#include "p2_oshershu.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_cli.h"
+#include "hj_io.h"
+
+#include "hj_ls_term.h"
+#include "p2_reach.h"
+
+static const double PI = 3.14159265358979323846;
+
+static double burgers_h(double q) { return 0.5 * (1 + q) * (1 + q); }
+static double burgers_dh(double q) { return 1 + q; }
+static double nonconvex_h(double q) { return -cos(1 + q); }
+static double nonconvex_dh(double q) { return sin(1 + q); }
+
+const p2_os_problem p2_os_burgers = {"burgers", burgers_h, burgers_dh, 1 + 3.14159265358979323846, 1};
+const p2_os_problem p2_os_nonconvex = {"nonconvex", nonconvex_h, nonconvex_dh, 1, 0};
+
+static double os_ham(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)t, (void)x, (void)phi;
+    const p2_os_ctx *c = ctx;
+    double q = 0;
+    for (int d = 0; d < c->dim; d++) q += p[d];
+    return c->pb->h(q);
+}
+
+/* Burgers: the toolbox bounds |1 + sum p| by 1 + sum max(|pmin|, |pmax|);
+ * non-convex: the toolbox takes 1.  Tight: max |h'(q)| over q in
+ * [sum pmin, sum pmax], exactly. */
+static double os_partial(double t, const double *x, const double *pmin, const double *pmax, int dd, void *ctx)
+{
+    (void)t, (void)x, (void)dd;
+    const p2_os_ctx *c = ctx;
+    if (!c->tight) {
+        if (!c->pb->convex) return 1.0;
+        double s = 1;
+        for (int d = 0; d < c->dim; d++) s += fabs(pmin[d]) > fabs(pmax[d]) ? fabs(pmin[d]) : fabs(pmax[d]);
+        return s;
+    }
+    double lo = 0, hi = 0;
+    for (int d = 0; d < c->dim; d++) lo += pmin[d], hi += pmax[d];
+    if (c->pb->convex) return fabs(1 + lo) > fabs(1 + hi) ? fabs(1 + lo) : fabs(1 + hi);
+    /* |sin(1 + q)| reaches 1 where 1 + q = pi/2 + k pi */
+    const double a = 1 + lo, b = 1 + hi;
+    if (floor((b - PI / 2) / PI) != floor((a - PI / 2) / PI)) return 1.0;
+    return fabs(sin(a)) > fabs(sin(b)) ? fabs(sin(a)) : fabs(sin(b));
+}
+
+int p2_os_grid(int dim, long N, hj_ls_grid *g, hj_error *err)
+{
+    double lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
+    long n[HJ_LS_MAXDIM];
+    hj_ls_bc bc[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) {
+        lo[d] = -dim;
+        hi[d] = -dim + (double)(N - 1) * (2.0 * dim / (double)N);
+        n[d] = N;
+        bc[d].type = HJ_LS_BC_PERIODIC, bc[d].lo = bc[d].hi = 0;
+    }
+    return hj_ls_grid_init(g, dim, lo, hi, n, bc, err);
+}
+
+static double initial(const double *x, void *ctx)
+{
+    const int dim = *(const int *)ctx;
+    double s = 0;
+    for (int d = 0; d < dim; d++) s += x[d];
+    return -cos(PI / dim * s);
+}
+
+int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, double **phi, hj_ls_output_fn out,
+                void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
+{
+    *phi = NULL;
+    int rc = p2_os_grid(r->dim, r->N, g, err);
+    if (rc) return rc;
+    double *y = hj_ls_alloc(g);
+    if (!y) return hj_error_set(err, HJ_ENOMEM, "out of memory for a %ld^%d grid", r->N, r->dim);
+    int dim = r->dim;
+    hj_ls_fill(g, y, initial, &dim);
+    p2_os_ctx c = {pb, r->dim, r->tight};
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, g, p2_accuracy_scheme(r->acc), r->diss, os_ham, os_partial, &c);
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = 0.5; /* burgersLF, nonconvexLF */
+    double ts[P2_MAXT];
+    const int nint = r->nout < 1 ? 1 : r->nout >= P2_MAXT ? P2_MAXT - 1 : r->nout;
+    p2_times(0, r->tmax, nint, ts);
+    if (out && (rc = out(0, 0, y, out_ctx, err))) { hj_ls_free(y); return rc; }
+    rc = hj_ls_ode(p2_accuracy_order(r->acc), g, &lf.base, ts, nint + 1, y, &o, out, out_ctx, stats, err);
+    if (rc) { hj_ls_free(y); return rc; }
+    *phi = y;
+    return HJ_OK;
+}
+
+static double foot_residual(const p2_os_problem *pb, double s0, double s, double t)
+{
+    return s0 + pb->dh(PI * sin(PI * s0)) * t - s;
+}
+
+double p2_os_exact(const p2_os_problem *pb, double s, double t, int *nroots)
+{
+    /* feet lie in [s - dh_max t, s + dh_max t] */
+    const int M = 400;
+    const double a = s - pb->dh_max * t - 1e-9, b = s + pb->dh_max * t + 1e-9;
+    double best = INFINITY;
+    int roots = 0;
+    double x0 = a, f0 = foot_residual(pb, a, s, t);
+    for (int k = 1; k <= M; k++) {
+        const double x1 = a + (b - a) * k / M, f1 = foot_residual(pb, x1, s, t);
+        double root = NAN;
+        if (f0 == 0) root = x0;
+        else if ((f0 < 0) != (f1 < 0) && f1 != 0) {
+            double lo = x0, hi = x1, flo = f0;
+            for (int it = 0; it < 200; it++) {
+                const double mid = 0.5 * (lo + hi);
+                if (mid <= lo || mid >= hi) break;
+                const double fm = foot_residual(pb, mid, s, t);
+                if (fm == 0) { lo = hi = mid; break; }
+                if ((fm < 0) == (flo < 0)) lo = mid, flo = fm;
+                else hi = mid;
+            }
+            root = 0.5 * (lo + hi);
+        }
+        if (!isnan(root)) {
+            const double u = PI * sin(PI * root);
+            const double G = -cos(PI * root) + t * (u * pb->dh(u) - pb->h(u));
+            roots++;
+            if (pb->convex ? G < best : roots == 1) best = G;
+        }
+        x0 = x1, f0 = f1;
+    }
+    if (nroots) *nroots = roots;
+    return best;
+}
+
+int p2_os_exact_grid(const p2_os_problem *pb, const hj_ls_grid *g, double t, double *out)
+{
+    int mr = 0;
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM] = {0};
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++) {
+            i[0] = j;
+            double x[HJ_LS_MAXDIM], s = 0;
+            hj_ls_coord(g, i, x);
+            for (int d = 0; d < g->dim; d++) s += x[d];
+            int nr;
+            out[k + (size_t)j] = p2_os_exact(pb, s / g->dim, t, &nr);
+            mr = nr > mr ? nr : mr;
+        }
+    }
+    return mr;
+}
+
+void p2_os_errors(const hj_ls_grid *g, const double *phi, const double *exact, double *l1, double *linf)
+{
+    double sum = 0, mx = 0;
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM] = {0};
+        const size_t k = hj_ls_row(g, r, i);
+        double rs = 0;
+        for (long j = 0; j < g->N[0]; j++) {
+            const double e = fabs(phi[k + (size_t)j] - exact[k + (size_t)j]);
+            rs += e;
+            mx = e > mx ? e : mx;
+        }
+        sum += rs;
+    }
+    *l1 = sum / (double)g->nodes;
+    *linf = mx;
+}
+
+double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, const char *path,
+                            hj_error *err)
+{
+    hj_out out;
+    p2_blocks b = {NULL, g};
+    if (path) {
+        if (hj_out_open(&out, path, err)) return NULL;
+        b.fp = out.fp;
+    }
+    double *phi;
+    if (p2_os_solve(pb, r, g, &phi, path ? p2_write_block : NULL, &b, NULL, err)) {
+        if (path) hj_out_abort(&out);
+        return NULL;
+    }
+    if (path && hj_out_commit(&out, err)) { hj_ls_free(phi); return NULL; }
+    return phi;
+}
+
+int p2_os_parse_cli(int argc, char **argv, int allow_partial, p2_os_cli *c, hj_error *err)
+{
+    static const double pi2 = 3.14159265358979323846 * 3.14159265358979323846;
+    memset(c, 0, sizeof *c);
+    c->run = (p2_os_run){2, 0, P2_LOW, HJ_LS_GLF, 0, 1.5 / pi2, 10};
+    c->out_dir = ".";
+    static const char *const valued[] = {"--accuracy", "--diss", "--dim", "--N", "--tmax", "--partial", "--out-dir"};
+    for (int i = 1; i < argc; i++) {
+        int v;
+        const char *s;
+        const int rc0 = p2_next_option(argc, argv, &i, valued, 7, &v, &s, err);
+        if (rc0) return rc0;
+        if (v == P2_OPT_HELP) { c->help = 1; return HJ_OK; }
+        if (v == P2_OPT_QUICK) { c->quick = 1; continue; }
+        if (v == 5 && !allow_partial) return hj_error_set(err, HJ_EINVAL, "unknown option '--partial' (see --help)");
+        long l = 0;
+        int rc = HJ_OK;
+        switch (v) {
+        case 0: rc = p2_parse_accuracy(s, &c->run.acc, err); break;
+        case 1: rc = p2_parse_dissipation(s, &c->run.diss, err); break;
+        case 2: rc = hj_parse_long(s, "--dim", 1, 3, &l, err); c->run.dim = (int)l; break;
+        case 3: rc = hj_parse_long(s, "--N", 4, 100000, &c->run.N, err); break;
+        case 4: rc = hj_parse_double(s, "--tmax", 1e-12, 100, &c->run.tmax, err); break;
+        case 5:
+            if (!strcmp(s, "tight")) c->run.tight = 1;
+            else if (strcmp(s, "toolbox")) rc = hj_error_set(err, HJ_EINVAL, "unknown --partial '%s' (toolbox, tight)", s);
+            break;
+        default: c->out_dir = s;
+        }
+        if (rc) return rc;
+        if (v < 6) c->single = 1;
+    }
+    if (!c->run.N) c->run.N = 80 >> (c->run.dim - 1);
+    return HJ_OK;
+}
