@@ -173,15 +173,6 @@ static int make_points(const hj_ls_grid *g, long samples, double *phi, hj_error 
     return rc;
 }
 
-static void grid2(hj_ls_grid *g, long n)
-{
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    const double lo[2] = {-1, -1}, hi[2] = {1, 1};
-    const long N[2] = {n, n};
-    hj_error err;
-    p2_fail_if(prog, hj_ls_grid_init(g, 2, lo, hi, N, bc, &err), &err);
-}
-
 /* Initial data, the run over tspan, the areas at the output times. */
 static int run_spiral(const hj_ls_grid *g, int order, int points, long samples, const double *tspan, int nt,
                       FILE *fp, double *area, const char *label, hj_error *err)
@@ -233,16 +224,12 @@ int main(int argc, char **argv)
 
     /* Figure 8. */
     hj_ls_grid g;
-    grid2(&g, o.N);
+    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral.dat", &err), &err);
     fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n", o.accuracy,
             initial ? "points" : "ellipse", o.N);
-    if (run_spiral(&g, o.order, initial, samples, tspan, 9, out.fp, area, "spiral", &err)) {
-        hj_out_abort(&out);
-        p2_fail_if(prog, 1, &err);
-    }
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+    p2_commit_run(prog, &out, run_spiral(&g, o.order, initial, samples, tspan, 9, out.fp, area, "spiral", &err), &err);
 
     /* The check: area loss 2 pi b t for both initial data on three grids,
      * up to t = 0.25. */
@@ -251,7 +238,7 @@ int main(int argc, char **argv)
     const char *init_name[2] = {"ellipse", "points"};
     double areas[3][2][3];
     for (int n = 0; n < ngrids; n++) {
-        grid2(&g, grids[n]);
+        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
         for (int ini = 0; ini < 2; ini++) {
             char label[64];
             snprintf(label, sizeof label, "spiral %s, N = %ld", init_name[ini], grids[n]);

@@ -55,7 +55,6 @@ published/curvature_star.tsv); curvature_star_notes.md.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -87,15 +86,6 @@ static int run_curv(const hj_ls_grid *g, int order, double b0, int split, const 
     return p2_run(order, g, &term.base, tspan, nt, phi, &seq, 0.9, err);
 }
 
-static void grid2(hj_ls_grid *g, long n)
-{
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    const double lo[2] = {-1, -1}, hi[2] = {1, 1};
-    const long N[2] = {n, n};
-    hj_error err;
-    p2_fail_if(prog, hj_ls_grid_init(g, 2, lo, hi, N, bc, &err), &err);
-}
-
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, "medium", 0, 0, 101, ".", 0};
@@ -103,12 +93,7 @@ int main(int argc, char **argv)
     int only = -1;
     for (int i = 1; i < argc; i++) {
         if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (!strcmp(argv[i], "--split-flow")) {
-            if (i + 1 >= argc || (strcmp(argv[i + 1], "0") && strcmp(argv[i + 1], "1")))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--split-flow needs 0 or 1");
-            only = argv[++i][0] - '0';
-            continue;
-        }
+        if (p2_binary_option(prog, "--split-flow", argc, argv, &i, &only)) continue;
         hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
     }
     hj_error err;
@@ -119,7 +104,7 @@ int main(int argc, char **argv)
 
     /* Figure 9. */
     hj_ls_grid g;
-    grid2(&g, o.N);
+    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     double *phi = hj_ls_alloc(&g);
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     for (int split = 0; split < 2; split++) {
@@ -130,11 +115,9 @@ int main(int argc, char **argv)
                    &err);
         fprintf(out.fp, "# curvatureStarDemo(%s, splitFlow = %d) on %ld^2 nodes: phi at t = 0, 0.25, 0.5, 1\n",
                 o.accuracy, split, o.N);
-        if (run_curv(&g, o.order, b0, split, tspan, 4, phi, out.fp, NULL, split ? "star, split" : "star", &err)) {
-            hj_out_abort(&out);
-            p2_fail_if(prog, 1, &err);
-        }
-        p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+        p2_commit_run(prog, &out,
+                      run_curv(&g, o.order, b0, split, tspan, 4, phi, out.fp, NULL, split ? "star, split" : "star", &err),
+                      &err);
     }
     hj_ls_free(phi);
 
@@ -145,7 +128,7 @@ int main(int argc, char **argv)
     const double r0 = 0.4, t1 = 1.0, loss_exact = 2 * PI * b0 * t1, r_exact = sqrt(r0 * r0 - 2 * b0 * t1);
     double loss[3][3], rc[3];
     for (int n = 0; n < ngrids; n++) {
-        grid2(&g, grids[n]);
+        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
         phi = hj_ls_alloc(&g);
         if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
         for (int s = 0; s < 3; s++) {

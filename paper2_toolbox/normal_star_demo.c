@@ -51,7 +51,6 @@ radii in published/normal_circle.tsv), normal_star_notes.md.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -79,15 +78,6 @@ static int run_normal(const hj_ls_grid *g, const p2_opts *o, double a0, int reve
     return p2_run(o->order, g, &term.base, tspan, nt, phi, &seq, 0.5, err);
 }
 
-static void grid2(hj_ls_grid *g, long n)
-{
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    const double lo[2] = {-1, -1}, hi[2] = {1, 1};
-    const long N[2] = {n, n};
-    hj_error err;
-    p2_fail_if(prog, hj_ls_grid_init(g, 2, lo, hi, N, bc, &err), &err);
-}
-
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, "medium", 0, 0, 101, ".", 0};
@@ -95,12 +85,7 @@ int main(int argc, char **argv)
     int only = -1; /* -1: both cases */
     for (int i = 1; i < argc; i++) {
         if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (!strcmp(argv[i], "--reverse-flow")) {
-            if (i + 1 >= argc || (strcmp(argv[i + 1], "0") && strcmp(argv[i + 1], "1")))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--reverse-flow needs 0 or 1");
-            only = argv[++i][0] - '0';
-            continue;
-        }
+        if (p2_binary_option(prog, "--reverse-flow", argc, argv, &i, &only)) continue;
         hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
     }
     hj_error err;
@@ -111,7 +96,7 @@ int main(int argc, char **argv)
 
     /* Figure 10: the star, constant and reversed speed. */
     hj_ls_grid g;
-    grid2(&g, o.N);
+    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     double *phi = hj_ls_alloc(&g);
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     p2_star star = {7, 2.5, 0.20};
@@ -122,11 +107,9 @@ int main(int argc, char **argv)
         p2_fail_if(prog, p2_open(&out, o.out_dir, rev ? "normal_star_b.dat" : "normal_star_a.dat", &err), &err);
         fprintf(out.fp, "# normalStarDemo(%s, reverseFlow = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
                 o.accuracy, rev, o.N);
-        if (run_normal(&g, &o, a0, rev, tspan, 9, phi, out.fp, rev ? "star, reversed" : "star", &err)) {
-            hj_out_abort(&out);
-            p2_fail_if(prog, 1, &err);
-        }
-        p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+        p2_commit_run(prog, &out,
+                      run_normal(&g, &o, a0, rev, tspan, 9, phi, out.fp, rev ? "star, reversed" : "star", &err),
+                      &err);
     }
     hj_ls_free(phi);
 
@@ -138,7 +121,7 @@ int main(int argc, char **argv)
     double r[3][3];
     const double tc[3] = {0, 0.5, 1}; /* t_switch = 0.5 must be an output time */
     for (int n = 0; n < ngrids; n++) {
-        grid2(&g, grids[n]);
+        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
         phi = hj_ls_alloc(&g);
         if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
         for (int c = 0; c < 3; c++) {

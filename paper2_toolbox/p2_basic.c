@@ -348,3 +348,31 @@ void p2b_reinit_row(FILE *fp, const p2b_reinit_case *c, int acc, const p2b_reini
             p2b_shape_name[c->shape], p2b_acc_name[acc], b->grad_mean, a->grad_mean, a->grad_max, b->sd_err, a->sd_err,
             b->shift_max, a->shift_max, a->shift_mean, b->area, a->area, c->exact_area, steps);
 }
+
+void p2b_reinit_note_row(FILE *fp, const p2b_reinit_case *c, int acc, const p2b_reinit_meas *b,
+                         const p2b_reinit_meas *a, long steps)
+{
+    fprintf(fp, "| %s | %s | %.3f -> %.4f | %.3f -> %.4f | %.4f (%.4f) -> %.4f (%.4f) | %+.3f %% | %ld |",
+            p2b_shape_name[c->shape], p2b_acc_name[acc], b->grad_mean, a->grad_mean, b->sd_err, a->sd_err,
+            b->shift_max, b->shift_mean, a->shift_max, a->shift_mean, 100 * (a->area / b->area - 1), steps);
+}
+
+int p2b_reinit_options(int argc, char **argv, p2b_reinit_opts *o, hj_error *err)
+{
+    *o = (p2b_reinit_opts){P2B_STAR, P2B_LOW, 0, 0, "."};
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help")) { o->help = 1; return HJ_OK; }
+        if (!strcmp(a, "--quick")) continue;
+        if (strcmp(a, "--shape") && strcmp(a, "--accuracy") && strcmp(a, "--out-dir"))
+            return hj_error_set(err, HJ_EINVAL, "unknown option '%s' (see --help)", a);
+        if (i + 1 >= argc) return hj_error_set(err, HJ_EINVAL, "option %s needs a value (see --help)", a);
+        const char *v = argv[++i];
+        int rc = HJ_OK;
+        if (!strcmp(a, "--out-dir")) o->dir = v;
+        else if (!strcmp(a, "--shape")) rc = p2b_parse_choice(v, "shape", p2b_shape_name, P2B_NSHAPE, &o->shape, err), o->single = 1;
+        else rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &o->acc, err), o->single = 1;
+        if (rc) return rc;
+    }
+    return HJ_OK;
+}

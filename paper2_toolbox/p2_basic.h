@@ -2,9 +2,10 @@
  * (convection_demo, reinit_demo, reinit_test, lax_friedrichs_demo,
  * mask_demo) and the Table 1 benchmark (bench_convection) share: the
  * accuracy levels, the flow fields of convectionDemo, a time sequence
- * writer, the star of (13), and measurements against exact solutions
+ * writer, the star of (13), measurements against exact solutions
  * (error near a front, gradient deviation, zero crossings and their
- * distance from an exact curve).
+ * distance from an exact curve), and the cases, options and table rows
+ * of reinitDemo and reinitTest.
  *
  * Library code: it returns hj_error codes, never prints or exits.
  */
@@ -155,5 +156,20 @@ int p2b_reinit_measure(const p2b_reinit_case *c, double *phi, p2b_reinit_meas *m
 void p2b_reinit_header(FILE *fp);
 void p2b_reinit_row(FILE *fp, const p2b_reinit_case *c, int acc, const p2b_reinit_meas *before,
                     const p2b_reinit_meas *after, long steps);
+/* One row of reinit_notes.md / reinit_test_notes.md, before -> after,
+ * without its line end (reinitTest adds a column). */
+void p2b_reinit_note_row(FILE *fp, const p2b_reinit_case *c, int acc, const p2b_reinit_meas *before,
+                         const p2b_reinit_meas *after, long steps);
+
+/* The options reinitDemo and reinitTest share: --shape, --accuracy (either
+ * sets single: one run), --out-dir, --quick (accepted: the default set is
+ * already quick) and --help, which ends the scan with help set so that
+ * the program prints its usage as soon as it is seen.  HJ_EINVAL with the
+ * message for an unknown option or a missing or bad value. */
+typedef struct {
+    int shape, acc, single, help;
+    const char *dir;
+} p2b_reinit_opts;
+int p2b_reinit_options(int argc, char **argv, p2b_reinit_opts *o, hj_error *err);
 
 #endif

@@ -58,6 +58,33 @@ void p2_fail_if(const char *prog, int rc, const hj_error *err)
     if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
+int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value)
+{
+    if (strcmp(argv[*i], name)) return 0;
+    if (*i + 1 >= argc || (strcmp(argv[*i + 1], "0") && strcmp(argv[*i + 1], "1")))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s needs 0 or 1", name);
+    *value = argv[++*i][0] - '0';
+    return 1;
+}
+
+void p2_commit_run(const char *prog, hj_out *out, int rc, const hj_error *err)
+{
+    if (rc) {
+        hj_out_abort(out); /* no half-written figure file is left behind */
+        p2_fail_if(prog, 1, err);
+    }
+    hj_error cerr;
+    p2_fail_if(prog, hj_out_commit(out, &cerr), &cerr);
+}
+
+int p2_square_grid(hj_ls_grid *g, long n, hj_error *err)
+{
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    const double lo[2] = {-1, -1}, hi[2] = {1, 1};
+    const long N[2] = {n, n};
+    return hj_ls_grid_init(g, 2, lo, hi, N, bc, err);
+}
+
 double p2_star_fn(const double *x, void *ctx)
 {
     const p2_star *s = ctx;

@@ -1,10 +1,11 @@
 /* p2_motion.h -- shared pieces of the section 2.3-2.4 demos (curvature,
  * normal motion, spin, tripleSine, dumbbell): the toolbox's accuracy
- * levels, the common options, the star (13), a switching scalar (the
- * toolbox's switchValue), time sequences written as gnuplot index blocks,
- * and the radius of {phi < 0} from its measure.  Nothing here prints or
- * exits but p2_common_option (--help, bad options) and p2_fail_if, which
- * are for main() only.
+ * levels, the common options and the 0|1 switches, the square grid, the
+ * star (13), a switching scalar (the toolbox's switchValue), time
+ * sequences written as gnuplot index blocks, and the radius of {phi < 0}
+ * from its measure.  Nothing here prints or exits but p2_common_option
+ * (--help, bad options), p2_binary_option, p2_fail_if and p2_commit_run,
+ * which are for main() only.
  */
 #ifndef P2_MOTION_H
 #define P2_MOTION_H
@@ -38,6 +39,19 @@ int p2_common_option(p2_opts *o, int argc, char **argv, int *i);
 
 /* End the program with the error's message when rc != 0 (main() only). */
 void p2_fail_if(const char *prog, int rc, const hj_error *err);
+
+/* A demo's 0|1 switch (--reverse-flow, --rigid, --split-flow): when
+ * argv[*i] is name, *value = its 0 or 1 (anything else ends the program,
+ * main() only) and 1 is returned; 0 when argv[*i] is another option. */
+int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value);
+
+/* Finish a figure file after the run that wrote it returned rc: commit it,
+ * or, when the run failed, remove it and end the program (main() only). */
+void p2_commit_run(const char *prog, hj_out *out, int rc, const hj_error *err);
+
+/* The square [-1, 1]^2 with n nodes per side and extrapolation boundary
+ * conditions, the domain of the section 2.3 demos. */
+int p2_square_grid(hj_ls_grid *g, long n, hj_error *err);
 
 /* The star (13): phi = |x| - scale (cos(points theta) + shift). */
 typedef struct {

@@ -65,7 +65,6 @@ phi(1) |grad phi_0| |grad phi(1)|, gnuplot grid).  With --shape or
 times as gnuplot index blocks).
 */
 #include <stdio.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -116,23 +115,12 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int shape = P2B_STAR, acc = P2B_LOW, single = 0;
-    const char *dir = ".";
+    p2b_reinit_opts opt;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) continue;
-        if (strcmp(a, "--shape") && strcmp(a, "--accuracy") && strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (i + 1 >= argc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        const char *v = argv[++i];
-        int rc = 0;
-        if (!strcmp(a, "--out-dir")) dir = v;
-        else if (!strcmp(a, "--shape")) rc = p2b_parse_choice(v, "shape", p2b_shape_name, P2B_NSHAPE, &shape, &err), single = 1;
-        else rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &acc, &err), single = 1;
-        if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    if (p2b_reinit_options(argc, argv, &opt, &err)) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
+    if (opt.help) { usage(stdout); return 0; }
+    const int shape = opt.shape, acc = opt.acc, single = opt.single;
+    const char *dir = opt.dir;
     fail_if(hj_mkdirs(dir, &err), &err);
     char path[4096];
     hj_out tab, notes;
@@ -163,10 +151,8 @@ int main(int argc, char **argv)
             fail_if(p2b_reinit_measure(&c, phi, &after, &err), &err);
             p2b_reinit_row(tab.fp, &c, a, &before, &after, steps);
             if (single) continue;
-            fprintf(notes.fp, "| %s | %s | %.3f -> %.4f | %.3f -> %.4f | %.4f (%.4f) -> %.4f (%.4f) | %+.3f %% | %ld |\n",
-                    p2b_shape_name[s], p2b_acc_name[a], before.grad_mean, after.grad_mean, before.sd_err, after.sd_err,
-                    before.shift_max, before.shift_mean, after.shift_max, after.shift_mean,
-                    100 * (after.area / before.area - 1), steps);
+            p2b_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
+            fputc('\n', notes.fp);
             if (s == P2B_STAR && a == P2B_MEDIUM) { /* Figures 4 and 5 */
                 fail_if(p2b_grad_magnitude(&c.g, c.phi0, c.work, g0, &err), &err);
                 fail_if(p2b_grad_magnitude(&c.g, phi, c.work, g1, &err), &err);

@@ -37,7 +37,28 @@ REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_tabl
 
 # The demos of section 2: one fragment each, mk/<demo>.mk, which adds its
 # program to P2_PROGS, its outputs to P2_RESULTS, its checked tables to
-# P2_CHECK and its source to REPORT_INPUTS.
+# P2_CHECK and its source to REPORT_INPUTS, mostly through these two:
+#
+# $(eval $(call p2_demo,PROG,MODULES,OUTPUTS,CHECKED,ENV)): PROG.c linked
+# with the p2_<module>.o of MODULES, run once (with $(QUICKFLAG), under
+# ENV, e.g. OMP_WAIT_POLICY=passive) for all of OUTPUTS (names in P2_OUT);
+# CHECKED are the tables make check holds.
+define p2_demo
+P2_PROGS += $(1)
+$(P2_BIN)/$(1): $(2:%=$(BUILD)/obj/$(P2)/p2_%.o)
+$(3:%=$(P2_OUT)/%) &: $(P2_BIN)/$(1)
+	@mkdir -p $(P2_OUT)
+	$(5) $$< $(QUICKFLAG) --out-dir $(P2_OUT)
+P2_CHECK += $(4:%=$(P2_OUT)/%)
+REPORT_INPUTS += $(P2)/$(1).c
+endef
+# $(eval $(call p2_figure,FIG,INPUTS)): FIG.png drawn by plot/FIG.gp from
+# INPUTS (names in P2_OUT); the script gets dir = P2_OUT and out.
+define p2_figure
+$(P2_OUT)/$(1).png: $(2:%=$(P2_OUT)/%) $(P2)/plot/$(1).gp
+	gnuplot -e "dir='$(P2_OUT)'; out='$$(@D)/.tmp-$$(@F)'" $(P2)/plot/$(1).gp && mv $$(@D)/.tmp-$$(@F) $$@
+REPORT_INPUTS += $(P2)/plot/$(1).gp
+endef
 include $(sort $(wildcard $(P2)/mk/*.mk))
 
 PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)

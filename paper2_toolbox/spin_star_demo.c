@@ -45,7 +45,6 @@ spin_star_notes.md.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -99,15 +98,6 @@ static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, 
     return rc;
 }
 
-static void grid2(hj_ls_grid *g, long n)
-{
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    const double lo[2] = {-1, -1}, hi[2] = {1, 1};
-    const long N[2] = {n, n};
-    hj_error err;
-    p2_fail_if(prog, hj_ls_grid_init(g, 2, lo, hi, N, bc, &err), &err);
-}
-
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, "medium", 0, 0, 0, ".", 0};
@@ -115,12 +105,7 @@ int main(int argc, char **argv)
     int only = -1;
     for (int i = 1; i < argc; i++) {
         if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (!strcmp(argv[i], "--rigid")) {
-            if (i + 1 >= argc || (strcmp(argv[i + 1], "0") && strcmp(argv[i + 1], "1")))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--rigid needs 0 or 1");
-            only = argv[++i][0] - '0';
-            continue;
-        }
+        if (p2_binary_option(prog, "--rigid", argc, argv, &i, &only)) continue;
         hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
     }
     if (!o.N) o.N = o.quick ? 101 : 201; /* the figure grid: 201^2 as in the text, 101^2 in quick mode */
@@ -131,7 +116,7 @@ int main(int argc, char **argv)
 
     /* Figure 11: (a) rigid, (b) rotation times |x|^2. */
     hj_ls_grid g;
-    grid2(&g, o.N);
+    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     double *phi = hj_ls_alloc(&g);
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     p2_star star = {7, 2.5, 0.20};
@@ -142,11 +127,9 @@ int main(int argc, char **argv)
         p2_fail_if(prog, p2_open(&out, o.out_dir, rigid ? "spin_star_a.dat" : "spin_star_b.dat", &err), &err);
         fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n", o.accuracy,
                 rigid, o.N);
-        if (run_spin(&g, &o, 0.20, rigid, tspan, 9, phi, out.fp, rigid ? "star, rigid" : "star, |x|^2", &err)) {
-            hj_out_abort(&out);
-            p2_fail_if(prog, 1, &err);
-        }
-        p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+        p2_commit_run(prog, &out,
+                      run_spin(&g, &o, 0.20, rigid, tspan, 9, phi, out.fp, rigid ? "star, rigid" : "star, |x|^2", &err),
+                      &err);
     }
     hj_ls_free(phi);
 
@@ -158,7 +141,7 @@ int main(int argc, char **argv)
     const double tc[2] = {0, 1};
     double r[3][2];
     for (int n = 0; n < ngrids; n++) {
-        grid2(&g, grids[n]);
+        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
         phi = hj_ls_alloc(&g);
         if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
         for (int c = 0; c < 2; c++) {

@@ -157,11 +157,7 @@ int main(int argc, char **argv)
         p2_fail_if(prog, p2_open(&out, o.out_dir, name, &err), &err);
         fprintf(out.fp, "# tripleSine(%g, %s) on %ld^2 nodes: phi at t = 0.5 k / 11, k = 0..11\n", bs[k], o.accuracy,
                 o.N);
-        if (run_sine(&g, &o, bs[k], tspan, 12, phi, out.fp, label, &err)) {
-            hj_out_abort(&out);
-            p2_fail_if(prog, 1, &err);
-        }
-        p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+        p2_commit_run(prog, &out, run_sine(&g, &o, bs[k], tspan, 12, phi, out.fp, label, &err), &err);
         hfig[k][0] = front_height(&g, phi, 0);
         hfig[k][1] = front_height(&g, phi, o.N / 2);
     }

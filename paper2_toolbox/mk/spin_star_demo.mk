@@ -1,11 +1,4 @@
 # spinStarDemo (section 2.3.3, Figure 11); session h2.
-P2_PROGS += spin_star_demo
-$(P2_BIN)/spin_star_demo: $(BUILD)/obj/$(P2)/p2_motion.o
-$(P2_OUT)/spin_circle.tsv $(P2_OUT)/spin_star_a.dat $(P2_OUT)/spin_star_b.dat $(P2_OUT)/spin_star_notes.md &: $(P2_BIN)/spin_star_demo
-	@mkdir -p $(P2_OUT)
-	OMP_WAIT_POLICY=passive $< $(QUICKFLAG) --out-dir $(P2_OUT)
-$(P2_OUT)/fig11.png: $(P2_OUT)/spin_star_a.dat $(P2_OUT)/spin_star_b.dat $(P2)/plot/fig11.gp
-	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig11.gp && mv $(@D)/.tmp-$(@F) $@
+$(eval $(call p2_demo,spin_star_demo,motion,spin_circle.tsv spin_star_a.dat spin_star_b.dat spin_star_notes.md,spin_circle.tsv,OMP_WAIT_POLICY=passive))
+$(eval $(call p2_figure,fig11,spin_star_a.dat spin_star_b.dat))
 P2_RESULTS += $(P2_OUT)/fig11.png $(P2_OUT)/spin_star_notes.md
-P2_CHECK += $(P2_OUT)/spin_circle.tsv
-REPORT_INPUTS += $(P2)/spin_star_demo.c $(P2)/plot/fig11.gp
