@@ -658,3 +658,52 @@ void hj_ls_sum_free(hj_ls_sum *c)
     hj_ls_free(c->work);
     c->work = NULL;
 }
+
+/* ---- extremum of terms ---------------------------------------------------- */
+
+static int extremum_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    const hj_ls_extremum *c = (const hj_ls_extremum *)term;
+    const hj_ls_grid *g = c->grid;
+    double b, bmin;
+    int rc = c->terms[0]->eval(c->terms[0], t, y, ydot, &bmin, err);
+    if (rc) return rc;
+    for (int i = 1; i < c->n; i++) {
+        if ((rc = c->terms[i]->eval(c->terms[i], t, y, c->work, &b, err))) return rc;
+        bmin = b < bmin || isnan(b) ? b : bmin;
+        const int take_max = c->take_max;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+        for (size_t r = 0; r < g->rows; r++) {
+            long idx[HJ_LS_MAXDIM];
+            const size_t k = hj_ls_row(g, r, idx);
+            for (long j = 0; j < g->N[0]; j++) {
+                const double w = c->work[k + (size_t)j], v = ydot[k + (size_t)j];
+                ydot[k + (size_t)j] = take_max ? (w > v ? w : v) : (w < v ? w : v);
+            }
+        }
+    }
+    *bound = bmin;
+    return HJ_OK;
+}
+
+int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, int take_max,
+                        hj_error *err)
+{
+    memset(c, 0, sizeof *c);
+    if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "an extremum needs 1..%d terms", HJ_LS_SUM_MAX);
+    c->base.eval = extremum_eval;
+    c->grid = g;
+    c->n = n;
+    c->take_max = take_max != 0;
+    for (int i = 0; i < n; i++) c->terms[i] = terms[i];
+    if (n > 1 && !(c->work = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory for an extremum of terms");
+    return HJ_OK;
+}
+
+void hj_ls_extremum_free(hj_ls_extremum *c)
+{
+    hj_ls_free(c->work);
+    c->work = NULL;
+}

@@ -178,4 +178,24 @@ typedef struct {
 int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, hj_error *err);
 void hj_ls_sum_free(hj_ls_sum *c);
 
+/* ---- extremum of terms (for paper 3's HJB equations over a finite control
+ * set): G = min_i G_i (take_max = 0) or max_i G_i, node by node; bound
+ * min_i bound_i (the most restrictive term).  With one convection term
+ * per control a, each upwinded for its own velocity f(x, a), min_i G_i =
+ * -max_a f(x, a) . grad phi: the Hamiltonian of theta_t + max_a f . grad
+ * theta = 0, by the upwinding of each control (a monotone scheme when each
+ * term is).  Holds one work array, allocated by init (HJ_ENOMEM) and
+ * released by hj_ls_extremum_free. */
+typedef struct {
+    hj_ls_term base;
+    const hj_ls_grid *grid;
+    int n;
+    int take_max;
+    const hj_ls_term *terms[HJ_LS_SUM_MAX];
+    double *work;
+} hj_ls_extremum;
+int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, int take_max,
+                        hj_error *err);
+void hj_ls_extremum_free(hj_ls_extremum *c);
+
 #endif

@@ -32,25 +32,45 @@ value 1 outside the domain):
 cell averages (7b) of the data, band maintenance of section 3.5.  The
 grid has N nodes per direction including both ends (dx = L/(N-1)).
 
+**Level set comparison.** The paper's "very simple RK2-ENO2 solver
+(without reinitialization), following Osher and Shu", on the common level
+set kernel (p3_ls.h): the same grid (level set values at the UB cell
+centres), ENO2 upwind derivatives, Heun's TVD RK2, the kernel's unsplit
+CFL bound with factor 0.5 (the paper's CFL 0.9 makes this scheme blow up,
+see the overview), ghost nodes by linear extrapolation.  Data: (12)
+min(max(|x1 - 1|, |x2|) - 0.5, 0.5) for the square, the same form
+min(|x|_inf - r, 0.5) for the rendez-vous target (r = dx for Table 9),
+(15) min(max(x2, -1), 1) for the half plane.  The rendez-vous Hamiltonian
+max_a f(x, a) . p is the node-by-node maximum of the two controls' upwind
+convection terms (hj_ls_extremum); Example 3's flow, which changes sign
+at T / 2, is integrated in two pieces, each with its sign frozen.  The
+errors are those of the UB runs (same L1 by signs at the cell centres,
+same Hausdorff estimate on the level set's sign set).  A front is lost
+when no node has V <= 0: then no error is given ('-', as in the paper),
+and ls_lost_t is the first time after a step at which it happened.
+
 **Measured.** L1 error = dx^2 #{cells whose sign differs from the exact
 sign at the centre}, Hausdorff distance between the computed front (the
 boundary cells of {V <= 0}) and the exact front sampled where it crosses
 the grid segments, Haus/dx, total CPU time (initialisation and steps) and
 its ratio between successive N (the published "Order" column).  CPU
-seconds themselves are not compared (2008 laptop).
+seconds themselves are not compared (2008 laptop).  The same errors for
+the level set runs (ls_*), with their CPU time, steps, the number of
+nodes with V <= 0 at T and the time the front was lost.
 
 **Parameters.** N = 50, 100, 200, 400 (Tables 6, 7), 51, 101, 201, 401
 (Tables 8, 9), 50, 100, 200 (Table 10); `--quick` runs the two smallest
 sizes of each table.
 
-**Output.** table6.tsv ... table10.tsv.  The level set (RK2-ENO2)
-columns are left empty: they need the common level set kernel.
+**Output.** table6.tsv ... table10.tsv (Table 10: ls_L1_t3, ls_haus_t3,
+ls_L1_t6, ls_haus_t6 beside the UB columns).
 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "hj_cli.h"
+#include "p3_ls.h"
 #include "p3_prog.h"
 #include "p3_ub.h"
 
@@ -117,6 +137,88 @@ typedef struct {
     double cpu, l1, haus, dx, steps, band;
     double l1b, hausb; /* Table 10: at t = 6 */
 } run_result;
+
+/* ---- the level set comparison (RK2-ENO2 on the common kernel, p3_ls.h) ---- */
+
+/* The Lipschitz data of the level set runs: (12) for the square, the same
+ * form min(|x|_inf - r, 0.5) for the rendez-vous target (the paper does not
+ * give it), (15) for the half plane. */
+static double phi_ls(const double *x, void *vctx)
+{
+    const ex2d *e = vctx;
+    if (e->example == 4) return x[1] < -1 ? -1 : x[1] > 1 ? 1 : x[1];
+    double r;
+    if (e->example == 3) r = fmax(fabs(x[0]), fabs(x[1])) - fabs(e->r);
+    else r = fmax(fabs(x[0] - 1), fabs(x[1])) - 0.5; /* (12): the square [0.5, 1.5] x [-0.5, 0.5] */
+    return r < 0.5 ? r : 0.5;
+}
+
+typedef struct {
+    double cpu, l1, haus, l1b, hausb, steps, lost_t;
+    int64_t cells, cellsb; /* #{V <= 0} at the end (Table 10: at t = 3 and t = 6) */
+} ls_result;
+
+/* Errors of the level set run; a lost front (no V <= 0) gives no error. */
+static int ls_errors(p3_ls *ls, ex2d *e, double *l1, double *haus, int64_t *cells, hj_error *err)
+{
+    const double rs = e->r; /* < 0: the thin target r = -rs = dx */
+    e->r = fabs(rs);
+    int rc = p3_ls_errors(ls, inside, e, l1, haus, cells, err);
+    if (!rc && rs < 0) { /* thin target: L1 against r = 0, as for UB */
+        double h0;
+        e->r = 0;
+        rc = p3_ls_errors(ls, inside, e, l1, &h0, NULL, err);
+    }
+    e->r = rs;
+    if (!rc && *cells == 0) *l1 = *haus = NAN;
+    return rc;
+}
+
+/* The same problem as run() (e as run() left it) by the level set method. */
+static int run_ls(ex2d *e, int n, ls_result *res, hj_error *err)
+{
+    const double dom = e->example == 1 || e->example == 2 ? -2 : -1, domhi = e->example == 4 ? 1 : 2;
+    const double lo[2] = {dom, dom}, hi[2] = {domhi, domhi};
+    const int ncontrols = e->example == 3 ? 2 : 1;
+    const double rr = e->r;
+    if (e->example == 3 && e->r < 0) e->r = (domhi - dom) / (n - 1); /* thin target r = dx for the data */
+    p3_ls ls;
+    const double c0 = p3_cpu();
+    int rc = p3_ls_init(&ls, 2, n, lo, hi, phi_ls, e, err);
+    e->r = rr;
+    hj_ls_convection conv[2];
+    p3_ls_control ctl[2];
+    const hj_ls_term *terms[2];
+    hj_ls_extremum hjb = {0};
+    for (int a = 0; a < ncontrols && !rc; a++) {
+        ctl[a] = (p3_ls_control){dyn, a, 0, 0, e};
+        hj_ls_convection_init(&conv[a], &ls.g, HJ_LS_ENO2);
+        conv[a].velocity_fn = p3_ls_velocity;
+        conv[a].ctx = &ctl[a];
+        terms[a] = &conv[a].base;
+    }
+    /* theta_t + max_a f(x, a) . grad theta = 0: G = min over the controls */
+    if (!rc) rc = hj_ls_extremum_init(&hjb, &ls.g, terms, ncontrols, 0, err);
+    const double tstop = e->example == 4 ? e->T / 2 : e->T;
+    if (e->example == 4) ctl[0].frozen = 1, ctl[0].tfix = 0; /* s = +1 up to T / 2 */
+    if (!rc) rc = p3_ls_run(&ls, &hjb.base, tstop, P3_LS_CFL, err);
+    res->cpu = p3_cpu() - c0;
+    e->t = tstop;
+    if (!rc) rc = ls_errors(&ls, e, &res->l1, &res->haus, &res->cells, err);
+    if (!rc && e->example == 4) {
+        const double c1 = p3_cpu();
+        ctl[0].tfix = e->T; /* s = -1 after */
+        rc = p3_ls_run(&ls, &hjb.base, e->T, P3_LS_CFL, err);
+        res->cpu += p3_cpu() - c1;
+        e->t = e->T;
+        if (!rc) rc = ls_errors(&ls, e, &res->l1b, &res->hausb, &res->cellsb, err);
+    }
+    res->steps = (double)ls.steps;
+    res->lost_t = ls.lost_t;
+    hj_ls_extremum_free(&hjb);
+    p3_ls_free(&ls);
+    return rc;
+}
 
 static int run(ex2d *e, int n, run_result *res, hj_error *err)
 {
@@ -201,9 +303,11 @@ int main(int argc, char **argv)
         FILE *fp = out.fp;
         fprintf(fp, "# %s: UB-HJB on the SSD band, computed by examples2d%s\n", sp->table, a.quick ? " --quick" : "");
         if (sp->e.example == 4)
-            fprintf(fp, "N\tcpu\tcpu_ratio\tL1_t3\thaus_t3\tL1_t6\thaus_t6\tsteps\tband\n");
+            fprintf(fp, "N\tcpu\tcpu_ratio\tL1_t3\thaus_t3\tL1_t6\thaus_t6\tsteps\tband"
+                        "\tls_L1_t3\tls_haus_t3\tls_L1_t6\tls_haus_t6\tls_cpu\tls_steps\n");
         else
-            fprintf(fp, "N\tcpu\tcpu_ratio\tL1\thaus\thaus_dx\tsteps\tband\tls_L1\tls_haus\tls_haus_dx\n");
+            fprintf(fp, "N\tcpu\tcpu_ratio\tL1\thaus\thaus_dx\tsteps\tband\tls_L1\tls_haus\tls_haus_dx"
+                        "\tls_cpu\tls_steps\tls_cells\tls_lost_t\n");
         double prev = NAN;
         for (int i = 0; i < ns; i++) {
             if (a.max_n && sizes[i] > a.max_n) continue;
@@ -211,15 +315,20 @@ int main(int argc, char **argv)
             run_result r;
             hj_progress("%s N=%ld ...\n", sp->table, sizes[i]);
             if (run(&e, (int)sizes[i], &r, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
-            char b[6][32];
+            ls_result q;
+            hj_progress("%s N=%ld level set ...\n", sp->table, sizes[i]);
+            if (run_ls(&e, (int)sizes[i], &q, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            char b[12][32];
             if (sp->e.example == 4)
-                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%s\t%.0f\t%.0f\n", sizes[i], r.cpu, p3_num(b[0], r.cpu / prev),
-                        p3_num(b[1], r.l1), p3_num(b[2], r.haus), p3_num(b[3], r.l1b), p3_num(b[4], r.hausb), r.steps,
-                        r.band);
+                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t%s\t%s\t%s\t%s\t%.3g\t%.0f\n", sizes[i], r.cpu,
+                        p3_num(b[0], r.cpu / prev), p3_num(b[1], r.l1), p3_num(b[2], r.haus), p3_num(b[3], r.l1b),
+                        p3_num(b[4], r.hausb), r.steps, r.band, p3_num(b[5], q.l1), p3_num(b[6], q.haus),
+                        p3_num(b[7], q.l1b), p3_num(b[8], q.hausb), q.cpu, q.steps);
             else
-                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t-\t-\t-\n", sizes[i], r.cpu,
-                        p3_num(b[0], r.cpu / prev), p3_num(b[1], r.l1), p3_num(b[2], r.haus),
-                        p3_num(b[3], r.haus / r.dx), r.steps, r.band);
+                fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t%s\t%s\t%s\t%.3g\t%.0f\t%lld\t%s\n", sizes[i],
+                        r.cpu, p3_num(b[0], r.cpu / prev), p3_num(b[1], r.l1), p3_num(b[2], r.haus),
+                        p3_num(b[3], r.haus / r.dx), r.steps, r.band, p3_num(b[4], q.l1), p3_num(b[5], q.haus),
+                        p3_num(b[6], q.haus / r.dx), q.cpu, q.steps, (long long)q.cells, p3_num(b[7], q.lost_t));
             prev = r.cpu;
         }
         if (hj_out_commit(&out, &err)) p3_die(a.prog, &err);

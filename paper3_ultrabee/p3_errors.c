@@ -248,6 +248,67 @@ static void crossing(int d, const double *x, const double *y, int in_x, p3_insid
     for (int i = 0; i < d; i++) out[i] = 0.5 * (a[i] + b[i]);
 }
 
+static void centre(int d, const double *lo, const double *dx, const int *idx, double *x)
+{
+    for (int k = 0; k < d; k++) x[k] = lo[k] + idx[k] * dx[k]; /* as p3_centre */
+}
+
+/* The exact signs of the lines already visited: lines are visited in
+ * order, and the -e_k neighbour line of line l is l - n^(d-2-k), so the
+ * last n^(d-2) + 1 lines are kept (n^(d-1) bytes). */
+typedef struct {
+    signed char *in;
+    int64_t slots;
+} sign_ring;
+
+static int ring_init(sign_ring *r, int d, int n)
+{
+    r->slots = 1;
+    for (int k = 0; k < d - 2; k++) r->slots *= n;
+    r->slots += 1;
+    r->in = malloc((size_t)r->slots * (size_t)n);
+    return r->in ? HJ_OK : HJ_ENOMEM;
+}
+
+/* One line along the last index (line number l, idx[0..d-2] set, vals its
+ * n values): the cells whose sign is wrong, and the crossings of the exact
+ * front between each cell and its -e_k neighbours (the lower cell first,
+ * as a sweep towards +e_k would find them), with the signs of the lower
+ * lines taken from the ring: inside() once per cell.  Shared by the band
+ * (UB) and the full grid (LS). */
+static int64_t line_errors(int d, int n, const double *lo, const double *dx, int64_t l, int *idx, const double *vals,
+                           sign_ring *ring, p3_inside_fn inside, void *ctx, double hmin, points *exact)
+{
+    int64_t wrong = 0;
+    signed char *in = &ring->in[(size_t)(l % ring->slots) * (size_t)n];
+    for (int i = 0; i < n; i++) {
+        double x[P3_DMAX];
+        idx[d - 1] = i;
+        centre(d, lo, dx, idx, x);
+        in[i] = (signed char)(inside(x, ctx) != 0);
+        wrong += (vals[i] <= ZERO) != (in[i] != 0);
+    }
+    int64_t stride = 1;
+    for (int k = d - 1; k >= 0; k--) {
+        if (k < d - 1 && idx[k] == 0) { stride *= k == d - 1 ? 1 : n; continue; }
+        const signed char *below = k == d - 1 ? in : &ring->in[(size_t)((l - stride) % ring->slots) * (size_t)n];
+        for (int i = k == d - 1 ? 1 : 0; i < n; i++) {
+            const int i_lo = k == d - 1 ? i - 1 : i;
+            if (below[i_lo] == in[i]) continue;
+            double x[P3_DMAX], y[P3_DMAX], c[P3_DMAX];
+            idx[d - 1] = i;
+            centre(d, lo, dx, idx, y);
+            idx[k]--; /* the lower cell's own centre */
+            centre(d, lo, dx, idx, x);
+            idx[k]++;
+            crossing(d, x, y, below[i_lo], inside, ctx, 1e-6 * hmin, c);
+            push(exact, c);
+        }
+        if (k < d - 1) stride *= n;
+    }
+    return wrong;
+}
+
 int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err)
 {
     const p3_problem *pb = sv->pb;
@@ -256,10 +317,11 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
     for (int k = 0; k < d - 1; k++) nl *= n;
     signed char *line = calloc((size_t)nl, 1);
     double *vals = malloc((size_t)n * sizeof *vals);
-    signed char *in = malloc((size_t)n);
+    sign_ring ring;
+    const int ring_rc = ring_init(&ring, d, n);
     points front = {NULL, 0, 0, d, 0}, exact = {NULL, 0, 0, d, 0};
     int rc = HJ_OK;
-    if (!line || !vals || !in) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (errors)"); goto done; }
+    if (!line || !vals || ring_rc) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (errors)"); goto done; }
     front_ctx fc = {sv, &front, line};
     p3_store_foreach(sv->s, visit_front, &fc);
     if ((rc = fill_lines(line, nl, d - 1, n, err))) goto done;
@@ -283,29 +345,7 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
         for (int i = 0; i < n; i++) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
         last = NAN;
         for (int i = n - 1; i >= 0; i--) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
-        for (int i = 0; i < n; i++) {
-            double x[P3_DMAX];
-            idx[d - 1] = i;
-            p3_centre(sv, idx, x);
-            in[i] = (signed char)(inside(x, ctx) != 0);
-            wrong += (vals[i] <= ZERO) != (in[i] != 0);
-        }
-        /* exact front: crossings towards the +e_k neighbours */
-        for (int i = 0; i < n; i++) {
-            double x[P3_DMAX], y[P3_DMAX], c[P3_DMAX];
-            idx[d - 1] = i;
-            p3_centre(sv, idx, x);
-            for (int k = 0; k < d; k++) {
-                if (idx[k] + 1 >= n) continue;
-                idx[k]++; /* the neighbour's own centre, as p3_centre rounds it */
-                p3_centre(sv, idx, y);
-                idx[k]--;
-                const int in_y = k == d - 1 ? in[i + 1] : inside(y, ctx) != 0;
-                if (in_y == in[i]) continue;
-                crossing(d, x, y, in[i], inside, ctx, 1e-6 * hmin, c);
-                push(&exact, c);
-            }
-        }
+        wrong += line_errors(d, n, pb->lo, sv->dx, l, idx, vals, &ring, inside, ctx, hmin, &exact);
     }
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
     *l1 = cellvol * (double)wrong;
@@ -313,7 +353,61 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
 done:
     free(line);
     free(vals);
-    free(in);
+    free(ring.in);
+    free(front.p);
+    free(exact.p);
+    return rc;
+}
+
+int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
+                    p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells, hj_error *err)
+{
+    double *vals = malloc((size_t)n * sizeof *vals);
+    sign_ring ring;
+    const int ring_rc = ring_init(&ring, d, n);
+    points front = {NULL, 0, 0, d, 0}, exact = {NULL, 0, 0, d, 0};
+    int rc = HJ_OK;
+    if (!vals || ring_rc) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (errors)"); goto done; }
+    int64_t nl = 1, wrong = 0, neg = 0;
+    for (int k = 0; k < d - 1; k++) nl *= n;
+    double cellvol = 1, hmin = dx[0];
+    for (int k = 0; k < d; k++) {
+        cellvol *= dx[k];
+        hmin = dx[k] < hmin ? dx[k] : hmin;
+    }
+    for (int64_t l = 0; l < nl; l++) {
+        int idx[P3_DMAX], j[P3_DMAX];
+        int64_t r = l;
+        for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
+        for (int i = 0; i < n; i++) {
+            idx[d - 1] = i;
+            vals[i] = value(idx, vctx);
+            if (vals[i] > ZERO) continue;
+            neg++;
+            /* the computed front: {V <= 0} cells with a face neighbour V > 0 */
+            memcpy(j, idx, sizeof j);
+            int edge = 0;
+            for (int k = 0; k < d && !edge; k++)
+                for (int s = -1; s <= 1 && !edge; s += 2) {
+                    j[k] = idx[k] + s;
+                    edge = j[k] >= 0 && j[k] < n && value(j, vctx) > ZERO;
+                    j[k] = idx[k];
+                }
+            if (edge) {
+                double x[P3_DMAX];
+                centre(d, lo, dx, idx, x);
+                push(&front, x);
+            }
+        }
+        wrong += line_errors(d, n, lo, dx, l, idx, vals, &ring, inside, ctx, hmin, &exact);
+    }
+    if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
+    *l1 = cellvol * (double)wrong;
+    if (ncells) *ncells = neg;
+    rc = p3_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
+done:
+    free(vals);
+    free(ring.in);
     free(front.p);
     free(exact.p);
     return rc;

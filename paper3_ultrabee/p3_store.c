@@ -344,6 +344,34 @@ double *p3_store_find(p3_store *s, const int *idx)
     }
 }
 
+void p3_store_find_run(p3_store *s, const int *idx, int m, double **out)
+{
+    const int last = s->d - 1;
+    int j[P3_DMAX], k0 = 0;
+    memcpy(j, idx, sizeof j);
+    while (k0 < m && idx[last] + k0 < 0) out[k0++] = NULL; /* below the grid */
+    if (k0 < m && idx[last] + k0 < s->n && s->kind != P3_FS && s->kind != P3_FLS && s->kind != P3_SSDA) {
+        j[last] = idx[last] + k0;
+        p3_list *l = list_of(s, j, 0, NULL);
+        int32_t q = -1, pred;
+        int64_t key = 0;
+        if (l && l->n) {
+            key = compress(s, j, s->split, s->d);
+            q = list_search(l, key, 1, &pred); /* from the list's last position */
+            if (q < 0) q = pred >= 0 ? l->pool[pred].next : l->head; /* the first key above */
+        }
+        for (int k = k0; k < m; k++, key++) {
+            while (q >= 0 && l->pool[q].key < key) q = l->pool[q].next;
+            out[k] = idx[last] + k < s->n && q >= 0 && l->pool[q].key == key ? &l->pool[q].v : NULL;
+        }
+        return;
+    }
+    for (int k = k0; k < m; k++) {
+        j[last] = idx[last] + k;
+        out[k] = j[last] < s->n ? p3_store_find(s, j) : NULL;
+    }
+}
+
 int p3_store_insert(p3_store *s, const int *idx, double v, hj_error *err)
 {
     if (s->kind == P3_FS || s->kind == P3_FLS) {

@@ -89,15 +89,6 @@ static int offsets(int d, int off[][P3_DMAX])
     return m;
 }
 
-static int shifted(const p3_solver *sv, const int *idx, const int *o, int *j)
-{
-    for (int i = 0; i < sv->pb->d; i++) {
-        j[i] = idx[i] + o[i];
-        if (j[i] < 0 || j[i] >= sv->pb->n) return 0;
-    }
-    return 1;
-}
-
 /* ---- averages of the initial data (7b) ----------------------------------- */
 
 double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi)
@@ -287,24 +278,73 @@ static int collect(const int *idx, double *v, void *vctx)
     return 0;
 }
 
+/* The 3^(d-1) offsets of the first d - 1 indices (the last index left 0):
+ * Neigh(I) is walked as 3^(d-1) runs of 3 nodes along the last index, each
+ * run one search of the store (p3_store_find_run). */
+static int line_offsets(int d, int off[][P3_DMAX])
+{
+    int m = 0, total = 1;
+    for (int i = 0; i < d - 1; i++) total *= 3;
+    for (int c = 0; c < total; c++, m++) {
+        int r = c;
+        for (int i = 0; i < d - 1; i++) {
+            off[m][i] = r % 3 - 1;
+            r /= 3;
+        }
+        off[m][d - 1] = -1; /* the run starts one below */
+    }
+    return m;
+}
+
+/* The values of Neigh(I) in runs: p[3 r + k] for line offset r and last
+ * index offset k - 1 (NULL: not stored); in[3 r + k] whether the node is in
+ * the grid and not I itself. */
+static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int nl, double **p, char *in)
+{
+    const int d = sv->pb->d, n = sv->pb->n;
+    for (int r = 0; r < nl; r++) {
+        int j[P3_DMAX], ok = 1, zero = 1;
+        for (int i = 0; i < d; i++) {
+            j[i] = idx[i] + loff[r][i];
+            if (i < d - 1) {
+                ok &= j[i] >= 0 && j[i] < n;
+                zero &= loff[r][i] == 0;
+            }
+        }
+        if (ok) p3_store_find_run(sv->s, j, 3, &p[3 * r]);
+        for (int k = 0; k < 3; k++)
+            in[3 * r + k] = (char)(ok && j[d - 1] + k >= 0 && j[d - 1] + k < n && !(zero && k == 1));
+    }
+}
+
 /* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the +-1 node
  * it neighbours. */
-static int expand_band(p3_solver *sv, int off[][P3_DMAX], int noff, hj_error *err)
+static int expand_band(p3_solver *sv, hj_error *err)
 {
     const int d = sv->pb->d;
     int rc = reserve(sv, p3_store_count(sv->s), err);
     if (rc) return rc;
+    int loff[27][P3_DMAX];
+    const int nl = line_offsets(d, loff);
+    double *p[81];
+    char in[81];
     collect_ctx c = {sv, 0};
     p3_store_foreach(sv->s, collect, &c);
     for (size_t i = 0; i < c.m; i++) {
         int idx[P3_DMAX], j[P3_DMAX];
         unlin(d, sv->pb->n, sv->lin[i], idx);
-        for (int o = 0; o < noff; o++) {
-            if (!shifted(sv, idx, off[o], j) || p3_store_find(sv->s, j)) continue;
-            if (sv->v0[i] != 1 && sv->v0[i] != -1)
-                return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
-            if ((rc = p3_store_insert(sv->s, j, sv->v0[i], err))) return rc;
-        }
+        neighbours(sv, idx, loff, nl, p, in);
+        /* presence is known before the inserts, which do not change it for
+         * the other nodes of Neigh(I) */
+        for (int r = 0; r < nl; r++)
+            for (int k = 0; k < 3; k++) {
+                if (!in[3 * r + k] || p[3 * r + k]) continue;
+                if (sv->v0[i] != 1 && sv->v0[i] != -1)
+                    return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
+                for (int q = 0; q < d; q++) j[q] = idx[q] + loff[r][q];
+                j[d - 1] += k;
+                if ((rc = p3_store_insert(sv->s, j, sv->v0[i], err))) return rc;
+            }
     }
     return HJ_OK;
 }
@@ -400,16 +440,16 @@ static void sweep(p3_solver *sv, size_t m, int k, int a, double dt)
     }
 }
 
-static int equal_to_neighbours(p3_solver *sv, size_t i, int off[][P3_DMAX], int noff)
+static int equal_to_neighbours(p3_solver *sv, size_t i, int loff[][P3_DMAX], int nl)
 {
-    int idx[P3_DMAX], j[P3_DMAX];
+    int idx[P3_DMAX];
+    double *p[81];
+    char in[81];
     const double v = sv->vmin[i];
     unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
-    for (int o = 0; o < noff; o++) {
-        if (!shifted(sv, idx, off[o], j)) continue;
-        const double *p = p3_store_find(sv->s, j);
-        if ((p ? *p : sv->v0[i]) != v) return 0;
-    }
+    neighbours(sv, idx, loff, nl, p, in);
+    for (int o = 0; o < 3 * nl; o++)
+        if (in[o] && (p[o] ? *p[o] : sv->v0[i]) != v) return 0;
     return 1;
 }
 
@@ -417,11 +457,11 @@ int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
 {
     const p3_problem *pb = sv->pb;
     const int d = pb->d;
-    int off[81][P3_DMAX];
-    const int noff = offsets(d, off);
+    int loff[27][P3_DMAX];
+    const int nl = line_offsets(d, loff);
     int rc;
     if (!(tmax > sv->t)) return HJ_OK;
-    if (p3_store_kind(sv->s) != P3_FS && (rc = expand_band(sv, off, noff, err))) return rc;
+    if (p3_store_kind(sv->s) != P3_FS && (rc = expand_band(sv, err))) return rc;
     size_t m;
     if ((rc = snapshot(sv, &m, err))) return rc;
     sv->band_sum += (double)m;
@@ -462,7 +502,7 @@ int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
     if (p3_store_kind(sv->s) != P3_FS) {
         size_t r = 0;
         for (size_t i = 0; i < m; i++)
-            if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, off, noff))
+            if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, loff, nl))
                 sv->lin[r++] = sv->lin[i];
         for (size_t i = 0; i < r; i++) {
             int idx[P3_DMAX];

@@ -110,6 +110,13 @@ void p3_centre(const p3_solver *sv, const int *idx, double *x);
 typedef int (*p3_inside_fn)(const double *x, void *ctx);
 int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err);
 
+/* The same errors for values on the full grid of n^d cell centres lo + i dx
+ * (the level set runs): value(idx) is V at cell idx.  *ncells (may be
+ * NULL) receives #{V <= 0}; an empty computed set gives haus = +inf. */
+typedef double (*p3_value_fn)(const int *idx, void *ctx);
+int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
+                    p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells, hj_error *err);
+
 /* Helpers for avg0: the exact average of +-1 data for a box target, and a
  * sampled one (m^d points per box, exact away from the sphere) for a ball. */
 double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi);

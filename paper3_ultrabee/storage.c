@@ -21,7 +21,8 @@ nodes with a face neighbour on the other side, stored with values +-1.
   successive n (the published "Order") and SSD/FLS.
 * Table 3 -- update (d = 3): insert every face neighbour of F+ that is not
   stored (value ND), then remove every node of F-; only the inserts and
-  removes are timed.
+  removes are timed.  Which nodes to insert depends on the band only: it
+  is found once per front, not once per structure.
 * Table 4 -- memory (d = 3, Example 1): bytes allocated by the structure
   holding the band, in MB (10^6 bytes), and its ratio between successive
   n.  The published "Out of mem." cells came from a 4 GB laptop: the
@@ -168,10 +169,30 @@ static int cmp64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static int time_update(p3_kind kind, const p3_front *f, double *secs, hj_error *err)
+/* The operations of the update test, which depend on the band only, not on
+ * the structure: the face neighbours of F+ that are not stored (sorted,
+ * each once) and F- in the order of the band.  Found once per front in an
+ * SSDA store (bisection in contiguous lines): a find in the LS list walks
+ * from its last position, and the +-e_0 neighbours lie a whole plane of
+ * the band away (at N = 800 this untimed search took most of the run
+ * when it was done in every structure). */
+typedef struct {
+    int64_t *ins, *minus;
+    size_t nins, nminus;
+} update_ops;
+
+static void update_ops_free(update_ops *u)
 {
+    free(u->ins);
+    free(u->minus);
+    memset(u, 0, sizeof *u);
+}
+
+static int update_lists(const p3_front *f, update_ops *u, hj_error *err)
+{
+    memset(u, 0, sizeof *u);
     p3_store *s;
-    int rc = p3_store_new(&s, kind, f->d, f->n, err);
+    int rc = p3_store_new(&s, P3_SSDA, f->d, f->n, err);
     if (rc) return rc;
     build_ctx c = {s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
     c.plus = malloc(sizeof *c.plus);
@@ -179,9 +200,7 @@ static int time_update(p3_kind kind, const p3_front *f, double *secs, hj_error *
     if (!c.plus) { p3_store_free(s); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
     p3_front_band(f, add_node, &c, err);
     rc = c.rc;
-    /* the face neighbours of F+ that are not stored, each once */
-    int64_t *ins = NULL;
-    size_t nins = 0, capins = 0;
+    size_t capins = 0;
     for (size_t i = 0; i < c.nplus && !rc; i++) {
         int idx[P3_DMAX];
         unlin(f->d, f->n, c.plus[i], idx);
@@ -189,33 +208,46 @@ static int time_update(p3_kind kind, const p3_front *f, double *secs, hj_error *
             for (int sg = -1; sg <= 1 && !rc; sg += 2) {
                 idx[k] += sg;
                 if (idx[k] >= 0 && idx[k] < f->n && !p3_store_find(s, idx) &&
-                    push(&ins, &nins, &capins, lin(f->d, f->n, idx)))
+                    push(&u->ins, &u->nins, &capins, lin(f->d, f->n, idx)))
                     rc = hj_error_set(err, HJ_ENOMEM, "out of memory (update lists)");
                 idx[k] -= sg;
             }
     }
     if (!rc) {
-        qsort(ins, nins, sizeof *ins, cmp64);
+        qsort(u->ins, u->nins, sizeof *u->ins, cmp64);
         size_t m = 0;
-        for (size_t i = 0; i < nins; i++)
-            if (m == 0 || ins[i] != ins[m - 1]) ins[m++] = ins[i];
-        nins = m;
-        const double t0 = p3_cpu();
-        for (size_t i = 0; i < nins && !rc; i++) {
-            int idx[P3_DMAX];
-            unlin(f->d, f->n, ins[i], idx);
-            rc = p3_store_insert(s, idx, 1.0, err);
-        }
-        for (size_t i = 0; i < c.nminus && !rc; i++) {
-            int idx[P3_DMAX];
-            unlin(f->d, f->n, c.minus[i], idx);
-            p3_store_remove(s, idx);
-        }
-        *secs = p3_cpu() - t0;
+        for (size_t i = 0; i < u->nins; i++)
+            if (m == 0 || u->ins[i] != u->ins[m - 1]) u->ins[m++] = u->ins[i];
+        u->nins = m;
     }
-    free(ins);
+    u->minus = c.minus;
+    u->nminus = c.nminus;
     free(c.plus);
-    free(c.minus);
+    p3_store_free(s);
+    if (rc) update_ops_free(u);
+    return rc;
+}
+
+/* Build the band in a store of the given kind, then time the inserts of
+ * the unstored neighbours of F+ and the removal of F-. */
+static int time_update(p3_kind kind, const p3_front *f, const update_ops *u, double *secs, hj_error *err)
+{
+    p3_store *s;
+    size_t nb;
+    int rc = build(&s, kind, f, &nb, err);
+    if (rc) return rc;
+    const double t0 = p3_cpu();
+    for (size_t i = 0; i < u->nins && !rc; i++) {
+        int idx[P3_DMAX];
+        unlin(f->d, f->n, u->ins[i], idx);
+        rc = p3_store_insert(s, idx, 1.0, err);
+    }
+    for (size_t i = 0; i < u->nminus && !rc; i++) {
+        int idx[P3_DMAX];
+        unlin(f->d, f->n, u->minus[i], idx);
+        p3_store_remove(s, idx);
+    }
+    *secs = p3_cpu() - t0;
     p3_store_free(s);
     return rc;
 }
@@ -302,14 +334,18 @@ static void update_table(const p3_args *a, hj_error *err)
             build_ctx count = {NULL, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f.n, 3};
             p3_front_band(&f, add_node, &count, err);
             fprintf(out.fp, "%d\t%ld\t%zu", ex, sizes[i], count.nb);
+            update_ops u;
+            int rc = update_lists(&f, &u, err);
+            if (rc) p3_die(a->prog, err);
             for (int k = 0; k < NUK; k++) {
                 t[k][i] = NAN;
                 if (!affordable(t[k], i, 3)) continue;
                 hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], p3_kind_name(UPDATE_KINDS[k]));
-                const int rc = time_update(UPDATE_KINDS[k], &f, &t[k][i], err);
+                rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k][i], err);
                 if (rc == HJ_ENOMEM) { t[k][i] = NAN; continue; }
                 if (rc) p3_die(a->prog, err);
             }
+            update_ops_free(&u);
             for (int k = 0; k < NUK; k++) {
                 char b1[32], b2[32];
                 fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k][i]), p3_num(b2, i ? t[k][i] / t[k][i - 1] : NAN));

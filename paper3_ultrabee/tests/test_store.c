@@ -131,10 +131,47 @@ static void out_of_memory_and_bad_args(void **state)
     assert_int_equal(p3_kind_from_name("XYZ"), -1);
 }
 
+/* p3_store_find_run gives what p3_store_find gives, node by node, for
+ * every kind, every start (including -1 and runs leaving the grid), with
+ * searches interleaved with inserts and removes in random order. */
+static void find_run_equals_find(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 4; d++)
+        for (int kind = 0; kind < P3_NKINDS; kind++) {
+            const int n = d == 4 ? 7 : 11;
+            p3_store *s;
+            assert_int_equal(p3_store_new(&s, (p3_kind)kind, d, n, NULL), HJ_OK);
+            unsigned seed = 7u + (unsigned)(d * 10 + kind);
+            for (int it = 0; it < 4000; it++) {
+                int idx[P3_DMAX];
+                for (int k = 0; k < d; k++) idx[k] = (int)(rnd(&seed) % (unsigned)n);
+                const unsigned op = rnd(&seed) % 4;
+                if (op == 0) assert_int_equal(p3_store_insert(s, idx, (double)it, NULL), HJ_OK);
+                else if (op == 1) p3_store_remove(s, idx);
+                else {
+                    idx[d - 1] = (int)(rnd(&seed) % (unsigned)(n + 1)) - 1; /* -1 .. n-1 */
+                    const int m = 1 + (int)(rnd(&seed) % 3);
+                    double *run[3];
+                    p3_store_find_run(s, idx, m, run);
+                    for (int k = 0; k < m; k++) {
+                        int j[P3_DMAX];
+                        memcpy(j, idx, sizeof j);
+                        j[d - 1] += k;
+                        double *one = j[d - 1] >= 0 && j[d - 1] < n ? p3_store_find(s, j) : NULL;
+                        assert_true(run[k] == one);
+                    }
+                }
+            }
+            p3_store_free(s);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_sequence_all_kinds),
+        cmocka_unit_test(find_run_equals_find),
         cmocka_unit_test(full_storage_holds_every_node),
         cmocka_unit_test(out_of_memory_and_bad_args),
     };

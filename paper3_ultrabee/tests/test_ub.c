@@ -211,6 +211,47 @@ static void averages(void **state)
     assert_true(p3_avg_ball(3, lo3, hi3, far, 1, 4) == 1);
 }
 
+/* p3_field_errors on the values of a full store gives the errors of
+ * p3_solver_errors (the level set runs are measured as UB is), in 2-D and
+ * 3-D (lines of lines: the signs of the lower lines come from a ring). */
+typedef struct {
+    p3_solver *sv;
+} field_ctx;
+
+static double field_value(const int *idx, void *vctx)
+{
+    field_ctx *f = vctx;
+    const double *p = p3_store_find(f->sv->s, idx);
+    return p ? *p : NAN;
+}
+
+static void field_errors_equal_solver_errors(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 3; d++) {
+        box_case c = {{0.5, -0.5, -0.4}, {1.5, 0.5, d == 3 ? 0.4 : -0.4}, {-2, -1, 0}, 1, 0};
+        p3_problem pb = square_problem(&c, d == 3 ? 21 : 41);
+        pb.d = d;
+        pb.lo[2] = -2;
+        pb.hi[2] = 2;
+        p3_solver sv;
+        assert_int_equal(p3_solver_init(&sv, &pb, P3_FS, NULL), HJ_OK);
+        assert_int_equal(p3_solver_run(&sv, 0.4, NULL), HJ_OK);
+        c.t = 0.4;
+        double l1, haus, l1f, hausf;
+        int64_t cells = -1;
+        assert_int_equal(p3_solver_errors(&sv, inside_moved, &c, &l1, &haus, NULL), HJ_OK);
+        field_ctx fc = {&sv};
+        assert_int_equal(p3_field_errors(d, pb.n, pb.lo, sv.dx, field_value, &fc, inside_moved, &c, &l1f, &hausf, &cells,
+                                         NULL),
+                         HJ_OK);
+        assert_true(l1 > 0 && haus > 0 && cells > 0);
+        assert_true(l1f == l1);
+        assert_true(hausf == haus);
+        p3_solver_free(&sv);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -218,6 +259,7 @@ int main(void)
         cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
         cmocka_unit_test(hausdorff_of_point_sets),
         cmocka_unit_test(averages),
+        cmocka_unit_test(field_errors_equal_solver_errors),
     };
     return cmocka_run_group_tests_name("p3_ub", tests, NULL, NULL);
 }
