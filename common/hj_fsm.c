@@ -296,38 +296,19 @@ static int classify(work *w, const hj_grid2 *g, const hj_inflow *in, int nin, hj
     return HJ_OK;
 }
 
-/* Richardson extrapolation (2.9) for the Category III nodes of piece c:
- * first order solutions on h, h/2, h/4 in the box of those nodes (for a
- * point source exactly [-2h, 2h]^2, as in Example 1; for a curve the nodes'
- * bounding box widened by two nodes).  Every fine node on an inflow piece is
- * fixed at its data.  Why two: near a corner of the box domain a Category
- * III node belongs to the nearer edge, so an edge's nodes start one node in
- * from the corner; widened by one, the box's end column then lies off the
- * neighbouring edge, has no inflow data, and its outflow value spoils the
- * corner nodes (Example 2 (a): 3.6e-7 instead of exact).  Widened by two,
- * the box reaches the neighbouring edge and the local solution equals the
- * global first order one (exact for Example 2 (a)). */
-static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int nin, int c,
-                      int max_iter, hj_error *err)
+/* A rectangle of grid nodes, ilo..ihi x jlo..jhi. */
+typedef struct {
+    int ilo, ihi, jlo, jhi;
+} node_box;
+
+/* Richardson extrapolation (2.9) in one box: first order solutions on h,
+ * h/2, h/4 in the box, every fine node on an inflow piece fixed at its
+ * data, nodes outside the box absent.  Writes the Category III nodes of
+ * piece c inside the box, or only node (ti, tj) when ti >= 0. */
+static int richardson_box(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int nin, int c,
+                          node_box bx, int ti, int tj, int max_iter, hj_error *err)
 {
-    int ilo = w->nx, ihi = 0, jlo = w->ny, jhi = 0;
-    for (int j = 0; j <= w->ny; j++)
-        for (int i = 0; i <= w->nx; i++) {
-            long k = widx(w, i, j);
-            if (w->cat[k] != CAT_III || w->owner[k] != c) continue;
-            if (i < ilo) ilo = i;
-            if (i > ihi) ihi = i;
-            if (j < jlo) jlo = j;
-            if (j > jhi) jhi = j;
-        }
-    if (ilo > ihi) return HJ_OK; /* no Category III nodes for this piece */
-    if (in[c].type == HJ_INFLOW_CURVE) {
-        ilo = ilo > 2 ? ilo - 2 : 0;
-        jlo = jlo > 2 ? jlo - 2 : 0;
-        ihi = ihi < w->nx - 2 ? ihi + 2 : w->nx;
-        jhi = jhi < w->ny - 2 ? jhi + 2 : w->ny;
-    }
-    const int mx = ihi - ilo, my = jhi - jlo;
+    const int mx = bx.ihi - bx.ilo, my = bx.jhi - bx.jlo;
     const int ratios[3] = {1, 2, 4};
     double *sol[3] = {NULL, NULL, NULL};
     int rc = HJ_OK;
@@ -348,7 +329,7 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
         for (int b = 0; b <= fny; b++)
             for (int a = 0; a <= fnx; a++) {
                 const long k = (long)b * (fnx + 1) + a;
-                const double x = g->x0 + ilo * g->h + a * hf, y = g->y0 + jlo * g->h + b * hf;
+                const double x = g->x0 + bx.ilo * g->h + a * hf, y = g->y0 + bx.jlo * g->h + b * hf;
                 fh[k] = speed_at(sp, x, y) * hf;
                 fixed[k] = 0;
                 for (int q = 0; q < nin; q++)
@@ -368,23 +349,80 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
         free(fh);
         free(fixed);
     }
-    if (rc == HJ_OK)
-        for (int j = jlo; j <= jhi; j++)
-            for (int i = ilo; i <= ihi; i++) {
-                long k = widx(w, i, j);
-                if (w->cat[k] != CAT_III || w->owner[k] != c) continue;
-                const int a = i - ilo, b = j - jlo;
-                const double I1 = sol[0][(long)b * (mx + 1) + a];
-                const double I2 = sol[1][(long)(2 * b) * (2 * mx + 1) + 2 * a];
-                const double I4 = sol[2][(long)(4 * b) * (4 * mx + 1) + 4 * a];
-                if (I1 >= FAR || I2 >= FAR || I4 >= FAR) {
-                    rc = hj_error_set(err, HJ_EINVAL, "Richardson box of inflow piece %d: node (%d, %d) not reached", c, i, j);
-                    break;
-                }
-                w->p[k] = I1 / 3.0 - 2.0 * I2 + 8.0 / 3.0 * I4; /* (2.9) */
+    for (int j = bx.jlo; j <= bx.jhi && rc == HJ_OK; j++)
+        for (int i = bx.ilo; i <= bx.ihi; i++) {
+            long k = widx(w, i, j);
+            if (w->cat[k] != CAT_III || w->owner[k] != c || (ti >= 0 && (i != ti || j != tj))) continue;
+            const int a = i - bx.ilo, b = j - bx.jlo;
+            const double I1 = sol[0][(long)b * (mx + 1) + a];
+            const double I2 = sol[1][(long)(2 * b) * (2 * mx + 1) + 2 * a];
+            const double I4 = sol[2][(long)(4 * b) * (4 * mx + 1) + 4 * a];
+            if (I1 >= FAR || I2 >= FAR || I4 >= FAR) {
+                rc = hj_error_set(err, HJ_EINVAL, "Richardson box of inflow piece %d: node (%d, %d) not reached", c, i, j);
+                break;
             }
+            w->p[k] = I1 / 3.0 - 2.0 * I2 + 8.0 / 3.0 * I4; /* (2.9) */
+        }
     for (int r = 0; r < 3; r++) free(sol[r]);
     return rc;
+}
+
+static node_box clip_box(const work *w, int ilo, int ihi, int jlo, int jhi)
+{
+    node_box b = {ilo < 0 ? 0 : ilo, ihi > w->nx ? w->nx : ihi, jlo < 0 ? 0 : jlo, jhi > w->ny ? w->ny : jhi};
+    return b;
+}
+
+/* Richardson extrapolation for the Category III nodes of piece c.
+ *
+ * A point source: one box, exactly [-2h, 2h]^2 around it (Example 1).
+ *
+ * A curve, HJ_RICH_BOX_NODE (the paper's reading, the default): each node
+ * gets its own box [-Rh, Rh]^2 (R = 2, more when the band is wider so that
+ * the box reaches the curve), the "small box [-2h, 2h]^2" in which
+ * Example 1 applies the local sweeps.  The box cuts off part of the
+ * node's domain of dependence along the curve, so the values are only
+ * third order accurate even where first order sweeps are exact: this is
+ * what reproduces Table 3.2 (a) (3.5e-6 and orders 3.5-3.6 against the
+ * paper's 3.45e-6 and 3.51-3.59), which the paper says is "only high order
+ * accurate but not exact to round-off".
+ *
+ * A curve, HJ_RICH_BOX_PIECE: one box, the bounding box of the piece's
+ * nodes widened by two nodes.  Why two: near a corner of the box domain a
+ * Category III node belongs to the nearer edge, so an edge's nodes start
+ * one node in from the corner; widened by one, the box's end column then
+ * lies off the neighbouring edge, has no inflow data, and its outflow value
+ * spoils the corner nodes (Example 2 (a): 3.6e-7 instead of exact).
+ * Widened by two, the box reaches the neighbouring edge and the local
+ * solution equals the global first order one (exact for Example 2 (a)). */
+static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int nin, int c,
+                      const hj_fsm_options *opt, hj_error *err)
+{
+    int ilo = w->nx, ihi = 0, jlo = w->ny, jhi = 0;
+    for (int j = 0; j <= w->ny; j++)
+        for (int i = 0; i <= w->nx; i++) {
+            long k = widx(w, i, j);
+            if (w->cat[k] != CAT_III || w->owner[k] != c) continue;
+            if (i < ilo) ilo = i;
+            if (i > ihi) ihi = i;
+            if (j < jlo) jlo = j;
+            if (j > jhi) jhi = j;
+        }
+    if (ilo > ihi) return HJ_OK; /* no Category III nodes for this piece */
+    if (in[c].type == HJ_INFLOW_POINT)
+        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo, ihi, jlo, jhi), -1, -1, opt->max_iter, err);
+    if (opt->richardson_box == HJ_RICH_BOX_PIECE)
+        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo - 2, ihi + 2, jlo - 2, jhi + 2), -1, -1,
+                              opt->max_iter, err);
+    const int R = opt->band > 3 ? (int)ceil(opt->band) - 1 : 2;
+    for (int j = jlo; j <= jhi; j++)
+        for (int i = ilo; i <= ihi; i++) {
+            long k = widx(w, i, j);
+            if (w->cat[k] != CAT_III || w->owner[k] != c) continue;
+            int rc = richardson_box(w, g, sp, in, nin, c, clip_box(w, i - R, i + R, j - R, j + R), i, j, opt->max_iter, err);
+            if (rc != HJ_OK) return rc;
+        }
+    return HJ_OK;
 }
 
 /* First order solution on the whole grid with Categories I and III fixed
@@ -448,8 +486,10 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
     if (!(g->h > 0) || !isfinite(g->h) || !isfinite(g->x0) || !isfinite(g->y0))
         return hj_error_set(err, HJ_EINVAL, "grid spacing and origin must be finite, h > 0");
     if (!(opt->eps > 0) || !isfinite(opt->eps) || !(opt->delta >= 0) || !isfinite(opt->delta) || opt->max_iter < 1 ||
-        !(opt->band >= 1 && opt->band <= 10))
-        return hj_error_set(err, HJ_EINVAL, "options: need eps > 0, delta >= 0 finite, 1 <= band <= 10, max_iter >= 1");
+        !(opt->band >= 1 && opt->band <= 10) ||
+        (opt->richardson_box != HJ_RICH_BOX_NODE && opt->richardson_box != HJ_RICH_BOX_PIECE))
+        return hj_error_set(err, HJ_EINVAL, "options: need eps > 0, delta >= 0 finite, 1 <= band <= 10, max_iter >= 1, "
+                                            "a valid Richardson box");
     if (nin < 1) return hj_error_set(err, HJ_EINVAL, "no inflow boundary given");
     for (int c = 0; c < nin; c++)
         if (in[c].type == HJ_INFLOW_CURVE && (!in[c].level || !in[c].local))
@@ -488,7 +528,7 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
 
     /* Category III values, then the first order initial guess. */
     if (rc == HJ_OK && opt->strategy == HJ_BC_RICHARDSON)
-        for (int c = 0; c < nin && rc == HJ_OK; c++) rc = richardson(&w, g, sp, in, nin, c, opt->max_iter, err);
+        for (int c = 0; c < nin && rc == HJ_OK; c++) rc = richardson(&w, g, sp, in, nin, c, opt, err);
     if (rc == HJ_OK && opt->strategy == HJ_BC_LAX_WENDROFF)
         for (int j = 0; j <= g->ny && rc == HJ_OK; j++)
             for (int i = 0; i <= g->nx && rc == HJ_OK; i++) {

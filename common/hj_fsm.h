@@ -79,6 +79,15 @@ typedef struct {
 } hj_inflow;
 
 typedef enum { HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER } hj_bc_strategy;
+/* Where the local first order sweeps of Richardson extrapolation run for
+ * an inflow curve (point sources always use [-2h, 2h]^2 around the source):
+ *   HJ_RICH_BOX_NODE   a box [-2h, 2h]^2 around each Category III node
+ *                      (the paper's "small box"; third order accurate:
+ *                      reproduces Table 3.2);
+ *   HJ_RICH_BOX_PIECE  one box around all the piece's Category III nodes,
+ *                      reaching the neighbouring pieces (more accurate:
+ *                      exact wherever first order sweeps are). */
+typedef enum { HJ_RICH_BOX_NODE, HJ_RICH_BOX_PIECE } hj_rich_box;
 /* Norms of (2.8): mean |change| over the nodes, h^2 sum |change| (the L1
  * integral, as the paper's L1 errors), max |change|. */
 typedef enum { HJ_STOP_L1_MEAN, HJ_STOP_L1_INTEGRAL, HJ_STOP_LINF } hj_stop_norm;
@@ -92,6 +101,7 @@ typedef struct {
     int first_order_only;   /* stop after the first order initial guess */
     double band;            /* Category III: distance to a curve < band h,
                              * horizontally or vertically (paper: 3) */
+    hj_rich_box richardson_box; /* local boxes of Richardson for curves */
     /* Called after every iteration when not NULL (progress display). */
     void (*progress)(int iter, double change, void *ctx);
     void *progress_ctx;
@@ -105,7 +115,7 @@ typedef struct {
 } hj_fsm_stats;
 
 /* Default options: Lax-Wendroff, eps = 1e-6, delta = 1e-11 in the L1
- * integral norm, band = 3, max_iter = 10000 (the reading of paper 1's
+ * integral norm, band = 3, Richardson boxes around each node, max_iter = 10000 (the reading of paper 1's
  * illegible delta that reproduces its iteration counts). */
 hj_fsm_options hj_fsm_default_options(void);
 

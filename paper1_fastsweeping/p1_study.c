@@ -30,6 +30,7 @@ typedef struct {
     int l1_integral;
     int open_boxes;
     double band;
+    hj_rich_box richardson_box;
     int max_iter;
     long grid_N;
     hj_bc_strategy strategy;
@@ -110,6 +111,7 @@ static int run_one(const p1_study *st, const settings *s, const p1_case *c, long
     opt.stop_norm = s->stop_norm;
     opt.max_iter = s->max_iter;
     opt.band = s->band;
+    opt.richardson_box = s->richardson_box;
     progress_ctx pc = {st->program, c->name, N};
     opt.progress = show_progress;
     opt.progress_ctx = &pc;
@@ -223,7 +225,7 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
 /* The options that take a value (all others but --help, --quick are unknown). */
 static int takes_value(const char *a)
 {
-    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy"};
+    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box"};
     for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
         if (!strcmp(a, opts[k])) return 1;
     return 0;
@@ -245,6 +247,8 @@ static void usage(FILE *f, const p1_study *st, const char *extra)
             "  --l1 M              integral (h^2 sum |e|, default) | mean (mean |e| over measured nodes)\n"
             "  --exclude M         closed (default: nodes on a box edge are not measured) | open (they are)\n"
             "  --band B            Category III: horizontal/vertical distance < B h to a curve (default 3)\n"
+            "  --richardson-box M  node (default: the paper's [-2h, 2h]^2 around each Category III node of a curve)\n"
+            "                      | piece (one box per inflow curve: exact where first order sweeps are)\n"
             "  --max-iter N        at most N iterations (default 10000)\n"
             "  --grid-N N          write the solution grid of this N (default 80)\n"
             "  --help              this text\n%s",
@@ -303,6 +307,10 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
             if (!strcmp(v, "mean")) s.l1_integral = 0;
             else if (!strcmp(v, "integral")) s.l1_integral = 1;
             else hj_cli_fail(prog, HJ_EXIT_USAGE, "--l1 must be mean or integral, got '%s'", v);
+        } else if (!strcmp(a, "--richardson-box")) {
+            if (!strcmp(v, "node")) s.richardson_box = HJ_RICH_BOX_NODE;
+            else if (!strcmp(v, "piece")) s.richardson_box = HJ_RICH_BOX_PIECE;
+            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--richardson-box must be node or piece, got '%s'", v);
         } else if (!strcmp(a, "--strategy")) {
             if (!strcmp(v, "richardson")) s.strategy = HJ_BC_RICHARDSON;
             else if (!strcmp(v, "lax-wendroff")) s.strategy = HJ_BC_LAX_WENDROFF;

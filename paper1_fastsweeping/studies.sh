@@ -5,6 +5,9 @@
 #       for several WENO eps = C h^2.  Near the centre (f = 0) the discrete
 #       problem has several fixed points; this shows how the one reached
 #       depends on eps (the reason given for Table 3.3 (b)).
+#   studies.sh richardson-box BINDIR PUBLISHED   Example 2, Richardson: the
+#       paper's small box [-2h, 2h]^2 around each node against one box per
+#       edge (exact for case (a)), L1 errors and iterations beside the paper's.
 #   studies.sh treatments BINDIR           Category III treatments compared:
 #       first order values (refs. [7,16]) against the paper's Richardson and
 #       Lax-Wendroff values, Examples 1 and 2 (b), L1 errors and fitted order.
@@ -29,6 +32,24 @@ eps-scan)
     done
     printf '<tr><td>paper</td>%s</tr>\n</table>\n\n' "$(awk -F'\t' '!/^#/ && $1 == "b" { printf "<td>%s</td>", $3 }' "$pub")"
     ;;
+richardson-box)
+    pub=$3
+    printf '\n#### Where the Richardson sweeps run (Example 2)\n\n'
+    printf 'L1 error (iterations) of Table 3.2 with the local first order sweeps in the small box [-2h, 2h]^2 around each Category III node (`--richardson-box node`, the default) or in one box per edge that reaches the neighbouring edges (`piece`), computed by `studies.sh richardson-box`.\n\n'
+    printf '<table>\n<tr><th>case</th><th>boxes</th><th>N = 80</th><th>N = 160</th><th>N = 320</th><th>N = 640</th></tr>\n'
+    for b in node piece; do
+        "$bin/example2" --strategy richardson --richardson-box $b --out-dir "$tmp/$b" > /dev/null
+    done
+    for c in a b; do
+        for b in node piece; do
+            printf '<tr><td>(%s)</td><td>%s</td>%s</tr>\n' $c $b \
+                "$(awk -F'\t' -v c=$c '!/^#/ && $1 == c { printf "<td>%s (%s)</td>", $4, $8 }' "$tmp/$b/table3.2.tsv")"
+        done
+        printf '<tr><td>(%s)</td><td>paper</td>%s</tr>\n' $c \
+            "$(awk -F'\t' -v c=$c '!/^#/ && $1 == c { printf "<td>%s (%s)</td>", $3, $5 }' "$pub")"
+    done
+    printf '</table>\n\n'
+    ;;
 treatments)
     printf '\n#### Category III treatments compared\n\n'
     printf 'L1 errors with the Category III nodes fixed by first order sweeps (the practice of refs. [7,16]) or by the paper'"'"'s treatments (computed by `studies.sh treatments`).\n\n'
@@ -46,5 +67,5 @@ treatments)
     done
     printf '</table>\n\n'
     ;;
-*) echo "usage: studies.sh eps-scan BINDIR PUBLISHED | treatments BINDIR" >&2; exit 2 ;;
+*) echo "usage: studies.sh eps-scan BINDIR PUBLISHED | richardson-box BINDIR PUBLISHED | treatments BINDIR" >&2; exit 2 ;;
 esac
