@@ -4,7 +4,10 @@
 **Problem.** |grad phi| = 1 on [-1, 1]^2 with phi = 0 on the circle of
 radius 0.5 centred at the origin.  The exact solution is the distance to
 the circle, | r - 0.5 |, on both sides of it; it is singular at the
-centre, so errors are measured outside the box [-0.15, 0.15]^2.
+centre, so errors are measured outside the box [-0.15, 0.15]^2 (tested
+literally on the computed coordinates: the nodes on the edges x, y = +0.15
+round to just outside and are measured, those on -0.15 are not; see
+`excluded()` in p1_study.c and the overview).
 
 **Method.** Third order WENO fast sweeping.  The circle passes between
 grid nodes, so there is no Category I node; the nodes at horizontal or
