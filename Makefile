@@ -49,18 +49,24 @@ LIB := $(BUILD)/libhj.a
 COMMON_SRC := $(wildcard common/*.c)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 HJCHECK := $(BUILD)/bin/common/tools/hjcheck
+HJTIME := $(BUILD)/bin/common/tools/hjtime
+# $(call hj_timed,DIR,LABEL) COMMAND...: run COMMAND and record its wall
+# time, CPU time and peak memory in DIR/time/LABEL.tsv (shown in the
+# report beside the example; never compared or tested).
+hj_timed = $(HJTIME) $(1)/time/$(2).tsv $(2) --
 
 # Filled in by the papers' rules.mk fragments.
-PROGRAMS := $(HJCHECK)
+PROGRAMS := $(HJCHECK) $(HJTIME)
 UNIT_TESTS := $(patsubst %.c,$(BUILD)/test/%,$(wildcard common/tests/test_*.c))
 CHECK_PAPERS :=
 REPRODUCE_FIRST :=
 REPORT_INPUTS :=
 BENCHES :=
 
-# The gate's own test runs the built hjcheck.
-$(BUILD)/obj/common/tests/test_hjcheck.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
+# The tests of the tools run the built hjcheck and hjtime.
+$(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
 $(BUILD)/test/common/tests/test_hjcheck: | $(HJCHECK)
+$(BUILD)/test/common/tests/test_hjtime: | $(HJTIME)
 
 include paper1_fastsweeping/rules.mk
 -include paper2_toolbox/rules.mk

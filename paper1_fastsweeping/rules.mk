@@ -16,21 +16,21 @@ P1_OUT := $(RESULTS)/paper1
 P1_TABLES := table3.1 table3.2 table3.3 table3.4 table3.5
 P1_RESULTS := $(P1_TABLES:%=$(P1_OUT)/%.tsv)
 
-$(P1_OUT)/table3.1.tsv: $(BUILD)/bin/$(P1)/example1
+$(P1_OUT)/table3.1.tsv: $(BUILD)/bin/$(P1)/example1 | $(HJTIME)
 	@mkdir -p $(@D)
-	$< $(QUICKFLAG) --out-dir $(@D)
-$(P1_OUT)/table3.2.tsv: $(BUILD)/bin/$(P1)/example2
+	$(call hj_timed,$(@D),example1.table3.1) $< $(QUICKFLAG) --out-dir $(@D)
+$(P1_OUT)/table3.2.tsv: $(BUILD)/bin/$(P1)/example2 | $(HJTIME)
 	@mkdir -p $(@D)
-	$< $(QUICKFLAG) --strategy richardson --out-dir $(@D)
-$(P1_OUT)/table3.3.tsv: $(BUILD)/bin/$(P1)/example2
+	$(call hj_timed,$(@D),example2.table3.2) $< $(QUICKFLAG) --strategy richardson --out-dir $(@D)
+$(P1_OUT)/table3.3.tsv: $(BUILD)/bin/$(P1)/example2 | $(HJTIME)
 	@mkdir -p $(@D)
-	$< $(QUICKFLAG) --strategy lax-wendroff --out-dir $(@D)
-$(P1_OUT)/table3.4.tsv: $(BUILD)/bin/$(P1)/example3
+	$(call hj_timed,$(@D),example2.table3.3) $< $(QUICKFLAG) --strategy lax-wendroff --out-dir $(@D)
+$(P1_OUT)/table3.4.tsv: $(BUILD)/bin/$(P1)/example3 | $(HJTIME)
 	@mkdir -p $(@D)
-	$< $(QUICKFLAG) --out-dir $(@D)
-$(P1_OUT)/table3.5.tsv: $(BUILD)/bin/$(P1)/example4
+	$(call hj_timed,$(@D),example3.table3.4) $< $(QUICKFLAG) --out-dir $(@D)
+$(P1_OUT)/table3.5.tsv: $(BUILD)/bin/$(P1)/example4 | $(HJTIME)
 	@mkdir -p $(@D)
-	$< $(QUICKFLAG) --out-dir $(@D)
+	$(call hj_timed,$(@D),example4.table3.5) $< $(QUICKFLAG) --out-dir $(@D)
 
 # Figures: convergence (with the Ceres fit) and contours of the solution.
 P1_FIGS := $(P1_TABLES:%=$(P1_OUT)/fig/%.conv.png) $(P1_TABLES:%=$(P1_OUT)/fig/%.contour.png)

@@ -41,14 +41,14 @@ REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_tabl
 #
 # $(eval $(call p2_demo,PROG,MODULES,OUTPUTS,CHECKED,ENV)): PROG.c linked
 # with the p2_<module>.o of MODULES, run once (with $(QUICKFLAG), under
-# ENV, e.g. OMP_WAIT_POLICY=passive) for all of OUTPUTS (names in P2_OUT);
-# CHECKED are the tables make check holds.
+# ENV, e.g. OMP_WAIT_POLICY=passive, and timed into time/PROG.tsv) for all
+# of OUTPUTS (names in P2_OUT); CHECKED are the tables make check holds.
 define p2_demo
 P2_PROGS += $(1)
 $(P2_BIN)/$(1): $(2:%=$(BUILD)/obj/$(P2)/p2_%.o)
-$(3:%=$(P2_OUT)/%) &: $(P2_BIN)/$(1)
+$(3:%=$(P2_OUT)/%) &: $(P2_BIN)/$(1) | $(HJTIME)
 	@mkdir -p $(P2_OUT)
-	$(5) $$< $(QUICKFLAG) --out-dir $(P2_OUT)
+	$(call hj_timed,$(P2_OUT),$(1)) env $(5) $$< $(QUICKFLAG) --out-dir $(P2_OUT)
 P2_CHECK += $(4:%=$(P2_OUT)/%)
 REPORT_INPUTS += $(P2)/$(1).c
 endef

@@ -30,19 +30,19 @@ P3_RESULTS := $(P3_STORE) $(P3_HJB) $(P3_2D) $(P3_ND)
 # use one OpenMP thread: its 2-D grids are small, and spinning threads on
 # a shared machine cost more CPU than they save.
 P3_MEMLOCK = flock $(P3_OUT)/.memlock
-$(P3_2D) &: $(BUILD)/bin/$(P3)/examples2d
+$(P3_2D) &: $(BUILD)/bin/$(P3)/examples2d | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	OMP_NUM_THREADS=1 $< $(QUICKFLAG) --out-dir $(P3_OUT)
-$(P3_ND): $(P3_OUT)/table%.tsv: $(BUILD)/bin/$(P3)/examples34d
+	$(call hj_timed,$(P3_OUT),examples2d) env OMP_NUM_THREADS=1 $< $(QUICKFLAG) --out-dir $(P3_OUT)
+$(P3_ND): $(P3_OUT)/table%.tsv: $(BUILD)/bin/$(P3)/examples34d | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$< $(QUICKFLAG) --tables $* --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),examples34d.table$*) $< $(QUICKFLAG) --tables $* --out-dir $(P3_OUT)
 
-$(P3_STORE) &: $(BUILD)/bin/$(P3)/storage
+$(P3_STORE) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(P3_MEMLOCK) $< $(QUICKFLAG) --out-dir $(P3_OUT)
-$(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep
+	$(P3_MEMLOCK) $(call hj_timed,$(P3_OUT),storage) $< $(QUICKFLAG) --out-dir $(P3_OUT)
+$(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(P3_MEMLOCK) $< $(QUICKFLAG) --out-dir $(P3_OUT)
+	$(P3_MEMLOCK) $(call hj_timed,$(P3_OUT),hjbstep) $< $(QUICKFLAG) --out-dir $(P3_OUT)
 
 CHECK_PAPERS += paper3=$(P3)
 CHECK_INPUTS += $(P3_RESULTS)
@@ -62,7 +62,7 @@ P3_LANE_A := $(P3_STORE) $(P3_HJB) $(P3_OUT)/table13.tsv $(P3_2D)
 P3_LANE_B := $(P3_OUT)/table12.tsv $(P3_OUT)/table11.tsv
 .PHONY: paper3-results paper3-lane-a paper3-lane-b
 paper3-results:
-	$(MAKE) --no-print-directory $(P3_BINS)
+	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
 	$(MAKE) --no-print-directory -j2 paper3-lane-a paper3-lane-b
 paper3-lane-a:
 	$(MAKE) --no-print-directory -j1 $(P3_LANE_A)

@@ -68,6 +68,28 @@ fit_table() {
         END { if (rows != "") printf "\n<table class=\"fit\">\n<tr><th>case</th><th>error</th><th>fitted order p</th><th>std. error</th><th>least-squares p</th><th>points</th></tr>\n%s</table>\n\n", rows }' "$f"
 }
 
+# The cost of a program's runs in make reproduce (hjtime's files
+# time/<program>[.<table>].tsv): one line under the example.
+run_times() {
+    local dir=$1 prog=$2 f line=""
+    for f in "$dir/$prog.tsv" "$dir/$prog".*.tsv; do
+        [ -f "$f" ] || continue
+        line+=$(awk -F'\t' 'NR == 2 { printf "%s%s: %s s wall, %s s CPU, peak %s MB", sep, $1, $2, $3, $4 }' sep="${line:+; }" "$f")
+    done
+    [ -z "$line" ] || printf '\n*Run time on this machine (`make reproduce`): %s.*\n\n' "$line"
+}
+
+# All of a paper's runs, as a table at the end of its section.
+run_time_table() {
+    local dir=$1 name=$2
+    compgen -G "$dir/*.tsv" > /dev/null || return 0
+    printf '\n### Run times of %s\n\n' "$name"
+    printf 'Each program run of `make reproduce` on this machine (2 cores), measured by `hjtime` (common/tools/hjtime.c): elapsed time, CPU time (user + system, all threads) and peak resident memory.  Shown, never compared.\n\n'
+    printf '<table>\n<tr><th>run</th><th>wall (s)</th><th>CPU (s)</th><th>peak memory (MB)</th></tr>\n'
+    awk -F'\t' 'FNR == 2 { printf "<tr><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", $1, $2, $3, $4; w += $2; c += $3 }
+                END { printf "<tr><td><b>sum</b></td><td><b>%.1f</b></td><td><b>%.1f</b></td><td></td></tr>\n</table>\n\n", w, c }' "$dir"/*.tsv
+}
+
 md=$tmp/report.md
 {
     cat report/intro.md
@@ -94,7 +116,9 @@ md=$tmp/report.md
             for f in $figs; do
                 case $f in
                 -) ;;
-                *.md) if [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'; else printf '\n*missing: %s*\n\n' "$f"; fi ;;
+                *.md) if [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'
+                      elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
+                      else printf '\n*missing: %s*\n\n' "$f"; fi ;;
                 *) if [ -f "$res/$name/$f" ]; then
                        dst="$name-$(basename "$f")"
                        cp "$res/$name/$f" "$out/fig/$dst"
@@ -104,7 +128,9 @@ md=$tmp/report.md
                    fi ;;
                 esac
             done
+            run_times "$res/$name/time" "${src%.c}"
         done
+        run_time_table "$res/$name/time" "$name"
     done
 } > "$md"
 
