@@ -43,7 +43,9 @@ RK3 (the toolbox offers low/medium/high; the curvature term has no upwind
 scheme to raise).
 
 **Figure 8.** The zero contour at the 9 output times, one subplot each as
-in the toolbox (`ellipse` initial data).
+in the toolbox: (a) the `--initial` data (`ellipse` by default, as in the
+toolbox), (b) the point cloud of Osher & Sethian, which the toolbox could
+not draw.
 
 **Check.** Whatever its shape, a simple closed curve moving by curvature
 with constant b loses area at the rate 2 pi b (the total curvature of a
@@ -66,7 +68,8 @@ the distance to the point cloud has kinks on the arm's medial axis and at
 its tips, close to the front; we did not investigate further.
 
 **Output.** curvature_spiral.dat (phi at the output times as gnuplot index
-blocks; `ellipse`, or the `--initial` given), curvature_spiral.tsv (the
+blocks; `ellipse`, or the `--initial` given), curvature_spiral_points.dat
+(the same for the point cloud), curvature_spiral.tsv (the
 check, against the exact loss in published/curvature_spiral.tsv),
 curvature_spiral_notes.md.
 */
@@ -230,6 +233,13 @@ int main(int argc, char **argv)
     fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n", o.accuracy,
             initial ? "points" : "ellipse", o.N);
     p2_commit_run(prog, &out, run_spiral(&g, o.order, initial, samples, tspan, 9, out.fp, area, "spiral", &err), &err);
+    /* Figure 8 (b): the point cloud, whatever --initial chose for (a). */
+    double area_points[9];
+    p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral_points.dat", &err), &err);
+    fprintf(out.fp, "# curvatureSpiralDemo(%s, 'points') on %ld^2 nodes, %ld points: phi at t = k/8, k = 0..8\n",
+            o.accuracy, o.N, samples);
+    p2_commit_run(prog, &out, run_spiral(&g, o.order, 1, samples, tspan, 9, out.fp, area_points, "spiral points", &err),
+                  &err);
 
     /* The check: area loss 2 pi b t for both initial data on three grids,
      * up to t = 0.25. */
