@@ -110,6 +110,13 @@ static void ratios_not_gated(void **state)
     assert_int_equal(run_check(""), 0);
     assert_non_null(strstr(out_text, "0 match, 0 close, 1 differ"));
     assert_non_null(strstr(out_text, "check: 1 passed, 0 failed"));
+    /* ... but a ratio that was not computed fails, unless accepted missing. */
+    write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t-\n");
+    assert_int_equal(run_check(""), 1);
+    assert_non_null(strstr(out_text, "check: 0 passed, 1 failed"));
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tmissing\ttoo slow here\n");
+    assert_int_equal(run_check(""), 0);
+    remove(strcat(strcpy(out_text, dir), "/paper/accepted.tsv"));
 }
 
 static void malformed_published(void **state)
