@@ -15,9 +15,13 @@ not the initialisation), averaged over the first `STEPS` steps, its ratio
 between successive N (the published "Order") and SSD/FLS.  FLS needs
 9 N^3 bytes: at N = 1600 it does not fit in this machine (36.9 GB) and
 the store refuses it with "out of memory" (as on the paper's 4 GB laptop
-from N = 800 on); the cell is then empty.  The
-the process's peak resident memory is reported (after all runs of that N).
-An extra column runs the same step on SSDA (contiguous arrays per line).
+from N = 800 on); the cell is then empty.  Per band node: the SSD step's
+CPU time per node of D^0 in nanoseconds (SSD_ns_node; the published one
+follows from the paper's seconds and |D^0|, shown beside it) and the bytes
+SSD holds per stored node after the steps (SSD_B_node; SSD_MB in all).
+peak_MB is the process's peak resident memory so far (it only grows: at
+N = 1600 it still shows FLS at N = 800).  An extra column runs the same
+step on SSDA (contiguous arrays per line).
 
 **Parameters.** N = 50, 100, 200, 400, 800, 1600; `--quick`: 50, 100.
 
@@ -57,8 +61,9 @@ static int uniform(const double *blo, const double *bhi, void *ctx)
     return p3_ball_uniform(3, blo, bhi, CENTRE, 1.0);
 }
 
-/* Seconds per step, |D^0| and peak memory; HJ_ENOMEM when the store does not fit. */
-static int run(p3_kind kind, int n, double *secs, size_t *d0, double *peak, hj_error *err)
+/* Seconds per step, |D^0|, and the bytes the store holds and its node
+ * count after the steps; HJ_ENOMEM when the store does not fit. */
+static int run(p3_kind kind, int n, double *secs, size_t *d0, double *bytes, double *nodes, hj_error *err)
 {
     p3_problem pb = {.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn, .target = 1,
                      .cfl = 0.9, .boundary = 1, .snap = P3_SNAP, .avg0 = avg0, .uniform = uniform,
@@ -70,7 +75,8 @@ static int run(p3_kind kind, int n, double *secs, size_t *d0, double *peak, hj_e
     const double t0 = p3_cpu();
     for (int s = 0; s < STEPS && !rc; s++) rc = p3_solver_step(&sv, 10.0, err);
     *secs = (p3_cpu() - t0) / STEPS;
-    *peak = p3_peak_mb();
+    *bytes = (double)p3_store_bytes(sv.s);
+    *nodes = (double)p3_store_count(sv.s);
     p3_solver_free(&sv);
     return rc;
 }
@@ -87,23 +93,25 @@ int main(int argc, char **argv)
     if (p3_open(&out, a.out_dir, "table5.tsv", &err)) p3_die(a.prog, &err);
     fprintf(out.fp, "# table5: CPU seconds of one UB-HJB step (mean of %d), 11 controls, computed by hjbstep%s\n", STEPS,
             a.quick ? " --quick" : "");
-    fprintf(out.fp, "N\tD0\tFLS\tFLS_ratio\tSSD\tSSD_ratio\tSSD_over_FLS\tSSDA\tSSDA_over_FLS\tpeak_MB\n");
+    fprintf(out.fp, "N\tD0\tFLS\tFLS_ratio\tSSD\tSSD_ratio\tSSD_over_FLS\tSSDA\tSSDA_over_FLS\tSSD_ns_node\tSSD_B_node\t"
+                    "SSD_MB\tpeak_MB\n");
     double prev[2] = {NAN, NAN};
     for (int i = 0; i < ns; i++) {
         if (a.max_n && sizes[i] > a.max_n) continue;
         static const p3_kind kinds[3] = {P3_FLS, P3_SSD, P3_SSDA};
-        double t[3] = {NAN, NAN, NAN}, peak[3] = {NAN, NAN, NAN};
+        double t[3] = {NAN, NAN, NAN}, bytes[3] = {NAN, NAN, NAN}, nodes[3] = {NAN, NAN, NAN};
         size_t d0 = 0;
         for (int k = 0; k < 3; k++) {
             hj_progress("table5 N=%ld %s ...\n", sizes[i], p3_kind_name(kinds[k]));
-            const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &peak[k], &err);
+            const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &bytes[k], &nodes[k], &err);
             if (rc == HJ_ENOMEM) { t[k] = NAN; continue; }
             if (rc) { hj_out_abort(&out); p3_die(a.prog, &err); }
         }
-        char b[8][32];
-        fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
+        char b[11][32];
+        fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
                 p3_num(b[1], t[0] / prev[0]), p3_num(b[2], t[1]), p3_num(b[3], t[1] / prev[1]), p3_num(b[4], t[1] / t[0]),
-                p3_num(b[5], t[2]), p3_num(b[6], t[2] / t[0]), p3_peak_mb());
+                p3_num(b[5], t[2]), p3_num(b[6], t[2] / t[0]), p3_num(b[7], 1e9 * t[1] / (double)d0),
+                p3_num(b[8], bytes[1] / nodes[1]), p3_num(b[9], bytes[1] / 1e6), p3_peak_mb());
         fflush(out.fp);
         prev[0] = t[0];
         prev[1] = t[1];

@@ -16,7 +16,7 @@ $(P3_TESTS): $(P3_LIBOBJ)
 P3_OUT := $(RESULTS)/paper3
 P3_2D := $(addprefix $(P3_OUT)/,table6.tsv table7.tsv table8.tsv table9.tsv table10.tsv)
 P3_ND := $(addprefix $(P3_OUT)/,table11.tsv table12.tsv table13.tsv)
-P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv)
+P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv table4_limits.md)
 P3_HJB := $(P3_OUT)/table5.tsv
 P3_RESULTS := $(P3_STORE) $(P3_HJB) $(P3_2D) $(P3_ND)
 
