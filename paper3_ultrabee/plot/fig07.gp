@@ -35,7 +35,7 @@ set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]
 set xtics 0.5; set ytics 0.5
 set key outside bottom center horizontal
-set multiplot layout 2,2 title sprintf("Figure %d (Example 3): deformation of the half plane x_2 <= 0, N = %d, CFL 0.9 (UB), T = 6", fignum, N)
+set multiplot layout 2,2 title sprintf("Figure %d (Example 3): deformation of the half plane x_2 <= 0, N = %d, CFL 0.9 for UB-HJB (0.5 for the level set, see the overview), T = 6", fignum, N)
 do for [m=0:1] {
     do for [k=0:1] {
         set title sprintf("%s, t = %d%s", m ? "level set RK2-ENO2" : "UB-HJB", 3 * (k + 1), k ? " (return to initial data)" : " (three turns)")
