@@ -63,7 +63,14 @@ nodes with V <= 0 at T and the time the front was lost.
 sizes of each table.
 
 **Output.** table6.tsv ... table10.tsv (Table 10: ls_L1_t3, ls_haus_t3,
-ls_L1_t6, ls_haus_t6 beside the UB columns).
+ls_L1_t6, ls_haus_t6 beside the UB columns).  Figure data, taken from the
+table runs outside the timed parts (quick and full runs both make these
+sizes): fig06_rendezvous.dat (Table 8, N = 101: x y V_ub V_ls at T = 1),
+fig07_deformation.dat and fig08_deformation.dat (Table 10, N = 100 and
+50: x y V_ub V_ls at t = 3 and t = 6, then the exact front as the zero
+set of g = sin(th) x1 + cos(th) x2 on a 201^2 grid), drawn as Figures 6-8
+(fig06.png ... fig08.png by plot/fig06.gp ... fig08.gp): the 0 contours
+of V_ub and V_ls beside the exact front.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -138,6 +145,13 @@ typedef struct {
     double l1b, hausb; /* Table 10: at t = 6 */
 } run_result;
 
+/* Figure data of one run (Figs. 6-8): the UB and level set values on the
+ * n^2 grid at the output times (k = 0: T, or t = 3 for Example 3; k = 1:
+ * t = 6), taken outside the timed parts. */
+typedef struct {
+    double *ub[2], *ls[2];
+} fig2d;
+
 /* ---- the level set comparison (RK2-ENO2 on the common kernel, p3_ls.h) ---- */
 
 /* The Lipschitz data of the level set runs: (12) for the square, the same
@@ -175,7 +189,7 @@ static int ls_errors(p3_ls *ls, ex2d *e, double *l1, double *haus, int64_t *cell
 }
 
 /* The same problem as run() (e as run() left it) by the level set method. */
-static int run_ls(ex2d *e, int n, ls_result *res, hj_error *err)
+static int run_ls(ex2d *e, int n, ls_result *res, fig2d *fig, hj_error *err)
 {
     const double dom = e->example == 1 || e->example == 2 ? -2 : -1, domhi = e->example == 4 ? 1 : 2;
     const double lo[2] = {dom, dom}, hi[2] = {domhi, domhi};
@@ -203,6 +217,7 @@ static int run_ls(ex2d *e, int n, ls_result *res, hj_error *err)
     if (e->example == 4) ctl[0].frozen = 1, ctl[0].tfix = 0; /* s = +1 up to T / 2 */
     if (!rc) rc = p3_ls_run(&ls, &hjb.base, tstop, P3_LS_CFL, err);
     res->cpu = p3_cpu() - c0;
+    if (!rc && fig) p3_ls_values(&ls, fig->ls[0]);
     e->t = tstop;
     if (!rc) rc = ls_errors(&ls, e, &res->l1, &res->haus, &res->cells, err);
     if (!rc && e->example == 4) {
@@ -210,6 +225,7 @@ static int run_ls(ex2d *e, int n, ls_result *res, hj_error *err)
         ctl[0].tfix = e->T; /* s = -1 after */
         rc = p3_ls_run(&ls, &hjb.base, e->T, P3_LS_CFL, err);
         res->cpu += p3_cpu() - c1;
+        if (!rc && fig) p3_ls_values(&ls, fig->ls[1]);
         e->t = e->T;
         if (!rc) rc = ls_errors(&ls, e, &res->l1b, &res->hausb, &res->cellsb, err);
     }
@@ -220,7 +236,7 @@ static int run_ls(ex2d *e, int n, ls_result *res, hj_error *err)
     return rc;
 }
 
-static int run(ex2d *e, int n, run_result *res, hj_error *err)
+static int run(ex2d *e, int n, run_result *res, fig2d *fig, hj_error *err)
 {
     p3_problem pb = {.d = 2, .n = n, .ncontrols = e->example == 3 ? 2 : 1, .dyn = dyn, .cfl = 0.9, .boundary = 1, .snap = P3_SNAP,
                      .avg0 = avg0, .ctx = e};
@@ -246,6 +262,7 @@ static int run(ex2d *e, int n, run_result *res, hj_error *err)
     const double tstop = e->example == 4 ? e->T / 2 : e->T;
     if (!rc) rc = p3_solver_run(&sv, tstop, err);
     res->cpu = p3_cpu() - c0;
+    if (!rc && fig) rc = p3_solver_values(&sv, fig->ub[0], err);
     if (rc) { p3_solver_free(&sv); return rc; }
     const double r_saved = e->r;
     e->r = rr;
@@ -261,6 +278,7 @@ static int run(ex2d *e, int n, run_result *res, hj_error *err)
         const double c1 = p3_cpu();
         rc = p3_solver_run(&sv, e->T, err);
         res->cpu += p3_cpu() - c1;
+        if (!rc && fig) rc = p3_solver_values(&sv, fig->ub[1], err);
         e->t = e->T;
         if (!rc) rc = p3_solver_errors(&sv, inside, e, &res->l1b, &res->hausb, err);
     }
@@ -277,6 +295,64 @@ typedef struct {
     long sizes[4];
     int nsizes;
 } table_spec;
+
+/* The figure drawn from the run of table t at size n, or NULL: Fig. 6
+ * (Table 8, N = 101), Figs. 7 and 8 (Table 10, N = 100 and 50). */
+static const char *fig_name(long t, long n)
+{
+    if (t == 8 && n == 101) return "fig06_rendezvous.dat";
+    if (t == 10 && n == 100) return "fig07_deformation.dat";
+    if (t == 10 && n == 50) return "fig08_deformation.dat";
+    return NULL;
+}
+
+/* Example 3's exact solution as a continuous function whose zero set is
+ * the exact front: g(x) = sin(th) x1 + cos(th) x2, th = 2 pi a(x) t1 (the
+ * second coordinate of the point the flow came from; inside is g <= 0). */
+static double deform_g(const double *x, double t, double T)
+{
+    const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
+    const double t1 = t < T - t ? t : T - t, th = 2 * PI * amp * t1;
+    return sin(th) * x[0] + cos(th) * x[1];
+}
+
+/* Write the figure data of one run (fig_name): index 0 (and 1 for Example
+ * 3, t = 6) "x y V_ub V_ls" on the n^2 grid; for Example 3 also index 2
+ * (t = 3) and 3 (t = 6): "x y g" of deform_g on a 201^2 grid of the
+ * domain, whose zero contour is the exact front. */
+static int write_fig(const p3_args *a, const char *name, const ex2d *e, int n, const fig2d *fig, hj_error *err)
+{
+    const double lo = e->example == 3 ? -1 : e->example == 4 ? -1 : -2, hi = e->example == 4 ? 1 : 2;
+    const double dx = (hi - lo) / (n - 1);
+    hj_out out;
+    int rc = p3_open(&out, a->out_dir, name, err);
+    if (rc) return rc;
+    fprintf(out.fp, "# %s: examples2d, %s N = %d: x y V_ub V_ls (%s)\n", name,
+            e->example == 3 ? "rendez-vous (Table 8)" : "deformation (Table 10)", n,
+            e->example == 3 ? "T = 1" : "index 0: t = 3, 1: t = 6; 2, 3: exact g at t = 3, 6 on 201^2");
+    const int i0[2] = {0, 0}, m[2] = {n, n};
+    for (int k = 0; k < (e->example == 4 ? 2 : 1) && !rc; k++) {
+        const double *f[2] = {fig->ub[k], fig->ls[k]};
+        rc = p3_fig_block(out.fp, 2, n, lo, dx, i0, m, 2, f, err);
+    }
+    if (!rc && e->example == 4) {
+        const int nf = 201, mf[2] = {nf, nf};
+        double *g = malloc((size_t)nf * nf * sizeof *g);
+        if (!g) rc = hj_error_set(err, HJ_ENOMEM, "out of memory (figure)");
+        for (int k = 0; k < 2 && !rc; k++) {
+            for (int i = 0; i < nf; i++)
+                for (int j = 0; j < nf; j++) {
+                    const double x[2] = {lo + i * (hi - lo) / (nf - 1), lo + j * (hi - lo) / (nf - 1)};
+                    g[i * nf + j] = deform_g(x, k ? e->T : e->T / 2, e->T);
+                }
+            const double *f[1] = {g};
+            rc = p3_fig_block(out.fp, 2, nf, lo, (hi - lo) / (nf - 1), i0, mf, 1, f, err);
+        }
+        free(g);
+    }
+    if (rc) { hj_out_abort(&out); return rc; }
+    return hj_out_commit(&out, err);
+}
 
 int main(int argc, char **argv)
 {
@@ -313,11 +389,31 @@ int main(int argc, char **argv)
             if (a.max_n && sizes[i] > a.max_n) continue;
             ex2d e = sp->e;
             run_result r;
+            const char *fname = fig_name(atol(sp->table + 5), sizes[i]);
+            fig2d fig = {{NULL, NULL}, {NULL, NULL}}, *figp = NULL;
+            if (fname) {
+                const size_t nn = (size_t)sizes[i] * (size_t)sizes[i];
+                for (int k = 0; k < 2; k++) {
+                    fig.ub[k] = malloc(nn * sizeof(double));
+                    fig.ls[k] = malloc(nn * sizeof(double));
+                    if (!fig.ub[k] || !fig.ls[k]) {
+                        hj_error_set(&err, HJ_ENOMEM, "out of memory (figure)");
+                        hj_out_abort(&out);
+                        p3_die(a.prog, &err);
+                    }
+                }
+                figp = &fig;
+            }
             hj_progress("%s N=%ld ...\n", sp->table, sizes[i]);
-            if (run(&e, (int)sizes[i], &r, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            if (run(&e, (int)sizes[i], &r, figp, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
             ls_result q;
             hj_progress("%s N=%ld level set ...\n", sp->table, sizes[i]);
-            if (run_ls(&e, (int)sizes[i], &q, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            if (run_ls(&e, (int)sizes[i], &q, figp, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            if (fname && write_fig(&a, fname, &sp->e, (int)sizes[i], &fig, &err)) {
+                hj_out_abort(&out);
+                p3_die(a.prog, &err);
+            }
+            for (int k = 0; k < 2; k++) { free(fig.ub[k]); free(fig.ls[k]); }
             char b[12][32];
             if (sp->e.example == 4)
                 fprintf(fp, "%ld\t%.3g\t%s\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t%s\t%s\t%s\t%s\t%.3g\t%.0f\n", sizes[i], r.cpu,

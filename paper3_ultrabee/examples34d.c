@@ -38,7 +38,12 @@ resident memory.
 smallest of each.  `--max-n` skips larger sizes, `--tables 11,13`
 selects tables.
 
-**Output.** table11.tsv, table12.tsv, table13.tsv.
+**Output.** table11.tsv, table12.tsv, table13.tsv.  Figure 9
+(fig09.png by plot/fig09.gp, voxel isosurfaces): the Table 11 runs at
+N = 50 (quick and full) write fig09_advection.dat (T = 2) and
+fig09_target.dat (T = 0.5), "x y z V g" on a cube of the grid around
+the sets, V the UB values and g a continuous function whose zero set is
+the exact front; after the timed steps.
 */
 #include <math.h>
 #include <stdint.h>
@@ -115,6 +120,31 @@ static double back_dist2(const exnd *e, const double *x, double tau)
     return y0 * y0 + y1 * y1 + y2 * y2;
 }
 
+/* Example 4's target problem: min over tau in [0, t] of |X(-tau; x) - c|^2,
+ * or +inf when x is surely farther than r from every X(tau; c) (outside
+ * the annulus |rho - rho_c| <= r or the height range). */
+static double target_dist2(const exnd *e, const double *x)
+{
+    const double rho = sqrt(x[0] * x[0] + x[1] * x[1]), rc = sqrt(e->c[0] * e->c[0] + e->c[1] * e->c[1]);
+    if (fabs(rho - rc) > e->r || x[2] < e->c[2] - e->r - e->t || x[2] > e->c[2] + e->r) return INFINITY;
+    /* minimum over tau in [0, t]: samples, then golden section */
+    const int m = 200;
+    int best = 0;
+    double dbest = INFINITY;
+    for (int i = 0; i <= m; i++) {
+        const double dd = back_dist2(e, x, e->t * i / m);
+        if (dd < dbest) { dbest = dd; best = i; }
+    }
+    double a = e->t * (best > 0 ? best - 1 : 0) / m, b = e->t * (best < m ? best + 1 : m) / m;
+    const double g = 0.5 * (sqrt(5.0) - 1);
+    for (int it = 0; it < 40; it++) {
+        const double p = b - g * (b - a), q = a + g * (b - a);
+        if (back_dist2(e, x, p) < back_dist2(e, x, q)) b = q; else a = p;
+    }
+    const double dm = back_dist2(e, x, 0.5 * (a + b));
+    return dm < dbest ? dm : dbest;
+}
+
 static int inside(const double *x, void *vctx)
 {
     const exnd *e = vctx;
@@ -123,26 +153,7 @@ static int inside(const double *x, void *vctx)
         const double y2 = x[2] + e->t - e->c[2];
         return y0 * y0 + y1 * y1 + y2 * y2 <= e->r * e->r;
     }
-    if (e->example == 5) {
-        const double rho = sqrt(x[0] * x[0] + x[1] * x[1]), rc = sqrt(e->c[0] * e->c[0] + e->c[1] * e->c[1]);
-        if (fabs(rho - rc) > e->r || x[2] < e->c[2] - e->r - e->t || x[2] > e->c[2] + e->r) return 0;
-        /* minimum over tau in [0, t]: samples, then golden section */
-        const int m = 200;
-        int best = 0;
-        double dbest = INFINITY;
-        for (int i = 0; i <= m; i++) {
-            const double dd = back_dist2(e, x, e->t * i / m);
-            if (dd < dbest) { dbest = dd; best = i; }
-        }
-        double a = e->t * (best > 0 ? best - 1 : 0) / m, b = e->t * (best < m ? best + 1 : m) / m;
-        const double g = 0.5 * (sqrt(5.0) - 1);
-        for (int it = 0; it < 40; it++) {
-            const double p = b - g * (b - a), q = a + g * (b - a);
-            if (back_dist2(e, x, p) < back_dist2(e, x, q)) b = q; else a = p;
-        }
-        const double dm = back_dist2(e, x, 0.5 * (a + b));
-        return (dm < dbest ? dm : dbest) <= e->r * e->r;
-    }
+    if (e->example == 5) return target_dist2(e, x) <= e->r * e->r;
     if (e->example == 6) {
         const double y[4] = {e->cs * x[0] + e->sn * x[1], -e->sn * x[0] + e->cs * x[1], e->cs * x[2] + e->sn * x[3],
                              -e->sn * x[2] + e->cs * x[3]};
@@ -157,7 +168,66 @@ typedef struct {
     double cpu, l1, haus, dx, steps, band, peak;
 } run_result;
 
-static int run(exnd *e, int n, const char *out_dir, run_result *res, hj_error *err)
+/* Figure 9 (Example 4 at N = 50): the UB values V and the exact g, a
+ * continuous function with the exact set {g <= 0} (|y - c| - r for the
+ * advected ball, y the point the flow came from; for the target problem
+ * the distance from x's backward trajectory over [0, T] to c, minus r),
+ * clipped at 0.3, at the nodes of the smallest cube of the grid that holds
+ * both sets with two nodes to spare (at least 12 nodes a side): "x y z V g", for a voxel isosurface
+ * (the cube side, m, is the cube root of the line count).  Written after
+ * the timed steps. */
+static int write_fig09(exnd *e, p3_solver *sv, const char *out_dir, hj_error *err)
+{
+    const int n = sv->pb->n;
+    const size_t nn = (size_t)n * n * n;
+    double *v = malloc(nn * sizeof *v), *g = malloc(nn * sizeof *g);
+    int rc = v && g ? p3_solver_values(sv, v, err) : hj_error_set(err, HJ_ENOMEM, "out of memory (figure)");
+    int blo[3] = {n, n, n}, bhi[3] = {-1, -1, -1};
+    for (size_t q = 0; q < nn && !rc; q++) {
+        const int idx[3] = {(int)(q / ((size_t)n * n)), (int)(q / (size_t)n % (size_t)n), (int)(q % (size_t)n)};
+        double x[3];
+        p3_centre(sv, idx, x);
+        double gq;
+        if (e->example == 4) {
+            const double y[3] = {e->cs * x[0] + e->sn * x[1] - e->c[0], -e->sn * x[0] + e->cs * x[1] - e->c[1], x[2] + e->t - e->c[2]};
+            gq = sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]) - e->r;
+        } else {
+            gq = sqrt(target_dist2(e, x)) - e->r;
+        }
+        g[q] = gq < 0.3 ? gq : 0.3;
+        if (v[q] <= 0 || g[q] <= 0)
+            for (int k = 0; k < 3; k++) {
+                blo[k] = idx[k] < blo[k] ? idx[k] : blo[k];
+                bhi[k] = idx[k] > bhi[k] ? idx[k] : bhi[k];
+            }
+    }
+    hj_out out;
+    if (!rc && bhi[0] < 0) rc = hj_error_set(err, HJ_EINVAL, "figure 9: empty sets");
+    if (!rc) rc = p3_open(&out, out_dir, e->example == 4 ? "fig09_advection.dat" : "fig09_target.dat", err);
+    if (!rc) {
+        int m = 0, i0[3], ms[3];
+        for (int k = 0; k < 3; k++) m = bhi[k] - blo[k] + 5 > m ? bhi[k] - blo[k] + 5 : m;
+        m = m < 12 ? 12 : m; /* gnuplot's voxel grids have at least 10^3 nodes */
+        m = m < n ? m : n;
+        for (int k = 0; k < 3; k++) {
+            i0[k] = (blo[k] + bhi[k]) / 2 - m / 2;
+            i0[k] = i0[k] < 0 ? 0 : i0[k] + m > n ? n - m : i0[k];
+            ms[k] = m;
+        }
+        fprintf(out.fp, "# %s: examples34d, Example 4 (%s), N = %d, t = %g: x y z V g on a %d^3 cube of the grid\n",
+                e->example == 4 ? "fig09_advection.dat" : "fig09_target.dat", e->example == 4 ? "advection" : "target problem",
+                n, e->t, m);
+        const double *f[2] = {v, g};
+        rc = p3_fig_block(out.fp, 3, n, sv->pb->lo[0], sv->dx[0], i0, ms, 2, f, err);
+        if (rc) hj_out_abort(&out);
+        else rc = hj_out_commit(&out, err);
+    }
+    free(v);
+    free(g);
+    return rc;
+}
+
+static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj_error *err)
 {
     const int d = e->example <= 5 ? 3 : 4;
     const double L = e->example == 6 ? 1 : 2;
@@ -203,7 +273,8 @@ static int run(exnd *e, int n, const char *out_dir, run_result *res, hj_error *e
     const double back = e->example == 6 ? 2 * PI * e->t : 2 * PI * e->t;
     e->cs = cos(back);
     e->sn = sin(back);
-    rc = p3_solver_errors(&sv, inside, e, &res->l1, &res->haus, err);
+    if (fig) rc = write_fig09(e, &sv, out_dir, err);
+    if (!rc) rc = p3_solver_errors(&sv, inside, e, &res->l1, &res->haus, err);
     res->dx = sv.dx[0];
     res->steps = (double)sv.steps;
     res->band = sv.steps ? sv.band_sum / (double)sv.steps : 0;
@@ -249,7 +320,7 @@ int main(int argc, char **argv)
                 }
                 run_result r;
                 hj_progress("table%d N=%ld\n", table, sizes[i]);
-                if (run(&e, (int)sizes[i], a.out_dir, &r, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+                if (run(&e, (int)sizes[i], a.out_dir, table == 11 && sizes[i] == 50, &r, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
                 char b[6][32];
                 fprintf(fp, "%s%ld\t%.4g\t%s\t%s\t%s\t%s\t%.0f\t%.0f\t%.0f\n",
                         table == 11 ? (p ? "target\t" : "advection\t") : "", sizes[i], r.cpu, p3_num(b[0], r.cpu / prev),

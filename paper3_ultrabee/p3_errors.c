@@ -187,7 +187,7 @@ static int visit_front(const int *idx, double *v, void *vctx)
     for (int k = 0; k < d - 1; k++) line = line * n + idx[k];
     if (*v == 1 || *v == -1) c->line[line] = (signed char)(2 * *v);
     else if (c->line[line] == 0) c->line[line] = 4; /* non-empty, value not known yet */
-    if (*v > ZERO) return 0;
+    if (*v > ZERO || !c->front) return 0;
     /* a cell of the computed set {V <= 0} with a face neighbour outside it */
     int j[P3_DMAX];
     memcpy(j, idx, sizeof j);
@@ -309,6 +309,42 @@ static int64_t line_errors(int d, int n, const double *lo, const double *dx, int
     return wrong;
 }
 
+/* The values of line idx[0..d-2] (line state ls, from fill_lines): stored
+ * ones, gaps from the stored neighbour. */
+static void line_values(p3_solver *sv, signed char ls, int *idx, double *vals)
+{
+    const int d = sv->pb->d, n = sv->pb->n;
+    for (int i = 0; i < n; i++) {
+        idx[d - 1] = i;
+        const double *p = (ls == 1 || ls == -1) ? NULL : p3_store_find(sv->s, idx);
+        vals[i] = p ? *p : (ls == 1 || ls == -1) ? ls : NAN;
+    }
+    double last = NAN;
+    for (int i = 0; i < n; i++) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
+    last = NAN;
+    for (int i = n - 1; i >= 0; i--) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
+}
+
+int p3_solver_values(p3_solver *sv, double *out, hj_error *err)
+{
+    const int d = sv->pb->d, n = sv->pb->n;
+    int64_t nl = 1;
+    for (int k = 0; k < d - 1; k++) nl *= n;
+    signed char *line = calloc((size_t)nl, 1);
+    if (!line) return hj_error_set(err, HJ_ENOMEM, "out of memory (line values)");
+    front_ctx fc = {sv, NULL, line};
+    p3_store_foreach(sv->s, visit_front, &fc);
+    int rc = fill_lines(line, nl, d - 1, n, err);
+    for (int64_t l = 0; l < nl && !rc; l++) {
+        int idx[P3_DMAX];
+        int64_t r = l;
+        for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
+        line_values(sv, line[l], idx, out + l * n);
+    }
+    free(line);
+    return rc;
+}
+
 int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err)
 {
     const p3_problem *pb = sv->pb;
@@ -335,16 +371,7 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
         int idx[P3_DMAX];
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
-        /* the values of the line: stored ones, gaps from the stored neighbour */
-        for (int i = 0; i < n; i++) {
-            idx[d - 1] = i;
-            const double *p = (line[l] == 1 || line[l] == -1) ? NULL : p3_store_find(sv->s, idx);
-            vals[i] = p ? *p : (line[l] == 1 || line[l] == -1) ? line[l] : NAN;
-        }
-        double last = NAN;
-        for (int i = 0; i < n; i++) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
-        last = NAN;
-        for (int i = n - 1; i >= 0; i--) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
+        line_values(sv, line[l], idx, vals);
         wrong += line_errors(d, n, pb->lo, sv->dx, l, idx, vals, &ring, inside, ctx, hmin, &exact);
     }
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }

@@ -90,3 +90,15 @@ int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, double *l1, double *
 {
     return p3_field_errors(ls->d, ls->n, ls->g.min, ls->g.dx, value_at, ls, inside, ctx, l1, haus, ncells, err);
 }
+
+void p3_ls_values(const p3_ls *ls, double *out)
+{
+    int idx[P3_DMAX] = {0};
+    int64_t total = 1;
+    for (int k = 0; k < ls->d; k++) total *= ls->n;
+    for (int64_t m = 0; m < total; m++) {
+        int64_t r = m;
+        for (int k = ls->d - 1; k >= 0; k--) { idx[k] = (int)(r % ls->n); r /= ls->n; }
+        out[m] = value_at(idx, (void *)ls);
+    }
+}

@@ -56,6 +56,10 @@ void p3_ls_velocity(double t, const double *x, double dx0, long n, int d, double
 /* Advance from ls->t to t1 with the term (TVD RK2, FactorCFL = cfl). */
 int p3_ls_run(p3_ls *ls, const hj_ls_term *term, double t1, double cfl, hj_error *err);
 
+/* The values at the n^d nodes, in the layout of p3_solver_values (last
+ * index fastest).  For figures. */
+void p3_ls_values(const p3_ls *ls, double *out);
+
 /* The errors of section 4 (p3_field_errors on the level set values). */
 int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells,
                  hj_error *err);

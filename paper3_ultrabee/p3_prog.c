@@ -2,6 +2,7 @@
 #include "p3_prog.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -83,4 +84,26 @@ const char *p3_num(char *buf, double v)
     if (isnan(v)) strcpy(buf, "-");
     else snprintf(buf, 32, "%.4g", v);
     return buf;
+}
+
+int p3_fig_block(FILE *fp, int d, int n, double lo, double dx, const int *i0, const int *m, int nf,
+                 const double *const *f, hj_error *err)
+{
+    int64_t total = 1;
+    for (int k = 0; k < d; k++) total *= m[k];
+    for (int64_t q = 0; q < total; q++) {
+        int idx[4];
+        int64_t r = q, lin = 0;
+        for (int k = d - 1; k >= 0; k--) { idx[k] = i0[k] + (int)(r % m[k]); r /= m[k]; }
+        for (int k = 0; k < d; k++) {
+            lin = lin * n + idx[k];
+            fprintf(fp, "%s%.6g", k ? " " : "", lo + idx[k] * dx);
+        }
+        for (int j = 0; j < nf; j++) fprintf(fp, " %.6g", f[j][lin]);
+        fputc('\n', fp);
+        if ((idx[d - 1] - i0[d - 1]) == m[d - 1] - 1) fputc('\n', fp);
+    }
+    fputs("\n", fp);
+    if (ferror(fp)) return hj_error_set(err, HJ_EIO, "write error (figure data)");
+    return HJ_OK;
 }

@@ -41,6 +41,15 @@ double p3_peak_mb(void);
 /* Open DIR/NAME for an atomic write (hj_out), creating DIR. */
 int p3_open(hj_out *out, const char *dir, const char *name, hj_error *err);
 
+/* Figure data: nf fields on the grid of n nodes per direction in d = 2, 3
+ * (field values f[j][l n + i] in the layout of p3_solver_values, node
+ * coordinates lo + i dx) as a gnuplot block over the index box
+ * [i0[k], i0[k] + m[k]): one line "x y [z] f1 f2 ..." per node, last index
+ * fastest, a blank line after each run of it (gnuplot's grid format) and
+ * two at the end (the next `index`).  HJ_EIO on a write error. */
+int p3_fig_block(FILE *fp, int d, int n, double lo, double dx, const int *i0, const int *m, int nf,
+                 const double *const *f, hj_error *err);
+
 /* "%.4g", or "-" for a NaN (no value). */
 const char *p3_num(char *buf, double v);
 

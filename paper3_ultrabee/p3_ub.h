@@ -110,6 +110,12 @@ void p3_centre(const p3_solver *sv, const int *idx, double *x);
 typedef int (*p3_inside_fn)(const double *x, void *ctx);
 int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err);
 
+/* The value of every cell, recovered from the band as the errors do
+ * (stored values; a gap takes its stored neighbour's value; a line without
+ * stored cells its neighbour line's): out[l n + i] for line l (the first
+ * d - 1 indices, lexicographic) and last index i; n^d doubles.  For figures. */
+int p3_solver_values(p3_solver *sv, double *out, hj_error *err);
+
 /* The same errors for values on the full grid of n^d cell centres lo + i dx
  * (the level set runs): value(idx) is V at cell idx.  *ncells (may be
  * NULL) receives #{V <= 0}; an empty computed set gives haus = +inf. */

@@ -14,9 +14,10 @@ UNIT_TESTS += $(P3_TESTS)
 $(P3_TESTS): $(P3_LIBOBJ)
 
 P3_OUT := $(RESULTS)/paper3
-P3_2D := $(addprefix $(P3_OUT)/,table6.tsv table7.tsv table8.tsv table9.tsv table10.tsv)
+P3_2D := $(addprefix $(P3_OUT)/,table6.tsv table7.tsv table8.tsv table9.tsv table10.tsv \
+           fig06_rendezvous.dat fig07_deformation.dat fig08_deformation.dat)
 P3_ND := $(addprefix $(P3_OUT)/,table11.tsv table12.tsv table13.tsv)
-P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv table4_limits.md)
+P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv table4_limits.md fig05_fronts.dat)
 P3_HJB := $(P3_OUT)/table5.tsv
 P3_RESULTS := $(P3_STORE) $(P3_HJB) $(P3_2D) $(P3_ND)
 
@@ -36,6 +37,12 @@ $(P3_2D) &: $(BUILD)/bin/$(P3)/examples2d | $(HJTIME)
 $(P3_ND): $(P3_OUT)/table%.tsv: $(BUILD)/bin/$(P3)/examples34d | $(HJTIME)
 	@mkdir -p $(P3_OUT)
 	$(call hj_timed,$(P3_OUT),examples34d.table$*) $< $(QUICKFLAG) --tables $* --out-dir $(P3_OUT)
+	$(if $(filter 11,$*),touch $(P3_FIG09_DATA))
+# Figure 9's data come from the N = 50 runs of Table 11 (quick and full),
+# written before table11.tsv is complete: the recipe above touches them.
+P3_FIG09_DATA := $(P3_OUT)/fig09_advection.dat $(P3_OUT)/fig09_target.dat
+$(P3_FIG09_DATA): $(P3_OUT)/table11.tsv
+	@test -f $@ || { echo "$@ missing: rerun table 11 (rm $<)"; exit 1; }
 
 $(P3_STORE) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
@@ -43,6 +50,24 @@ $(P3_STORE) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 $(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep | $(HJTIME)
 	@mkdir -p $(P3_OUT)
 	$(P3_MEMLOCK) $(call hj_timed,$(P3_OUT),hjbstep) $< $(QUICKFLAG) --out-dir $(P3_OUT)
+
+# Figures 5-9 (gnuplot, plot/figNN.gp): drawn from the data the programs
+# write during their table runs (storage: fig05_fronts.dat; examples2d:
+# fig06-08 at N = 101, 100, 50; examples34d: fig09 at N = 50), after the
+# lanes of `make paper3`.  $(eval $(call p3_figure,FIG,INPUTS)) as paper 2's
+# p2_figure: FIG.png from plot/FIG.gp with dir = P3_OUT and out.
+define p3_figure
+$(P3_OUT)/$(1).png: $(2:%=$(P3_OUT)/%) $(P3)/plot/$(1).gp
+	gnuplot -e "dir='$(P3_OUT)'; out='$$(@D)/.tmp-$$(@F)'" $(P3)/plot/$(1).gp && mv $$(@D)/.tmp-$$(@F) $$@
+REPORT_INPUTS += $(P3)/plot/$(1).gp $(P3_OUT)/$(1).png
+endef
+$(eval $(call p3_figure,fig05,fig05_fronts.dat))
+$(eval $(call p3_figure,fig06,fig06_rendezvous.dat))
+$(eval $(call p3_figure,fig07,fig07_deformation.dat))
+$(eval $(call p3_figure,fig08,fig08_deformation.dat))
+$(P3_OUT)/fig08.png: $(P3)/plot/fig07.gp
+$(eval $(call p3_figure,fig09,fig09_advection.dat fig09_target.dat))
+P3_FIGS := $(addprefix $(P3_OUT)/,fig05.png fig06.png fig07.png fig08.png fig09.png)
 
 CHECK_PAPERS += paper3=$(P3)
 CHECK_INPUTS += $(P3_RESULTS)
@@ -64,6 +89,7 @@ P3_LANE_B := $(P3_OUT)/table12.tsv $(P3_OUT)/table11.tsv
 paper3-results:
 	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
 	$(MAKE) --no-print-directory -j2 paper3-lane-a paper3-lane-b
+	$(MAKE) --no-print-directory $(P3_FIGS)
 paper3-lane-a:
 	$(MAKE) --no-print-directory -j1 $(P3_LANE_A)
 paper3-lane-b:

@@ -45,8 +45,10 @@ n = 800, 660 s) have no published value.
 Table 1.  Table 3: 50 ... 800.  Table 4: 100 ... 800.  `--quick`: the two
 smallest sizes of each group.
 
-**Output.** table1.tsv ... table4.tsv, table4_limits.md (the runs under
-the 4 GB limit, for the report).
+**Output.** table1.tsv ... table4.tsv; table4_limits.md (the runs under
+the 4 GB limit, for the report); fig05_fronts.dat, the band F+ u F- of
+both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
+(fig05.png, plot/fig05.gp).
 */
 #include <math.h>
 #include <stdint.h>
@@ -441,6 +443,36 @@ static void memory_table(const p3_args *a, hj_error *err)
     if (hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
+/* Figure 5: the band F+ u F- of both fronts in d = 2 on the 100^2 grid,
+ * "x y side" (side -1 for F-, +1 for F+), index 0 Example 1, index 1
+ * Example 2.  Not timed; a few thousand nodes. */
+typedef struct {
+    FILE *fp;
+    double dx;
+} fig_ctx;
+
+static int fig_node(const int *idx, int side, void *vctx)
+{
+    const fig_ctx *c = vctx;
+    fprintf(c->fp, "%.6g %.6g %d\n", -2 + idx[0] * c->dx, -2 + idx[1] * c->dx, side);
+    return 0;
+}
+
+static void fig05(const p3_args *a, hj_error *err)
+{
+    hj_out out;
+    if (p3_open(&out, a->out_dir, "fig05_fronts.dat", err)) p3_die(a->prog, err);
+    fprintf(out.fp, "# fig05_fronts.dat: storage, F+ u F- on the 100^2 grid of [-2, 2]^2: x y side; "
+                    "index 0 Example 1 (spheres), 1 Example 2 (cylinder)\n");
+    for (int ex = 1; ex <= 2; ex++) {
+        const p3_front f = {ex, 2, 100, 4.0 / 99};
+        fig_ctx c = {out.fp, f.dx};
+        if (p3_front_band(&f, fig_node, &c, err)) { hj_out_abort(&out); p3_die(a->prog, err); }
+        fputs("\n\n", out.fp);
+    }
+    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+}
+
 int main(int argc, char **argv)
 {
     p3_args a = {.prog = "storage"};
@@ -448,6 +480,7 @@ int main(int argc, char **argv)
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
     if (a.quick) BUDGET = 5.0;
+    if (p3_want(&a, 1) || p3_want(&a, 2)) fig05(&a, &err);
     if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
     if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
     if (p3_want(&a, 3)) update_table(&a, &err);
