@@ -141,13 +141,19 @@ static void ex2a_grad(double x, double y, double g[2], void *c)
 }
 static double ex2a_exact(double x, double y) { return (1 - fabs(x)) * (1 - fabs(y)); }
 
+/* The four edges of [-1, 1]^2 as inflow curves (Example 2). */
+static void ex2_box_edges(hj_inflow box[4])
+{
+    static p1_edge e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
+    for (int k = 0; k < 4; k++)
+        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &e[k]};
+}
+
 static void polynomial_case_to_roundoff(void **state)
 {
     (void)state;
-    static p1_edge e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
     hj_inflow box[4];
-    for (int k = 0; k < 4; k++)
-        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &e[k]};
+    ex2_box_edges(box);
     hj_grid2 g = {40, 40, -1, -1, 2.0 / 40};
     hj_speed sp = {ex2a_speed, ex2a_grad, NULL};
     hj_fsm_options o = hj_fsm_default_options();
@@ -179,10 +185,8 @@ static void polynomial_case_to_roundoff(void **state)
 static void richardson_node_boxes_third_order(void **state)
 {
     (void)state;
-    static p1_edge e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
     hj_inflow box[4];
-    for (int k = 0; k < 4; k++)
-        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &e[k]};
+    ex2_box_edges(box);
     hj_speed sp = {ex2a_speed, ex2a_grad, NULL};
     double err[2], mxe[2];
     for (int r = 0; r < 2; r++) {
