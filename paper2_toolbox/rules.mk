@@ -77,5 +77,8 @@ bench-paper2: $(P2_BIN)/bench_table2 $(P2_BIN)/bench_convection
 paper2: $(P2_RESULTS) $(P2_CHECK)
 	$(MAKE) --no-print-directory report-now
 
+# Paper 2's own tests (the reference values it computes itself).
+UNIT_TESTS += $(patsubst %.c,$(BUILD)/test/%,$(wildcard $(P2)/tests/test_*.c))
+
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp

@@ -36,8 +36,8 @@ flank x0 = 0.2 (maximum at s = 0.0093: the front there is the arc grown
 from the crest) and 1.630852 at the valley bottom x0 = 1, where the
 corner forms (maximum at s = 0.6850: the front there comes from near the
 neighbouring crest, which is what makes the corner); both computed by a
-fine search refined by golden section (a short Python script, the values
-to 7 digits).  The crest x0 = 0 itself is not a test: by symmetry the
+fine search refined by golden section (paper2_toolbox/tests/test_huygens.c
+recomputes them, to 7 digits).  The crest x0 = 0 itself is not a test: by symmetry the
 upwind x-derivatives vanish there, phi stays 2 x_2 - 2.5 - 2t on that
 column and any upwind scheme gets 1.25 + t to round-off (we saw 1.750000
 on every grid).  The front height is found on the grid
