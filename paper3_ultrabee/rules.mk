@@ -80,9 +80,9 @@ BENCHES += bench-paper3
 bench-paper3: $(P3_STORE) $(P3_HJB)
 
 # `make paper3` runs two lanes side by side, each one program at a time:
-# storage alone (about 24 minutes), and the UB runs (Tables 12, 11, 13,
-# the 2-D examples) with hjbstep (about 19 minutes): measured on
-# 23 November 2026, overview.md.  The binaries are built first, so that
+# storage alone (25 minutes), and the UB runs (Tables 12, 11, 13, the
+# 2-D examples) with hjbstep (20 minutes): measured on 23 November 2026,
+# overview.md.  The binaries are built first, so that
 # the lanes never build the same file.
 P3_LANE_A := $(P3_STORE)
 P3_LANE_B := $(P3_OUT)/table12.tsv $(P3_OUT)/table11.tsv $(P3_HJB) $(P3_OUT)/table13.tsv $(P3_2D)
