@@ -400,6 +400,8 @@ static void memory_table(const p3_args *a, hj_error *err)
     const int ns = a->quick ? 2 : 4;
     const char *lim[4][2];
     long nbs[4];
+    double bpn[4]; /* SSD's bytes per band node */
+    int rows = 0;
     for (int i = 0; i < ns; i++) {
         if (a->max_n && sizes[i] > a->max_n) break;
         p3_front f = {1, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
@@ -424,8 +426,9 @@ static void memory_table(const p3_args *a, hj_error *err)
         lim[i][0] = under_4gb(P3_FS, f.n);
         lim[i][1] = under_4gb(P3_FLS, f.n);
         nbs[i] = (long)nb;
-        fprintf(out.fp, "\t%s\t%s\t%s\n", p3_num(bn, mb[4][i] * 1e6 / (double)nb), lim[i][0], lim[i][1]);
-        /* SEARCH_KINDS[4] is SSD */
+        bpn[i] = mb[4][i] * 1e6 / (double)nb; /* SEARCH_KINDS[4] is SSD */
+        rows = i + 1;
+        fprintf(out.fp, "\t%s\t%s\t%s\n", p3_num(bn, bpn[i]), lim[i][0], lim[i][1]);
         fflush(out.fp);
     }
     if (hj_out_commit(&out, err)) p3_die(a->prog, err);
@@ -436,9 +439,9 @@ static void memory_table(const p3_args *a, hj_error *err)
                     "bytes), as on the paper's 4 GB laptop, beside their size without the limit:\n\n"
                     "| N | N_nb | FS (MB) | FS under 4 GB | FLS (MB) | FLS under 4 GB | SSD bytes per band node |\n"
                     "|---|---|---|---|---|---|---|\n");
-    for (int i = 0; i < ns && !(a->max_n && sizes[i] > a->max_n); i++)
+    for (int i = 0; i < rows; i++)
         fprintf(out.fp, "| %ld | %ld | %.0f | %s | %.0f | %s | %.1f |\n", sizes[i], nbs[i], mb[0][i], lim[i][0], mb[1][i],
-                lim[i][1], mb[4][i] * 1e6 / (double)nbs[i]);
+                lim[i][1], bpn[i]);
     fputc('\n', out.fp);
     if (hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
