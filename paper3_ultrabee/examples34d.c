@@ -154,14 +154,20 @@ static int inside(const double *x, void *vctx)
         return y0 * y0 + y1 * y1 + y2 * y2 <= e->r * e->r;
     }
     if (e->example == 5) return target_dist2(e, x) <= e->r * e->r;
+    /* Examples 5 and 6 are closed polytopes whose faces can pass through
+     * cell centres (Table 13: odd N puts x_k = 0, x1 = t and x2 + x3 + x4 =
+     * x1 on nodes).  A centre on a face is inside; tol keeps the round-off
+     * of the coordinates (-2 + i dx is 1e-17 off 0) from deciding that. */
+    const double tol = 1e-9 * e->dx;
     if (e->example == 6) {
         const double y[4] = {e->cs * x[0] + e->sn * x[1], -e->sn * x[0] + e->cs * x[1], e->cs * x[2] + e->sn * x[3],
                              -e->sn * x[2] + e->cs * x[3]};
         for (int k = 0; k < 4; k++)
-            if (fabs(y[k] - e->c[k]) > 0.1) return 0;
+            if (fabs(y[k] - e->c[k]) > 0.1 + tol) return 0;
         return 1;
     }
-    return x[0] >= 0 && x[1] >= 0 && x[2] >= 0 && x[3] >= 0 && x[1] + x[2] + x[3] <= x[0] && x[0] <= e->t;
+    return x[0] >= -tol && x[1] >= -tol && x[2] >= -tol && x[3] >= -tol && x[1] + x[2] + x[3] <= x[0] + tol &&
+           x[0] <= e->t + tol;
 }
 
 typedef struct {

@@ -24,6 +24,55 @@ static void flux_constant_and_step(void **state)
     /* anti-diffusion: a fractional cell behind a sharp front empties first */
     const double w3[5] = {1, 1, 0, -1, -1}, mu3[3] = {0.5, 0.5, 0.5};
     assert_close(p3_ub_update(w3, mu3), 1, 1e-15, 0);
+    /* a pulse narrower than a cell (covered fraction a) is spread, not
+     * moved: a (1 - c) stays, a c goes to the next cell (overview.md,
+     * Table 13's excess past the cap) */
+    const double a = 0.3, mup[3] = {0.7, 0.7, 0.7};
+    const double pj[5] = {1, 1, 1 - 2 * a, 1, 1}, pj1[5] = {1, 1 - 2 * a, 1, 1, 1};
+    assert_close(p3_ub_update(pj, mup), 1 - 2 * a * (1 - 0.7), 1e-15, 0);
+    assert_close(p3_ub_update(pj1, mup), 1 - 2 * a * 0.7, 1e-15, 0);
+}
+
+/* Table 6's published L1 = 0.000 at N = 50 ... 400 against the grid.  Since
+ * the scheme reproduces the exact averages of the moved square (test
+ * below), the L1 count at T = 1 is that of the exact averages: a cell
+ * counts when its sign (V <= 1e-12 is -1) differs from the closed moved
+ * square [-1.5, -0.5]^2 at its centre (tested with 1e-9 dx of slack, so a
+ * centre on an edge is inside).  Three grids of [-2, 2]:
+ *   A  N nodes with both ends, dx = 4/(N-1) (ours): 1 corner cell at
+ *      N >= 100, covered 0.625^2 < 1/2 with its centre inside;
+ *   B  N cells, centres -2 + (i + 1/2) dx, dx = 4/N: at N = 100 the edges
+ *      pass through centres and the 4 corner cells, a quarter covered,
+ *      differ;
+ *   C  nodes at multiples of dx = 4/N (the paper's xi_ij = (i dx, j dx)):
+ *      the same at N = 200 and 400.
+ * So no grid gives 0 at every N: the published zeros are rounded (one
+ * cell of A is 0.0016, 0.0004, 0.0001). */
+static int table6_sign_errors(int grid, int N)
+{
+    const double dx = grid == 0 ? 4.0 / (N - 1) : 4.0 / N, slack = 1e-9 * dx;
+    const int m = grid == 0 ? N : grid == 1 ? N : N + 1;
+    const double off = grid == 1 ? 0.5 : 0;
+    const double lo[2] = {-1.5, -1.5}, hi[2] = {-0.5, -0.5};
+    int wrong = 0;
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < m; j++) {
+            const double x[2] = {-2 + (i + off) * dx, -2 + (j + off) * dx};
+            const double blo[2] = {x[0] - dx / 2, x[1] - dx / 2}, bhi[2] = {x[0] + dx / 2, x[1] + dx / 2};
+            const int comp = p3_avg_box(2, blo, bhi, lo, hi) <= 1e-12;
+            const int in = x[0] >= lo[0] - slack && x[0] <= hi[0] + slack && x[1] >= lo[1] - slack && x[1] <= hi[1] + slack;
+            wrong += comp != in;
+        }
+    return wrong;
+}
+
+static void table6_zero_on_no_grid(void **state)
+{
+    (void)state;
+    static const int sizes[4] = {50, 100, 200, 400};
+    static const int expect[3][4] = {{0, 1, 1, 1}, {0, 4, 0, 0}, {0, 0, 4, 4}};
+    for (int g = 0; g < 3; g++)
+        for (int s = 0; s < 4; s++) assert_int_equal(table6_sign_errors(g, sizes[s]), expect[g][s]);
 }
 
 /* ---- 2-D and 3-D test problems --------------------------------------------- */
@@ -256,6 +305,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+        cmocka_unit_test(table6_zero_on_no_grid),
         cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
         cmocka_unit_test(hausdorff_of_point_sets),
         cmocka_unit_test(averages),
