@@ -117,14 +117,12 @@ static double avg0(const double *blo, const double *bhi, void *vctx)
     return p3_avg_box(2, blo, bhi, e->lo, e->hi);
 }
 
-/* The exact sets are closed: a cell centre on a face of a box is inside.
- * tol keeps the round-off of the coordinates from deciding that when a
- * face passes through centres (as in examples34d; none does at the
- * published N of Tables 6-9). */
+/* Closed sets, P3_CLOSED_SLACK (no face passes through a cell centre at
+ * the published N of Tables 6-9). */
 static int inside(const double *x, void *vctx)
 {
     const ex2d *e = vctx;
-    const double tol = 1e-9 * e->dx;
+    const double tol = P3_CLOSED_SLACK * e->dx;
     double y[2] = {x[0], x[1]};
     switch (e->example) {
     case 1: y[0] = x[0] + 2 * e->t; y[1] = x[1] + e->t; break;
@@ -255,7 +253,7 @@ static int run(ex2d *e, int n, run_result *res, fig2d *fig, hj_error *err)
         pb.bbox_hi[k] = e->example == 4 ? (k ? 0 : domhi) : e->hi[k];
     }
     if (e->example == 3 && e->r == 0) { /* thin target: r = dx */
-        const double dx = (domhi - dom) / (n - 1);
+        const double dx = e->dx;
         e->lo[0] = e->lo[1] = -dx;
         e->hi[0] = e->hi[1] = dx;
         pb.bbox_lo[0] = pb.bbox_lo[1] = -dx;

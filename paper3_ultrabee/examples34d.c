@@ -154,11 +154,9 @@ static int inside(const double *x, void *vctx)
         return y0 * y0 + y1 * y1 + y2 * y2 <= e->r * e->r;
     }
     if (e->example == 5) return target_dist2(e, x) <= e->r * e->r;
-    /* Examples 5 and 6 are closed polytopes whose faces can pass through
-     * cell centres (Table 13: odd N puts x_k = 0, x1 = t and x2 + x3 + x4 =
-     * x1 on nodes).  A centre on a face is inside; tol keeps the round-off
-     * of the coordinates (-2 + i dx is 1e-17 off 0) from deciding that. */
-    const double tol = 1e-9 * e->dx;
+    /* Examples 5 and 6: closed polytopes, P3_CLOSED_SLACK (Table 13's odd
+     * N put x_k = 0, x1 = t and x2 + x3 + x4 = x1 through cell centres). */
+    const double tol = P3_CLOSED_SLACK * e->dx;
     if (e->example == 6) {
         const double y[4] = {e->cs * x[0] + e->sn * x[1], -e->sn * x[0] + e->cs * x[1], e->cs * x[2] + e->sn * x[3],
                              -e->sn * x[2] + e->cs * x[3]};

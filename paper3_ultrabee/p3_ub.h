@@ -43,6 +43,12 @@
  * below 0.05 % of a cell, far below what the sign-based errors see. */
 #define P3_SNAP 1e-3
 
+/* The exact sets of the examples are closed: a cell centre on a face is
+ * inside.  Their tests allow P3_CLOSED_SLACK dx, so that the round-off of
+ * the coordinates (-2 + i dx is ~1e-17 off a face through a centre) does
+ * not decide it. */
+#define P3_CLOSED_SLACK 1e-9
+
 typedef struct {
     int d;                             /* 2..4 */
     int n;                             /* nodes per direction */

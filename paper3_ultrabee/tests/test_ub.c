@@ -37,8 +37,8 @@ static void flux_constant_and_step(void **state)
  * the scheme reproduces the exact averages of the moved square (test
  * below), the L1 count at T = 1 is that of the exact averages: a cell
  * counts when its sign (V <= 1e-12 is -1) differs from the closed moved
- * square [-1.5, -0.5]^2 at its centre (tested with 1e-9 dx of slack, so a
- * centre on an edge is inside).  Three grids of [-2, 2]:
+ * square [-1.5, -0.5]^2 at its centre (with P3_CLOSED_SLACK, so a centre
+ * on an edge is inside).  Three grids of [-2, 2]:
  *   A  N nodes with both ends, dx = 4/(N-1) (ours): 1 corner cell at
  *      N >= 100, covered 0.625^2 < 1/2 with its centre inside;
  *   B  N cells, centres -2 + (i + 1/2) dx, dx = 4/N: at N = 100 the edges
@@ -50,7 +50,7 @@ static void flux_constant_and_step(void **state)
  * cell of A is 0.0016, 0.0004, 0.0001). */
 static int table6_sign_errors(int grid, int N)
 {
-    const double dx = grid == 0 ? 4.0 / (N - 1) : 4.0 / N, slack = 1e-9 * dx;
+    const double dx = grid == 0 ? 4.0 / (N - 1) : 4.0 / N, slack = P3_CLOSED_SLACK * dx;
     const int m = grid == 0 ? N : grid == 1 ? N : N + 1;
     const double off = grid == 1 ? 0.5 : 0;
     const double lo[2] = {-1.5, -1.5}, hi[2] = {-0.5, -0.5};
