@@ -248,6 +248,35 @@ static void crossing(int d, const double *x, const double *y, int in_x, p3_insid
     for (int i = 0; i < d; i++) out[i] = 0.5 * (a[i] + b[i]);
 }
 
+/* The crossings of the exact front with the sub^(d-1) segments parallel to
+ * [x, y] (direction k) through the points x + o, o_j = (s_j / sub - 1/2)
+ * dx_j (j != k, s_j = 0 .. sub - 1): the lattice lines refined sub times in
+ * the strip of cells around the segment.  A sub-segment whose ends are on
+ * the same side gives no point. */
+static void sub_crossings(int d, int k, const double *x, const double *y, const double *dx, int sub,
+                          p3_inside_fn inside, void *ctx, double tol, points *exact)
+{
+    int64_t count = 1;
+    for (int j = 0; j < d - 1; j++) count *= sub;
+    for (int64_t t = 0; t < count; t++) {
+        double xs[P3_DMAX], ys[P3_DMAX], c[P3_DMAX];
+        int64_t r = t;
+        for (int j = 0; j < d; j++) {
+            double o = 0;
+            if (j != k) {
+                o = ((double)(r % sub) / sub - 0.5) * dx[j];
+                r /= sub;
+            }
+            xs[j] = x[j] + o;
+            ys[j] = y[j] + o;
+        }
+        const int in_x = inside(xs, ctx) != 0;
+        if (in_x == (inside(ys, ctx) != 0)) continue;
+        crossing(d, xs, ys, in_x, inside, ctx, tol, c);
+        push(exact, c);
+    }
+}
+
 static void centre(int d, const double *lo, const double *dx, const int *idx, double *x)
 {
     for (int k = 0; k < d; k++) x[k] = lo[k] + idx[k] * dx[k]; /* as p3_centre */
@@ -277,7 +306,7 @@ static int ring_init(sign_ring *r, int d, int n)
  * lines taken from the ring: inside() once per cell.  Shared by the band
  * (UB) and the full grid (LS). */
 static int64_t line_errors(int d, int n, const double *lo, const double *dx, int64_t l, int *idx, const double *vals,
-                           sign_ring *ring, p3_inside_fn inside, void *ctx, double hmin, points *exact)
+                           sign_ring *ring, p3_inside_fn inside, void *ctx, double hmin, int sub, points *exact)
 {
     int64_t wrong = 0;
     signed char *in = &ring->in[(size_t)(l % ring->slots) * (size_t)n];
@@ -301,8 +330,12 @@ static int64_t line_errors(int d, int n, const double *lo, const double *dx, int
             idx[k]--; /* the lower cell's own centre */
             centre(d, lo, dx, idx, x);
             idx[k]++;
-            crossing(d, x, y, below[i_lo], inside, ctx, 1e-6 * hmin, c);
-            push(exact, c);
+            if (sub <= 1) {
+                crossing(d, x, y, below[i_lo], inside, ctx, 1e-6 * hmin, c);
+                push(exact, c);
+            } else {
+                sub_crossings(d, k, x, y, dx, sub, inside, ctx, 1e-6 * hmin, exact);
+            }
         }
         if (k < d - 1) stride *= n;
     }
@@ -372,7 +405,7 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
         line_values(sv, line[l], idx, vals);
-        wrong += line_errors(d, n, pb->lo, sv->dx, l, idx, vals, &ring, inside, ctx, hmin, &exact);
+        wrong += line_errors(d, n, pb->lo, sv->dx, l, idx, vals, &ring, inside, ctx, hmin, pb->front_sub, &exact);
     }
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
     *l1 = cellvol * (double)wrong;
@@ -387,7 +420,8 @@ done:
 }
 
 int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
-                    p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells, hj_error *err)
+                    p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
+                    hj_error *err)
 {
     double *vals = malloc((size_t)n * sizeof *vals);
     sign_ring ring;
@@ -426,7 +460,7 @@ int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_f
                 push(&front, x);
             }
         }
-        wrong += line_errors(d, n, lo, dx, l, idx, vals, &ring, inside, ctx, hmin, &exact);
+        wrong += line_errors(d, n, lo, dx, l, idx, vals, &ring, inside, ctx, hmin, sub, &exact);
     }
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
     *l1 = cellvol * (double)wrong;
@@ -438,4 +472,11 @@ done:
     free(front.p);
     free(exact.p);
     return rc;
+}
+
+void p3_cell_grid(double a, double b, int n, double *lo, double *hi)
+{
+    const double dx = (b - a) / n;
+    *lo = a + 0.5 * dx;
+    *hi = b - 0.5 * dx;
 }

@@ -86,9 +86,10 @@ static double value_at(const int *idx, void *vctx)
     return ls->y[hj_ls_index(&ls->g, i)];
 }
 
-int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells, hj_error *err)
+int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
+                 hj_error *err)
 {
-    return p3_field_errors(ls->d, ls->n, ls->g.min, ls->g.dx, value_at, ls, inside, ctx, l1, haus, ncells, err);
+    return p3_field_errors(ls->d, ls->n, ls->g.min, ls->g.dx, value_at, ls, inside, ctx, sub, l1, haus, ncells, err);
 }
 
 void p3_ls_values(const p3_ls *ls, double *out)

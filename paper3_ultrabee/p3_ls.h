@@ -60,8 +60,9 @@ int p3_ls_run(p3_ls *ls, const hj_ls_term *term, double t1, double cfl, hj_error
  * index fastest).  For figures. */
 void p3_ls_values(const p3_ls *ls, double *out);
 
-/* The errors of section 4 (p3_field_errors on the level set values). */
-int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells,
+/* The errors of section 4 (p3_field_errors on the level set values, sub
+ * as p3_problem's front_sub). */
+int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
                  hj_error *err);
 
 #endif

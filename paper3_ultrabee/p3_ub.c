@@ -187,12 +187,15 @@ void p3_solver_free(p3_solver *sv)
 
 /* ---- initialisation -------------------------------------------------------- */
 
-/* Whether the cells around idx all have the value v of cell idx: sure when
- * the data average over the whole block is +-1, else checked cell by cell
- * (sampled averages may call a cell uniform that the block test would not). */
+/* Whether the cells around idx all have the value v of cell idx (outside
+ * the grid: the boundary value): sure when the data average over the whole
+ * block is +-1, else checked cell by cell (sampled averages may call a cell
+ * uniform that the block test would not). */
 static int uniform_block(const p3_solver *sv, const int *idx, double v, const double *blo, const double *bhi)
 {
     const p3_problem *pb = sv->pb;
+    for (int k = 0; k < pb->d; k++) /* a neighbour outside has the boundary value */
+        if ((idx[k] == 0 || idx[k] == pb->n - 1) && v != pb->boundary) return 0;
     if (pb->uniform) {
         if (pb->uniform(blo, bhi, pb->ctx)) return 1;
     } else {
@@ -297,8 +300,9 @@ static int line_offsets(int d, int off[][P3_DMAX])
 }
 
 /* The values of Neigh(I) in runs: p[3 r + k] for line offset r and last
- * index offset k - 1 (NULL: not stored); in[3 r + k] whether the node is in
- * the grid and not I itself. */
+ * index offset k - 1 (NULL: not stored); in[3 r + k] 1 when the node is in
+ * the grid and not I itself, 2 when it is outside the grid (its value is the
+ * boundary value), 0 for I itself. */
 static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int nl, double **p, char *in)
 {
     const int d = sv->pb->d, n = sv->pb->n;
@@ -313,7 +317,7 @@ static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int n
         }
         if (ok) p3_store_find_run(sv->s, j, 3, &p[3 * r]);
         for (int k = 0; k < 3; k++)
-            in[3 * r + k] = (char)(ok && j[d - 1] + k >= 0 && j[d - 1] + k < n && !(zero && k == 1));
+            in[3 * r + k] = (char)(zero && k == 1 ? 0 : ok && j[d - 1] + k >= 0 && j[d - 1] + k < n ? 1 : 2);
     }
 }
 
@@ -338,7 +342,7 @@ static int expand_band(p3_solver *sv, hj_error *err)
          * the other nodes of Neigh(I) */
         for (int r = 0; r < nl; r++)
             for (int k = 0; k < 3; k++) {
-                if (!in[3 * r + k] || p[3 * r + k]) continue;
+                if (in[3 * r + k] != 1 || p[3 * r + k]) continue;
                 if (sv->v0[i] != 1 && sv->v0[i] != -1)
                     return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
                 for (int q = 0; q < d; q++) j[q] = idx[q] + loff[r][q];
@@ -449,7 +453,7 @@ static int equal_to_neighbours(p3_solver *sv, size_t i, int loff[][P3_DMAX], int
     unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
     neighbours(sv, idx, loff, nl, p, in);
     for (int o = 0; o < 3 * nl; o++)
-        if (in[o] && (p[o] ? *p[o] : sv->v0[i]) != v) return 0;
+        if (in[o] == 1 ? (p[o] ? *p[o] : sv->v0[i]) != v : in[o] == 2 && sv->pb->boundary != v) return 0;
     return 1;
 }
 

@@ -2,10 +2,11 @@
  * Zidani 2010) on a narrow band kept in any p3_store (section 3.5).
  *
  * Equation.  theta_t + max_{a in A} ( f(t, x, a) . grad theta ) = 0 with
- * data +-1 (-1 inside Omega_0), on the box domain [lo, hi] with n nodes per
- * direction, end points included: xi_I = lo + I dx, dx = (hi - lo)/(n - 1),
- * and cells xi_I + [-dx/2, dx/2]^d (this is the grid that makes the
- * published Haus./dx columns and the exact advection of Table 6 agree).  This is the sign
+ * data +-1 (-1 inside Omega_0), on n nodes per direction from lo to hi, end
+ * points included: xi_I = lo + I dx, dx = (hi - lo)/(n - 1), and cells
+ * xi_I + [-dx/2, dx/2]^d.  The paper's examples use N cells of width L/N
+ * tiling the domain [a, b] (p3_cell_grid gives the lo, hi of their
+ * centres; the overview gives the evidence).  This is the sign
  * convention under which the paper's examples and its scheme agree: a
  * single control f gives the advection theta_t + f . grad theta = 0
  * (Example 1), and f = (1, a), a = +-1 gives (13a).  With target = 1 the
@@ -60,6 +61,9 @@ typedef struct {
     double cfl;                        /* 0.9 in the paper */
     double boundary;                   /* value outside the domain */
     double dtmax;                      /* optional cap on the time step (0: none) */
+    int front_sub;                     /* Hausdorff estimate: the exact front is sampled on the
+                                          lattice lines refined front_sub times (0, 1: the lines
+                                          through the cell centres); see p3_solver_errors */
     double snap;                       /* values within snap of +-1 become +-1 (0: 1e-12) */
     /* Average of the initial data phi (+-1) over the box [blo, bhi] (7b). */
     double (*avg0)(const double *blo, const double *bhi, void *ctx);
@@ -110,7 +114,14 @@ void p3_centre(const p3_solver *sv, const int *idx, double *x);
  *          computed set {V <= 0} (V <= 0 with a face neighbour V > 0), the
  *          set whose signs the L1 error counts.  Exact front: the points
  *          where it crosses the segments joining neighbouring cell centres
- *          (bisection on inside, to 1e-6 dx).
+ *          (bisection on inside, to 1e-6 dx); with pb->front_sub = m > 1,
+ *          where it crosses the m^(d-1) parallel segments shifted by
+ *          (s / m - 1/2) dx (s = 0 .. m - 1) in the other directions, i.e.
+ *          the lattice lines refined m times, in the strip of cells around
+ *          each crossing.  The exact front's points farthest from the cell
+ *          centres lie between the centre lines, so m = 1 underestimates the
+ *          distance (a straight front half a cell from the centres: 0.5 dx
+ *          against sqrt(0.5) dx with m even).
  * Every cell of the grid is visited; the values of the cells that are not
  * stored are recovered from the band as the scheme does. */
 typedef int (*p3_inside_fn)(const double *x, void *ctx);
@@ -123,11 +134,17 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
 int p3_solver_values(p3_solver *sv, double *out, hj_error *err);
 
 /* The same errors for values on the full grid of n^d cell centres lo + i dx
- * (the level set runs): value(idx) is V at cell idx.  *ncells (may be
+ * (the level set runs): value(idx) is V at cell idx; sub as front_sub.  *ncells (may be
  * NULL) receives #{V <= 0}; an empty computed set gives haus = +inf. */
 typedef double (*p3_value_fn)(const int *idx, void *ctx);
 int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
-                    p3_inside_fn inside, void *ctx, double *l1, double *haus, int64_t *ncells, hj_error *err);
+                    p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
+                    hj_error *err);
+
+/* The grid of the paper's examples: n cells of width (b - a)/n tiling
+ * [a, b] in each direction; *lo and *hi receive the first and last cell
+ * centres, a + dx/2 and b - dx/2 (the lo, hi of p3_problem). */
+void p3_cell_grid(double a, double b, int n, double *lo, double *hi);
 
 /* Helpers for avg0: the exact average of +-1 data for a box target, and a
  * sampled one (m^d points per box, exact away from the sphere) for a ball. */
