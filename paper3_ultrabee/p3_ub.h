@@ -4,9 +4,10 @@
  * Equation.  theta_t + max_{a in A} ( f(t, x, a) . grad theta ) = 0 with
  * data +-1 (-1 inside Omega_0), on n nodes per direction from lo to hi, end
  * points included: xi_I = lo + I dx, dx = (hi - lo)/(n - 1), and cells
- * xi_I + [-dx/2, dx/2]^d.  The paper's examples use N cells of width L/N
- * tiling the domain [a, b] (p3_cell_grid gives the lo, hi of their
- * centres; the overview gives the evidence).  This is the sign
+ * xi_I + [-dx/2, dx/2]^d.  The published 2-D results (Tables 6-7) come
+ * from N cells of width L/N tiling the domain [a, b]: p3_cell_grid gives
+ * the lo, hi of their centres (the overview gives the evidence; the 3-D
+ * and 4-D examples still take the domain's ends as nodes).  This is the sign
  * convention under which the paper's examples and its scheme agree: a
  * single control f gives the advection theta_t + f . grad theta = 0
  * (Example 1), and f = (1, a), a = +-1 gives (13a).  With target = 1 the
