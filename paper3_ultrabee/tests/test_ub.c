@@ -39,7 +39,7 @@ static void flux_constant_and_step(void **state)
  * counts when its sign (V <= 1e-12 is -1) differs from the closed moved
  * square [-1.5, -0.5]^2 at its centre (with P3_CLOSED_SLACK, so a centre
  * on an edge is inside).  Three grids of [-2, 2]:
- *   A  N nodes with both ends, dx = 4/(N-1) (ours): 1 corner cell at
+ *   A  N nodes with both ends, dx = 4/(N-1) (used before): 1 corner cell at
  *      N >= 100, covered 0.625^2 < 1/2 with its centre inside;
  *   B  N cells, centres -2 + (i + 1/2) dx, dx = 4/N: at N = 100 the edges
  *      pass through centres and the 4 corner cells, a quarter covered,
