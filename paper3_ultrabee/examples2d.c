@@ -30,8 +30,8 @@ value 1 outside the domain):
 
 **Method.** p3_ub.h: dimension-split Ultra-Bee fluxes with the errata,
 band maintenance of section 3.5.  Three readings, fixed by the published
-numbers of Tables 6 and 7 (overview, "Grid", "Initial data" and
-"Hausdorff distance"):
+numbers of Tables 6 and 7 (overview, "Grid, data and Hausdorff estimate
+of the 2-D examples"):
 
 * the grid is N cells of width dx = L/N tiling the domain, values at the
   cell centres (p3_cell_grid);
@@ -65,8 +65,8 @@ and ls_lost_t is the first time after a step at which it happened.
 **Measured.** L1 error = dx^2 #{cells whose sign differs from the exact
 sign at the centre}, Hausdorff distance between the computed front (the
 centres of the boundary cells of {V <= 0}) and the exact front sampled
-where it crosses the lattice lines refined 8 times, Haus/dx, total CPU time (initialisation and steps) and
-its ratio between successive N (the published "Order" column).  CPU
+where it crosses the lattice lines refined 8 times, Haus/dx, total CPU
+time (initialisation and steps) and its ratio between successive N (the published "Order" column).  CPU
 seconds themselves are not compared (2008 laptop).  The same errors for
 the level set runs (ls_*), with their CPU time, steps, the number of
 nodes with V <= 0 at T and the time the front was lost.
@@ -124,7 +124,8 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
  * phi at the cell centre (closed sets, P3_CLOSED_SLACK).  The exact
  * averages would put 1 - 2 (1/4) = 0.5 in the corner cells of Table 6's
  * square at N = 100, whose centres lie on the corners: 4 wrong signs,
- * L1 = 0.0064 against the published 0.000 (overview, "Initial data"). */
+ * L1 = 0.0064 against the published 0.000 (overview, "Grid, data and
+ * Hausdorff estimate of the 2-D examples"). */
 static double avg0(const double *blo, const double *bhi, void *vctx)
 {
     const ex2d *e = vctx;
@@ -156,8 +157,8 @@ static void domain(int example, double *a, double *b)
     *b = example == 4 ? 1 : 2;
 }
 
-/* Closed sets, P3_CLOSED_SLACK (no face passes through a cell centre at
- * the published N of Tables 6-9). */
+/* Closed sets, P3_CLOSED_SLACK (on the cell grid the faces of Table 6's
+ * square pass through cell centres at N = 100, and the data's at N = 50). */
 static int inside(const double *x, void *vctx)
 {
     const ex2d *e = vctx;
