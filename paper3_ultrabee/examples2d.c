@@ -66,8 +66,9 @@ and ls_lost_t is the first time after a step at which it happened.
 sign at the centre}, Hausdorff distance between the computed front (the
 centres of the boundary cells of {V <= 0}) and the exact front sampled
 where it crosses the lattice lines refined 8 times, Haus/dx, total CPU
-time (initialisation and steps) and its ratio between successive N (the published "Order" column).  CPU
-seconds themselves are not compared (2008 laptop).  The same errors for
+time (initialisation and steps) and its ratio between successive N (the
+published "Order" column).  CPU seconds themselves are not compared (2008
+laptop).  The same errors for
 the level set runs (ls_*), with their CPU time, steps, the number of
 nodes with V <= 0 at T and the time the front was lost.
 
