@@ -121,6 +121,12 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
     }
 }
 
+/* Whether y lies in the closed box [lo, hi], with tol of slack. */
+static int in_box(const double *y, const double *lo, const double *hi, double tol)
+{
+    return y[0] >= lo[0] - tol && y[0] <= hi[0] + tol && y[1] >= lo[1] - tol && y[1] <= hi[1] + tol;
+}
+
 /* The initial value of the cell [blo, bhi]: (7b) by the midpoint rule,
  * phi at the cell centre (closed sets, P3_CLOSED_SLACK).  The exact
  * averages would put 1 - 2 (1/4) = 0.5 in the corner cells of Table 6's
@@ -132,8 +138,7 @@ static double avg0(const double *blo, const double *bhi, void *vctx)
     const ex2d *e = vctx;
     const double c[2] = {0.5 * (blo[0] + bhi[0]), 0.5 * (blo[1] + bhi[1])}, tol = P3_CLOSED_SLACK * e->dx;
     if (e->example == 4) return c[1] <= tol ? -1 : 1; /* half plane x2 <= 0 */
-    const int in = c[0] >= e->lo[0] - tol && c[0] <= e->hi[0] + tol && c[1] >= e->lo[1] - tol && c[1] <= e->hi[1] + tol;
-    return in ? -1 : 1;
+    return in_box(c, e->lo, e->hi, tol) ? -1 : 1;
 }
 
 /* Sampled data: a block of cells is uniform only if every centre says so
@@ -182,7 +187,7 @@ static int inside(const double *x, void *vctx)
         return sin(th) * x[0] + cos(th) * x[1] <= 0;
     }
     }
-    return y[0] >= e->lo[0] - tol && y[0] <= e->hi[0] + tol && y[1] >= e->lo[1] - tol && y[1] <= e->hi[1] + tol;
+    return in_box(y, e->lo, e->hi, tol);
 }
 
 typedef struct {
@@ -243,7 +248,7 @@ static int run_ls(ex2d *e, int n, ls_result *res, fig2d *fig, hj_error *err)
     hi[1] = hi[0];
     const int ncontrols = e->example == 3 ? 2 : 1;
     const double rr = e->r;
-    if (e->example == 3 && e->r < 0) e->r = (db - da) / n; /* thin target r = dx for the data */
+    if (e->example == 3 && e->r < 0) e->r = e->dx; /* thin target r = dx for the data */
     p3_ls ls;
     const double c0 = p3_cpu();
     int rc = p3_ls_init(&ls, 2, n, lo, hi, phi_ls, e, err);
