@@ -425,22 +425,31 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
     return HJ_OK;
 }
 
-/* First order solution on the whole grid with Categories I and III fixed
- * (III only when already set), written into w->p. */
-static int first_order_guess(work *w, int fix_iii, int max_iter, int *iters, hj_error *err)
+/* First order solution on the whole grid, written into w->p.  The sweeps
+ * hold Category I fixed, and the Category III nodes of a piece when fix_iii
+ * or when the piece has no Category I node (a curve that misses every node
+ * enters the first order method only through its Category III values).
+ * With keep_iii the Category III values already set are kept. */
+static int first_order_guess(work *w, int nin, int fix_iii, int keep_iii, int max_iter, int *iters, hj_error *err)
 {
     const int W = w->nx + 1;
     const long n = (long)W * (w->ny + 1);
     double *u = malloc(sizeof(double) * (size_t)n), *fh = malloc(sizeof(double) * (size_t)n);
-    unsigned char *fixed = malloc((size_t)n);
-    if (!u || !fh || !fixed) {
-        free(u); free(fh); free(fixed);
+    unsigned char *fixed = malloc((size_t)n), *has_i = calloc((size_t)nin, 1);
+    if (!u || !fh || !fixed || !has_i) {
+        free(u); free(fh); free(fixed); free(has_i);
         return hj_error_set(err, HJ_ENOMEM, "out of memory for the first order sweeps");
     }
     for (int j = 0; j <= w->ny; j++)
         for (int i = 0; i <= w->nx; i++) {
+            const long k = widx(w, i, j);
+            if (w->cat[k] == CAT_I && w->owner[k] >= 0) has_i[w->owner[k]] = 1;
+        }
+    for (int j = 0; j <= w->ny; j++)
+        for (int i = 0; i <= w->nx; i++) {
             const long k = widx(w, i, j), q = (long)j * W + i;
-            fixed[q] = w->cat[k] == CAT_I || (fix_iii && w->cat[k] == CAT_III);
+            fixed[q] = w->cat[k] == CAT_I ||
+                       (keep_iii && w->cat[k] == CAT_III && (fix_iii || !has_i[w->owner[k]]));
             u[q] = w->p[k];
             fh[q] = w->fh[k];
         }
@@ -453,9 +462,9 @@ static int first_order_guess(work *w, int fix_iii, int max_iter, int *iters, hj_
                 rc = hj_error_set(err, HJ_EINVAL, "node (%d, %d) is not reached from any inflow boundary", i, j);
                 break;
             }
-            w->p[widx(w, i, j)] = u[q];
+            if (!(keep_iii && w->cat[widx(w, i, j)] == CAT_III)) w->p[widx(w, i, j)] = u[q];
         }
-    free(u); free(fh); free(fixed);
+    free(u); free(fh); free(fixed); free(has_i);
     return rc;
 }
 
@@ -487,9 +496,10 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
         return hj_error_set(err, HJ_EINVAL, "grid spacing and origin must be finite, h > 0");
     if (!(opt->eps > 0) || !isfinite(opt->eps) || !(opt->delta >= 0) || !isfinite(opt->delta) || opt->max_iter < 1 ||
         !(opt->band >= 1 && opt->band <= 10) ||
-        (opt->richardson_box != HJ_RICH_BOX_NODE && opt->richardson_box != HJ_RICH_BOX_PIECE))
+        (opt->richardson_box != HJ_RICH_BOX_NODE && opt->richardson_box != HJ_RICH_BOX_PIECE) ||
+        (opt->guess != HJ_GUESS_PHYSICAL && opt->guess != HJ_GUESS_WITH_III))
         return hj_error_set(err, HJ_EINVAL, "options: need eps > 0, delta >= 0 finite, 1 <= band <= 10, max_iter >= 1, "
-                                            "a valid Richardson box");
+                                            "a valid Richardson box and initial guess");
     if (nin < 1) return hj_error_set(err, HJ_EINVAL, "no inflow boundary given");
     for (int c = 0; c < nin; c++)
         if (in[c].type == HJ_INFLOW_CURVE && (!in[c].level || !in[c].local))
@@ -537,7 +547,14 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
                     rc = hj_fsm_lax_wendroff_value(sp, &in[w.owner[k]], g->x0 + i * g->h, g->y0 + j * g->h, g->h, &w.p[k],
                                                    err);
             }
-    if (rc == HJ_OK) rc = first_order_guess(&w, opt->strategy != HJ_BC_FIRST_ORDER, opt->max_iter, &stats->fo_iterations, err);
+    /* The initial guess (hj_fsm_guess): with HJ_GUESS_PHYSICAL our
+     * iteration counts of Table 3.3 (b) are 34 47 against the paper's
+     * 35 47; holding Category III fixed too gives 38 54. */
+    if (rc == HJ_OK) {
+        const int set_iii = opt->strategy != HJ_BC_FIRST_ORDER;
+        rc = first_order_guess(&w, nin, set_iii && opt->guess == HJ_GUESS_WITH_III, set_iii, opt->max_iter,
+                               &stats->fo_iterations, err);
+    }
 
     /* WENO Gauss-Seidel iterations on Category IV. */
     if (rc == HJ_OK && !opt->first_order_only) {

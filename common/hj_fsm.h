@@ -88,6 +88,22 @@ typedef enum { HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER } hj_bc_s
  *                      reaching the neighbouring pieces (more accurate:
  *                      exact wherever first order sweeps are). */
 typedef enum { HJ_RICH_BOX_NODE, HJ_RICH_BOX_PIECE } hj_rich_box;
+/* Initial guess of the Category IV nodes (section 2.1: "the solution from
+ * the first-order Godunov fast sweeping method [19] is used as the initial
+ * guess"):
+ *   HJ_GUESS_WITH_III  first order sweeps that hold Category I and the
+ *                      strategy's Category III values fixed (the default:
+ *                      an inflow curve that misses the grid nodes enters
+ *                      the first order method through the nodes near it);
+ *   HJ_GUESS_PHYSICAL  first order sweeps from the boundary condition on
+ *                      the grid nodes (Category I) alone, Zhao's method as
+ *                      it stands, for boundaries that run along grid lines
+ *                      (Example 2); the Category III values of the strategy
+ *                      are kept.  A piece with no Category I node still
+ *                      enters through its Category III values.  A curve
+ *                      that only touches a few nodes gives a poor guess
+ *                      (Example 3 then does not converge at N = 320). */
+typedef enum { HJ_GUESS_WITH_III, HJ_GUESS_PHYSICAL } hj_fsm_guess;
 /* Norms of (2.8): mean |change| over the nodes, h^2 sum |change| (the L1
  * integral, as the paper's L1 errors), max |change|. */
 typedef enum { HJ_STOP_L1_MEAN, HJ_STOP_L1_INTEGRAL, HJ_STOP_LINF } hj_stop_norm;
@@ -102,6 +118,7 @@ typedef struct {
     double band;            /* Category III: distance to a curve < band h,
                              * horizontally or vertically (paper: 3) */
     hj_rich_box richardson_box; /* local boxes of Richardson for curves */
+    hj_fsm_guess guess;         /* initial guess of Category IV */
     /* Called after every iteration when not NULL (progress display). */
     void (*progress)(int iter, double change, void *ctx);
     void *progress_ctx;

@@ -31,6 +31,7 @@ typedef struct {
     int exclude_mode; /* EXCL_* */
     double band;
     hj_rich_box richardson_box;
+    hj_fsm_guess guess;
     int max_iter;
     long grid_N;
     hj_bc_strategy strategy;
@@ -128,6 +129,7 @@ static int run_one(const p1_study *st, const settings *s, const p1_case *c, long
     opt.max_iter = s->max_iter;
     opt.band = s->band;
     opt.richardson_box = s->richardson_box;
+    opt.guess = s->guess;
     progress_ctx pc = {st->program, c->name, N};
     opt.progress = show_progress;
     opt.progress_ctx = &pc;
@@ -219,9 +221,9 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
     }
     snprintf(path, sizeof path, "%s/%s.tsv", s->out_dir, st->table);
     if ((rc = hj_out_open(&tab, path, err))) { hj_out_abort(&fit); hj_out_abort(&gp); return rc; }
-    fprintf(tab.fp, "# %s computed by %s: strategy %s, delta %.3g, stop norm %s, L1 %s\n", st->table, st->program,
+    fprintf(tab.fp, "# %s computed by %s: strategy %s, delta %.3g, stop norm %s, L1 %s, guess %s\n", st->table, st->program,
             strategy_name(s->strategy), s->delta, s->stop_norm == HJ_STOP_LINF ? "max" : s->stop_norm == HJ_STOP_L1_INTEGRAL ? "h^2 sum" : "mean",
-            s->l1_integral ? "h^2 sum|e|" : "mean |e|");
+            s->l1_integral ? "h^2 sum|e|" : "mean |e|", s->guess == HJ_GUESS_WITH_III ? "category-iii" : "physical");
     fprintf(tab.fp, "case\tN\th\tL1\tL1_order\tLinf\tLinf_order\titer\tfo_iter\tchange\tseconds\tcat3\tmeasured\n");
     for (int ci = 0; ci < st->ncases; ci++)
         for (int k = 0; k < s->nsizes; k++) {
@@ -241,7 +243,7 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
 /* The options that take a value (all others but --help, --quick are unknown). */
 static int takes_value(const char *a)
 {
-    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box"};
+    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box", "--guess"};
     for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
         if (!strcmp(a, opts[k])) return 1;
     return 0;
@@ -266,10 +268,13 @@ static void usage(FILE *f, const p1_study *st, const char *extra)
             "  --band B            Category III: horizontal/vertical distance < B h to a curve (default 3)\n"
             "  --richardson-box M  node (default: the paper's [-2h, 2h]^2 around each Category III node of a curve)\n"
             "                      | piece (one box per inflow curve: exact where first order sweeps are)\n"
+            "  --guess G           initial guess: first order sweeps from the boundary condition alone (physical)\n"
+            "                      or also holding the Category III values (category-iii); default: %s\n"
             "  --max-iter N        at most N iterations (default 10000)\n"
             "  --grid-N N          write the solution grid of this N (default 80)\n"
             "  --help              this text\n%s",
-            st->program, st->table, st->nquick, st->table, extra ? extra : "");
+            st->program, st->table, st->nquick, st->table,
+            st->guess == HJ_GUESS_PHYSICAL ? "physical" : "category-iii", extra ? extra : "");
 }
 
 int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
@@ -287,6 +292,7 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
     s.max_iter = 10000;
     s.grid_N = 80;
     s.strategy = st->strategy;
+    s.guess = st->guess;
     s.nsizes = st->nsizes;
     memcpy(s.sizes, st->sizes, sizeof(long) * (size_t)st->nsizes);
     hj_error err;
@@ -329,6 +335,10 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
             if (!strcmp(v, "node")) s.richardson_box = HJ_RICH_BOX_NODE;
             else if (!strcmp(v, "piece")) s.richardson_box = HJ_RICH_BOX_PIECE;
             else hj_cli_fail(prog, HJ_EXIT_USAGE, "--richardson-box must be node or piece, got '%s'", v);
+        } else if (!strcmp(a, "--guess")) {
+            if (!strcmp(v, "physical")) s.guess = HJ_GUESS_PHYSICAL;
+            else if (!strcmp(v, "category-iii")) s.guess = HJ_GUESS_WITH_III;
+            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--guess must be physical or category-iii, got '%s'", v);
         } else if (!strcmp(a, "--strategy")) {
             if (!strcmp(v, "richardson")) s.strategy = HJ_BC_RICHARDSON;
             else if (!strcmp(v, "lax-wendroff")) s.strategy = HJ_BC_LAX_WENDROFF;

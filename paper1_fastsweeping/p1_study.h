@@ -45,6 +45,7 @@ typedef struct {
     const long *sizes;      /* the published N */
     int nsizes;
     int nquick;             /* --quick runs the first nquick sizes */
+    hj_fsm_guess guess;     /* initial guess (default: HJ_GUESS_WITH_III) */
 } p1_study;
 
 /* Run the study from the command line; returns the process exit status. */
