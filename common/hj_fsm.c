@@ -4,6 +4,7 @@
 #include "hj_fsm.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -430,6 +431,25 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
  * or when the piece has no Category I node (a curve that misses every node
  * enters the first order method only through its Category III values).
  * With keep_iii the Category III values already set are kept. */
+/* hj_fsm_options.guess_noise: multiply each Category IV value by
+ * 1 + noise u, u uniform in [-1, 1).  The generator is splitmix64, written
+ * out so that a seed gives the same perturbation on every platform. */
+static void perturb_guess(work *w, double noise, unsigned long seed)
+{
+    uint64_t x = seed;
+    for (int j = 0; j <= w->ny; j++)
+        for (int i = 0; i <= w->nx; i++) {
+            const long k = widx(w, i, j);
+            if (w->cat[k] != CAT_IV) continue;
+            uint64_t z = (x += 0x9E3779B97F4A7C15ull);
+            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+            z ^= z >> 31;
+            const double u = (double)(z >> 11) * 0x1.0p-52 - 1.0; /* [-1, 1) */
+            w->p[k] *= 1 + noise * u;
+        }
+}
+
 static int first_order_guess(work *w, int nin, int fix_iii, int keep_iii, int max_iter, int *iters, hj_error *err)
 {
     const int W = w->nx + 1;
@@ -497,9 +517,10 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
     if (!(opt->eps > 0) || !isfinite(opt->eps) || !(opt->delta >= 0) || !isfinite(opt->delta) || opt->max_iter < 1 ||
         !(opt->band >= 1 && opt->band <= 10) ||
         (opt->richardson_box != HJ_RICH_BOX_NODE && opt->richardson_box != HJ_RICH_BOX_PIECE) ||
-        (opt->guess != HJ_GUESS_PHYSICAL && opt->guess != HJ_GUESS_WITH_III))
+        (opt->guess != HJ_GUESS_PHYSICAL && opt->guess != HJ_GUESS_WITH_III) ||
+        !(opt->guess_noise >= 0 && opt->guess_noise < 1))
         return hj_error_set(err, HJ_EINVAL, "options: need eps > 0, delta >= 0 finite, 1 <= band <= 10, max_iter >= 1, "
-                                            "a valid Richardson box and initial guess");
+                                            "a valid Richardson box and initial guess, 0 <= guess_noise < 1");
     if (nin < 1) return hj_error_set(err, HJ_EINVAL, "no inflow boundary given");
     for (int c = 0; c < nin; c++)
         if (in[c].type == HJ_INFLOW_CURVE && (!in[c].level || !in[c].local))
@@ -555,6 +576,8 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
         rc = first_order_guess(&w, nin, set_iii && opt->guess == HJ_GUESS_WITH_III, set_iii, opt->max_iter,
                                &stats->fo_iterations, err);
     }
+
+    if (rc == HJ_OK && opt->guess_noise > 0) perturb_guess(&w, opt->guess_noise, opt->guess_seed);
 
     /* WENO Gauss-Seidel iterations on Category IV. */
     if (rc == HJ_OK && !opt->first_order_only) {

@@ -119,6 +119,14 @@ typedef struct {
                              * horizontally or vertically (paper: 3) */
     hj_rich_box richardson_box; /* local boxes of Richardson for curves */
     hj_fsm_guess guess;         /* initial guess of Category IV */
+    /* Round-off sensitivity studies: each Category IV value of the initial
+     * guess is multiplied by 1 + guess_noise u, u uniform in [-1, 1) from
+     * a fixed generator seeded by guess_seed.  0 (the default) leaves the
+     * guess alone.  Where the discrete problem has several fixed points
+     * (near a zero of f, Example 2 (b)) the one reached can change with
+     * perturbations of round-off size; this option measures that. */
+    double guess_noise;         /* 0 <= guess_noise < 1 */
+    unsigned long guess_seed;
     /* Called after every iteration when not NULL (progress display). */
     void (*progress)(int iter, double change, void *ctx);
     void *progress_ctx;

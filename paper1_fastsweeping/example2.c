@@ -50,6 +50,13 @@ for Table 3.3 (b) where the paper has 35 47 62 90; ours are 34 47 77 135,
 and the N = 160 error becomes 5.4e-8 (paper 5.25E-08) instead of 1.3e-7.
 The study "The initial guess" below shows both.
 
+**Round-off at N = 640.**  Near the centre of case (b), where f = 0, the
+discrete problem has several fixed points.  At N = 640 the one our
+iteration reaches moves when the initial guess is perturbed by about ten
+units of round-off (`--guess-noise 1e-15`), so those cells can change with
+the compiler or the order of floating point operations.  The study
+"Round-off decides the fixed point of Example 2 (b)" measures it.
+
 **Parameters.** N = 80, 160, 320, 640 (h = 2/N), WENO eps = 1e-6 h^2 (the
 paper's choice for this example), delta and norms as in Example 1.
 `--quick` runs N = 80, 160.

@@ -32,6 +32,8 @@ typedef struct {
     double band;
     hj_rich_box richardson_box;
     hj_fsm_guess guess;
+    double guess_noise;       /* relative perturbation of the guess, 0: none */
+    long seed;
     int max_iter;
     long grid_N;
     hj_bc_strategy strategy;
@@ -130,6 +132,8 @@ static int run_one(const p1_study *st, const settings *s, const p1_case *c, long
     opt.band = s->band;
     opt.richardson_box = s->richardson_box;
     opt.guess = s->guess;
+    opt.guess_noise = s->guess_noise;
+    opt.guess_seed = (unsigned long)s->seed;
     progress_ctx pc = {st->program, c->name, N};
     opt.progress = show_progress;
     opt.progress_ctx = &pc;
@@ -224,6 +228,8 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
     fprintf(tab.fp, "# %s computed by %s: strategy %s, delta %.3g, stop norm %s, L1 %s, guess %s\n", st->table, st->program,
             strategy_name(s->strategy), s->delta, s->stop_norm == HJ_STOP_LINF ? "max" : s->stop_norm == HJ_STOP_L1_INTEGRAL ? "h^2 sum" : "mean",
             s->l1_integral ? "h^2 sum|e|" : "mean |e|", s->guess == HJ_GUESS_WITH_III ? "category-iii" : "physical");
+    if (s->guess_noise > 0)
+        fprintf(tab.fp, "# guess perturbed: relative noise %.3g, seed %ld (round-off sensitivity study)\n", s->guess_noise, s->seed);
     fprintf(tab.fp, "case\tN\th\tL1\tL1_order\tLinf\tLinf_order\titer\tfo_iter\tchange\tseconds\tcat3\tmeasured\n");
     for (int ci = 0; ci < st->ncases; ci++)
         for (int k = 0; k < s->nsizes; k++) {
@@ -243,7 +249,7 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
 /* The options that take a value (all others but --help, --quick are unknown). */
 static int takes_value(const char *a)
 {
-    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box", "--guess"};
+    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box", "--guess", "--guess-noise", "--seed"};
     for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
         if (!strcmp(a, opts[k])) return 1;
     return 0;
@@ -270,6 +276,9 @@ static void usage(FILE *f, const p1_study *st, const char *extra)
             "                      | piece (one box per inflow curve: exact where first order sweeps are)\n"
             "  --guess G           initial guess: first order sweeps from the boundary condition alone (physical)\n"
             "                      or also holding the Category III values (category-iii); default: %s\n"
+            "  --guess-noise R     multiply each Category IV value of the guess by 1 + R u, u uniform in [-1, 1)\n"
+            "                      (round-off sensitivity; default 0: no perturbation)\n"
+            "  --seed S            seed of that perturbation (default 1)\n"
             "  --max-iter N        at most N iterations (default 10000)\n"
             "  --grid-N N          write the solution grid of this N (default 80)\n"
             "  --help              this text\n%s",
@@ -293,6 +302,7 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
     s.grid_N = 80;
     s.strategy = st->strategy;
     s.guess = st->guess;
+    s.seed = 1;
     s.nsizes = st->nsizes;
     memcpy(s.sizes, st->sizes, sizeof(long) * (size_t)st->nsizes);
     hj_error err;
@@ -312,6 +322,8 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
         else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &s.eps, &err), s.eps_h2 = 0;
         else if (!strcmp(a, "--eps-h2")) rc = hj_parse_double(v, "--eps-h2", 1e-300, 1e6, &s.eps, &err), s.eps_h2 = 1;
         else if (!strcmp(a, "--band")) rc = hj_parse_double(v, "--band", 1, 10, &s.band, &err);
+        else if (!strcmp(a, "--guess-noise")) rc = hj_parse_double(v, "--guess-noise", 0, 0.5, &s.guess_noise, &err);
+        else if (!strcmp(a, "--seed")) rc = hj_parse_long(v, "--seed", 0, 2147483647L, &s.seed, &err);
         else if (!strcmp(a, "--grid-N")) rc = hj_parse_long(v, "--grid-N", 8, 10000, &s.grid_N, &err);
         else if (!strcmp(a, "--max-iter")) {
             long m;

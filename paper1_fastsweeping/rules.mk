@@ -42,7 +42,7 @@ $(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='Table $(subst table,,$*): contours of the computed solution (N = 80)'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Studies shown in the report (Markdown written by studies.sh).
-P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/richardson-box.md $(P1_OUT)/guess.md $(P1_OUT)/treatments.md
+P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/richardson-box.md $(P1_OUT)/guess.md $(P1_OUT)/roundoff.md $(P1_OUT)/treatments.md
 $(P1_OUT)/eps-scan.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh eps-scan $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
@@ -52,6 +52,9 @@ $(P1_OUT)/richardson-box.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 $(P1_OUT)/guess.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh guess $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
+$(P1_OUT)/roundoff.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh $(P1_OUT)/table3.2.tsv $(P1_OUT)/table3.3.tsv
+	@mkdir -p $(@D)
+	$(P1)/studies.sh roundoff $(<D) $(P1)/published/table3.3.tsv $(@D) > $@.tmp && mv $@.tmp $@
 $(P1_OUT)/treatments.md: $(BUILD)/bin/$(P1)/example1 $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh treatments $(<D) > $@.tmp && mv $@.tmp $@

@@ -47,6 +47,9 @@ static void bad_options(void **state)
     expect_failure(P1 "example3 --eps inf", 2, "must be finite");
     expect_failure(P1 "example2 --strategy magic", 2, "--strategy must be");
     expect_failure(P1 "example2 --guess exact", 2, "--guess must be physical or category-iii");
+    expect_failure(P1 "example2 --guess-noise 1", 2, "--guess-noise must be between 0 and 0.5");
+    expect_failure(P1 "example2 --guess-noise nan", 2, "--guess-noise must be finite");
+    expect_failure(P1 "example2 --seed -1", 2, "--seed must be between");
     expect_failure(P1 "example4 --sizes", 2, "needs a value");
     expect_failure(P1 "example1 stray", 2, "unexpected argument");
 }

@@ -315,6 +315,51 @@ static void deterministic(void **state)
     free(b);
 }
 
+/* hj_fsm_options.guess_noise: the guess moves by at most the relative
+ * amount asked (and by close to it somewhere), only on Category IV, the
+ * same way for the same seed; on a smooth problem the converged solution
+ * does not depend on it beyond the stopping threshold. */
+static void guess_noise(void **state)
+{
+    (void)state;
+    hj_inflow src = {.type = HJ_INFLOW_POINT, .x = 0, .y = 0, .value = -2, .richardson = 1};
+    hj_speed sp = {ex1_speed, NULL, NULL};
+    hj_grid2 g = {40, 40, -1, -1, 2.0 / 40};
+    const size_t n = 41 * 41;
+    double *phi[4];
+    for (int r = 0; r < 4; r++) {
+        hj_fsm_options o = hj_fsm_default_options();
+        o.strategy = HJ_BC_RICHARDSON;
+        o.first_order_only = r < 3;
+        o.guess_noise = r == 0 ? 0 : 1e-3;
+        o.guess_seed = 7;
+        hj_fsm_stats st;
+        phi[r] = malloc(sizeof(double) * n);
+        assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi[r], &st, NULL), HJ_OK);
+    }
+    double mx = 0;
+    int moved_near_source = 0;
+    for (int j = 0; j <= 40; j++)
+        for (int i = 0; i <= 40; i++) {
+            const size_t k = (size_t)j * 41 + i;
+            const double rel = fabs(phi[1][k] / phi[0][k] - 1);
+            if (phi[0][k] != 0 && rel > mx) mx = rel;
+            if (abs(i - 20) <= 2 && abs(j - 20) <= 2) moved_near_source += phi[1][k] != phi[0][k];
+        }
+    assert_true(mx <= 1e-3 * (1 + 1e-12) && mx > 0.9e-3);
+    assert_int_equal(moved_near_source, 0); /* Categories I and III are not perturbed */
+    assert_memory_equal(phi[1], phi[2], sizeof(double) * n);
+    hj_fsm_options o = hj_fsm_default_options();
+    o.strategy = HJ_BC_RICHARDSON;
+    hj_fsm_stats st;
+    assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi[0], &st, NULL), HJ_OK);
+    assert_true(max_error(&g, phi[0], ex1_exact, 0) < 1e-3);
+    double d = 0;
+    for (size_t k = 0; k < n; k++) d = fmax(d, fabs(phi[3][k] - phi[0][k]));
+    assert_true(d > 0 && d < 1e-9);
+    for (int r = 0; r < 4; r++) free(phi[r]);
+}
+
 static double neg_speed(double x, double y, void *c) { (void)x, (void)y, (void)c; return -1; }
 static double nan_speed(double x, double y, void *c) { (void)x, (void)y, (void)c; return NAN; }
 
@@ -348,6 +393,13 @@ static void bad_input(void **state)
     o.delta = 0;
     assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, &err), HJ_ENOCONV);
     assert_int_equal(hj_fsm_solve(&g, &sp, &src, 0, &o, phi, &st, &err), HJ_EINVAL);
+    o = hj_fsm_default_options();
+    o.strategy = HJ_BC_RICHARDSON;
+    const double bad_noise[3] = {-1e-3, 1, NAN};
+    for (int k = 0; k < 3; k++) {
+        o.guess_noise = bad_noise[k];
+        assert_int_equal(hj_fsm_solve(&g, &sp, &src, 1, &o, phi, &st, &err), HJ_EINVAL);
+    }
 }
 
 int main(void)
@@ -358,7 +410,7 @@ int main(void)
         cmocka_unit_test(polynomial_case_to_roundoff),
         cmocka_unit_test(richardson_node_boxes_third_order), cmocka_unit_test(initial_guess_from_boundary),
         cmocka_unit_test(point_source_orders),
-        cmocka_unit_test(deterministic), cmocka_unit_test(bad_input),
+        cmocka_unit_test(guess_noise), cmocka_unit_test(deterministic), cmocka_unit_test(bad_input),
     };
     return cmocka_run_group_tests_name("hj_fsm", tests, NULL, NULL);
 }
