@@ -426,11 +426,6 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
     return HJ_OK;
 }
 
-/* First order solution on the whole grid, written into w->p.  The sweeps
- * hold Category I fixed, and the Category III nodes of a piece when fix_iii
- * or when the piece has no Category I node (a curve that misses every node
- * enters the first order method only through its Category III values).
- * With keep_iii the Category III values already set are kept. */
 /* hj_fsm_options.guess_noise: multiply each Category IV value by
  * 1 + noise u, u uniform in [-1, 1).  The generator is splitmix64, written
  * out so that a seed gives the same perturbation on every platform. */
@@ -450,6 +445,11 @@ static void perturb_guess(work *w, double noise, unsigned long seed)
         }
 }
 
+/* First order solution on the whole grid, written into w->p.  The sweeps
+ * hold Category I fixed, and the Category III nodes of a piece when fix_iii
+ * or when the piece has no Category I node (a curve that misses every node
+ * enters the first order method only through its Category III values).
+ * With keep_iii the Category III values already set are kept. */
 static int first_order_guess(work *w, int nin, int fix_iii, int keep_iii, int max_iter, int *iters, hj_error *err)
 {
     const int W = w->nx + 1;

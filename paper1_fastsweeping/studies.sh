@@ -90,8 +90,10 @@ roundoff)
     printf '\n#### Round-off decides the fixed point of Example 2 (b)\n\n'
     printf 'Every Category IV value of the initial guess multiplied by 1 + R u, u uniform in [-1, 1) from a fixed generator (`--guess-noise R --seed S`); the unit round-off of double precision is 1.1e-16.  L1 errors of Table 3.3 (b) (Lax-Wendroff) and of Table 3.2 (b) (Richardson), iterations in brackets; R = 0 is the reproduction run above; computed by `studies.sh roundoff`.\n\n'
     printf '<table>\n<tr><th>R</th><th>seed</th><th>3.3 (b) N = 80</th><th>3.3 (b) N = 160</th><th>3.3 (b) N = 320</th><th>3.3 (b) N = 640</th><th>3.2 (b) N = 640</th></tr>\n'
-    lw_row() { awk -F'\t' '!/^#/ && $1 == "b" { printf "<td>%s (%s)</td>", $4, $8 }' "$1"; }
-    r_row() { awk -F'\t' '!/^#/ && $1 == "b" && $2 == 640 { printf "<td>%s (%s)</td>", $4, $8 }' "$1"; }
+    # one cell per N (80 160 320 640), "-" where a table lacks that N (QUICK results)
+    lw_row() { awk -F'\t' '!/^#/ && $1 == "b" { v[$2] = $4 " (" $8 ")" }
+        END { split("80 160 320 640", n, " "); for (k = 1; k <= 4; k++) printf "<td>%s</td>", (n[k] in v) ? v[n[k]] : "-" }' "$1"; }
+    r_row() { awk -F'\t' '!/^#/ && $1 == "b" && $2 == 640 { v = $4 " (" $8 ")" } END { printf "<td>%s</td>", v == "" ? "-" : v }' "$1"; }
     printf '<tr><td>0</td><td>-</td>%s%s</tr>\n' "$(lw_row "$res/table3.3.tsv")" "$(r_row "$res/table3.2.tsv")"
     for rs in 1e-15:1 1e-15:2 1e-9:1; do
         R=${rs%%:*} S=${rs#*:}
