@@ -80,14 +80,18 @@ typedef struct {
 
 typedef enum { HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER } hj_bc_strategy;
 /* Where the local first order sweeps of Richardson extrapolation run for
- * an inflow curve (point sources always use [-2h, 2h]^2 around the source):
+ * an inflow curve (point sources use [-2h, 2h]^2 around the source, with
+ * the same margin as HJ_RICH_BOX_NODE, which cannot change their values):
  *   HJ_RICH_BOX_NODE   a box [-2h, 2h]^2 around each Category III node
- *                      (the paper's "small box"; third order accurate:
- *                      reproduces Table 3.2);
+ *                      (the paper's "small box"), on each of the grids h,
+ *                      h/2, h/4 widened by one node of that grid (third
+ *                      order accurate: reproduces Table 3.2);
+ *   HJ_RICH_BOX_TIGHT  the same boxes without the extra node (the box
+ *                      [-2h, 2h]^2 alone on every grid);
  *   HJ_RICH_BOX_PIECE  one box around all the piece's Category III nodes,
  *                      reaching the neighbouring pieces (more accurate:
  *                      exact wherever first order sweeps are). */
-typedef enum { HJ_RICH_BOX_NODE, HJ_RICH_BOX_PIECE } hj_rich_box;
+typedef enum { HJ_RICH_BOX_NODE, HJ_RICH_BOX_PIECE, HJ_RICH_BOX_TIGHT } hj_rich_box;
 /* Initial guess of the Category IV nodes (section 2.1: "the solution from
  * the first-order Godunov fast sweeping method [19] is used as the initial
  * guess"):

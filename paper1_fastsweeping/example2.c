@@ -15,9 +15,10 @@ III, fixed either by
 
 - Richardson extrapolation (Table 3.2, `--strategy richardson`): first
   order sweeps with h, h/2, h/4 in the small box [-2h, 2h]^2 around each
-  Category III node (clipped to the domain; the box's inner sides are
-  outflow, every boundary node in it is Category I), combined by (2.9);
-  a node near a corner belongs to the nearer edge; or by
+  Category III node, widened on each grid by one node of that grid
+  (clipped to the domain; the box's inner sides are outflow, every
+  boundary node in it is Category I), combined by (2.9); a node near a
+  corner belongs to the nearer edge; or by
 - the Lax-Wendroff procedure (Table 3.3, `--strategy lax-wendroff`):
   phi = s phi_s + s^2/2 phi_ss at distance s from the nearest edge, with
   phi_s = f and phi_ss = f_s from the PDE (g = 0 on the edges).
@@ -36,8 +37,18 @@ box per edge that reaches the neighbouring edges
 the paper instead says its Richardson values are "only high order accurate
 but not exact to round-off", and its Table 3.2 (a) shows 3.45e-6 with
 orders 3.51-3.59.  The node boxes cut each node's domain of dependence
-along the edge and give 2.5e-6 with orders 3.53, 3.65, 3.88 and similar
-iteration counts: that is the reading we keep.
+along the edge, and that cut sets the error.  The text does not say how
+the box sits on the three grids; the table does.  Widened on each grid by
+one node of that grid ([-3h, 3h] on h, [-2.5h, 2.5h] on h/2,
+[-2.25h, 2.25h] on h/4, as a local array with one free layer around the
+box), case (a) gives 3.63e-6, 2.92e-7, 2.48e-8, 1.89e-9 and case (b)
+4.47e-5, 3.51e-6, 2.45e-7, 9.68e-9 against the paper's 3.45e-6, 3.04e-7,
+2.58e-8, 2.14e-9 and 3.38e-5, 3.44e-6, 2.23e-7, 9.25e-9.  The box alone on
+every grid (`--richardson-box tight`) gives 0.54-0.72 of case (a) and
+0.22-0.45 of case (b).  What decides it is case (b) against case (a): 9.8,
+11.3, 8.6, 4.3 times in the paper, 12.3, 12.0, 9.9, 5.1 with the margin,
+3.0-3.6 without.  The study "Where the Richardson sweeps run" shows the
+three readings.
 
 **Decision: the initial guess.**  Section 2.1 starts the Category IV
 nodes from "the solution from the first-order Godunov fast sweeping

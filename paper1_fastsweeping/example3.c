@@ -4,10 +4,18 @@
 **Problem.** |grad phi| = 1 on [-1, 1]^2 with phi = 0 on the circle of
 radius 0.5 centred at the origin.  The exact solution is the distance to
 the circle, | r - 0.5 |, on both sides of it; it is singular at the
-centre, so errors are measured outside the box [-0.15, 0.15]^2 (tested
-literally on the computed coordinates: the nodes on the edges x, y = +0.15
-round to just outside and are measured, those on -0.15 are not; see
-`excluded()` in p1_study.c and the overview).
+centre, so errors are measured away from it.  The paper says "outside the
+box [-0.15, 0.15]^2".
+
+**Decision: the distance from the centre.**  We measure the nodes at
+distance >= 0.15 from the centre (the disc inscribed in the paper's box):
+all eight published errors agree to about three digits, e.g. L-infinity
+1.284e-4, 4.072e-6, 1.222e-6, 1.610e-7 against 0.129E-03, 0.407E-05,
+0.122E-05, 0.161E-06.  Outside the box as written (`--exclude literal`) the
+errors are 0.54-0.93 of the paper's: the error near the centre is largest
+along the diagonals, in the box's corners.  See `excluded()` in
+p1_study.c, the overview and the study "Where the errors of Examples 3
+and 4 are measured".
 
 **Method.** Third order WENO fast sweeping.  The circle passes between
 grid nodes, so there is no Category I node; the nodes at horizontal or
@@ -36,7 +44,7 @@ int main(int argc, char **argv)
 {
     static const hj_inflow gamma[] = {
         {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &circle}};
-    static const p1_box centre[] = {{-0.15, 0.15, -0.15, 0.15}};
+    static const p1_box centre[] = {{-0.15, 0.15, -0.15, 0.15, .around_point = 1}};
     static const long sizes[] = {80, 160, 320, 640};
     const p1_case cases[] = {{
         .name = "-",

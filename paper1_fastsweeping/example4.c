@@ -5,10 +5,15 @@
 radius 0.5 centred at (-1, 0) and (sqrt(1.5), 0).  The exact solution is
 the distance to the nearer circle.  It is singular at the two centres and
 on the bisector x = (sqrt(1.5) - 1)/2 where the characteristics of the two
-circles meet, so errors are measured outside the boxes
+circles meet.  The paper measures the errors outside the boxes
 [-1.15, -0.85] x [-0.15, 0.15], [sqrt(1.5) - 0.15, sqrt(1.5) + 0.15] x
 [-0.15, 0.15] and [sqrt(0.375) - 0.65, sqrt(0.375) - 0.35] x [-3, 3]
-(sqrt(0.375) - 0.5 = (sqrt(1.5) - 1)/2 is the bisector).
+(sqrt(0.375) - 0.5 = (sqrt(1.5) - 1)/2 is the bisector).  As in Example 3
+we leave out the nodes closer than 0.15 to a centre (the discs inscribed in
+the first two boxes) and the band, closed, as written: the L-infinity
+errors then agree within 1.3 % at N = 160, 320, 640 (7.567e-4, 2.940e-5,
+3.363e-6 against 0.766E-03, 0.294E-04, 0.336E-05); the boxes as written
+(`--exclude literal`) give 0.26-0.58 of them.
 
 **Method.** As Example 3, with two inflow curves; a Category III node takes
 its Lax-Wendroff value from the nearer circle.
@@ -37,7 +42,9 @@ int main(int argc, char **argv)
         {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &circles[1]}};
     const double s15 = sqrt(1.5), s0375 = sqrt(0.375);
     const p1_box excl[] = {
-        {-1.15, -0.85, -0.15, 0.15}, {s15 - 0.15, s15 + 0.15, -0.15, 0.15}, {s0375 - 0.65, s0375 - 0.35, -3, 3}};
+        {-1.15, -0.85, -0.15, 0.15, .around_point = 1},
+        {s15 - 0.15, s15 + 0.15, -0.15, 0.15, .around_point = 1},
+        {s0375 - 0.65, s0375 - 0.35, -3, 3, .around_point = 0}};
     static const long sizes[] = {80, 160, 320, 640};
     const p1_case cases[] = {{
         .name = "-",

@@ -19,8 +19,14 @@
 
 #include "hj_fsm.h"
 
+/* A box of the plane.  For an excluded box, around_point marks the box
+ * the paper gives around a singular point (its centre, half-width w): the
+ * default measurement (--exclude distance) leaves out the nodes closer
+ * than w to the point, the disc inscribed in the box; see excluded() in
+ * p1_study.c. */
 typedef struct {
     double xmin, xmax, ymin, ymax;
+    int around_point;
 } p1_box;
 
 typedef struct {

@@ -42,13 +42,16 @@ $(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='Table $(subst table,,$*): contours of the computed solution (N = 80)'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Studies shown in the report (Markdown written by studies.sh).
-P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/richardson-box.md $(P1_OUT)/guess.md $(P1_OUT)/roundoff.md $(P1_OUT)/treatments.md
+P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/richardson-box.md $(P1_OUT)/exclude.md $(P1_OUT)/guess.md $(P1_OUT)/roundoff.md $(P1_OUT)/treatments.md
 $(P1_OUT)/eps-scan.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh eps-scan $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
 $(P1_OUT)/richardson-box.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh richardson-box $(<D) $(P1)/published/table3.2.tsv > $@.tmp && mv $@.tmp $@
+$(P1_OUT)/exclude.md: $(BUILD)/bin/$(P1)/example3 $(BUILD)/bin/$(P1)/example4 $(P1)/studies.sh
+	@mkdir -p $(@D)
+	$(P1)/studies.sh exclude $(<D) $(P1)/published/table3.4.tsv $(P1)/published/table3.5.tsv > $@.tmp && mv $@.tmp $@
 $(P1_OUT)/guess.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh guess $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@

@@ -47,6 +47,8 @@ static void bad_options(void **state)
     expect_failure(P1 "example3 --eps inf", 2, "must be finite");
     expect_failure(P1 "example2 --strategy magic", 2, "--strategy must be");
     expect_failure(P1 "example2 --guess exact", 2, "--guess must be physical or category-iii");
+    expect_failure(P1 "example3 --exclude box", 2, "--exclude must be distance, literal, open or closed");
+    expect_failure(P1 "example2 --richardson-box wide", 2, "--richardson-box must be node, tight or piece");
     expect_failure(P1 "example2 --guess-noise 1", 2, "--guess-noise must be between 0 and 0.5");
     expect_failure(P1 "example2 --guess-noise nan", 2, "--guess-noise must be finite");
     expect_failure(P1 "example2 --seed -1", 2, "--seed must be between");
@@ -92,6 +94,49 @@ static void results_complete(void **state)
     /* no temporary files left behind */
     snprintf(cmd, sizeof cmd, "ls %s/ok | grep -c tmp", dir);
     assert_int_not_equal(run(cmd), 0);
+}
+
+/* The last row of a table3.4.tsv: L1, L-infinity and the number of
+ * measured nodes (columns 4, 6 and 13). */
+static void read_row(const char *path, double *l1, double *linf, long *measured)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[1024], last[1024] = "";
+    while (fgets(line, sizeof line, f))
+        if (line[0] != '#') strcpy(last, line);
+    fclose(f);
+    char *tok = strtok(last, "\t");
+    for (int col = 1; tok; col++, tok = strtok(NULL, "\t")) {
+        if (col == 4) *l1 = strtod(tok, NULL);
+        if (col == 6) *linf = strtod(tok, NULL);
+        if (col == 13) *measured = strtol(tok, NULL, 10);
+    }
+}
+
+/* Example 3's excluded region: the default leaves out the nodes closer than
+ * 0.15 to the centre (the disc inside the paper's box), so it measures the
+ * nodes that the literal box test measures and the box's corners too.  At
+ * N = 40 (h = 0.05) the closed box holds 7 x 7 nodes, of which the rows on
+ * +0.15 round to outside (36 excluded); the open disc holds the 25 nodes
+ * with i^2 + j^2 < 9, and the two on -0.15 that round to inside: 9 more
+ * nodes are measured. */
+static void exclusion_distance_measures_more(void **state)
+{
+    (void)state;
+    char cmd[512], path[256];
+    double l1[2], linf[2];
+    long n[2];
+    const char *mode[2] = {"distance", "literal"};
+    for (int m = 0; m < 2; m++) {
+        snprintf(cmd, sizeof cmd, P1 "example3 --sizes 40 --exclude %s --out-dir %s/ex%s", mode[m], dir, mode[m]);
+        assert_int_equal(run(cmd), 0);
+        snprintf(path, sizeof path, "%s/ex%s/table3.4.tsv", dir, mode[m]);
+        read_row(path, &l1[m], &linf[m], &n[m]);
+    }
+    assert_int_equal(n[0] - n[1], 9);
+    assert_true(l1[0] > l1[1]);
+    assert_true(linf[0] >= linf[1]);
 }
 
 static void eikonal_bad_files(void **state)
@@ -174,6 +219,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bad_options),      cmocka_unit_test(help_works),        cmocka_unit_test(unwritable_output_leaves_nothing),
         cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance),
+        cmocka_unit_test(exclusion_distance_measures_more),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
 #endif
