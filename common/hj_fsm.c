@@ -385,7 +385,8 @@ static node_box clip_box(const work *w, int ilo, int ihi, int jlo, int jhi)
 
 /* Richardson extrapolation for the Category III nodes of piece c.
  *
- * A point source: one box, [-2h, 2h]^2 around it (Example 1).
+ * A point source: one box, exactly [-2h, 2h]^2 around it on every grid
+ * (Example 1; no margin, see below).
  *
  * A curve, HJ_RICH_BOX_NODE (the default): each node gets its own box
  * [-Rh, Rh]^2 (R = 2, more when the band is wider so that the box reaches
@@ -404,9 +405,10 @@ static node_box clip_box(const work *w, int ilo, int ihi, int jlo, int jhi)
  * eight sizes; without it (HJ_RICH_BOX_TIGHT) 0.54-0.72 and 0.22-0.45.
  * What tells them apart is case (b) against case (a): the paper's (b) is
  * 9.8, 11.3, 8.6, 4.3 times its (a), the margin gives 12.3, 12.0, 9.9, 5.1
- * and the tight box 3.0, 3.5, 3.2, 3.6.  Around a point source the margin
- * lies downstream of every node of the box, so it leaves Example 1's
- * values unchanged (Table 3.1 identical to the digit with and without).
+ * and the tight box 3.0, 3.5, 3.2, 3.6.  A point source keeps the box the
+ * paper names: there the margin leaves Example 1 unchanged (Table 3.1
+ * identical with and without), but with a general speed map it could let
+ * a path around a slow region into the box.
  *
  * A curve, HJ_RICH_BOX_PIECE: one box, the bounding box of the piece's
  * nodes widened by two nodes.  Why two: near a corner of the box domain a
@@ -430,14 +432,13 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
             if (j > jhi) jhi = j;
         }
     if (ilo > ihi) return HJ_OK; /* no Category III nodes for this piece */
-    const int margin = opt->richardson_box == HJ_RICH_BOX_NODE;
     if (in[c].type == HJ_INFLOW_POINT)
-        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo, ihi, jlo, jhi), margin, -1, -1, opt->max_iter,
-                              err);
+        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo, ihi, jlo, jhi), 0, -1, -1, opt->max_iter, err);
     if (opt->richardson_box == HJ_RICH_BOX_PIECE)
         return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo - 2, ihi + 2, jlo - 2, jhi + 2), 0, -1, -1,
                               opt->max_iter, err);
     const int R = opt->band > 3 ? (int)ceil(opt->band) - 1 : 2;
+    const int margin = opt->richardson_box == HJ_RICH_BOX_NODE;
     for (int j = jlo; j <= jhi; j++)
         for (int i = ilo; i <= ihi; i++) {
             long k = widx(w, i, j);

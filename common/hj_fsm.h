@@ -80,8 +80,8 @@ typedef struct {
 
 typedef enum { HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER } hj_bc_strategy;
 /* Where the local first order sweeps of Richardson extrapolation run for
- * an inflow curve (point sources use [-2h, 2h]^2 around the source, with
- * the same margin as HJ_RICH_BOX_NODE, which cannot change their values):
+ * an inflow curve (point sources always use [-2h, 2h]^2 around the source,
+ * on all three grids):
  *   HJ_RICH_BOX_NODE   a box [-2h, 2h]^2 around each Category III node
  *                      (the paper's "small box"), on each of the grids h,
  *                      h/2, h/4 widened by one node of that grid (third

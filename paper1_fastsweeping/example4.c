@@ -13,7 +13,8 @@ we leave out the nodes closer than 0.15 to a centre (the discs inscribed in
 the first two boxes) and the band, closed, as written: the L-infinity
 errors then agree within 1.3 % at N = 160, 320, 640 (7.567e-4, 2.940e-5,
 3.363e-6 against 0.766E-03, 0.294E-04, 0.336E-05); the boxes as written
-(`--exclude literal`) give 0.26-0.58 of them.
+(`--exclude literal`) give 0.26-0.58 of them.  The study "Where the errors
+of Examples 3 and 4 are measured", under Example 3, shows both.
 
 **Method.** As Example 3, with two inflow curves; a Category III node takes
 its Lax-Wendroff value from the nearer circle.

@@ -36,7 +36,7 @@ typedef struct {
     double (*exact)(double x, double y);
     const hj_inflow *inflow;
     int ninflow;
-    const p1_box *exclude;  /* nodes inside these boxes are not measured */
+    const p1_box *exclude;  /* regions not measured (see p1_box) */
     int nexclude;
     double eps;             /* WENO epsilon ... */
     int eps_times_h2;       /* ... times h^2 when set (Example 2) */
