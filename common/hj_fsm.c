@@ -302,6 +302,13 @@ typedef struct {
     int ilo, ihi, jlo, jhi;
 } node_box;
 
+/* The box ilo..ihi x jlo..jhi clipped to the nodes 0..nx x 0..ny. */
+static node_box clip_box(int nx, int ny, int ilo, int ihi, int jlo, int jhi)
+{
+    node_box b = {ilo < 0 ? 0 : ilo, ihi > nx ? nx : ihi, jlo < 0 ? 0 : jlo, jhi > ny ? ny : jhi};
+    return b;
+}
+
 /* Richardson extrapolation (2.9) in one box: first order solutions on h,
  * h/2, h/4 in the box, every fine node on an inflow piece fixed at its
  * data, nodes outside the box absent.  On each grid the box is widened by
@@ -317,11 +324,8 @@ static int richardson_box(work *w, const hj_grid2 *g, const hj_speed *sp, const 
     int rc = HJ_OK;
     for (int r = 0; r < 3 && rc == HJ_OK; r++) {
         const int m = ratios[r];
-        fb[r] = (node_box){bx.ilo * m - margin, bx.ihi * m + margin, bx.jlo * m - margin, bx.jhi * m + margin};
-        if (fb[r].ilo < 0) fb[r].ilo = 0;
-        if (fb[r].jlo < 0) fb[r].jlo = 0;
-        if (fb[r].ihi > w->nx * m) fb[r].ihi = w->nx * m;
-        if (fb[r].jhi > w->ny * m) fb[r].jhi = w->ny * m;
+        fb[r] = clip_box(w->nx * m, w->ny * m, bx.ilo * m - margin, bx.ihi * m + margin, bx.jlo * m - margin,
+                         bx.jhi * m + margin);
         const int fnx = fb[r].ihi - fb[r].ilo, fny = fb[r].jhi - fb[r].jlo;
         const double hf = g->h / m;
         const long n = (long)(fnx + 1) * (fny + 1);
@@ -377,12 +381,6 @@ static int richardson_box(work *w, const hj_grid2 *g, const hj_speed *sp, const 
     return rc;
 }
 
-static node_box clip_box(const work *w, int ilo, int ihi, int jlo, int jhi)
-{
-    node_box b = {ilo < 0 ? 0 : ilo, ihi > w->nx ? w->nx : ihi, jlo < 0 ? 0 : jlo, jhi > w->ny ? w->ny : jhi};
-    return b;
-}
-
 /* Richardson extrapolation for the Category III nodes of piece c.
  *
  * A point source: one box, exactly [-2h, 2h]^2 around it on every grid
@@ -433,18 +431,19 @@ static int richardson(work *w, const hj_grid2 *g, const hj_speed *sp, const hj_i
         }
     if (ilo > ihi) return HJ_OK; /* no Category III nodes for this piece */
     if (in[c].type == HJ_INFLOW_POINT)
-        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo, ihi, jlo, jhi), 0, -1, -1, opt->max_iter, err);
-    if (opt->richardson_box == HJ_RICH_BOX_PIECE)
-        return richardson_box(w, g, sp, in, nin, c, clip_box(w, ilo - 2, ihi + 2, jlo - 2, jhi + 2), 0, -1, -1,
+        return richardson_box(w, g, sp, in, nin, c, clip_box(w->nx, w->ny, ilo, ihi, jlo, jhi), 0, -1, -1,
                               opt->max_iter, err);
+    if (opt->richardson_box == HJ_RICH_BOX_PIECE)
+        return richardson_box(w, g, sp, in, nin, c, clip_box(w->nx, w->ny, ilo - 2, ihi + 2, jlo - 2, jhi + 2), 0,
+                              -1, -1, opt->max_iter, err);
     const int R = opt->band > 3 ? (int)ceil(opt->band) - 1 : 2;
     const int margin = opt->richardson_box == HJ_RICH_BOX_NODE;
     for (int j = jlo; j <= jhi; j++)
         for (int i = ilo; i <= ihi; i++) {
             long k = widx(w, i, j);
             if (w->cat[k] != CAT_III || w->owner[k] != c) continue;
-            int rc = richardson_box(w, g, sp, in, nin, c, clip_box(w, i - R, i + R, j - R, j + R), margin, i, j,
-                                    opt->max_iter, err);
+            int rc = richardson_box(w, g, sp, in, nin, c, clip_box(w->nx, w->ny, i - R, i + R, j - R, j + R), margin,
+                                    i, j, opt->max_iter, err);
             if (rc != HJ_OK) return rc;
         }
     return HJ_OK;

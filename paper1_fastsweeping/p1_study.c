@@ -76,7 +76,8 @@ static int excluded(const p1_case *c, double x, double y, double h, int mode)
     for (int b = 0; b < c->nexclude; b++) {
         const p1_box *e = &c->exclude[b];
         if (mode == EXCL_DISTANCE && e->around_point) {
-            const double w = 0.5 * (e->xmax - e->xmin), dx = x - 0.5 * (e->xmin + e->xmax), dy = y - 0.5 * (e->ymin + e->ymax);
+            const double w = 0.5 * (e->xmax - e->xmin);
+            const double dx = x - 0.5 * (e->xmin + e->xmax), dy = y - 0.5 * (e->ymin + e->ymax);
             if (dx * dx + dy * dy < w * w) return 1;
         } else if (mode == EXCL_DISTANCE || mode == EXCL_LITERAL) {
             if (x >= e->xmin && x <= e->xmax && y >= e->ymin && y <= e->ymax) return 1;

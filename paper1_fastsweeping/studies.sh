@@ -11,7 +11,8 @@
 #       case (a)), L1 errors and iterations beside the paper's.
 #   studies.sh exclude BINDIR PUBLISHED4 PUBLISHED5   Examples 3 and 4: the
 #       errors measured outside the paper's boxes around the singular
-#       centres, or at distance >= 0.15 from the centres (default).
+#       centres, or with the nodes closer than 0.15 to a centre left out
+#       (default).
 #   studies.sh guess BINDIR PUBLISHED3   Example 2: the initial guess from
 #       first order sweeps on the boundary condition alone (default) against
 #       sweeps that also hold the Category III values; Table 3.3 (b) errors
