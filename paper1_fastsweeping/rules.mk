@@ -49,9 +49,10 @@ $(P1_OUT)/eps-scan.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 $(P1_OUT)/richardson-box.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh richardson-box $(<D) $(P1)/published/table3.2.tsv > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/exclude.md: $(BUILD)/bin/$(P1)/example3 $(BUILD)/bin/$(P1)/example4 $(P1)/studies.sh
+$(P1_OUT)/exclude.md: $(BUILD)/bin/$(P1)/example3 $(BUILD)/bin/$(P1)/example4 $(P1)/studies.sh \
+                      $(P1_OUT)/table3.4.tsv $(P1_OUT)/table3.5.tsv
 	@mkdir -p $(@D)
-	$(P1)/studies.sh exclude $(<D) $(P1)/published/table3.4.tsv $(P1)/published/table3.5.tsv > $@.tmp && mv $@.tmp $@
+	$(P1)/studies.sh exclude $(<D) $(P1)/published/table3.4.tsv $(P1)/published/table3.5.tsv $(@D) > $@.tmp && mv $@.tmp $@
 $(P1_OUT)/guess.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh guess $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@

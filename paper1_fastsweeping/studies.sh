@@ -9,10 +9,10 @@
 #       paper's small box [-2h, 2h]^2 around each node, widened by one node
 #       of each grid (default) or not, against one box per edge (exact for
 #       case (a)), L1 errors and iterations beside the paper's.
-#   studies.sh exclude BINDIR PUBLISHED4 PUBLISHED5   Examples 3 and 4: the
-#       errors measured outside the paper's boxes around the singular
+#   studies.sh exclude BINDIR PUBLISHED4 PUBLISHED5 RESULTS   Examples 3 and
+#       4: the errors measured outside the paper's boxes around the singular
 #       centres, or with the nodes closer than 0.15 to a centre left out
-#       (default).
+#       (default: the reproduction's own tables in RESULTS).
 #   studies.sh guess BINDIR PUBLISHED3   Example 2: the initial guess from
 #       first order sweeps on the boundary condition alone (default) against
 #       sweeps that also hold the Category III values; Table 3.3 (b) errors
@@ -74,22 +74,21 @@ richardson-box)
         "$(ratio "$pub" 3)" "$(ratio "$tmp/node/table3.2.tsv" 4)" "$(ratio "$tmp/tight/table3.2.tsv" 4)"
     ;;
 exclude)
-    pub4=$3 pub5=$4
+    pub4=$3 pub5=$4 res=$5
     printf '\n#### Where the errors of Examples 3 and 4 are measured\n\n'
-    printf 'The paper measures "outside the box" [-0.15, 0.15]^2 around each singular centre. L1 and L-infinity errors with the nodes at distance < 0.15 from a centre left out (`--exclude distance`, the default) or the paper'"'"'s closed boxes tested on the computed coordinates (`--exclude literal`); the bisector band of Example 4 is the same box in both. Computed by `studies.sh exclude`.\n\n'
+    printf 'The paper measures "outside the box" [-0.15, 0.15]^2 around each singular centre. L1 and L-infinity errors with the nodes at distance < 0.15 from a centre left out (`--exclude distance`, the default: the reproduction above) or the paper'"'"'s closed boxes tested on the computed coordinates (`--exclude literal`); the bisector band of Example 4 is the same box in both. Computed by `studies.sh exclude`.\n\n'
     printf '<table>\n<tr><th>table</th><th>error</th><th>measured outside</th><th>N = 80</th><th>N = 160</th><th>N = 320</th><th>N = 640</th></tr>\n'
+    # one cell per N (80 160 320 640) of column $2, "-" where a table lacks that N (QUICK results)
+    n_row() { awk -F'\t' -v c="$2" '!/^#/ && $1 == "-" { v[$2] = $c }
+        END { split("80 160 320 640", n, " "); for (k = 1; k <= 4; k++) printf "<td>%s</td>", (n[k] in v) ? v[n[k]] : "-" }' "$1"; }
     for e in 3 4; do
         t=table3.$((e + 1)) pub=$pub4
         [ $e = 4 ] && pub=$pub5
-        for m in distance literal; do
-            "$bin/example$e" --exclude $m --out-dir "$tmp/x$e$m" > /dev/null
-        done
+        "$bin/example$e" --exclude literal --out-dir "$tmp/x$e" > /dev/null
         for q in L1:4:3 Linf:6:5; do
             IFS=: read -r name col pcol <<< "$q"
-            for m in distance literal; do
-                printf '<tr><td>%s</td><td>%s</td><td>%s</td>%s</tr>\n' "${t#table}" $name $m \
-                    "$(awk -F'\t' -v c=$col '!/^#/ && $1 == "-" { printf "<td>%s</td>", $c }' "$tmp/x$e$m/$t.tsv")"
-            done
+            printf '<tr><td>%s</td><td>%s</td><td>distance</td>%s</tr>\n' "${t#table}" $name "$(n_row "$res/$t.tsv" $col)"
+            printf '<tr><td>%s</td><td>%s</td><td>literal</td>%s</tr>\n' "${t#table}" $name "$(n_row "$tmp/x$e/$t.tsv" $col)"
             printf '<tr><td>%s</td><td>%s</td><td>paper</td>%s</tr>\n' "${t#table}" $name \
                 "$(awk -F'\t' -v c=$pcol '!/^#/ && $1 == "-" { printf "<td>%s</td>", $c }' "$pub")"
         done
@@ -170,5 +169,5 @@ treatments)
     done
     printf '</table>\n\n'
     ;;
-*) echo "usage: studies.sh eps-scan BINDIR PUBLISHED | richardson-box BINDIR PUBLISHED | exclude BINDIR PUBLISHED4 PUBLISHED5 | guess BINDIR PUBLISHED | roundoff BINDIR PUBLISHED3 RESULTS | treatments BINDIR" >&2; exit 2 ;;
+*) echo "usage: studies.sh eps-scan BINDIR PUBLISHED | richardson-box BINDIR PUBLISHED | exclude BINDIR PUBLISHED4 PUBLISHED5 RESULTS | guess BINDIR PUBLISHED | roundoff BINDIR PUBLISHED3 RESULTS | treatments BINDIR" >&2; exit 2 ;;
 esac
