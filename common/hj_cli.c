@@ -81,10 +81,3 @@ void hj_progress(const char *fmt, ...)
     va_end(ap);
     fflush(stderr);
 }
-
-double hj_physical_memory(void)
-{
-    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || size <= 0) return 0.0;
-    return (double)pages * (double)size;
-}

@@ -33,7 +33,4 @@ void hj_progress(const char *fmt, ...)
 #endif
     ;
 
-/* Physical memory of the machine in bytes (0 if unknown). */
-double hj_physical_memory(void);
-
 #endif

@@ -5,7 +5,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "hj_cli.h"
+#include "hj_sys.h"
 
 int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                     hj_error *err)
@@ -38,7 +38,7 @@ int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max
         g->total *= (size_t)g->ext[d];
         g->nodes *= (size_t)N[d];
     }
-    const double mem = hj_physical_memory();
+    const double mem = hj_sys_physical_memory();
     if (mem > 0 && (double)g->total * sizeof(double) > mem)
         return hj_error_set(err, HJ_ENOMEM, "grid too large: one array needs %.3g GB, the machine has %.3g GB",
                             (double)g->total * sizeof(double) / 1e9, mem / 1e9);

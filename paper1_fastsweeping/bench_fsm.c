@@ -22,15 +22,15 @@ time is kept), `--out-dir` for bench.tsv.
 #include "hj_cli.h"
 #include "hj_fsm.h"
 #include "hj_io.h"
+#include "hj_math.h"
 
 static const char *prog = "bench_fsm";
-static const double PI = 3.14159265358979323846;
 
 static double speed(double x, double y, void *ctx)
 {
     (void)ctx;
-    const double sx = sin(PI * x / 2), sy = sin(PI * y / 2);
-    return PI / 2 * sqrt(sx * sx + sy * sy);
+    const double sx = sin(HJ_PI * x / 2), sy = sin(HJ_PI * y / 2);
+    return HJ_PI / 2 * sqrt(sx * sx + sy * sy);
 }
 
 static double now(void)

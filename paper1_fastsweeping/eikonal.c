@@ -31,6 +31,7 @@ Example:
 #include "hj_cli.h"
 #include "hj_fsm.h"
 #include "hj_io.h"
+#include "hj_sys.h"
 
 static const char *prog = "eikonal";
 
@@ -298,7 +299,7 @@ int main(int argc, char **argv)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "the domain height %g is not a whole number (>= 8) of cells of size h = %g", dom[3] - dom[2], g.h);
     g.ny = (int)round(ny);
     if (g.ny > 10000) hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %d rows: at most 10000", g.ny);
-    double have = hj_physical_memory();
+    double have = hj_sys_physical_memory();
     if (have > 0 && hj_fsm_memory(&g) > 0.8 * have)
         hj_cli_fail(prog, HJ_EXIT_RUN, "a %dx%d grid needs %.3g GB, more than this machine has", g.nx, g.ny, hj_fsm_memory(&g) / 1e9);
     for (int s = 0; s < nsrc; s++) {

@@ -31,26 +31,26 @@ its convergence figure with the fitted orders, and a contour plot.
 #include <math.h>
 
 #include "p1_study.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 static double speed(double x, double y, void *ctx)
 {
     (void)ctx;
-    const double sx = sin(PI * x / 2), sy = sin(PI * y / 2);
-    return PI / 2 * sqrt(sx * sx + sy * sy);
+    const double sx = sin(HJ_PI * x / 2), sy = sin(HJ_PI * y / 2);
+    return HJ_PI / 2 * sqrt(sx * sx + sy * sy);
 }
 
 static void speed_grad(double x, double y, double g[2], void *ctx)
 {
     const double f = speed(x, y, ctx);
     /* f f_x = (pi/2)^2 sin(pi x/2) cos(pi x/2) (pi/2) */
-    const double c = PI * PI * PI / 8;
-    g[0] = f > 0 ? c * sin(PI * x / 2) * cos(PI * x / 2) / f : 0;
-    g[1] = f > 0 ? c * sin(PI * y / 2) * cos(PI * y / 2) / f : 0;
+    const double c = HJ_PI * HJ_PI * HJ_PI / 8;
+    g[0] = f > 0 ? c * sin(HJ_PI * x / 2) * cos(HJ_PI * x / 2) / f : 0;
+    g[1] = f > 0 ? c * sin(HJ_PI * y / 2) * cos(HJ_PI * y / 2) / f : 0;
 }
 
-static double exact(double x, double y) { return -cos(PI * x / 2) - cos(PI * y / 2); }
+static double exact(double x, double y) { return -cos(HJ_PI * x / 2) - cos(HJ_PI * y / 2); }
 
 int main(int argc, char **argv)
 {

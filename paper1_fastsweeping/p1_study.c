@@ -10,6 +10,7 @@
 #include "hj_cli.h"
 #include "hj_fit.h"
 #include "hj_io.h"
+#include "hj_sys.h"
 
 enum { MAX_SIZES = 16, MAX_CASES = 4 };
 
@@ -131,7 +132,7 @@ static int run_one(const p1_study *st, const settings *s, const p1_case *c, long
     g.x0 = c->domain.xmin;
     g.y0 = c->domain.ymin;
     const double need = hj_fsm_memory(&g) + sizeof(double) * (double)(N + 1) * (N + 1);
-    const double have = hj_physical_memory();
+    const double have = hj_sys_physical_memory();
     if (have > 0 && need > 0.8 * have)
         return hj_error_set(err, HJ_ENOMEM, "N=%ld needs %.3g GB, more than this machine has (%.3g GB)", N, need / 1e9,
                             have / 1e9);

@@ -87,9 +87,9 @@ switch2, N = 201), `air_mode_notes.md`; plotted by `plot/fig20.gp`.
 #include "hj_ls_shape.h"
 #include "hj_ls_term.h"
 #include "p2_reach.h"
+#include "hj_math.h"
 
 static const char *prog = "air_mode";
-static const double PI = 3.14159265358979323846;
 
 typedef struct {
     double r, va, vb, psi, omega;
@@ -203,11 +203,11 @@ static void air_mode(const par *q, int acc, long N, result *res, double **fields
     for (int k = 0; k < log.n; k++) res->increased[S_MODE3] += log.increased[k];
     /* mode 2: curved motion, pi / omega */
     hj_ls_copy(g, mode2, data0);
-    find_reach(g, q, acc, 1, PI / q->omega, 1, NULL, mode2, &log, &res->steps);
+    find_reach(g, q, acc, 1, HJ_PI / q->omega, 1, NULL, mode2, &log, &res->steps);
     for (int k = 0; k < log.n; k++) res->increased[S_MODE2] += log.increased[k];
     /* states taken by mode 2 into mode 3's unsafe set: not restricted */
     rot90m(g, mode3, switch2);
-    find_reach(g, q, acc, 1, PI / q->omega, 0, NULL, switch2, NULL, &res->steps);
+    find_reach(g, q, acc, 1, HJ_PI / q->omega, 0, NULL, switch2, NULL, &res->steps);
     res->increased[S_SWITCH2] = -1;
     /* mode 1: reach-avoid against the escape set */
     rot90m(g, mode2, avoid);
@@ -252,7 +252,7 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
      * fixed point zc = (c2, -c1) / omega; from 0 the centre turns
      * counterclockwise by omega t = pi about zc */
     const double zc[2] = {q->c2 / q->omega, -q->c1 / q->omega}, rho = hypot(zc[0], zc[1]);
-    const double th0 = atan2(-zc[1], -zc[0]), sweep = PI;
+    const double th0 = atan2(-zc[1], -zc[0]), sweep = HJ_PI;
     const double e1[2] = {zc[0] + rho * cos(th0 + sweep), zc[1] + rho * sin(th0 + sweep)};
     long n3 = 0, n2 = 0;
     for (int j = 0; j < M; j++)
@@ -260,7 +260,7 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
             const double p[2] = {-25 + 50 * (i + 0.5) / M, -25 + 50 * (j + 0.5) / M};
             n3 += dist_segment(p, b) <= q->r;
             double d;
-            const double rel = fmod(atan2(p[1] - zc[1], p[0] - zc[0]) - th0 + 4 * PI, 2 * PI);
+            const double rel = fmod(atan2(p[1] - zc[1], p[0] - zc[0]) - th0 + 4 * HJ_PI, 2 * HJ_PI);
             if (rel <= sweep) d = fabs(hypot(p[0] - zc[0], p[1] - zc[1]) - rho);
             else {
                 const double d0 = hypot(p[0], p[1]), d1 = hypot(p[0] - e1[0], p[1] - e1[1]);
@@ -296,7 +296,7 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
     omp_set_num_threads(1); /* 2-D grids: see acoustic.c */
 #endif
-    par q = {5, 3, 4, -4 * PI / 3, 1, 0, 0};
+    par q = {5, 3, 4, -4 * HJ_PI / 3, 1, 0, 0};
     q.c1 = -q.va + q.vb * cos(q.psi), q.c2 = q.vb * sin(q.psi);
     char path[4096];
     hj_ls_grid g;

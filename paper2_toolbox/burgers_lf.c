@@ -87,9 +87,9 @@ larger).
 #include "hj_ls_term.h"
 #include "p2_reach.h"
 #include "p2_oshershu.h"
+#include "hj_math.h"
 
 static const char *prog = "burgers_lf";
-static const double PI = 3.14159265358979323846;
 
 static void usage(void)
 {
@@ -155,7 +155,7 @@ int main(int argc, char **argv)
     }
 
     /* Figure 14 (a): exact and ENO3-LLF on 10 and 40 nodes, 1-D, t = 1.5/pi^2. */
-    const double tk = 1.5 / (PI * PI);
+    const double tk = 1.5 / (HJ_PI * HJ_PI);
     hj_out out;
     snprintf(path, sizeof path, "%s/burgers_1d.dat", out_dir);
     die(hj_out_open(&out, path, &err), &err);
@@ -198,13 +198,13 @@ int main(int argc, char **argv)
                 die(p2_os_grid(dim, ns[k], &ge, &err), &err);
                 double *ex = hj_ls_alloc(&ge);
                 if (!ex) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-                const int mr = p2_os_exact_grid(&p2_os_burgers, &ge, case_t[ci] / (PI * PI), ex);
+                const int mr = p2_os_exact_grid(&p2_os_burgers, &ge, case_t[ci] / (HJ_PI * HJ_PI), ex);
                 maxroots[ci] = mr > maxroots[ci] ? mr : maxroots[ci];
                 hj_progress("burgers_lf: %s dim %d N %ld\n", case_name[ci], dim, ns[k]);
                 for (int acc = 0; acc < P2_NACC; acc++) {
                     double *prev = NULL;
                     for (int diss = 0; diss < 3; diss++) {
-                        p2_os_run f = {dim, ns[k], acc, diss, 0, case_t[ci] / (PI * PI), 1};
+                        p2_os_run f = {dim, ns[k], acc, diss, 0, case_t[ci] / (HJ_PI * HJ_PI), 1};
                         double *phi = run(&f, &g, NULL);
                         res *o = &R[ci][dim - 1][acc][diss][k];
                         o->h = g.dx[0];

@@ -95,9 +95,9 @@ the time sequence file holds x_1 ... x_4 phi per node).
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
 #include "p2_basic.h"
+#include "hj_math.h"
 
 static const char *const PROG = "convection_demo";
-static const double PI = 3.14159265358979323846;
 static const double RADIUS = 0.35;
 
 typedef struct {
@@ -195,8 +195,8 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
         fail_if(hj_ls_write_vtk(vtk_path, &g, "convectionDemo: phi at t = 0 and t = 1", 2, names, f, &err), &err);
     }
     res->steps = st.steps;
-    res->exact = c->dim == 1 ? 2 * RADIUS : c->dim == 2 ? PI * RADIUS * RADIUS
-               : c->dim == 3 ? 4.0 / 3.0 * PI * RADIUS * RADIUS * RADIUS : NAN;
+    res->exact = c->dim == 1 ? 2 * RADIUS : c->dim == 2 ? HJ_PI * RADIUS * RADIUS
+               : c->dim == 3 ? 4.0 / 3.0 * HJ_PI * RADIUS * RADIUS * RADIUS : NAN;
     res->measure = NAN;
     if (c->dim <= 3) fail_if(hj_ls_measure(&g, y, &res->measure, &err), &err);
     p2b_front_error(&g, y, y0, 2 * dx, &res->front_max, &res->front_mean);

@@ -84,6 +84,7 @@ curvature_spiral_notes.md.
 #include "hj_ls_helper.h"
 #include "hj_ls_term.h"
 #include "p2_motion.h"
+#include "hj_math.h"
 
 static const char *prog = "curvature_spiral_demo";
 static const char *usage =
@@ -92,7 +93,6 @@ static const char *usage =
     "--N is the figure grid (default 101); --samples the size of the point cloud (default 4000).\n"
     "See the comment at the top of curvature_spiral_demo.c.\n";
 
-static const double PI = 3.14159265358979323846;
 
 /* spiralFromEllipse: min over five theta copies of sqrt(y^T M y) - d. */
 typedef struct {
@@ -105,7 +105,7 @@ static double spiral_ellipse_fn(const double *x, void *ctx)
     const double r = hypot(x[0], x[1]), th = atan2(x[1], x[0]);
     double best = INFINITY;
     for (int k = -2; k <= 2; k++) {
-        const double y0 = r - e->r_c, y1 = th + 2 * PI * k - e->th_c;
+        const double y0 = r - e->r_c, y1 = th + 2 * HJ_PI * k - e->th_c;
         const double q = y0 * (e->M[0] * y0 + e->M[1] * y1) + y1 * (e->M[2] * y0 + e->M[3] * y1);
         const double v = sqrt(q) - e->d;
         if (v < best) best = v;
@@ -115,11 +115,11 @@ static double spiral_ellipse_fn(const double *x, void *ctx)
 
 static void make_ellipse(const hj_ls_grid *g, double *phi)
 {
-    const double rot = PI / 100, c = cos(rot), s = sin(rot);
-    const double D0 = 1 / (0.06 * 0.06), D1 = 1 / (4 * PI * PI);
+    const double rot = HJ_PI / 100, c = cos(rot), s = sin(rot);
+    const double D0 = 1 / (0.06 * 0.06), D1 = 1 / (4 * HJ_PI * HJ_PI);
     /* M = R diag(D0, D1) R^T */
     spiral_ellipse e = {{c * c * D0 + s * s * D1, c * s * (D0 - D1), c * s * (D0 - D1), s * s * D0 + c * c * D1},
-                        1.0, 0.5, -PI / 3};
+                        1.0, 0.5, -HJ_PI / 3};
     hj_ls_fill(g, phi, spiral_ellipse_fn, &e);
 }
 
@@ -128,7 +128,7 @@ static void spiral_points(long n, double scale, double *p)
 {
     for (long k = 0; k < n; k++) {
         const double s = (double)k / (double)n;
-        const double x = 0.1 * cos(2 * PI * s) + 0.1, y = 0.05 * sin(2 * PI * s) + 0.1;
+        const double x = 0.1 * cos(2 * HJ_PI * s) + 0.1, y = 0.05 * sin(2 * HJ_PI * s) + 0.1;
         const double a = 25 * atan(10 * y), m = scale * (0.1 * exp(-10 * y) - 0.05 * (0.1 - x));
         p[2 * k] = m * cos(a);
         p[2 * k + 1] = m * sin(a);
@@ -273,15 +273,15 @@ int main(int argc, char **argv)
     for (int ini = 0; ini < 2; ini++)
         for (int n = 0; n < ngrids; n++)
             fprintf(out.fp, "| %s | %ld | %.4f | %.4f | %.4f |\n", init_name[ini], grids[n], areas[n][ini][0],
-                    (areas[n][ini][0] - areas[n][ini][1]) / (2 * PI * b * tspan[1]),
-                    (areas[n][ini][0] - areas[n][ini][2]) / (2 * PI * b * tspan[2]));
+                    (areas[n][ini][0] - areas[n][ini][1]) / (2 * HJ_PI * b * tspan[1]),
+                    (areas[n][ini][0] - areas[n][ini][2]) / (2 * HJ_PI * b * tspan[2]));
     fprintf(out.fp, "\nThe figure's run (`%s`, %ld^2 nodes) over the whole time span:\n\n| t |", initial ? "points" : "ellipse",
             o.N);
     for (int k = 1; k < 9; k++) fprintf(out.fp, " %.3g |", tspan[k]);
     fprintf(out.fp, "\n|---|");
     for (int k = 1; k < 9; k++) fprintf(out.fp, "---|");
     fprintf(out.fp, "\n| area loss / 2 pi b t |");
-    for (int k = 1; k < 9; k++) fprintf(out.fp, " %.4f |", (area[0] - area[k]) / (2 * PI * b * tspan[k]));
+    for (int k = 1; k < 9; k++) fprintf(out.fp, " %.4f |", (area[0] - area[k]) / (2 * HJ_PI * b * tspan[k]));
     fprintf(out.fp, "\n\n");
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

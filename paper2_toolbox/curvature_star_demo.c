@@ -61,6 +61,7 @@ published/curvature_star.tsv); curvature_star_notes.md.
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
 #include "p2_motion.h"
+#include "hj_math.h"
 
 static const char *prog = "curvature_star_demo";
 static const char *usage =
@@ -69,7 +70,6 @@ static const char *usage =
     "Without --split-flow both cases of Figure 9 are run; --N is the figure grid (default 101).\n"
     "See the comment at the top of curvature_star_demo.c.\n";
 
-static const double PI = 3.14159265358979323846;
 
 /* Curvature motion of phi over tspan; b0 constant or split; areas at the
  * output times into area[] (may be NULL). */
@@ -125,7 +125,7 @@ int main(int argc, char **argv)
     const long grids[3] = {51, 101, 201};
     const int ngrids = o.quick ? 2 : 3;
     const char *shape[3] = {"circle", "star", "star_split"};
-    const double r0 = 0.4, t1 = 1.0, loss_exact = 2 * PI * b0 * t1, r_exact = sqrt(r0 * r0 - 2 * b0 * t1);
+    const double r0 = 0.4, t1 = 1.0, loss_exact = 2 * HJ_PI * b0 * t1, r_exact = sqrt(r0 * r0 - 2 * b0 * t1);
     double loss[3][3], rc[3];
     for (int n = 0; n < ngrids; n++) {
         p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
@@ -140,7 +140,7 @@ int main(int argc, char **argv)
             snprintf(label, sizeof label, "%s, N = %ld", shape[s], grids[n]);
             p2_fail_if(prog, run_curv(&g, o.order, b0, s == 2, tspan, 4, phi, NULL, area, label, &err), &err);
             loss[n][s] = area[0] - area[3];
-            if (s == 0) rc[n] = sqrt(area[3] / PI);
+            if (s == 0) rc[n] = sqrt(area[3] / HJ_PI);
         }
         hj_ls_free(phi);
     }

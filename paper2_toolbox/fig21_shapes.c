@@ -36,9 +36,9 @@ both 3-D fields), fig21_checks.md; plotted by paper2_toolbox/plot/fig21.gp.
 #include "hj_io.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_shape.h"
+#include "hj_math.h"
 
 static const char *prog = "fig21_shapes";
-static const double PI = 3.14159265358979323846;
 
 /* Measure of {phi < 0}: node fraction times the box's measure, a node on
  * the boundary (|phi| < 1e-12, e.g. on a grid line) counting one half. */
@@ -144,7 +144,7 @@ int main(int argc, char **argv)
     box_from_hyperplanes(&g2, r1lo, r1hi, b2, t2, &err);
     box_from_hyperplanes(&g2, r2lo, r2hi, u2, t2, &err);
     hj_ls_shape_union(&g2, b2, u2, b2);
-    m[nm] = measure(&g2, a2); exact[nm] = 0.75 * PI * 0.36; id[nm] = "disc_minus_square_2d"; label[nm++] = "2-D (a) disc minus square";
+    m[nm] = measure(&g2, a2); exact[nm] = 0.75 * HJ_PI * 0.36; id[nm] = "disc_minus_square_2d"; label[nm++] = "2-D (a) disc minus square";
     m[nm] = measure(&g2, b2); exact[nm] = 1.2 * 0.5 + 0.5 * 0.7; id[nm] = "L_polygon_2d"; label[nm++] = "2-D (b) L-shaped polygon";
     snprintf(path, sizeof path, "%s/fig21_2d.tsv", out_dir);
     if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);

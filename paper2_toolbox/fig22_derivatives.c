@@ -44,8 +44,8 @@ The relative costs of the schemes (Table 2) are measured by
 #include "hj_fit.h"
 #include "hj_io.h"
 #include "hj_ls_deriv.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 static const char *const PROG = "fig22_derivatives";
 enum { NSCH = HJ_LS_NSCHEMES, MAXN = 16, NMEAS = 4 };
 
@@ -53,13 +53,13 @@ enum { NSCH = HJ_LS_NSCHEMES, MAXN = 16, NMEAS = 4 };
 static int segment(long i, long n) { return i < n / 4 ? 0 : (i < n / 2 ? 1 : 2); }
 static double piece(int seg, double x)
 {
-    const double w = 2 * PI * x;
-    return seg == 0 ? sin(w + PI / 2) : seg == 1 ? sin(w - PI / 2) : sin(w) + 1;
+    const double w = 2 * HJ_PI * x;
+    return seg == 0 ? sin(w + HJ_PI / 2) : seg == 1 ? sin(w - HJ_PI / 2) : sin(w) + 1;
 }
 static double dpiece(int seg, double x)
 {
-    const double w = 2 * PI * x;
-    return 2 * PI * (seg == 0 ? cos(w + PI / 2) : seg == 1 ? cos(w - PI / 2) : cos(w));
+    const double w = 2 * HJ_PI * x;
+    return 2 * HJ_PI * (seg == 0 ? cos(w + HJ_PI / 2) : seg == 1 ? cos(w - HJ_PI / 2) : cos(w));
 }
 
 /* Errors of the left derivative of the kinked (smooth = 0) or smooth test
@@ -80,8 +80,8 @@ static int run(int scheme, long n, int smooth, double *e, hj_error *err)
     double *ex = malloc(sizeof(double) * (size_t)n);
     for (long i = 0; i < n; i++) {
         const double x = (double)i / (double)n;
-        const double v = smooth ? sin(2 * PI * x) + 0.3 * cos(4 * PI * x + 1) : piece(segment(i, n), x);
-        ex[i] = smooth ? 2 * PI * cos(2 * PI * x) - 1.2 * PI * sin(4 * PI * x + 1)
+        const double v = smooth ? sin(2 * HJ_PI * x) + 0.3 * cos(4 * HJ_PI * x + 1) : piece(segment(i, n), x);
+        ex[i] = smooth ? 2 * HJ_PI * cos(2 * HJ_PI * x) - 1.2 * HJ_PI * sin(4 * HJ_PI * x + 1)
                        : dpiece(segment(i == 0 ? n - 1 : i - 1, n), x);
         for (long j = 0; j < n; j++) a[g.offset + (size_t)(i + j * g.stride[1])] = v;
     }

@@ -71,9 +71,9 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 #include "hj_ls_term.h"
 #include "p2_oshershu.h"
 #include "p2_reach.h"
+#include "hj_math.h"
 
 static const char *prog = "nonconvex_lf";
-static const double PI = 3.14159265358979323846;
 
 static void usage(void)
 {
@@ -144,7 +144,7 @@ int main(int argc, char **argv)
         hj_ls_free(run(&cli.run, &g, path));
         return 0;
     }
-    const double ts = 0.5 / (PI * PI), tk = 1.5 / (PI * PI);
+    const double ts = 0.5 / (HJ_PI * HJ_PI), tk = 1.5 / (HJ_PI * HJ_PI);
 
     /* Figure 15 (a): 1-D at t = 1.5/pi^2: a reference on 2560 nodes (WENO5,
      * RK3) and ENO3-LF (high, global) on 10 and 40 nodes. */

@@ -6,8 +6,8 @@
 
 #include "hj_ls_term.h"
 #include "p2_reach.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 void p2_air3d_defaults(p2_air3d_par *p)
 {
@@ -17,7 +17,7 @@ void p2_air3d_defaults(p2_air3d_par *p)
 int p2_air3d_grid(long Nx, hj_ls_grid *g, hj_error *err)
 {
     const long N[3] = {Nx, (long)ceil((double)Nx * 20.0 / 26.0), Nx - 1};
-    const double lo[3] = {-6, -10, 0}, hi[3] = {20, 10, 2 * PI * (1 - 1.0 / (double)N[2])};
+    const double lo[3] = {-6, -10, 0}, hi[3] = {20, 10, 2 * HJ_PI * (1 - 1.0 / (double)N[2])};
     const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
     return hj_ls_grid_init(g, 3, lo, hi, N, bc, err);
 }
@@ -95,7 +95,7 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     if (!c.cs) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
     c.sn = c.cs + n3, c.ys = c.sn + n3;
     for (long k = 0; k <= n3 / 2; k++) {
-        const double a = 2 * PI * (double)k / (double)n3;
+        const double a = 2 * HJ_PI * (double)k / (double)n3;
         c.cs[k] = cos(a), c.sn[k] = k == 0 || 2 * k == n3 ? 0.0 : sin(a);
         if (k) c.cs[n3 - k] = c.cs[k], c.sn[n3 - k] = -c.sn[k];
     }

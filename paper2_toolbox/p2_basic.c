@@ -10,8 +10,8 @@
 #include "hj_ls_io.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_shape.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 const char *const p2b_acc_name[P2B_NACC] = {"low", "medium", "high", "veryHigh"};
 const int p2b_acc_scheme[P2B_NACC] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
@@ -39,9 +39,9 @@ void p2b_flow_velocity(double t, const double *x, double dx0, long n, int d, dou
     } else if (f->dim < 2) {
         for (long j = 0; j < n; j++) v[j] = 0;
     } else if (d == 0) {
-        for (long j = 0; j < n; j++) v[j] = s * 2 * PI * x[1];
+        for (long j = 0; j < n; j++) v[j] = s * 2 * HJ_PI * x[1];
     } else if (d == 1) {
-        for (long j = 0; j < n; j++) v[j] = -s * 2 * PI * (x[0] + (double)j * dx0);
+        for (long j = 0; j < n; j++) v[j] = -s * 2 * HJ_PI * (x[0] + (double)j * dx0);
     } else {
         for (long j = 0; j < n; j++) v[j] = 0;
     }
@@ -216,14 +216,14 @@ double p2b_star_phi(const double *x, void *ctx)
     return sqrt(x[0] * x[0] + x[1] * x[1]) - s->scale * (cos(s->points * th) + s->shift);
 }
 
-double p2b_star_area(const p2b_star *s) { return PI * s->scale * s->scale * (0.5 + s->shift * s->shift); }
+double p2b_star_area(const p2b_star *s) { return HJ_PI * s->scale * s->scale * (0.5 + s->shift * s->shift); }
 
 int p2b_curve_sample(const p2b_star *star, const double *center, double radius, long n, double **pts, hj_error *err)
 {
     double *p = malloc(sizeof(double) * 2 * (size_t)n);
     if (!p) return hj_error_set(err, HJ_ENOMEM, "curve samples: out of memory");
     for (long k = 0; k < n; k++) {
-        const double th = 2 * PI * (double)k / (double)n;
+        const double th = 2 * HJ_PI * (double)k / (double)n;
         if (star) {
             const double r = star->scale * (cos(star->points * th) + star->shift);
             p[2 * k] = r * cos(th), p[2 * k + 1] = r * sin(th);
@@ -294,7 +294,7 @@ int p2b_reinit_setup(p2b_reinit_case *c, int shape, hj_error *err)
         c->exact_area = p2b_star_area(&c->star);
     } else {
         rc = hj_ls_shape_sphere(&c->g, c->center, c->radius, c->phi0, err);
-        c->exact_area = PI * c->radius * c->radius;
+        c->exact_area = HJ_PI * c->radius * c->radius;
     }
     if (!rc) rc = p2b_curve_sample(shape == P2B_STAR ? &c->star : NULL, c->center, c->radius, P2B_CURVE_SAMPLES,
                                    &c->curve, err);

@@ -11,6 +11,7 @@
 #include "hj_ls_io.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
+#include "hj_math.h"
 
 int p2_accuracy(const char *name, int *scheme, int *order)
 {
@@ -147,8 +148,7 @@ int p2_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err)
     double m;
     int rc = hj_ls_measure(g, phi, &m, err);
     if (rc) return rc;
-    const double PI = 3.14159265358979323846;
-    *r = g->dim == 2 ? sqrt(m / PI) : cbrt(3 * m / (4 * PI));
+    *r = g->dim == 2 ? sqrt(m / HJ_PI) : cbrt(3 * m / (4 * HJ_PI));
     return HJ_OK;
 }
 

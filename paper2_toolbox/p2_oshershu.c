@@ -10,8 +10,8 @@
 
 #include "hj_ls_term.h"
 #include "p2_reach.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 static double burgers_h(double q) { return 0.5 * (1 + q) * (1 + q); }
 static double burgers_dh(double q) { return 1 + q; }
@@ -48,7 +48,7 @@ static double os_partial(double t, const double *x, const double *pmin, const do
     if (c->pb->convex) return fabs(1 + lo) > fabs(1 + hi) ? fabs(1 + lo) : fabs(1 + hi);
     /* |sin(1 + q)| reaches 1 where 1 + q = pi/2 + k pi */
     const double a = 1 + lo, b = 1 + hi;
-    if (floor((b - PI / 2) / PI) != floor((a - PI / 2) / PI)) return 1.0;
+    if (floor((b - HJ_PI / 2) / HJ_PI) != floor((a - HJ_PI / 2) / HJ_PI)) return 1.0;
     return fabs(sin(a)) > fabs(sin(b)) ? fabs(sin(a)) : fabs(sin(b));
 }
 
@@ -71,7 +71,7 @@ static double initial(const double *x, void *ctx)
     const int dim = *(const int *)ctx;
     double s = 0;
     for (int d = 0; d < dim; d++) s += x[d];
-    return -cos(PI / dim * s);
+    return -cos(HJ_PI / dim * s);
 }
 
 int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, double **phi, hj_ls_output_fn out,
@@ -102,7 +102,7 @@ int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, doub
 
 static double foot_residual(const p2_os_problem *pb, double s0, double s, double t)
 {
-    return s0 + pb->dh(PI * sin(PI * s0)) * t - s;
+    return s0 + pb->dh(HJ_PI * sin(HJ_PI * s0)) * t - s;
 }
 
 double p2_os_exact(const p2_os_problem *pb, double s, double t, int *nroots)
@@ -130,8 +130,8 @@ double p2_os_exact(const p2_os_problem *pb, double s, double t, int *nroots)
             root = 0.5 * (lo + hi);
         }
         if (!isnan(root)) {
-            const double u = PI * sin(PI * root);
-            const double G = -cos(PI * root) + t * (u * pb->dh(u) - pb->h(u));
+            const double u = HJ_PI * sin(HJ_PI * root);
+            const double G = -cos(HJ_PI * root) + t * (u * pb->dh(u) - pb->h(u));
             roots++;
             if (pb->convex ? G < best : roots == 1) best = G;
         }

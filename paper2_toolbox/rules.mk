@@ -5,10 +5,7 @@
 
 P2 := paper2_toolbox
 
-# OpenMP for the kernel and the paper 2 programs; -O3 lets gcc vectorise
-# the row kernels (results are bitwise the same for any thread count).
-LDFLAGS += -fopenmp
-$(BUILD)/obj/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
+# The paper 2 programs are built as the level set kernel is (Makefile).
 $(BUILD)/obj/$(P2)/%.o: CFLAGS += -fopenmp -O3
 
 P2_OUT := $(RESULTS)/paper2
@@ -79,6 +76,3 @@ paper2: $(P2_RESULTS) $(P2_CHECK)
 
 # Paper 2's own tests (the reference values it computes itself).
 UNIT_TESTS += $(patsubst %.c,$(BUILD)/test/%,$(wildcard $(P2)/tests/test_*.c))
-
-# The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
-$(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp

@@ -51,6 +51,7 @@ spin_star_notes.md.
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
 #include "p2_motion.h"
+#include "hj_math.h"
 
 static const char *prog = "spin_star_demo";
 static const char *usage =
@@ -58,7 +59,6 @@ static const char *usage =
     "Without --rigid both cases of Figure 11 are run; --N is the figure grid (default 201, 101 with --quick).\n"
     "See the comment at the top of spin_star_demo.c.\n";
 
-static const double PI = 3.14159265358979323846;
 
 typedef struct {
     double omega;
@@ -80,7 +80,7 @@ static void rotation_velocity(double t, const double *x, double dx0, long n, int
 static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, const double *tspan, int nt,
                     double *phi, FILE *fp, const char *label, hj_error *err)
 {
-    rotation rot = {0.75 * PI, rigid};
+    rotation rot = {0.75 * HJ_PI, rigid};
     hj_ls_normal normal;
     hj_ls_normal_init(&normal, g, o->scheme);
     normal.speed.value = a;

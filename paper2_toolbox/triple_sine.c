@@ -63,6 +63,7 @@ values in published/triple_sine.tsv), triple_sine_notes.md.
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
 #include "p2_motion.h"
+#include "hj_math.h"
 
 static const char *prog = "triple_sine";
 static const char *usage =
@@ -70,12 +71,11 @@ static const char *usage =
     "Without --b the three cases b = 0.1, 0.025, 0 of Figure 12 are run; --N is the figure grid\n"
     "(default 200, 100 with --quick).  See the comment at the top of triple_sine.c.\n";
 
-static const double PI = 3.14159265358979323846;
 
 static double sine_fn(const double *x, void *ctx)
 {
     (void)ctx;
-    return sin(3 * PI * (x[0] + 0.5)) + 2 * x[1] - 1.5;
+    return sin(3 * HJ_PI * (x[0] + 0.5)) + 2 * x[1] - 1.5;
 }
 
 static void grid_sine(hj_ls_grid *g, long n)

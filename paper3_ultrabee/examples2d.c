@@ -94,8 +94,8 @@ of V_ub and V_ls beside the exact front.
 #include "p3_ls.h"
 #include "p3_prog.h"
 #include "p3_ub.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 typedef struct {
     int example;           /* 1 translation, 2 rotation, 3 rendez-vous, 4 deformation */
@@ -115,8 +115,8 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
     default: {
         const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
         const double s = t < e->T / 2 ? 1 : -1;
-        f[0] = -s * amp * (-2 * PI * x[1]);
-        f[1] = -s * amp * (2 * PI * x[0]);
+        f[0] = -s * amp * (-2 * HJ_PI * x[1]);
+        f[1] = -s * amp * (2 * HJ_PI * x[0]);
     }
     }
 }
@@ -183,7 +183,7 @@ static int inside(const double *x, void *vctx)
         return x[0] >= e->T - e->r - tol && x[0] <= e->T + e->r + tol && fabs(x[1]) <= e->T + e->r + tol;
     default: {
         const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
-        const double t1 = e->t < e->T - e->t ? e->t : e->T - e->t, th = 2 * PI * amp * t1;
+        const double t1 = e->t < e->T - e->t ? e->t : e->T - e->t, th = 2 * HJ_PI * amp * t1;
         return sin(th) * x[0] + cos(th) * x[1] <= 0;
     }
     }
@@ -366,7 +366,7 @@ static const char *fig_name(long t, long n)
 static double deform_g(const double *x, double t, double T)
 {
     const double r = sqrt(x[0] * x[0] + x[1] * x[1]), amp = r < 1 ? 1 - r : 0;
-    const double t1 = t < T - t ? t : T - t, th = 2 * PI * amp * t1;
+    const double t1 = t < T - t ? t : T - t, th = 2 * HJ_PI * amp * t1;
     return sin(th) * x[0] + cos(th) * x[1];
 }
 
@@ -416,7 +416,7 @@ int main(int argc, char **argv)
     p3_args_parse(&a, argc, argv, "Tables 6-10: UB-HJB on the 2-D examples 1-3 of section 4.", NULL);
     const table_spec specs[] = {
         {"table6", {1, {0.5, -0.5}, {1.5, 0.5}, 0, 1, 0, 0}, {50, 100, 200, 400}, 4},
-        {"table7", {2, {0.5, -0.5}, {1.5, 0.5}, 0, 2 * PI, 0, 0}, {50, 100, 200, 400}, 4},
+        {"table7", {2, {0.5, -0.5}, {1.5, 0.5}, 0, 2 * HJ_PI, 0, 0}, {50, 100, 200, 400}, 4},
         {"table8", {3, {-0.1, -0.1}, {0.1, 0.1}, 0.1, 1, 0, 0}, {51, 101, 201, 401}, 4},
         {"table9", {3, {0, 0}, {0, 0}, 0, 1, 0, 0}, {51, 101, 201, 401}, 4},
         {"table10", {4, {0, 0}, {0, 0}, 0, 6, 0, 0}, {50, 100, 200}, 3},

@@ -53,8 +53,8 @@ the exact front; after the timed steps.
 #include "hj_cli.h"
 #include "p3_prog.h"
 #include "p3_ub.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 typedef struct {
     int example; /* 4 advection, 5 target of Example 4, 6 Example 5, 7 Example 6 */
@@ -69,14 +69,14 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
     (void)t;
     const exnd *e = vctx;
     if (e->example <= 5) {
-        f[0] = -2 * PI * x[1];
-        f[1] = 2 * PI * x[0];
+        f[0] = -2 * HJ_PI * x[1];
+        f[1] = 2 * HJ_PI * x[0];
         f[2] = -1;
     } else if (e->example == 6) {
-        f[0] = -2 * PI * x[1];
-        f[1] = 2 * PI * x[0];
-        f[2] = -2 * PI * x[3];
-        f[3] = 2 * PI * x[2];
+        f[0] = -2 * HJ_PI * x[1];
+        f[1] = 2 * HJ_PI * x[0];
+        f[2] = -2 * HJ_PI * x[3];
+        f[3] = 2 * HJ_PI * x[2];
     } else {
         f[0] = 1;
         f[1] = a == 1;
@@ -115,7 +115,7 @@ static void reached(const int *idx, double t, void *vctx)
 /* |X(-tau; x) - c|^2 for Example 4's flow. */
 static double back_dist2(const exnd *e, const double *x, double tau)
 {
-    const double cs = cos(2 * PI * tau), sn = sin(2 * PI * tau);
+    const double cs = cos(2 * HJ_PI * tau), sn = sin(2 * HJ_PI * tau);
     const double y0 = cs * x[0] + sn * x[1] - e->c[0], y1 = -sn * x[0] + cs * x[1] - e->c[1], y2 = x[2] + tau - e->c[2];
     return y0 * y0 + y1 * y1 + y2 * y2;
 }
@@ -274,7 +274,7 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
     }
     if (rc) { p3_solver_free(&sv); return rc; }
     e->t = e->T;
-    const double back = e->example == 6 ? 2 * PI * e->t : 2 * PI * e->t;
+    const double back = e->example == 6 ? 2 * HJ_PI * e->t : 2 * HJ_PI * e->t;
     e->cs = cos(back);
     e->sn = sin(back);
     if (fig) rc = write_fig09(e, &sv, out_dir, err);

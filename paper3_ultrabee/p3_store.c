@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hj_cli.h"
+#include "hj_sys.h"
 
 /* One cell of a sorted list: key is the last index (SSD) or the compressed
  * remaining indices (LS, CRS); next/prev are indices in the list's pool. */
@@ -261,7 +261,7 @@ int p3_store_new(p3_store **out, p3_kind kind, int d, int n, hj_error *err)
     s->n = n;
     s->total = (int64_t)total;
     s->split = kind == P3_LS ? 0 : kind == P3_CRS ? 1 : d - 1;
-    const double phys = hj_physical_memory();
+    const double phys = hj_sys_physical_memory();
     if (kind == P3_FS || kind == P3_FLS) {
         const double need = total * (kind == P3_FS ? 8.0 : 9.0);
         /* A request beyond the machine's memory is refused up front: the

@@ -11,12 +11,12 @@
 #include <string.h>
 
 #include "hj_ls_deriv.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 /* Smooth periodic test function along dimension `dir` and its derivative. */
-static double f_smooth(double x) { return sin(2 * PI * x) + 0.3 * cos(4 * PI * x + 1); }
-static double df_smooth(double x) { return 2 * PI * cos(2 * PI * x) - 1.2 * PI * sin(4 * PI * x + 1); }
+static double f_smooth(double x) { return sin(2 * HJ_PI * x) + 0.3 * cos(4 * HJ_PI * x + 1); }
+static double df_smooth(double x) { return 2 * HJ_PI * cos(2 * HJ_PI * x) - 1.2 * HJ_PI * sin(4 * HJ_PI * x + 1); }
 
 typedef struct {
     int dir;
@@ -134,9 +134,9 @@ static double kinked(const double *x, void *ctx)
 {
     (void)ctx;
     double t = x[0];
-    if (t < 0.25) return sin(2 * PI * t + PI / 2);
-    if (t < 0.5) return sin(2 * PI * t - PI / 2);
-    return sin(2 * PI * t) + 1;
+    if (t < 0.25) return sin(2 * HJ_PI * t + HJ_PI / 2);
+    if (t < 0.5) return sin(2 * HJ_PI * t - HJ_PI / 2);
+    return sin(2 * HJ_PI * t) + 1;
 }
 
 static double noisy(const double *x, void *ctx)
@@ -224,7 +224,7 @@ static void select_equals_two_sided(void **state)
 static double f2(const double *x, void *ctx)
 {
     (void)ctx;
-    return sin(2 * PI * x[0]) * cos(2 * PI * x[1]);
+    return sin(2 * HJ_PI * x[0]) * cos(2 * HJ_PI * x[1]);
 }
 
 static void centered_orders(void **state)
@@ -245,8 +245,8 @@ static void centered_orders(void **state)
                 for (long j = 0; j < g.N[0]; j++) {
                     i[0] = j;
                     hj_ls_coord(&g, i, x);
-                    double sx = sin(2 * PI * x[0]), cx = cos(2 * PI * x[0]);
-                    double sy = sin(2 * PI * x[1]), cy = cos(2 * PI * x[1]), w = 2 * PI;
+                    double sx = sin(2 * HJ_PI * x[0]), cx = cos(2 * HJ_PI * x[0]);
+                    double sy = sin(2 * HJ_PI * x[1]), cy = cos(2 * HJ_PI * x[1]), w = 2 * HJ_PI;
                     ex[k + j] = kind == 0 ? w * cx * cy : kind == 1 ? -w * w * sx * cy
                               : kind == 2 ? -w * w * cx * sy : -2 * w * w * sx * cy;
                 }

@@ -8,8 +8,8 @@
 #include "hj_ls_io.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_shape.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 static hj_ls_grid grid(int dim, long n)
 {
@@ -74,7 +74,7 @@ static void measures(void **state)
         assert_int_equal(hj_ls_shape_sphere(&g3, c, 0.6, b, NULL), HJ_OK);
         assert_int_equal(hj_ls_measure(&g2, a, &m2, NULL), HJ_OK);
         assert_int_equal(hj_ls_measure(&g3, b, &m3, NULL), HJ_OK);
-        const double e2 = fabs(m2 / (PI * 0.36) - 1), e3 = fabs(m3 / (4.0 / 3.0 * PI * 0.216) - 1);
+        const double e2 = fabs(m2 / (HJ_PI * 0.36) - 1), e3 = fabs(m3 / (4.0 / 3.0 * HJ_PI * 0.216) - 1);
         /* chords of a circle of radius R lose about dx^2 / (6 R) of its radius */
         assert_true(e2 < 0.5 * g2.dx[0] * g2.dx[0] && e3 < 1.5 * g3.dx[0] * g3.dx[0]);
         if (e_prev > 0) assert_true(e2 < 0.35 * e_prev && e3 < 0.35 * e3_prev); /* a quarter per halving */

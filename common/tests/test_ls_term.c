@@ -11,8 +11,8 @@
 
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 static hj_ls_grid grid(int dim, long n, double lo, double hi, int bc)
 {
@@ -27,7 +27,7 @@ static hj_ls_grid grid(int dim, long n, double lo, double hi, int bc)
 static double wave(const double *x, void *ctx)
 {
     (void)ctx;
-    return sin(2 * PI * x[0]) + 0.5 * cos(2 * PI * x[0]);
+    return sin(2 * HJ_PI * x[0]) + 0.5 * cos(2 * HJ_PI * x[0]);
 }
 
 /* Translation of a smooth periodic profile by v = 1 for t = 0.25: max
@@ -306,7 +306,7 @@ static void curvature_shrinking_circle(void **state)
 static double sines(const double *x, void *ctx)
 {
     (void)ctx;
-    return sin(2 * PI * x[0]) * sin(2 * PI * x[1]);
+    return sin(2 * HJ_PI * x[0]) * sin(2 * HJ_PI * x[1]);
 }
 
 static void hessian_heat(void **state)
@@ -323,7 +323,7 @@ static void hessian_heat(void **state)
     assert_int_equal(hj_ls_ode(2, &g, &h.base, span, 2, y, NULL, NULL, NULL, NULL, NULL), HJ_OK);
     double e, m;
     hj_ls_norms(&g, ex, NULL, &m, NULL, NULL);
-    for (size_t k = 0; k < g.total; k++) ex[k] *= exp(-8 * PI * PI * t1);
+    for (size_t k = 0; k < g.total; k++) ex[k] *= exp(-8 * HJ_PI * HJ_PI * t1);
     hj_ls_norms(&g, y, ex, &e, NULL, NULL);
     assert_true(e < 2e-3 * m);
     hj_ls_free(y), hj_ls_free(ex);

@@ -7,8 +7,8 @@
 
 #include "hj_fsm.h"
 #include "p1_study.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
 static double one(double x, double y, void *c) { (void)x, (void)y, (void)c; return 1.0; }
 static void zero_grad(double x, double y, double g[2], void *c) { (void)x, (void)y, (void)c; g[0] = g[1] = 0; }
@@ -16,10 +16,10 @@ static void zero_grad(double x, double y, double g[2], void *c) { (void)x, (void
 static double ex1_speed(double x, double y, void *c)
 {
     (void)c;
-    const double sx = sin(PI * x / 2), sy = sin(PI * y / 2);
-    return PI / 2 * sqrt(sx * sx + sy * sy);
+    const double sx = sin(HJ_PI * x / 2), sy = sin(HJ_PI * y / 2);
+    return HJ_PI / 2 * sqrt(sx * sx + sy * sy);
 }
-static double ex1_exact(double x, double y) { return -cos(PI * x / 2) - cos(PI * y / 2); }
+static double ex1_exact(double x, double y) { return -cos(HJ_PI * x / 2) - cos(HJ_PI * y / 2); }
 
 static double max_error(const hj_grid2 *g, const double *phi, double (*exact)(double, double), double skip_r)
 {

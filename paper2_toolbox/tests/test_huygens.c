@@ -6,10 +6,10 @@
  * f(s) = 0.75 - 0.5 sin(3 pi (s + 0.5)) the initial front.  The maximum is
  * found by a fine search and refined by golden section. */
 #include "hj_test.h"
+#include "hj_math.h"
 
-static const double PI = 3.14159265358979323846;
 
-static double front0(double s) { return 0.75 - 0.5 * sin(3 * PI * (s + 0.5)); }
+static double front0(double s) { return 0.75 - 0.5 * sin(3 * HJ_PI * (s + 0.5)); }
 
 static double reach(double s, double x0, double t) { return front0(s) + sqrt(fmax(t * t - (s - x0) * (s - x0), 0)); }
 

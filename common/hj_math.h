@@ -1,0 +1,8 @@
+/* hj_math.h -- constants shared by the library and its programs. */
+#ifndef HJ_MATH_H
+#define HJ_MATH_H
+
+/* pi to the precision of a double (M_PI is not part of C11). */
+#define HJ_PI 3.14159265358979323846
+
+#endif

@@ -1,0 +1,20 @@
+/* hj_sys.h -- what the system says about this process and machine.
+ *
+ * Small queries that numerics may call (a memory check before a large
+ * allocation) as well as programs (CPU time and peak memory in their
+ * tables).  None of them prints or fails: an unknown value is 0 or NaN as
+ * stated per function.
+ */
+#ifndef HJ_SYS_H
+#define HJ_SYS_H
+
+/* Physical memory of the machine in bytes (0 if unknown). */
+double hj_sys_physical_memory(void);
+
+/* CPU time of this process (all its threads) in seconds. */
+double hj_sys_cpu_seconds(void);
+
+/* Peak resident memory of this process in MB (getrusage), NaN if unknown. */
+double hj_sys_peak_rss_mb(void);
+
+#endif
