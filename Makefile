@@ -1,9 +1,16 @@
-# Hamilton-Jacobi numerics: a literate reproduction package.
+# Hamilton-Jacobi numerics: the libhj library and a literate reproduction
+# package of three papers built on it.
 #
-#   make reproduce   build everything, run every example at the published
-#                    sizes, write results/ and report/out/report.html
-#   make test        unit tests (plain and under ASan+UBSan), then
-#                    `make check QUICK=1`
+#   make             the library (build/libhj.a, build/libhj.so) and every
+#                    program; needs only gcc, make and Ceres
+#   make install PREFIX=DIR
+#                    libhj.a, libhj.so.VERSION, headers in DIR/include/hj/
+#                    (umbrella hj.h) and DIR/lib/pkgconfig/hj.pc
+#   make reproduce   run every example at the published sizes, write
+#                    results/ and report/out/report.html
+#   make test        unit tests (plain and under ASan+UBSan), the examples
+#                    built against an installed copy through pkg-config,
+#                    then `make check QUICK=1`
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
 #   make paper1 | paper2 | paper3    one paper's results, then the report
@@ -13,7 +20,9 @@
 # QUICK=1 runs the reduced (coarser) sets into results-quick/.
 # SAN=1 builds with AddressSanitizer and UndefinedBehaviorSanitizer into
 # build/san/.  Dependencies (Debian packages) are installed on first use by
-# scripts/ensure-deps.
+# scripts/ensure-deps, by group: lib (Ceres) for the library and programs,
+# test (cmocka, pkg-config) for the tests, repro (gnuplot, cmark) for
+# figures and the report.
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -44,10 +53,26 @@ QUICKFLAG :=
 CHECKFLAGS :=
 endif
 
-DEPS_OK := build/.deps-ok
+# Dependency groups this invocation needs (scripts/ensure-deps GROUP).
+DEPS_GROUPS := lib
+ifneq ($(filter test unit memcheck examples,$(MAKECMDGOALS)),)
+DEPS_GROUPS += test
+endif
+ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
+DEPS_GROUPS += repro
+endif
+DEPS_OK := $(DEPS_GROUPS:%=build/.deps-%)
+
+# ---- the library ----------------------------------------------------------
+HJ_VERSION := $(shell sed -n 's/^\#define HJ_VERSION_STRING "\(.*\)"/\1/p' common/hj.h)
+HJ_SOVERSION := 0
 LIB := $(BUILD)/libhj.a
+SOLIB := $(BUILD)/libhj.so.$(HJ_VERSION)
 COMMON_SRC := $(wildcard common/*.c)
+COMMON_HDR := $(wildcard common/*.h)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
+COMMON_PIC := $(COMMON_SRC:%.c=$(BUILD)/pic/%.o)
+PREFIX := /usr/local
 HJCHECK := $(BUILD)/bin/common/tools/hjcheck
 HJTIME := $(BUILD)/bin/common/tools/hjtime
 # $(call hj_timed,DIR,LABEL) COMMAND...: run COMMAND and record its wall
@@ -67,7 +92,7 @@ BENCHES :=
 # (results are bitwise the same for any thread count).  Every program links
 # with -fopenmp, since libhj holds the kernel.
 LDFLAGS += -fopenmp
-$(BUILD)/obj/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/hj_ls_%.o $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 
@@ -80,22 +105,37 @@ include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 
-.PHONY: all deps reproduce test unit check report paper1 paper2 paper3 bench clean memcheck
+.PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
-all: $(PROGRAMS) $(UNIT_TESTS)
+all: lib $(PROGRAMS)
+lib: $(LIB) $(SOLIB)
 
 deps: $(DEPS_OK)
-$(DEPS_OK): scripts/ensure-deps
-	@scripts/ensure-deps
+build/.deps-%: scripts/ensure-deps
+	@scripts/ensure-deps $*
 	@mkdir -p $(@D) && touch $@
 
 $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+$(BUILD)/pic/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 
 $(LIB): $(COMMON_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
+$(SOLIB): $(COMMON_PIC)
+	@mkdir -p $(@D)
+	$(CC) -shared -Wl,-soname,libhj.so.$(HJ_SOVERSION) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# Install the library, its headers (under include/hj/, with the umbrella
+# hj.h) and hj.pc, which carries every flag a user needs.  Files are
+# copied under a temporary name and renamed, so an interrupted install
+# leaves no half-written file under a final name.
+install: lib
+	@case "$(PREFIX)" in /*) ;; *) echo "install: PREFIX must be an absolute path, got '$(PREFIX)'" >&2; exit 2;; esac
+	scripts/install-lib "$(PREFIX)" $(HJ_VERSION) $(HJ_SOVERSION) $(LIB) $(SOLIB) $(COMMON_HDR)
 
 $(BUILD)/bin/%: $(BUILD)/obj/%.o $(LIB)
 	@mkdir -p $(@D)
@@ -115,7 +155,18 @@ unit: $(UNIT_TESTS)
 test:
 	$(MAKE) --no-print-directory unit
 	$(MAKE) --no-print-directory SAN=1 unit
+	$(MAKE) --no-print-directory examples
 	$(MAKE) --no-print-directory QUICK=1 check
+
+# The examples as a user builds them: libhj installed into a temporary
+# prefix, every flag from `pkg-config --cflags --libs hj`, run against the
+# installed shared library.
+EX_PREFIX := $(abspath build/prefix)
+examples: | $(DEPS_OK)
+	rm -rf $(EX_PREFIX)
+	$(MAKE) --no-print-directory install PREFIX=$(EX_PREFIX)
+	PKG_CONFIG_PATH=$(EX_PREFIX)/lib/pkgconfig LD_LIBRARY_PATH=$(EX_PREFIX)/lib \
+	  $(MAKE) --no-print-directory -C examples OUT=$(abspath build/examples) check
 
 memcheck: $(UNIT_TESTS)
 	@for t in $(UNIT_TESTS); do \
@@ -151,6 +202,9 @@ report-now: $(HJCHECK)
 	$(build_report)
 
 bench: $(BENCHES)
+
+# Test programs need cmocka whatever the goal.
+$(UNIT_TESTS:$(BUILD)/test/%=$(BUILD)/obj/%.o): | build/.deps-test
 
 clean:
 	rm -rf build results results-quick report/out

@@ -1,0 +1,40 @@
+/* hj.h -- libhj, Hamilton-Jacobi numerics: one include for the whole library.
+ *
+ *   #include <hj/hj.h>
+ *   cc prog.c $(pkg-config --cflags --libs hj)
+ *
+ * Every function that can fail returns an HJ_* code (hj_error.h) and fills
+ * in an hj_error message; library code never prints or exits.  The API
+ * guide (docs/API.md) lists the modules and maps each paper's equations,
+ * algorithms and tables to the functions that implement them.
+ */
+#ifndef HJ_H
+#define HJ_H
+
+#define HJ_VERSION_STRING "0.1.0"
+
+/* Foundations */
+#include "hj_error.h"
+#include "hj_math.h"
+#include "hj_sys.h"
+#include "hj_io.h"
+#include "hj_cli.h"
+
+/* Fast sweeping for the Eikonal equation (paper 1) */
+#include "hj_fsm.h"
+
+/* The level set kernel (paper 2) */
+#include "hj_ls_grid.h"
+#include "hj_ls_deriv.h"
+#include "hj_ls_term.h"
+#include "hj_ls_ode.h"
+#include "hj_ls_shape.h"
+#include "hj_ls_helper.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_io.h"
+
+/* Convergence orders and published-versus-computed comparison */
+#include "hj_fit.h"
+#include "hj_compare.h"
+
+#endif
