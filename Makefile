@@ -175,10 +175,29 @@ memcheck: $(UNIT_TESTS)
 
 # ---- results, check, report -------------------------------------------
 
+# Bless the current verdicts of one table (hjcheck --accept): every cell
+# that is not a match is accepted at its verdict with reason REASON (an id
+# of PAPERDIR/reasons.tsv, or a new one with REASON_TEXT).  QUICK=1 writes
+# the quick run's own exceptions (accepted-quick.tsv).
+.PHONY: accept
+accept: $(HJCHECK)
+	@if [ -z "$(PAPER)" ] || [ -z "$(TABLE)" ] || [ -z "$(REASON)" ]; then \
+	  echo "usage: make accept PAPER=paper1 TABLE=table3.1 REASON=id [REASON_TEXT='...'] [QUICK=1]" >&2; exit 2; fi
+	@case " $(CHECK_PAPERS) " in *" $(PAPER)="*) ;; *) echo "accept: PAPER must be one of: $(CHECK_PAPERS)" >&2; exit 2;; esac
+	$(HJCHECK) --results $(RESULTS) $(CHECKFLAGS) --accept '$(TABLE)' --reason '$(REASON)' \
+	  $(if $(REASON_TEXT),--reason-text '$(REASON_TEXT)') $(filter $(PAPER)=%,$(CHECK_PAPERS))
+
 check: $(HJCHECK) $(CHECK_INPUTS)
 	$(HJCHECK) --results $(RESULTS) $(CHECKFLAGS) $(CHECK_PAPERS)
 
-REPORT := report/out/report.html
+# The full report from results/, the quick one (QUICK=1) from
+# results-quick/ into report/out-quick/.
+ifeq ($(QUICK),1)
+REPORT_DIR := report/out-quick
+else
+REPORT_DIR := report/out
+endif
+REPORT := $(REPORT_DIR)/report.html
 # A paper may schedule its long runs itself before the report pulls in the
 # rest (paper 3 runs two lanes side by side: REPRODUCE_FIRST).
 reproduce:
@@ -189,17 +208,24 @@ report: $(REPORT)
 # The report from the results as they are; `make reproduce` first brings
 # every paper's results up to date, `make paperN` only paper N's.
 define build_report
-	@mkdir -p results
-	$(HJCHECK) --results results --no-fail $(CHECK_PAPERS) > results/check-summary.txt
-	report/build.sh results report/out $(HJCHECK)
+	@mkdir -p $(RESULTS)
+	$(HJCHECK) --results $(RESULTS) $(CHECKFLAGS) --no-fail $(CHECK_PAPERS) > $(RESULTS)/check-summary.txt
+	report/build.sh $(RESULTS) $(REPORT_DIR) $(HJCHECK)
 endef
 
 $(REPORT): $(HJCHECK) $(REPORT_INPUTS) report/build.sh report/intro.md $(wildcard */published/*.tsv */accepted.tsv)
 	$(build_report)
 
-.PHONY: report-now
+.PHONY: report-now report-view
 report-now: $(HJCHECK)
 	$(build_report)
+
+# Render the report in headless Chromium (installed by the view group of
+# scripts/ensure-deps) and fail on a figure that does not load or a table
+# without a body row; a screenshot of the top lands beside the report.
+report-view: $(REPORT)
+	@scripts/ensure-deps view
+	report/view.sh $(REPORT)
 
 bench: $(BENCHES)
 
@@ -207,6 +233,7 @@ bench: $(BENCHES)
 $(UNIT_TESTS:$(BUILD)/test/%=$(BUILD)/obj/%.o): | build/.deps-test
 
 clean:
-	rm -rf build results results-quick report/out
+	rm -rf build results results-quick report/out report/out-quick
+	find . -name '*.tmp.[0-9]*' -type f -delete
 
 -include $(shell find build -name '*.d' 2>/dev/null)

@@ -12,7 +12,7 @@ set -euo pipefail
 res=$1 out=$2 hjcheck=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$out/fig"
+mkdir -p "$out"
 
 # The first /* ... */ comment of a C file, headings pushed two levels down.
 literate() {
@@ -27,6 +27,19 @@ literate() {
     printf '\n*Source: `%s`*\n\n' "$1"
 }
 
+# A figure as an <img> with its data inline, so report.html is one file.
+embed_figure() {
+    local path=$1 alt=$2 mime
+    case $path in
+    *.png) mime=image/png ;;
+    *.svg) mime=image/svg+xml ;;
+    *) printf '\n*figure of unknown type: %s*\n\n' "$alt"; return ;;
+    esac
+    printf '\n<p><img alt="%s" src="data:%s;base64,' "$alt" "$mime"
+    base64 -w 0 "$path"
+    printf '"></p>\n\n'
+}
+
 html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 
 # Published beside computed, from a .check.tsv.
@@ -39,21 +52,36 @@ check_table() {
     if [ -n "$src" ] && [ -f "$src" ]; then
         sed -n 's/^# source: *//p' "$src" | head -1 | html_escape | sed 's/^/\n<p class="tsrc"><i>Source of the '"$label"' values:<\/i> /; s/$/<\/p>/'
     fi
+    # Each distinct reason is written once, under the table, numbered; the
+    # cells it covers point to it.
     awk -F'\t' -v name="$name" -v label="$label" '
         function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
         /^#/ || $1 == "table" { next }
         { n++; split($8, v, " "); cnt[v[1]]++
           cls = v[1]; if ($8 ~ /round-off/) cls = "match";
+          ref = ""
+          if ($10 != "" && $10 != "-") {
+              if (!($10 in rid)) { nr++; rid[$10] = nr; rtext[nr] = $10; rcells[nr] = "" }
+              k = rid[$10]; rcells[k] = rcells[k] (rcells[k] == "" ? "" : "; ") esc($2) " " esc($3)
+              ref = sprintf("<a href=\"#%s-r%d\">[%d]</a>", anchor, k, k)
+          }
           row[n] = sprintf("<tr class=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>",
-                           cls, esc($2), esc($3), esc($5), esc($6), esc($7), esc($8), esc($9), esc($10)) }
+                           cls, esc($2), esc($3), esc($5), esc($6), esc($7), esc($8), esc($9), ref) }
         END {
           printf "\n<p class=\"tsum\"><b>%s</b>: %d match, %d close, %d differ", name, cnt["match"], cnt["close"], cnt["differs"]
           if (cnt["missing"]) printf ", %d missing", cnt["missing"]
           if (cnt["ambiguous"]) printf ", %d ambiguous", cnt["ambiguous"]
           printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>%s</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n", label
           for (i = 1; i <= n; i++) print row[i]
-          print "</table>\n"
-        }' "$f"
+          print "</table>"
+          if (nr) {
+              print "<ol class=\"reasons\">"
+              for (k = 1; k <= nr; k++)
+                  printf "<li id=\"%s-r%d\">%s <span class=\"cells\">(cells: %s)</span></li>\n", anchor, k, esc(rtext[k]), rcells[k]
+              print "</ol>"
+          }
+          print ""
+        }' anchor="$(printf '%s' "$name" | tr -c 'A-Za-z0-9' '-')" "$f"
 }
 
 fit_table() {
@@ -120,9 +148,7 @@ md=$tmp/report.md
                       elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
                       else printf '\n*missing: %s*\n\n' "$f"; fi ;;
                 *) if [ -f "$res/$name/$f" ]; then
-                       dst="$name-$(basename "$f")"
-                       cp "$res/$name/$f" "$out/fig/$dst"
-                       printf '\n![%s](fig/%s)\n\n' "$f" "$dst"
+                       embed_figure "$res/$name/$f" "$f"
                    else
                        printf '\n*missing figure: %s*\n\n' "$f"
                    fi ;;
@@ -189,6 +215,8 @@ tr.differs td:nth-child(6) { background: #f2dede; }
 tr.missing td:nth-child(6) { background: #f2dede; font-weight: bold; }
 tr.ambiguous td:nth-child(6) { background: #e8e8f8; }
 img { max-width: 100%; }
+ol.reasons { font-size: 0.85em; margin-top: 0.2em; }
+ol.reasons .cells { color: #666; }
 </style></head><body>
 HEAD
     # title (the first h1), then the contents, then the rest
@@ -197,6 +225,20 @@ HEAD
     cat "$tmp/toc.html"
     printf '</ul></nav>\n'
     sed '0,/<\/h1>/d' "$tmp/body.html"
+    # Counts that `make report-view` reads back from the rendered page.
+    cat <<'TAIL'
+<script>
+window.addEventListener('load', function () {
+  var imgs = document.images, broken = 0, empty = 0, tables = document.querySelectorAll('table');
+  for (var i = 0; i < imgs.length; i++) if (!imgs[i].complete || imgs[i].naturalWidth === 0) broken++;
+  for (var j = 0; j < tables.length; j++) if (tables[j].querySelectorAll('td').length === 0) empty++;
+  document.body.setAttribute('data-images', imgs.length);
+  document.body.setAttribute('data-broken-images', broken);
+  document.body.setAttribute('data-tables', tables.length);
+  document.body.setAttribute('data-empty-tables', empty);
+});
+</script>
+TAIL
     printf '</body></html>\n'
 } > "$out/report.html.tmp"
 mv "$out/report.html.tmp" "$out/report.html"

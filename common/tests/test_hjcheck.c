@@ -6,6 +6,7 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #ifndef HJ_BIN_DIR
 #error "HJ_BIN_DIR must name the directory of the built programs"
@@ -74,6 +75,7 @@ static void regression_fails(void **state)
     /* --no-fail reports the same but exits 0 (the report uses it) */
     assert_int_equal(run_check("--no-fail"), 0);
     /* accepting the cells with a reason makes the gate pass */
+    write_file("paper/reasons.tsv", "id\ttext\nsynthetic\ta synthetic reason\n");
     write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\n"
                                      "t\tN=80\tL1\tdiffers\tsynthetic\n"
                                      "t\tN=80\tL1_order\tdiffers\tsynthetic\n");
@@ -114,7 +116,8 @@ static void ratios_not_gated(void **state)
     write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t-\n");
     assert_int_equal(run_check(""), 1);
     assert_non_null(strstr(out_text, "check: 0 passed, 1 failed"));
-    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tmissing\ttoo slow here\n");
+    write_file("paper/reasons.tsv", "id\ttext\nslow\ttoo slow here\n");
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tmissing\tslow\n");
     assert_int_equal(run_check(""), 0);
     remove(strcat(strcpy(out_text, dir), "/paper/accepted.tsv"));
 }
@@ -131,6 +134,109 @@ static void malformed_published(void **state)
     assert_int_equal(run_check(""), 2);
 }
 
+static char file_text[8192];
+
+static const char *read_back(const char *rel)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    FILE *f = fopen(path, "r");
+    if (!f) return "";
+    size_t n = fread(file_text, 1, sizeof file_text - 1, f);
+    file_text[n] = '\0';
+    fclose(f);
+    return file_text;
+}
+
+static void remove_rel(const char *rel)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    remove(path);
+}
+
+/* Blessing writes the table's current verdicts with one reason id; a cell
+ * that matches again is dropped; an unknown id needs its text. */
+static void accept_blesses(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t3.75e-4\t1.42\t12\n");
+    remove_rel("paper/reasons.tsv");
+    assert_int_equal(run_check(""), 1);
+    assert_int_equal(run_check("--accept t --reason coarse"), 2);
+    assert_non_null(strstr(out_text, "--reason-text"));
+    assert_int_equal(run_check("--accept t --reason coarse --reason-text 'too coarse a grid'"), 0);
+    assert_non_null(strstr(out_text, "2 cells accepted with reason 'coarse'"));
+    assert_non_null(strstr(read_back("paper/accepted.tsv"), "t\tN=80\tL1\tdiffers\tcoarse\n"));
+    assert_non_null(strstr(read_back("paper/reasons.tsv"), "coarse\ttoo coarse a grid\n"));
+    assert_int_equal(run_check(""), 0);
+    /* the report's table shows the reason's text, not its id */
+    assert_non_null(strstr(read_back("res/p/t.check.tsv"), "too coarse a grid"));
+    /* fixed: blessing again drops the rows */
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
+    assert_int_equal(run_check("--accept t --reason coarse"), 0);
+    assert_null(strstr(read_back("paper/accepted.tsv"), "N=80"));
+    /* another text for a known id is refused */
+    assert_int_equal(run_check("--accept t --reason coarse --reason-text 'other'"), 2);
+    remove_rel("paper/accepted.tsv");
+    remove_rel("paper/reasons.tsv");
+}
+
+/* accepted-quick.tsv excuses the quick run only. */
+static void quick_only_exceptions(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", "# key: N\n# kind: cpu_ratio=ratio\nN\tcpu_ratio\n80\t8.0\n");
+    write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t-\n");
+    write_file("paper/reasons.tsv", "id\ttext\nslow\ttoo slow for the quick run\n");
+    write_file("paper/accepted-quick.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tmissing\tslow\n");
+    assert_int_equal(run_check("--quick"), 0);
+    assert_int_equal(run_check(""), 1);
+    remove_rel("paper/accepted-quick.tsv");
+    remove_rel("paper/reasons.tsv");
+}
+
+/* Bad accepted lists, names and headers: one message, exit 2, no crash. */
+static void bad_inputs(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
+    /* a reason id that reasons.tsv does not define */
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tL1\tclose\tnowhere\n");
+    assert_int_equal(run_check(""), 2);
+    assert_non_null(strstr(out_text, "not an id of reasons.tsv"));
+    remove_rel("paper/accepted.tsv");
+    /* an accepted list that exists but cannot be read is not "absent" */
+    char path[256];
+    snprintf(path, sizeof path, "%s/paper/accepted.tsv", dir);
+    assert_int_equal(mkdir(path, 0777), 0);
+    assert_int_equal(run_check(""), 2);
+    rmdir(path);
+    /* a 300-character paper name is refused, not a crash */
+    char cmd[1024], name[301];
+    memset(name, 'n', 300), name[300] = '\0';
+    snprintf(cmd, sizeof cmd, "%s --results %s/res %s=%s/paper", HJCHECK, dir, name, dir);
+    assert_int_equal(hj_test_shell(cmd, 1, out_text, sizeof out_text), 2); /* longer than a file name may be */
+    assert_non_null(strstr(out_text, "cannot create directory"));
+    char longcmd[2048];
+    snprintf(longcmd, sizeof longcmd, "%s --results %s/res %s%s%s%s=x", HJCHECK, dir, name, name, name, name);
+    assert_int_equal(hj_test_shell(longcmd, 1, out_text, sizeof out_text), 2);
+    /* more kind columns than the checker holds is an error, not a silent cut */
+    char big[4096] = "# key: N\n# kind:";
+    for (int i = 0; i < 70; i++) snprintf(big + strlen(big), sizeof big - strlen(big), " q%d=error", i);
+    strcat(big, "\nN\tq0\n40\t1e-3\n");
+    write_file("paper/published/t.tsv", big);
+    assert_int_equal(run_check(""), 2);
+    /* an unknown option and a missing value: one line each */
+    assert_int_equal(run_check("--frobnicate"), 2);
+    assert_null(strchr(strchr(out_text, '\n') ? strchr(out_text, '\n') + 1 : "", '\n'));
+    snprintf(cmd, sizeof cmd, "%s --results", HJCHECK);
+    assert_int_equal(hj_test_shell(cmd, 1, out_text, sizeof out_text), 2);
+    assert_non_null(strstr(out_text, "--results needs a value"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -139,6 +245,9 @@ int main(void)
         cmocka_unit_test(missing_and_quick),
         cmocka_unit_test(ratios_not_gated),
         cmocka_unit_test(malformed_published),
+        cmocka_unit_test(accept_blesses),
+        cmocka_unit_test(quick_only_exceptions),
+        cmocka_unit_test(bad_inputs),
     };
     return cmocka_run_group_tests_name("hjcheck", tests, make_tree, hj_test_rmdir);
 }

@@ -10,7 +10,21 @@
  * then, last,
  *     check: N passed, M failed
  * A cell passes when its verdict is no worse than the accepted verdict in
- * PAPERDIR/accepted.tsv (cells not listed there must match).  Cells of
+ * PAPERDIR/accepted.tsv (cells not listed there must match).  Each accepted
+ * cell names a reason by its id; PAPERDIR/reasons.tsv (columns id, text)
+ * states each reason once for the group of cells it covers.  With --quick,
+ * PAPERDIR/accepted-quick.tsv is read too and takes precedence: exceptions
+ * that only the quick run needs (a row it skips) live there, so a full run
+ * is never excused by them.
+ *
+ * Blessing is explicit:
+ *     hjcheck --results DIR [--quick] --accept TABLE --reason ID
+ *             [--reason-text TEXT] NAME=PAPERDIR
+ * compares TABLE and writes its current verdicts into accepted.tsv
+ * (accepted-quick.tsv with --quick): every cell that is not a match is
+ * accepted at its verdict with reason ID, cells that now match are
+ * dropped; other tables' rows are kept.  --reason-text adds ID to
+ * reasons.tsv (or must equal its text there).  Cells of
  * kind 'ratio' (CPU-time and memory ratios) are compared and shown but
  * never fail on their value: they measure the machine and its load as much
  * as the code; a ratio that is missing fails like any other cell.  With --quick,
@@ -27,6 +41,7 @@
  * are allowed and ignored).
  */
 #include <dirent.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,7 +51,8 @@
 #include "hj_io.h"
 
 typedef struct {
-    char *table, *key, *quantity, *reason;
+    char *table, *key, *quantity, *reason; /* reason: the id in reasons.tsv */
+    const char *text;                      /* its text */
     int verdict;
     int used;
 } accepted_cell;
@@ -46,44 +62,60 @@ typedef struct {
     int n;
 } accepted_list;
 
+typedef struct {
+    char **id, **text;
+    int n;
+} reason_list;
+
 static const char *prog = "hjcheck";
 
-static int load_accepted(const char *path, accepted_list *acc, hj_error *err)
+/* Open path for reading: 0 if it does not exist (nothing to load), 1 if it
+ * does, -1 (with err) if it exists but cannot be read. */
+static int probe(const char *path, hj_error *err)
 {
+    FILE *f = fopen(path, "r");
+    if (f) { fclose(f); return 1; }
+    if (errno == ENOENT) return 0;
+    hj_error_set(err, HJ_EIO, "%s: %s", path, strerror(errno));
+    return -1;
+}
+
+static void free_reasons(reason_list *r)
+{
+    for (int i = 0; i < r->n; i++) free(r->id[i]), free(r->text[i]);
+    free(r->id), free(r->text);
+    r->id = r->text = NULL, r->n = 0;
+}
+
+static const char *reason_text(const reason_list *r, const char *id)
+{
+    for (int i = 0; i < r->n; i++)
+        if (!strcmp(r->id[i], id)) return r->text[i];
+    return NULL;
+}
+
+static int load_reasons(const char *path, reason_list *r, hj_error *err)
+{
+    r->id = r->text = NULL, r->n = 0;
+    int p = probe(path, err);
+    if (p <= 0) return p < 0 ? err->code : HJ_OK;
     hj_table t;
-    acc->cells = NULL;
-    acc->n = 0;
-    FILE *probe = fopen(path, "r");
-    if (!probe) return HJ_OK; /* no accepted deviations: everything must match */
-    fclose(probe);
     int rc = hj_table_read(&t, path, err);
     if (rc) return rc;
-    int ct = hj_table_col(&t, "table"), ck = hj_table_col(&t, "key"), cq = hj_table_col(&t, "quantity"),
-        cv = hj_table_col(&t, "verdict"), cr = hj_table_col(&t, "reason");
-    if (ct < 0 || ck < 0 || cq < 0 || cv < 0 || cr < 0) {
-        hj_table_free(&t);
-        return hj_error_set(err, HJ_EFORMAT, "%s: needs columns table key quantity verdict reason", path);
-    }
-    acc->cells = calloc((size_t)t.nrows + 1, sizeof *acc->cells);
-    if (!acc->cells) { hj_table_free(&t); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
-    for (int r = 0; r < t.nrows; r++) {
-        accepted_cell *a = &acc->cells[acc->n];
-        a->verdict = hj_verdict_from_name(t.cells[r][cv]);
-        if (a->verdict < 0 || a->verdict == HJ_AMBIGUOUS) {
-            int line_rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d: unknown verdict '%s'", path, r + 1, t.cells[r][cv]);
+    int ci = hj_table_col(&t, "id"), cx = hj_table_col(&t, "text");
+    if (ci < 0 || cx < 0) { hj_table_free(&t); return hj_error_set(err, HJ_EFORMAT, "%s: needs columns id text", path); }
+    r->id = calloc((size_t)t.nrows + 1, sizeof *r->id);
+    r->text = calloc((size_t)t.nrows + 1, sizeof *r->text);
+    if (!r->id || !r->text) { hj_table_free(&t); free_reasons(r); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
+    for (int i = 0; i < t.nrows; i++) {
+        if (!t.cells[i][ci][0] || !t.cells[i][cx][0] || reason_text(r, t.cells[i][ci])) {
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d: an id must be non-empty and unique, with a text", path, i + 1);
             hj_table_free(&t);
-            return line_rc;
+            free_reasons(r);
+            return rc;
         }
-        if (t.cells[r][cr][0] == '\0') {
-            int line_rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d: a reason is required", path, r + 1);
-            hj_table_free(&t);
-            return line_rc;
-        }
-        a->table = strdup(t.cells[r][ct]);
-        a->key = strdup(t.cells[r][ck]);
-        a->quantity = strdup(t.cells[r][cq]);
-        a->reason = strdup(t.cells[r][cr]);
-        acc->n++;
+        r->id[r->n] = strdup(t.cells[i][ci]);
+        r->text[r->n++] = strdup(t.cells[i][cx]);
     }
     hj_table_free(&t);
     return HJ_OK;
@@ -98,6 +130,47 @@ static void free_accepted(accepted_list *acc)
         free(acc->cells[i].reason);
     }
     free(acc->cells);
+    acc->cells = NULL, acc->n = 0;
+}
+
+/* Append the rows of path (absent: none) to acc; every reason id must be in
+ * reasons. */
+static int load_accepted(const char *path, const reason_list *reasons, accepted_list *acc, hj_error *err)
+{
+    int p = probe(path, err);
+    if (p <= 0) return p < 0 ? err->code : HJ_OK;
+    hj_table t;
+    int rc = hj_table_read(&t, path, err);
+    if (rc) return rc;
+    int ct = hj_table_col(&t, "table"), ck = hj_table_col(&t, "key"), cq = hj_table_col(&t, "quantity"),
+        cv = hj_table_col(&t, "verdict"), cr = hj_table_col(&t, "reason");
+    if (ct < 0 || ck < 0 || cq < 0 || cv < 0 || cr < 0) {
+        hj_table_free(&t);
+        return hj_error_set(err, HJ_EFORMAT, "%s: needs columns table key quantity verdict reason", path);
+    }
+    accepted_cell *grown = realloc(acc->cells, ((size_t)acc->n + (size_t)t.nrows + 1) * sizeof *grown);
+    if (!grown) { hj_table_free(&t); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
+    acc->cells = grown;
+    for (int r = 0; r < t.nrows; r++) {
+        accepted_cell *a = &acc->cells[acc->n];
+        memset(a, 0, sizeof *a);
+        a->verdict = hj_verdict_from_name(t.cells[r][cv]);
+        a->text = reason_text(reasons, t.cells[r][cr]);
+        if (a->verdict < 0 || a->verdict == HJ_AMBIGUOUS || !a->text) {
+            int line_rc = a->text ? hj_error_set(err, HJ_EFORMAT, "%s: row %d: unknown verdict '%s'", path, r + 1, t.cells[r][cv])
+                                  : hj_error_set(err, HJ_EFORMAT, "%s: row %d: reason '%s' is not an id of reasons.tsv",
+                                                 path, r + 1, t.cells[r][cr]);
+            hj_table_free(&t);
+            return line_rc;
+        }
+        a->table = strdup(t.cells[r][ct]);
+        a->key = strdup(t.cells[r][ck]);
+        a->quantity = strdup(t.cells[r][cq]);
+        a->reason = strdup(t.cells[r][cr]);
+        acc->n++;
+    }
+    hj_table_free(&t);
+    return HJ_OK;
 }
 
 static accepted_cell *find_accepted(accepted_list *acc, const char *table, const char *key, const char *q)
@@ -106,6 +179,31 @@ static accepted_cell *find_accepted(accepted_list *acc, const char *table, const
         if (!strcmp(acc->cells[i].table, table) && !strcmp(acc->cells[i].key, key) && !strcmp(acc->cells[i].quantity, q))
             return &acc->cells[i];
     return NULL;
+}
+
+/* A cell's verdict as computed, kept for --accept. */
+typedef struct {
+    char key[1024], quantity[128];
+    int verdict;
+} computed_cell;
+
+typedef struct {
+    computed_cell *cells;
+    int n, cap;
+} computed_list;
+
+static int add_computed(computed_list *c, const char *key, const char *q, int verdict)
+{
+    if (c->n == c->cap) {
+        int cap = c->cap ? 2 * c->cap : 64;
+        computed_cell *grown = realloc(c->cells, (size_t)cap * sizeof *grown);
+        if (!grown) return -1;
+        c->cells = grown, c->cap = cap;
+    }
+    snprintf(c->cells[c->n].key, sizeof c->cells[c->n].key, "%s", key);
+    snprintf(c->cells[c->n].quantity, sizeof c->cells[c->n].quantity, "%s", q);
+    c->cells[c->n++].verdict = verdict;
+    return 0;
 }
 
 static int parse_cell(const char *s, double *v)
@@ -121,18 +219,22 @@ typedef struct {
     int skipped, passed, failed;
 } tally;
 
-/* Split "a b c" into words (in place); returns count. */
+/* Split "a b c" into words (in place); returns the count, or -1 if there
+ * are more than max. */
 static int split_words(char *s, char **w, int max)
 {
     int n = 0;
-    for (char *tok = strtok(s, " \t"); tok && n < max; tok = strtok(NULL, " \t")) w[n++] = tok;
+    for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
+        if (n == max) return -1;
+        w[n++] = tok;
+    }
     return n;
 }
 
 enum { MAXCOLS = 64 };
 
 static int check_table(const char *name, const char *paperdir, const char *table, const char *resdir, int quick,
-                       accepted_list *acc, tally *total)
+                       accepted_list *acc, computed_list *collect, tally *total)
 {
     char path[4096], cpath[4096], opath[4096];
     hj_error err;
@@ -150,11 +252,20 @@ static int check_table(const char *name, const char *paperdir, const char *table
         hj_table_free(&pub);
         return -1;
     }
-    char keybuf[1024], kindbuf[2048];
+    char keybuf[1024], kindbuf[4096];
     char *keys[MAXCOLS], *kinds[MAXCOLS];
-    snprintf(keybuf, sizeof keybuf, "%s", keymeta);
-    snprintf(kindbuf, sizeof kindbuf, "%s", kindmeta);
-    int nkey = split_words(keybuf, keys, MAXCOLS), nkind = split_words(kindbuf, kinds, MAXCOLS);
+    int nkey = -1, nkind = -1;
+    if (strlen(keymeta) < sizeof keybuf && strlen(kindmeta) < sizeof kindbuf) {
+        snprintf(keybuf, sizeof keybuf, "%s", keymeta);
+        snprintf(kindbuf, sizeof kindbuf, "%s", kindmeta);
+        nkey = split_words(keybuf, keys, MAXCOLS), nkind = split_words(kindbuf, kinds, MAXCOLS);
+    }
+    if (nkey < 0 || nkind < 0) {
+        fprintf(stderr, "%s: %s: '# key:' or '# kind:' is longer than %d columns or %zu characters\n", prog, path,
+                MAXCOLS, sizeof keybuf);
+        hj_table_free(&pub);
+        return -1;
+    }
     int have_com = hj_table_read(&com, cpath, &err) == HJ_OK;
     if (!have_com && !quick) fprintf(stderr, "%s: warning: %s\n", prog, err.msg);
 
@@ -219,10 +330,15 @@ static int check_table(const char *name, const char *paperdir, const char *table
             if (ambiguous) v = HJ_AMBIGUOUS;
             else if (cok != 1) v = HJ_MISSING;
             else v = hj_compare(kind, pv, cv, &roundoff);
+            if (collect && add_computed(collect, key, qname, (int)v)) {
+                fprintf(stderr, "%s: out of memory\n", prog);
+                bad = 1;
+                break;
+            }
             accepted_cell *a = find_accepted(acc, table, key, qname);
             if (a) a->used = 1;
             int accepted = a ? a->verdict : HJ_MATCH;
-            const char *reason = a ? a->reason : roundoff ? "both at round-off level" : "";
+            const char *reason = a ? a->text : roundoff ? "both at round-off level" : "";
             char why[256] = "";
             t.count[v]++;
             if (v == HJ_AMBIGUOUS) {
@@ -234,12 +350,12 @@ static int check_table(const char *name, const char *paperdir, const char *table
                  * other missing cell. */
                 t.passed++;
                 snprintf(why, sizeof why, "ratio, not gated (accepted %s)%s%s", hj_verdict_name((hj_verdict)accepted),
-                         a ? "; " : "", a ? a->reason : "");
+                         a ? "; " : "", a ? a->text : "");
                 reason = why;
             } else if ((int)v > accepted) {
                 t.failed++;
                 snprintf(why, sizeof why, "REGRESSION: accepted %s%s%s", hj_verdict_name((hj_verdict)accepted),
-                         a ? "; " : "", a ? a->reason : "");
+                         a ? "; " : "", a ? a->text : "");
                 reason = why;
                 fprintf(stderr, "%s: %s %s %s %s: %s, computed %s, published %s (accepted: %s)\n", prog, name, table, key,
                         qname, hj_verdict_name(v), cok == 1 ? com.cells[crow][cc] : "none", ps,
@@ -247,8 +363,9 @@ static int check_table(const char *name, const char *paperdir, const char *table
             } else {
                 t.passed++;
                 if ((int)v < accepted && kind != HJ_KIND_RATIO) /* ratios vary from run to run */
-                    fprintf(stderr, "%s: note: %s %s %s %s is now %s, better than accepted %s: update %s/accepted.tsv\n", prog,
-                            name, table, key, qname, hj_verdict_name(v), hj_verdict_name((hj_verdict)accepted), paperdir);
+                    fprintf(stderr, "%s: note: %s %s %s %s is now %s, better than accepted %s: bless it with "
+                                    "hjcheck --accept %s\n", prog, name, table, key, qname, hj_verdict_name(v),
+                            hj_verdict_name((hj_verdict)accepted), table);
             }
             fprintf(out.fp, "%s\t%s\t%s\t%s\t%s\t", table, key, qname, hj_kind_name(kind), ps);
             if (cok == 1) fprintf(out.fp, "%.6g\t", cv); else fputs("-\t", out.fp);
@@ -282,29 +399,55 @@ static int check_table(const char *name, const char *paperdir, const char *table
 
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
+/* The accepted list of a paper: accepted-quick.tsv first when quick (its
+ * rows take precedence), then accepted.tsv. */
+static int load_paper_accepted(const char *paperdir, int quick, reason_list *reasons, accepted_list *acc, hj_error *err)
+{
+    char path[4096];
+    acc->cells = NULL, acc->n = 0;
+    snprintf(path, sizeof path, "%s/reasons.tsv", paperdir);
+    int rc = load_reasons(path, reasons, err);
+    if (!rc && quick) {
+        snprintf(path, sizeof path, "%s/accepted-quick.tsv", paperdir);
+        rc = load_accepted(path, reasons, acc, err);
+    }
+    if (!rc) {
+        snprintf(path, sizeof path, "%s/accepted.tsv", paperdir);
+        rc = load_accepted(path, reasons, acc, err);
+    }
+    if (rc) free_accepted(acc), free_reasons(reasons);
+    return rc;
+}
+
 static int check_paper(const char *name, const char *paperdir, const char *resdir, int quick, tally *total)
 {
-    char dir[4096], accpath[4096];
+    char dir[4096];
     hj_error err;
     snprintf(dir, sizeof dir, "%s/published", paperdir);
-    snprintf(accpath, sizeof accpath, "%s/accepted.tsv", paperdir);
     accepted_list acc;
-    if (load_accepted(accpath, &acc, &err)) {
+    reason_list reasons;
+    if (load_paper_accepted(paperdir, quick, &reasons, &acc, &err)) {
         fprintf(stderr, "%s: %s\n", prog, err.msg);
         return -1;
     }
     DIR *d = opendir(dir);
     if (!d) {
         fprintf(stderr, "%s: cannot open %s\n", prog, dir);
-        free_accepted(&acc);
+        free_accepted(&acc), free_reasons(&reasons);
         return -1;
     }
-    char *names[512];
-    int n = 0;
+    enum { MAXTABLES = 512 };
+    char *names[MAXTABLES];
+    int n = 0, rc = 0;
     struct dirent *e;
-    while ((e = readdir(d)) != NULL && n < 512) {
+    while ((e = readdir(d)) != NULL) {
         size_t len = strlen(e->d_name);
         if (len > 4 && !strcmp(e->d_name + len - 4, ".tsv")) {
+            if (n == MAXTABLES) {
+                fprintf(stderr, "%s: %s holds more than %d tables\n", prog, dir, MAXTABLES);
+                rc = -1;
+                break;
+            }
             names[n] = strdup(e->d_name);
             names[n][len - 4] = '\0';
             n++;
@@ -312,51 +455,193 @@ static int check_paper(const char *name, const char *paperdir, const char *resdi
     }
     closedir(d);
     qsort(names, (size_t)n, sizeof *names, cmp_str);
-    int rc = 0;
     for (int i = 0; i < n; i++) {
-        if (check_table(name, paperdir, names[i], resdir, quick, &acc, total) < 0) rc = -1;
+        if (rc == 0 && check_table(name, paperdir, names[i], resdir, quick, &acc, NULL, total) < 0) rc = -1;
         free(names[i]);
     }
-    for (int i = 0; i < acc.n; i++)
+    for (int i = 0; i < acc.n && rc == 0; i++)
         if (!acc.cells[i].used && !quick)
             fprintf(stderr, "%s: note: %s/accepted.tsv names %s %s %s, which no published table has\n", prog, paperdir,
                     acc.cells[i].table, acc.cells[i].key, acc.cells[i].quantity);
-    free_accepted(&acc);
+    free_accepted(&acc), free_reasons(&reasons);
+    return rc;
+}
+
+/* Write an accepted list (rows in order) to path, atomically. */
+static int write_accepted(const char *path, const char *name, const accepted_list *acc, int quick, hj_error *err)
+{
+    hj_out out;
+    int rc = hj_out_open(&out, path, err);
+    if (rc) return rc;
+    fprintf(out.fp, "# Accepted verdicts of %s's cells that are not a match%s; reasons by id in reasons.tsv.\n"
+                    "# Written by hjcheck --accept (make accept); make check fails when a cell is worse than its verdict here.\n"
+                    "table\tkey\tquantity\tverdict\treason\n",
+            name, quick ? ", for the quick run only" : "");
+    for (int i = 0; i < acc->n; i++)
+        fprintf(out.fp, "%s\t%s\t%s\t%s\t%s\n", acc->cells[i].table, acc->cells[i].key, acc->cells[i].quantity,
+                hj_verdict_name((hj_verdict)acc->cells[i].verdict), acc->cells[i].reason);
+    return hj_out_commit(&out, err);
+}
+
+/* Append "id<TAB>text" to reasons.tsv (created with its header if absent). */
+static int add_reason(const char *path, const char *id, const char *text, int exists, hj_error *err)
+{
+    hj_out out;
+    int rc = hj_out_open(&out, path, err);
+    if (rc) return rc;
+    if (exists) {
+        FILE *in = fopen(path, "r");
+        if (!in) { hj_out_abort(&out); return hj_error_set(err, HJ_EIO, "%s: %s", path, strerror(errno)); }
+        int c;
+        while ((c = fgetc(in)) != EOF) fputc(c, out.fp);
+        fclose(in);
+    } else {
+        fprintf(out.fp, "# Reasons for accepted verdicts, each stated once; accepted.tsv names them by id.\nid\ttext\n");
+    }
+    fprintf(out.fp, "%s\t%s\n", id, text);
+    return hj_out_commit(&out, err);
+}
+
+/* --accept: compare table, then record its verdicts with reason id. */
+static int accept_table(const char *name, const char *paperdir, const char *resdir, int quick, const char *table,
+                        const char *id, const char *text)
+{
+    char apath[4096], rpath[4096];
+    hj_error err;
+    reason_list reasons;
+    accepted_list acc = {NULL, 0};
+    snprintf(rpath, sizeof rpath, "%s/reasons.tsv", paperdir);
+    snprintf(apath, sizeof apath, "%s/%s", paperdir, quick ? "accepted-quick.tsv" : "accepted.tsv");
+    if (strchr(id, '\t') || strchr(id, '\n') || strchr(id, ' ') || (text && (strchr(text, '\t') || strchr(text, '\n')))) {
+        fprintf(stderr, "%s: a reason id has no blanks, and neither it nor its text a tab or newline\n", prog);
+        return 2;
+    }
+    if (load_reasons(rpath, &reasons, &err)) { fprintf(stderr, "%s: %s\n", prog, err.msg); return 2; }
+    const char *known = reason_text(&reasons, id);
+    int rc = 0;
+    if (!known && !text) {
+        fprintf(stderr, "%s: reason '%s' is not in %s: give its text with --reason-text\n", prog, id, rpath);
+        rc = 2;
+    } else if (known && text && strcmp(known, text)) {
+        fprintf(stderr, "%s: reason '%s' already has another text in %s\n", prog, id, rpath);
+        rc = 2;
+    } else if (load_accepted(apath, &reasons, &acc, &err)) {
+        fprintf(stderr, "%s: %s\n", prog, err.msg);
+        rc = 2;
+    }
+    if (rc) { free_accepted(&acc), free_reasons(&reasons); return rc; }
+
+    /* The comparison itself runs against the lists make check would use. */
+    accepted_list gate;
+    reason_list gate_reasons;
+    computed_list got = {NULL, 0, 0};
+    tally t = {{0}, 0, 0, 0};
+    if (load_paper_accepted(paperdir, quick, &gate_reasons, &gate, &err)) {
+        fprintf(stderr, "%s: %s\n", prog, err.msg);
+        rc = 2;
+    } else {
+        if (check_table(name, paperdir, table, resdir, quick, &gate, &got, &t) < 0) rc = 2;
+        free_accepted(&gate), free_reasons(&gate_reasons);
+    }
+    int added = 0, dropped = 0;
+    if (!rc) {
+        /* Keep other tables' rows; replace or drop this table's computed cells. */
+        accepted_list next = {calloc((size_t)acc.n + (size_t)got.n + 1, sizeof(accepted_cell)), 0};
+        if (!next.cells) { fprintf(stderr, "%s: out of memory\n", prog); rc = 2; }
+        for (int i = 0; !rc && i < acc.n; i++) {
+            accepted_cell *a = &acc.cells[i];
+            int covered = 0;
+            for (int k = 0; k < got.n && !covered; k++)
+                covered = !strcmp(a->table, table) && !strcmp(a->key, got.cells[k].key) &&
+                          !strcmp(a->quantity, got.cells[k].quantity);
+            if (covered) { dropped++; continue; }
+            next.cells[next.n++] = *a;
+        }
+        for (int k = 0; !rc && k < got.n; k++) {
+            if (got.cells[k].verdict == HJ_MATCH || got.cells[k].verdict == HJ_AMBIGUOUS) continue;
+            accepted_cell *a = &next.cells[next.n++];
+            memset(a, 0, sizeof *a);
+            a->table = (char *)table, a->key = got.cells[k].key, a->quantity = got.cells[k].quantity;
+            a->reason = (char *)id, a->verdict = got.cells[k].verdict;
+            added++;
+        }
+        if (!rc && !known && add_reason(rpath, id, text, reasons.n > 0 || probe(rpath, &err) == 1, &err)) {
+            fprintf(stderr, "%s: %s\n", prog, err.msg);
+            rc = 2;
+        }
+        if (!rc && write_accepted(apath, name, &next, quick, &err)) {
+            fprintf(stderr, "%s: %s\n", prog, err.msg);
+            rc = 2;
+        }
+        free(next.cells); /* its strings belong to acc, got and the arguments */
+    }
+    if (!rc)
+        printf("%s %s: %d cells accepted with reason '%s' (%d earlier rows of the table replaced) in %s\n", name, table,
+               added, id, dropped, apath);
+    free(got.cells);
+    free_accepted(&acc), free_reasons(&reasons);
     return rc;
 }
 
 static void usage(FILE *f)
 {
     fprintf(f, "usage: %s --results DIR [--quick] [--no-fail] NAME=PAPERDIR ...\n"
+               "       %s --results DIR [--quick] --accept TABLE --reason ID [--reason-text TEXT] NAME=PAPERDIR\n"
                "       %s --rules   (print the comparison rules as Markdown)\n"
                "Compares published with computed tables; see the header of common/tools/hjcheck.c.\n",
-            prog, prog);
+            prog, prog, prog);
+}
+
+/* One message for a usage error, then exit status 2. */
+static int bad_usage(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "%s: ", prog);
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, " (see %s --help)\n", prog);
+    return 2;
 }
 
 int main(int argc, char **argv)
 {
-    const char *resdir = NULL;
+    const char *resdir = NULL, *accept = NULL, *reason = NULL, *reason_text_arg = NULL;
     int quick = 0, nofail = 0, npapers = 0;
+    const char *papers[64];
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help")) { usage(stdout); return 0; }
-        if (!strcmp(argv[i], "--rules")) { hj_compare_rules(stdout); return 0; }
-        if (!strcmp(argv[i], "--quick")) quick = 1;
-        else if (!strcmp(argv[i], "--no-fail")) nofail = 1;
-        else if (!strcmp(argv[i], "--results") && i + 1 < argc) resdir = argv[++i];
-        else if (argv[i][0] == '-') { fprintf(stderr, "%s: unknown option '%s'\n", prog, argv[i]); usage(stderr); return 2; }
-        else if (!strchr(argv[i], '=')) { fprintf(stderr, "%s: expected NAME=PAPERDIR, got '%s'\n", prog, argv[i]); return 2; }
-        else npapers++;
+        const char *a = argv[i];
+        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
+        if (!strcmp(a, "--rules")) { hj_compare_rules(stdout); return 0; }
+        if (!strcmp(a, "--quick")) quick = 1;
+        else if (!strcmp(a, "--no-fail")) nofail = 1;
+        else if (!strcmp(a, "--results") || !strcmp(a, "--accept") || !strcmp(a, "--reason") ||
+                 !strcmp(a, "--reason-text")) {
+            if (i + 1 >= argc || argv[i + 1][0] == '\0') return bad_usage("%s needs a value", a);
+            const char *v = argv[++i];
+            if (!strcmp(a, "--results")) resdir = v;
+            else if (!strcmp(a, "--accept")) accept = v;
+            else if (!strcmp(a, "--reason")) reason = v;
+            else reason_text_arg = v;
+        } else if (a[0] == '-') return bad_usage("unknown option '%s'", a);
+        else if (!strchr(a, '=') || strchr(a, '=') == a || strlen(a) >= 1024)
+            return bad_usage("expected NAME=PAPERDIR, got '%s'", a);
+        else if (npapers == 64) return bad_usage("at most 64 papers, got more at '%s'", a);
+        else papers[npapers++] = a;
     }
-    if (!resdir || npapers == 0) { usage(stderr); return 2; }
+    if (!resdir) return bad_usage("%s", "--results DIR is required");
+    if (npapers == 0) return bad_usage("%s", "name at least one NAME=PAPERDIR");
+    if ((reason || reason_text_arg) && !accept) return bad_usage("%s", "--reason goes with --accept");
+    if (accept && (!reason || npapers != 1)) return bad_usage("%s", "--accept TABLE needs --reason ID and one NAME=PAPERDIR");
+    if (accept) {
+        char name[1024];
+        snprintf(name, sizeof name, "%s", papers[0]);
+        char *eq = strchr(name, '=');
+        *eq = '\0';
+        return accept_table(name, eq + 1, resdir, quick, accept, reason, reason_text_arg);
+    }
     tally total = {{0}, 0, 0, 0};
     int rc = 0;
-    for (int i = 1; i < argc; i++) {
-        if (argv[i][0] == '-' || !strchr(argv[i], '=')) {
-            if (!strcmp(argv[i], "--results")) i++;
-            continue;
-        }
-        char name[256];
-        snprintf(name, sizeof name, "%s", argv[i]);
+    for (int i = 0; i < npapers; i++) {
+        char name[1024];
+        snprintf(name, sizeof name, "%s", papers[i]);
         char *eq = strchr(name, '=');
         *eq = '\0';
         if (check_paper(name, eq + 1, resdir, quick, &total) < 0) rc = 2;
