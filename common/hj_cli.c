@@ -61,6 +61,130 @@ int hj_parse_long_list(const char *s, const char *what, long min, long max, long
     return HJ_OK;
 }
 
+static hj_cli_opt *find_opt(hj_cli_spec *spec, const char *name)
+{
+    for (int k = 0; k < spec->nopts; k++)
+        if (!strcmp(spec->opts[k].name, name)) return &spec->opts[k];
+    return NULL;
+}
+
+static int parse_value(hj_cli_opt *o, const char *v, hj_error *err)
+{
+    switch (o->type) {
+    case HJ_OPT_LONG:
+        return hj_parse_long(v, o->name, (long)o->min, (long)o->max, (long *)o->value, err);
+    case HJ_OPT_DOUBLE:
+        return hj_parse_double(v, o->name, o->min, o->max, (double *)o->value, err);
+    case HJ_OPT_STRING:
+        if (v[0] == '\0') return hj_error_set(err, HJ_EINVAL, "%s needs a non-empty value", o->name);
+        *(const char **)o->value = v;
+        return HJ_OK;
+    case HJ_OPT_LONG_LIST:
+        return hj_parse_long_list(v, o->name, (long)o->min, (long)o->max, (long *)o->value, o->maxn, o->count, err);
+    case HJ_OPT_CHOICE:
+        for (int c = 0; o->choices[c]; c++)
+            if (!strcmp(o->choices[c], v)) {
+                *(int *)o->value = c;
+                return HJ_OK;
+            }
+        {
+            char list[512] = "";
+            for (int c = 0; o->choices[c]; c++) {
+                size_t n = strlen(list);
+                snprintf(list + n, sizeof list - n, "%s%s", c ? ", " : "", o->choices[c]);
+            }
+            return hj_error_set(err, HJ_EINVAL, "%s: '%s' is not one of %s", o->name, v, list);
+        }
+    case HJ_OPT_FLAG:
+        break;
+    }
+    return hj_error_set(err, HJ_EINVAL, "%s: unknown option type", o->name);
+}
+
+int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *err)
+{
+    *help = 0;
+    for (int k = 0; k < spec->nopts; k++) spec->opts[k].seen = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help")) {
+            *help = 1;
+            return HJ_OK;
+        }
+        hj_cli_opt *o = find_opt(spec, a);
+        if (!o) {
+            if (a[0] == '-' && a[1] == '-')
+                return hj_error_set(err, HJ_EINVAL, "unknown option '%.200s' (see %s --help)", a, spec->prog);
+            return hj_error_set(err, HJ_EINVAL, "unexpected argument '%.200s' (see %s --help)", a, spec->prog);
+        }
+        if (o->seen) return hj_error_set(err, HJ_EINVAL, "%s is given twice", o->name);
+        o->seen = 1;
+        if (o->type == HJ_OPT_FLAG) {
+            *(int *)o->value = 1;
+            continue;
+        }
+        if (i + 1 >= argc) return hj_error_set(err, HJ_EINVAL, "%s needs a value", o->name);
+        int rc = parse_value(o, argv[++i], err);
+        if (rc) return rc;
+    }
+    return HJ_OK;
+}
+
+void hj_cli_help(const hj_cli_spec *spec, FILE *out)
+{
+    fprintf(out, "usage: %s [options]\n%s\n\noptions:\n", spec->prog, spec->summary);
+    for (int k = 0; k < spec->nopts; k++) {
+        const hj_cli_opt *o = &spec->opts[k];
+        char head[128], range[256] = "", dflt[256] = "";
+        snprintf(head, sizeof head, "%s%s%s", o->name, o->metavar ? " " : "", o->metavar ? o->metavar : "");
+        switch (o->type) {
+        case HJ_OPT_LONG:
+            snprintf(range, sizeof range, " [%ld..%ld]", (long)o->min, (long)o->max);
+            snprintf(dflt, sizeof dflt, " (default %ld)", *(const long *)o->value);
+            break;
+        case HJ_OPT_DOUBLE:
+            snprintf(range, sizeof range, " [%g..%g]", o->min, o->max);
+            snprintf(dflt, sizeof dflt, " (default %g)", *(const double *)o->value);
+            break;
+        case HJ_OPT_STRING:
+            if (*(const char *const *)o->value) snprintf(dflt, sizeof dflt, " (default %s)", *(const char *const *)o->value);
+            break;
+        case HJ_OPT_LONG_LIST:
+            snprintf(range, sizeof range, " [%ld..%ld, at most %d]", (long)o->min, (long)o->max, o->maxn);
+            if (o->count && *o->count > 0) {
+                size_t n = (size_t)snprintf(dflt, sizeof dflt, " (default ");
+                for (int c = 0; c < *o->count && n < sizeof dflt; c++)
+                    n += (size_t)snprintf(dflt + n, sizeof dflt - n, "%s%ld", c ? "," : "", ((const long *)o->value)[c]);
+                if (n < sizeof dflt) snprintf(dflt + n, sizeof dflt - n, ")");
+            }
+            break;
+        case HJ_OPT_CHOICE: {
+            size_t n = (size_t)snprintf(range, sizeof range, " {");
+            for (int c = 0; o->choices[c] && n < sizeof range; c++)
+                n += (size_t)snprintf(range + n, sizeof range - n, "%s%s", c ? "|" : "", o->choices[c]);
+            if (n < sizeof range) snprintf(range + n, sizeof range - n, "}");
+            snprintf(dflt, sizeof dflt, " (default %s)", o->choices[*(const int *)o->value]);
+            break;
+        }
+        case HJ_OPT_FLAG:
+            break;
+        }
+        fprintf(out, "  %-22s %s%s%s\n", head, o->help ? o->help : "", range, dflt);
+    }
+    fprintf(out, "  %-22s %s\n", "--help", "this text");
+}
+
+void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)
+{
+    hj_error err;
+    int help = 0;
+    if (hj_cli_parse(spec, argc, argv, &help, &err)) hj_cli_fail(spec->prog, HJ_EXIT_USAGE, "%s", err.msg);
+    if (help) {
+        hj_cli_help(spec, stdout);
+        exit(0);
+    }
+}
+
 void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
 {
     va_list ap;

@@ -9,6 +9,8 @@
 #ifndef HJ_CLI_H
 #define HJ_CLI_H
 
+#include <stdio.h>
+
 #include "hj_error.h"
 
 /* Integer in [min, max], whole string, decimal. */
@@ -17,6 +19,56 @@ int hj_parse_long(const char *s, const char *what, long min, long max, long *out
 int hj_parse_double(const char *s, const char *what, double min, double max, double *out, hj_error *err);
 /* Comma-separated integers in [min, max]; at most maxn of them. */
 int hj_parse_long_list(const char *s, const char *what, long min, long max, long *out, int maxn, int *n, hj_error *err);
+
+/* ---- declarative options ------------------------------------------------
+ *
+ * A program describes its options in one table; hj_cli_parse() reads the
+ * command line against it, and --help, unknown options, missing values,
+ * range checks and their messages all come from that one place.  Values
+ * are written to the variables the table points to, which hold the
+ * defaults beforehand (--help prints them).  Every option takes the form
+ * "--name value" (or "--name" alone for a flag). */
+typedef enum {
+    HJ_OPT_FLAG,      /* int *: set to 1 */
+    HJ_OPT_LONG,      /* long *, in [min, max] */
+    HJ_OPT_DOUBLE,    /* double *, finite, in [min, max] */
+    HJ_OPT_STRING,    /* const char **: the argument itself, non-empty */
+    HJ_OPT_LONG_LIST, /* long * array of maxn, count in *count; each in [min, max] */
+    HJ_OPT_CHOICE     /* int *: index in choices (a NULL-terminated list of words) */
+} hj_opt_type;
+
+typedef struct {
+    const char *name;    /* "--N" */
+    hj_opt_type type;
+    void *value;
+    double min, max;     /* LONG, DOUBLE, LONG_LIST */
+    const char *metavar; /* shown in --help: "N", "FILE" */
+    const char *help;    /* one line */
+    const char *const *choices; /* CHOICE */
+    int *count, maxn;    /* LONG_LIST */
+    int seen;            /* set by hj_cli_parse when given */
+} hj_cli_opt;
+
+typedef struct {
+    const char *prog;    /* program name for messages */
+    const char *summary; /* one line: what the program does */
+    hj_cli_opt *opts;
+    int nopts;
+} hj_cli_spec;
+
+/* Parse argv[1..argc-1] against spec.  Returns HJ_OK, with *help = 1 if
+ * --help was given (the caller prints hj_cli_help and exits 0), or
+ * HJ_EINVAL / HJ_ENONFINITE with one message naming the option.  Giving an
+ * option twice is an error. */
+int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *err);
+
+/* "usage: prog [options]", the summary, and one line per option with its
+ * metavariable, range or choices and its current (default) value. */
+void hj_cli_help(const hj_cli_spec *spec, FILE *out);
+
+/* For main(): parse, print --help and exit 0, or print the one message and
+ * exit with HJ_EXIT_USAGE. */
+void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
 
 /* Exit codes used by every program. */
 enum { HJ_EXIT_RUN = 1, HJ_EXIT_USAGE = 2 };

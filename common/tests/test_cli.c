@@ -1,0 +1,114 @@
+/* hj_cli: the declarative option table.  Every value type, its range, the
+ * messages for unknown, repeated and incomplete options, and --help built
+ * from the table with the defaults. */
+#include "hj_test.h"
+
+#include "hj_cli.h"
+
+static long N;
+static double cfl;
+static const char *out;
+static long sizes[4];
+static int nsizes, quick, scheme;
+static const char *const schemes[] = {"eno2", "weno5", NULL};
+static hj_cli_opt opts[] = {
+    {"--N", HJ_OPT_LONG, &N, 2, 1000, "N", "nodes per dimension", NULL, NULL, 0, 0},
+    {"--cfl", HJ_OPT_DOUBLE, &cfl, 0.01, 1, "C", "CFL factor", NULL, NULL, 0, 0},
+    {"--out", HJ_OPT_STRING, &out, 0, 0, "FILE", "output file", NULL, NULL, 0, 0},
+    {"--sizes", HJ_OPT_LONG_LIST, sizes, 8, 100, "N,N,...", "grid sizes", NULL, &nsizes, 4, 0},
+    {"--quick", HJ_OPT_FLAG, &quick, 0, 0, NULL, "coarse rows only", NULL, NULL, 0, 0},
+    {"--scheme", HJ_OPT_CHOICE, &scheme, 0, 0, "S", "upwind scheme", schemes, NULL, 0, 0},
+};
+static hj_cli_spec spec = {"prog", "A test program.", opts, (int)(sizeof opts / sizeof opts[0])};
+
+static void defaults(void)
+{
+    N = 101, cfl = 0.5, out = "phi.tsv", nsizes = 2, sizes[0] = 10, sizes[1] = 20, quick = 0, scheme = 1;
+}
+
+/* argv from a space-separated string (at most 16 words). */
+static int parse(const char *line, int *help, hj_error *err)
+{
+    static char buf[512];
+    char *argv[17] = {"prog"};
+    int argc = 1;
+    snprintf(buf, sizeof buf, "%s", line);
+    for (char *w = strtok(buf, " "); w && argc < 16; w = strtok(NULL, " ")) argv[argc++] = w;
+    return hj_cli_parse(&spec, argc, argv, help, err);
+}
+
+static void values_and_defaults(void **state)
+{
+    (void)state;
+    hj_error err;
+    int help;
+    defaults();
+    assert_int_equal(parse("", &help, &err), HJ_OK);
+    assert_int_equal(N, 101);
+    assert_int_equal(help, 0);
+    assert_int_equal(parse("--N 40 --cfl 0.9 --out x.tsv --sizes 8,16,32 --quick --scheme eno2", &help, &err), HJ_OK);
+    assert_int_equal(N, 40);
+    assert_close(cfl, 0.9, 0, 1e-15);
+    assert_string_equal(out, "x.tsv");
+    assert_int_equal(nsizes, 3);
+    assert_int_equal(sizes[2], 32);
+    assert_int_equal(quick, 1);
+    assert_int_equal(scheme, 0);
+    assert_int_equal(opts[0].seen, 1);
+}
+
+static void bad_values(void **state)
+{
+    (void)state;
+    hj_error err;
+    int help;
+    const char *bad[] = {"--N 1", "--N 1001", "--N 12abc", "--N ''", "--cfl nan", "--cfl inf", "--cfl 0",
+                         "--sizes 8,,16", "--sizes 8,16,32,64,100", "--sizes 4", "--scheme weno7", "--N"};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        defaults();
+        assert_int_not_equal(parse(bad[k], &help, &err), HJ_OK);
+        assert_true(strlen(err.msg) > 0);
+    }
+    assert_int_equal(parse("--frob 3", &help, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "unknown option '--frob'"));
+    assert_int_equal(parse("stray", &help, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "unexpected argument"));
+    assert_int_equal(parse("--N 5 --N 6", &help, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "given twice"));
+    assert_int_equal(parse("--scheme weno7", &help, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "eno2, weno5"));
+    assert_int_equal(parse("--out", &help, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "--out needs a value"));
+}
+
+static void help_lists_every_option(void **state)
+{
+    (void)state;
+    hj_error err;
+    int help;
+    defaults();
+    assert_int_equal(parse("--N 7 --help --frob", &help, &err), HJ_OK);
+    assert_int_equal(help, 1);
+    char text[4096] = "";
+    FILE *f = fmemopen(text, sizeof text - 1, "w");
+    assert_non_null(f);
+    hj_cli_help(&spec, f);
+    fclose(f);
+    assert_non_null(strstr(text, "usage: prog [options]"));
+    assert_non_null(strstr(text, "--N N"));
+    assert_non_null(strstr(text, "[2..1000] (default 7)"));
+    assert_non_null(strstr(text, "(default 0.5)"));
+    assert_non_null(strstr(text, "(default 10,20)"));
+    assert_non_null(strstr(text, "{eno2|weno5} (default weno5)"));
+    assert_non_null(strstr(text, "--help"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(values_and_defaults),
+        cmocka_unit_test(bad_values),
+        cmocka_unit_test(help_lists_every_option),
+    };
+    return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
+}
