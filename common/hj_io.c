@@ -1,6 +1,9 @@
 #include "hj_io.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -14,10 +17,120 @@ static char *dupstr(const char *s)
     return d;
 }
 
+/* The temporary files open now, so that a signal can remove them: fixed
+ * slots, since the handler may only call async-signal-safe functions. */
+enum { OUT_SLOTS = 32, OUT_PATH = 1024 };
+static char out_open_tmp[OUT_SLOTS][OUT_PATH];
+static volatile sig_atomic_t out_slot_used[OUT_SLOTS];
+
+static void out_register(const char *tmp)
+{
+    if (strlen(tmp) >= OUT_PATH) return;
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (!out_slot_used[k]) {
+            memcpy(out_open_tmp[k], tmp, strlen(tmp) + 1);
+            out_slot_used[k] = 1;
+            return;
+        }
+}
+
+static void out_unregister(const char *tmp)
+{
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (out_slot_used[k] && !strcmp(out_open_tmp[k], tmp)) out_slot_used[k] = 0;
+}
+
+static void out_on_signal(int sig)
+{
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (out_slot_used[k]) unlink(out_open_tmp[k]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+void hj_out_remove_on_signal(void)
+{
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = out_on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[k], &sa, NULL);
+    }
+}
+
+int hj_out_check(const char *path, hj_error *err)
+{
+    struct stat st;
+    if (lstat(path, &st) == 0) {
+        if (!S_ISREG(st.st_mode))
+            return hj_error_set(err, HJ_EIO, "%s exists and is not a regular file: not replaced", path);
+    } else if (errno != ENOENT) {
+        return hj_error_set(err, HJ_EIO, "%s: %s", path, strerror(errno));
+    }
+    /* The directory must exist and take a new file. */
+    size_t n = strlen(path);
+    char *dir = malloc(n + 2);
+    if (!dir) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+    memcpy(dir, path, n + 1);
+    char *slash = strrchr(dir, '/');
+    if (!slash) strcpy(dir, ".");
+    else if (slash == dir) dir[1] = '\0';
+    else *slash = '\0';
+    int ok = stat(dir, &st) == 0 && S_ISDIR(st.st_mode) && access(dir, W_OK | X_OK) == 0;
+    int e = errno;
+    int rc = ok ? HJ_OK
+                : hj_error_set(err, HJ_EIO, "cannot write %s: %s: %s", path, dir,
+                               stat(dir, &st) == 0 && !S_ISDIR(st.st_mode) ? "not a directory" : strerror(e));
+    free(dir);
+    return rc;
+}
+
+/* Remove "<path>.tmp.<pid>" files of processes that no longer exist: what
+ * a killed run left behind. */
+static void out_remove_stale(const char *path)
+{
+    size_t n = strlen(path);
+    char *dir = malloc(n + 2);
+    if (!dir) return;
+    memcpy(dir, path, n + 1);
+    char *slash = strrchr(dir, '/');
+    const char *base = slash ? slash + 1 : path;
+    if (!slash) strcpy(dir, ".");
+    else if (slash == dir) dir[1] = '\0';
+    else *slash = '\0';
+    size_t nb = strlen(base);
+    DIR *d = opendir(dir);
+    if (d) {
+        struct dirent *e;
+        while ((e = readdir(d)) != NULL) {
+            const char *name = e->d_name;
+            if (strncmp(name, base, nb) || strncmp(name + nb, ".tmp.", 5)) continue;
+            char *end;
+            long pid = strtol(name + nb + 5, &end, 10);
+            if (*end || pid <= 0 || pid == (long)getpid()) continue;
+            if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue;
+            char *full = malloc(strlen(dir) + strlen(name) + 2);
+            if (!full) continue;
+            sprintf(full, "%s/%s", dir, name);
+            struct stat st;
+            if (lstat(full, &st) == 0 && S_ISREG(st.st_mode)) unlink(full);
+            free(full);
+        }
+        closedir(d);
+    }
+    free(dir);
+}
+
 int hj_out_open(hj_out *out, const char *path, hj_error *err)
 {
     size_t n = strlen(path) + 32;
     out->fp = NULL;
+    out->path = out->tmp = NULL;
+    int rc = hj_out_check(path, err);
+    if (rc) return rc;
+    out_remove_stale(path);
     out->path = dupstr(path);
     out->tmp = malloc(n);
     if (!out->path || !out->tmp) {
@@ -27,19 +140,29 @@ int hj_out_open(hj_out *out, const char *path, hj_error *err)
         return hj_error_set(err, HJ_ENOMEM, "out of memory opening %s", path);
     }
     snprintf(out->tmp, n, "%s.tmp.%ld", path, (long)getpid());
-    out->fp = fopen(out->tmp, "w");
+    /* O_EXCL: never write through a link or into a file someone else made. */
+    int fd = open(out->tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0 && errno == EEXIST) {
+        struct stat st;
+        if (lstat(out->tmp, &st) == 0 && S_ISREG(st.st_mode) && unlink(out->tmp) == 0)
+            fd = open(out->tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    }
+    out->fp = fd >= 0 ? fdopen(fd, "w") : NULL;
     if (!out->fp) {
         int e = errno;
+        if (fd >= 0) close(fd), unlink(out->tmp);
         free(out->path);
         free(out->tmp);
         out->path = out->tmp = NULL;
         return hj_error_set(err, HJ_EIO, "cannot write %s: %s", path, strerror(e));
     }
+    out_register(out->tmp);
     return HJ_OK;
 }
 
 static void out_release(hj_out *out)
 {
+    if (out->tmp) out_unregister(out->tmp);
     free(out->path);
     free(out->tmp);
     out->path = out->tmp = NULL;
@@ -63,6 +186,13 @@ int hj_out_commit(hj_out *out, hj_error *err)
     if (bad) {
         remove(out->tmp);
         int rc = hj_error_set(err, HJ_EIO, "error writing %s: %s", out->path, strerror(e));
+        out_release(out);
+        return rc;
+    }
+    /* The target may have changed since it was opened. */
+    if (hj_out_check(out->path, err)) {
+        remove(out->tmp);
+        int rc = err ? err->code : HJ_EIO;
         out_release(out);
         return rc;
     }
@@ -244,13 +374,16 @@ const char *hj_table_meta(const hj_table *t, const char *key)
 
 int hj_mkdirs(const char *path, hj_error *err)
 {
+    if (path[0] == '\0') return hj_error_set(err, HJ_EINVAL, "an empty directory name");
     char *p = dupstr(path);
     if (!p) return hj_error_set(err, HJ_ENOMEM, "out of memory");
     for (char *s = p + 1; ; s++) {
         if (*s == '/' || *s == '\0') {
             char c = *s;
             *s = '\0';
-            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+            struct stat st;
+            if (mkdir(p, 0777) != 0 && (errno != EEXIST || stat(p, &st) != 0 || !S_ISDIR(st.st_mode))) {
+                if (errno == EEXIST) errno = ENOTDIR;
                 int e = errno;
                 int rc = hj_error_set(err, HJ_EIO, "cannot create directory %s: %s", p, strerror(e));
                 free(p);

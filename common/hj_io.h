@@ -3,7 +3,9 @@
  *
  * Atomic output: hj_out_open() opens "<path>.tmp.<pid>"; hj_out_commit()
  * flushes, closes and renames it over <path>.  An interrupted run leaves at
- * most a *.tmp.* file, never a truncated table under the final name.
+ * most a *.tmp.* file, never a truncated table under the final name, and
+ * the next run writing the same path removes it.  Only regular files are
+ * ever replaced.
  *
  * TSV tables: lines starting with '#' are comments; a comment of the form
  * "# name: value" is a header field (hj_table_meta).  The first other line
@@ -23,13 +25,26 @@ typedef struct {
     char *tmp;
 } hj_out;
 
-/* Open a temporary file next to path for writing; out->fp is the stream. */
+/* Whether path may be written: it is absent or a regular file (a device,
+ * FIFO, directory or symbolic link is never replaced), and its directory
+ * exists and is writable.  Programs call it before a long computation, so
+ * that a bad output location fails first. */
+int hj_out_check(const char *path, hj_error *err);
+
+/* Open a temporary file next to path for writing (after hj_out_check; a
+ * leftover "<path>.tmp.<pid>" of a process that no longer exists is
+ * removed first); out->fp is the stream. */
 int hj_out_open(hj_out *out, const char *path, hj_error *err);
 /* Flush, close and rename over the final path.  On failure the temporary
  * file is removed.  The hj_out is released in every case. */
 int hj_out_commit(hj_out *out, hj_error *err);
 /* Close and remove the temporary file (after an error). */
 void hj_out_abort(hj_out *out);
+
+/* For programs: on SIGINT, SIGTERM or SIGHUP remove every temporary file
+ * still open, then die of the signal as before.  The library never
+ * installs it by itself. */
+void hj_out_remove_on_signal(void);
 
 typedef struct {
     int ncols, nrows;

@@ -1,5 +1,11 @@
 /* Unit tests of common/hj_io (atomic output, TSV tables) and hj_cli parsing. */
+#define _XOPEN_SOURCE 700 /* mknod, S_IFCHR */
 #include "hj_test.h"
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -74,6 +80,115 @@ static void unwritable_output(void **state)
     assert_non_null(strstr(err.msg, "/nonexistent-dir/x.tsv"));
 }
 
+/* Only regular files are ever replaced: a FIFO, a symbolic link, a device
+ * node and a directory under the output name are refused, before anything
+ * is written, and left as they were. */
+static void only_regular_files_replaced(void **state)
+{
+    (void)state;
+    hj_out out;
+    hj_error err;
+    char path[256], target[256];
+    snprintf(path, sizeof path, "%s/fifo.tsv", hj_test_dir());
+    assert_int_equal(mkfifo(path, 0666), 0);
+    assert_int_equal(hj_out_open(&out, path, &err), HJ_EIO);
+    assert_non_null(strstr(err.msg, "not a regular file"));
+    struct stat st;
+    assert_int_equal(lstat(path, &st), 0);
+    assert_true(S_ISFIFO(st.st_mode));
+
+    snprintf(target, sizeof target, "%s/target.tsv", hj_test_dir());
+    FILE *f = fopen(target, "w");
+    assert_non_null(f);
+    fputs("kept\n", f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/link.tsv", hj_test_dir());
+    assert_int_equal(symlink(target, path), 0);
+    assert_int_equal(hj_out_check(path, &err), HJ_EIO);
+    assert_int_equal(hj_out_open(&out, path, &err), HJ_EIO);
+    assert_int_equal(lstat(path, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+
+    snprintf(path, sizeof path, "%s/adir", hj_test_dir());
+    assert_int_equal(mkdir(path, 0777), 0);
+    assert_int_equal(hj_out_open(&out, path, &err), HJ_EIO);
+
+    /* a copy of the null device (needs root to make; skipped otherwise) */
+    snprintf(path, sizeof path, "%s/null", hj_test_dir());
+    if (stat("/dev/null", &st) == 0 && mknod(path, S_IFCHR | 0666, st.st_rdev) == 0) {
+        assert_int_equal(hj_out_open(&out, path, &err), HJ_EIO);
+        assert_int_equal(lstat(path, &st), 0);
+        assert_true(S_ISCHR(st.st_mode));
+    }
+
+    /* a regular file is replaced, and nothing else is left */
+    assert_int_equal(hj_out_open(&out, target, &err), HJ_OK);
+    fputs("new\n", out.fp);
+    assert_int_equal(hj_out_commit(&out, &err), HJ_OK);
+    f = fopen(target, "r");
+    char line[16] = "";
+    assert_non_null(fgets(line, sizeof line, f));
+    fclose(f);
+    assert_string_equal(line, "new\n");
+}
+
+/* A killed run's "<path>.tmp.<pid>" is removed by the next open of path;
+ * a signal removes the temporary files of the process it stops. */
+static void temporaries_removed(void **state)
+{
+    (void)state;
+    hj_out out;
+    hj_error err;
+    char path[256], stale[300];
+    snprintf(path, sizeof path, "%s/interrupted.tsv", hj_test_dir());
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) _exit(0);
+    waitpid(child, NULL, 0); /* a pid that no longer exists */
+    snprintf(stale, sizeof stale, "%s.tmp.%ld", path, (long)child);
+    FILE *f = fopen(stale, "w");
+    assert_non_null(f);
+    fclose(f);
+    assert_int_equal(hj_out_open(&out, path, &err), HJ_OK);
+    assert_int_not_equal(access(stale, F_OK), 0);
+    hj_out_abort(&out);
+
+    child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        hj_out_remove_on_signal();
+        if (hj_out_open(&out, path, NULL)) _exit(3);
+        raise(SIGTERM);
+        _exit(4);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    snprintf(stale, sizeof stale, "%s.tmp.%ld", path, (long)child);
+    assert_int_not_equal(access(stale, F_OK), 0);
+    assert_int_not_equal(access(path, F_OK), 0);
+}
+
+/* An empty name is an error (it used to read past the buffer); a file in
+ * the way of a directory is named. */
+static void mkdirs_edges(void **state)
+{
+    (void)state;
+    hj_error err;
+    char path[256];
+    assert_int_equal(hj_mkdirs("", &err), HJ_EINVAL);
+    snprintf(path, sizeof path, "%s/a/b/c", hj_test_dir());
+    assert_int_equal(hj_mkdirs(path, &err), HJ_OK);
+    assert_int_equal(hj_mkdirs(path, &err), HJ_OK);
+    snprintf(path, sizeof path, "%s/plain", hj_test_dir());
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/plain/sub", hj_test_dir());
+    assert_int_equal(hj_mkdirs(path, &err), HJ_EIO);
+    assert_non_null(strstr(err.msg, "plain"));
+}
+
 static void cli_parsing(void **state)
 {
     (void)state;
@@ -102,6 +217,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(atomic_write_and_read_back), cmocka_unit_test(abort_leaves_nothing),
         cmocka_unit_test(malformed_tables), cmocka_unit_test(unwritable_output), cmocka_unit_test(cli_parsing),
+        cmocka_unit_test(only_regular_files_replaced), cmocka_unit_test(temporaries_removed),
+        cmocka_unit_test(mkdirs_edges),
     };
     return cmocka_run_group_tests_name("hj_io", tests, hj_test_mkdir, hj_test_rmdir);
 }
