@@ -65,13 +65,13 @@ check_table() {
               k = rid[$10]; rcells[k] = rcells[k] (rcells[k] == "" ? "" : "; ") esc($2) " " esc($3)
               ref = sprintf("<a href=\"#%s-r%d\">[%d]</a>", anchor, k, k)
           }
-          row[n] = sprintf("<tr class=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>",
-                           cls, esc($2), esc($3), esc($5), esc($6), esc($7), esc($8), esc($9), ref) }
+          row[n] = sprintf("<tr class=\"%s\"><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>",
+                           cls, esc($2), esc($3), esc($5), esc($11 == "" ? "paper" : $11), esc($6), esc($7), esc($8), esc($9), ref) }
         END {
           printf "\n<p class=\"tsum\"><b>%s</b>: %d match, %d close, %d differ", name, cnt["match"], cnt["close"], cnt["differs"]
           if (cnt["missing"]) printf ", %d missing", cnt["missing"]
           if (cnt["ambiguous"]) printf ", %d ambiguous", cnt["ambiguous"]
-          printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>%s</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n", label
+          printf "</p>\n<table class=\"check\">\n<tr><th>row</th><th>quantity</th><th>%s</th><th>origin</th><th>computed</th><th>difference</th><th>verdict</th><th>accepted</th><th>reason</th></tr>\n", label
           for (i = 1; i <= n; i++) print row[i]
           print "</table>"
           if (nr) {
@@ -209,11 +209,11 @@ pre { background: #f6f6f6; padding: 0.6em; overflow-x: auto; }
 table { border-collapse: collapse; margin: 0.8em 0; font-family: Helvetica, Arial, sans-serif; font-size: 0.85em; }
 th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: left; vertical-align: top; }
 th { background: #eee; }
-tr.match td:nth-child(6) { background: #dff0d8; }
-tr.close td:nth-child(6) { background: #fcf8e3; }
-tr.differs td:nth-child(6) { background: #f2dede; }
-tr.missing td:nth-child(6) { background: #f2dede; font-weight: bold; }
-tr.ambiguous td:nth-child(6) { background: #e8e8f8; }
+tr.match td:nth-child(7) { background: #dff0d8; }
+tr.close td:nth-child(7) { background: #fcf8e3; }
+tr.differs td:nth-child(7) { background: #f2dede; }
+tr.missing td:nth-child(7) { background: #f2dede; font-weight: bold; }
+tr.ambiguous td:nth-child(7) { background: #e8e8f8; }
 img { max-width: 100%; }
 ol.reasons { font-size: 0.85em; margin-top: 0.2em; }
 ol.reasons .cells { color: #666; }

@@ -237,6 +237,31 @@ static void bad_inputs(void **state)
     assert_non_null(strstr(out_text, "--results needs a value"));
 }
 
+/* Every reference cell says what it is; a regression value carries its
+ * commit; a column that '# origin:' does not name is an error. */
+static void origins_named(void **state)
+{
+    (void)state;
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=exact L1[N=80]=regression iter=paper\n"
+                                        "# commit: abc1234\nN\tL1\titer\n40\t1.0e-3\t10\n80\t1.25e-4\t10\n");
+    assert_int_equal(run_check(""), 0);
+    const char *c = read_back("res/p/t.check.tsv");
+    assert_non_null(strstr(c, "N=40\tL1\terror\t1.0e-3\t0.001\t1\tmatch\tmatch\t\texact\n"));
+    assert_non_null(strstr(c, "N=80\tL1\terror\t1.25e-4\t0.000125\t1\tmatch\tmatch\t\tregression@abc1234\n"));
+    assert_non_null(strstr(c, "iter\tcount\t10\t10\t1\tmatch\tmatch\t\tpaper\n"));
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=regression iter=paper\n"
+                                        "N\tL1\titer\n40\t1.0e-3\t10\n");
+    assert_int_equal(run_check(""), 2);
+    assert_non_null(strstr(out_text, "need '# commit:'"));
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=exact\n"
+                                        "N\tL1\titer\n40\t1.0e-3\t10\n");
+    assert_int_equal(run_check(""), 2);
+    assert_non_null(strstr(out_text, "does not name this column"));
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\n# origin: L1=guess\nN\tL1\n40\t1.0e-3\n");
+    assert_int_equal(run_check(""), 2);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -248,6 +273,7 @@ int main(void)
         cmocka_unit_test(accept_blesses),
         cmocka_unit_test(quick_only_exceptions),
         cmocka_unit_test(bad_inputs),
+        cmocka_unit_test(origins_named),
     };
     return cmocka_run_group_tests_name("hjcheck", tests, make_tree, hj_test_rmdir);
 }

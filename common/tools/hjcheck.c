@@ -36,7 +36,18 @@
  *     # source: <paper, table, page>
  *     # key: <key columns, space separated>
  *     # kind: <column>=<error|order|count|ratio|value> ...
+ *     # origin: <column>[<keycolumn>=<value>]=<paper|exact|regression> ...
+ *     # commit: <the commit whose run made the regression values>
  * A cell "-" or empty is not a published value; "?" is ambiguous.
+ *
+ * References say what they are: each reference cell is a value transcribed
+ * from the paper ("paper", the default for a table without '# origin:'),
+ * an exact value (a formula or a hand computation that the '# source:' line
+ * names: "exact"), or a regression value, the accepted result of one of our
+ * own runs ("regression", stamped with '# commit:').  With '# origin:' every
+ * compared column must be named; an entry qualified by a key column value
+ * takes precedence for the rows it selects.  The check table gives each
+ * cell's reference ("paper", "exact" or "regression@<commit>").
  * The computed table has the same key and quantity columns (more columns
  * are allowed and ignored).
  */
@@ -233,6 +244,60 @@ static int split_words(char *s, char **w, int max)
 
 enum { MAXCOLS = 64 };
 
+typedef struct {
+    char col[128], keycol[128], keyval[128];
+    int origin; /* 0 paper, 1 exact, 2 regression */
+} origin_entry;
+
+static const char *const origin_names[] = {"paper", "exact", "regression"};
+
+/* Parse '# origin:' into at most max entries; -1 with a message on error. */
+static int parse_origins(const char *meta, const char *path, origin_entry *o, int max)
+{
+    char buf[4096];
+    char *w[MAXCOLS];
+    if (strlen(meta) >= sizeof buf) return fprintf(stderr, "%s: %s: '# origin:' is too long\n", prog, path), -1;
+    snprintf(buf, sizeof buf, "%s", meta);
+    int n = split_words(buf, w, max);
+    if (n < 0) return fprintf(stderr, "%s: %s: '# origin:' has more than %d entries\n", prog, path, max), -1;
+    for (int k = 0; k < n; k++) {
+        char *eq = strrchr(w[k], '=');
+        if (!eq) return fprintf(stderr, "%s: %s: malformed origin '%s'\n", prog, path, w[k]), -1;
+        *eq = '\0';
+        o[k].origin = -1;
+        for (int c = 0; c < 3; c++)
+            if (!strcmp(eq + 1, origin_names[c])) o[k].origin = c;
+        o[k].keycol[0] = o[k].keyval[0] = '\0';
+        char *br = strchr(w[k], '[');
+        if (br) {
+            char *inner = br + 1, *close = strchr(inner, ']'), *ieq = strchr(inner, '=');
+            if (!close || close[1] || !ieq || ieq > close) o[k].origin = -1;
+            else {
+                *close = '\0', *ieq = '\0', *br = '\0';
+                snprintf(o[k].keycol, sizeof o[k].keycol, "%s", inner);
+                snprintf(o[k].keyval, sizeof o[k].keyval, "%s", ieq + 1);
+            }
+        }
+        if (o[k].origin < 0 || strlen(w[k]) >= sizeof o[k].col)
+            return fprintf(stderr, "%s: %s: malformed origin entry (column[key=value]=paper|exact|regression)\n", prog, path), -1;
+        snprintf(o[k].col, sizeof o[k].col, "%s", w[k]);
+    }
+    return n;
+}
+
+/* The origin of column q in row r of pub: a qualified entry first. */
+static int cell_origin(const hj_table *pub, int r, const char *q, const origin_entry *o, int n)
+{
+    for (int k = 0; k < n; k++) {
+        if (strcmp(o[k].col, q) || !o[k].keycol[0]) continue;
+        int c = hj_table_col(pub, o[k].keycol);
+        if (c >= 0 && !strcmp(pub->cells[r][c], o[k].keyval)) return o[k].origin;
+    }
+    for (int k = 0; k < n; k++)
+        if (!strcmp(o[k].col, q) && !o[k].keycol[0]) return o[k].origin;
+    return -1;
+}
+
 static int check_table(const char *name, const char *paperdir, const char *table, const char *resdir, int quick,
                        accepted_list *acc, computed_list *collect, tally *total)
 {
@@ -266,6 +331,13 @@ static int check_table(const char *name, const char *paperdir, const char *table
         hj_table_free(&pub);
         return -1;
     }
+    const char *originmeta = hj_table_meta(&pub, "origin"), *commit = hj_table_meta(&pub, "commit");
+    origin_entry origins[MAXCOLS];
+    int norigin = originmeta ? parse_origins(originmeta, path, origins, MAXCOLS) : 0;
+    if (norigin < 0) {
+        hj_table_free(&pub);
+        return -1;
+    }
     int have_com = hj_table_read(&com, cpath, &err) == HJ_OK;
     if (!have_com && !quick) fprintf(stderr, "%s: warning: %s\n", prog, err.msg);
 
@@ -279,7 +351,7 @@ static int check_table(const char *name, const char *paperdir, const char *table
         return -1;
     }
     fprintf(out.fp, "# comparison of %s/%s with %s\n", name, table, path);
-    fprintf(out.fp, "table\tkey\tquantity\tkind\tpublished\tcomputed\tdifference\tverdict\taccepted\treason\n");
+    fprintf(out.fp, "table\tkey\tquantity\tkind\tpublished\tcomputed\tdifference\tverdict\taccepted\treason\treference\n");
     tally t = {{0}, 0, 0, 0};
     int bad = 0;
     for (int r = 0; r < pub.nrows && !bad; r++) {
@@ -322,6 +394,13 @@ static int check_table(const char *name, const char *paperdir, const char *table
             int pok = ambiguous ? 0 : parse_cell(ps, &pv);
             if (pok < 0) { fprintf(stderr, "%s: %s: row %d: '%s' is not a number\n", prog, path, r + 1, ps); bad = 1; break; }
             if (!ambiguous && pok == 0) continue; /* no published cell here */
+            int origin = originmeta ? cell_origin(&pub, r, qname, origins, norigin) : 0;
+            if (origin < 0 || (origin == 2 && !commit)) {
+                fprintf(stderr, "%s: %s: row %d, column %s: %s\n", prog, path, r + 1, qname,
+                        origin < 0 ? "'# origin:' does not name this column" : "regression values need '# commit:'");
+                bad = 1;
+                break;
+            }
             if (quick && crow < 0) { t.skipped++; continue; }
             int cc = have_com ? hj_table_col(&com, qname) : -1;
             int cok = (crow >= 0 && cc >= 0) ? parse_cell(com.cells[crow][cc], &cv) : 0;
@@ -370,8 +449,9 @@ static int check_table(const char *name, const char *paperdir, const char *table
             fprintf(out.fp, "%s\t%s\t%s\t%s\t%s\t", table, key, qname, hj_kind_name(kind), ps);
             if (cok == 1) fprintf(out.fp, "%.6g\t", cv); else fputs("-\t", out.fp);
             if (cok == 1 && !ambiguous) fprintf(out.fp, "%.4g\t", hj_difference(kind, pv, cv)); else fputs("-\t", out.fp);
-            fprintf(out.fp, "%s%s\t%s\t%s\n", hj_verdict_name(v), roundoff ? " (round-off)" : "",
-                    hj_verdict_name((hj_verdict)accepted), reason);
+            fprintf(out.fp, "%s%s\t%s\t%s\t%s%s%s\n", hj_verdict_name(v), roundoff ? " (round-off)" : "",
+                    hj_verdict_name((hj_verdict)accepted), reason, origin_names[origin], origin == 2 ? "@" : "",
+                    origin == 2 ? commit : "");
         }
     }
     hj_table_free(&pub);
