@@ -12,6 +12,7 @@ void hj_ls_ode_defaults(hj_ls_ode_opts *o)
     o->post = NULL;
     o->post_ctx = NULL;
     o->single_step = 0;
+    o->blowup_factor = 1e6;
 }
 
 static double wall(void)
@@ -22,27 +23,52 @@ static double wall(void)
 }
 
 /* dst = a y + b (u + dt f) over the interior; returns 1 if a value of dst
- * is not finite.  dst may alias y or u. */
+ * is not finite, and *amax = max |dst| (a maximum: the same for any thread
+ * count).  dst may alias y or u. */
 static int combine(const hj_ls_grid *g, double *dst, double a, const double *y, double b, const double *u, double dt,
-                   const double *f)
+                   const double *f, double *amax)
 {
     int bad = 0;
+    double m = 0;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 32) reduction(| : bad)
+#pragma omp parallel for schedule(dynamic, 32) reduction(| : bad) reduction(max : m)
 #endif
     for (size_t r = 0; r < g->rows; r++) {
         long idx[HJ_LS_MAXDIM];
         const size_t k = hj_ls_row(g, r, idx);
         int rb = 0;
+        double rm = 0;
         for (long j = 0; j < g->N[0]; j++) {
             const size_t q = k + (size_t)j;
             const double v = a * y[q] + b * (u[q] + dt * f[q]);
             dst[q] = v;
             rb |= !(v - v == 0); /* NaN or Inf */
+            const double av = v < 0 ? -v : v;
+            rm = av > rm ? av : rm;
         }
         bad |= rb;
+        m = rm > m ? rm : m;
     }
+    *amax = m;
     return bad;
+}
+
+/* The scale against which growth counts as a blow-up: the larger of
+ * max |y0| and the domain's diameter (a signed distance never exceeds it). */
+static double blowup_scale(const hj_ls_grid *g, const double *y)
+{
+    double m = 0, diam2 = 0;
+    for (int d = 0; d < g->dim; d++) diam2 += (g->max[d] - g->min[d]) * (g->max[d] - g->min[d]);
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) {
+            const double av = fabs(y[k + (size_t)j]);
+            m = av > m ? av : m;
+        }
+    }
+    const double diam = sqrt(diam2);
+    return m > diam ? m : diam;
 }
 
 static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *err)
@@ -70,6 +96,9 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     if (!(o.factor_cfl > 0) || !isfinite(o.factor_cfl))
         return hj_error_set(err, HJ_EINVAL, "FactorCFL must be positive, got %g", o.factor_cfl);
     if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
+    if (!(o.blowup_factor >= 0))
+        return hj_error_set(err, HJ_EINVAL, "the blow-up factor must be >= 0 (0: no bound), got %g", o.blowup_factor);
+    const double limit = o.blowup_factor > 0 ? o.blowup_factor * blowup_scale(g, y) : INFINITY;
 
     hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};
     const double start = wall();
@@ -94,21 +123,22 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             int last = 0;
             if (dt >= tk - t) dt = tk - t, last = 1;
             int bad;
+            double amax;
             if (order == 1)
-                bad = combine(g, y, 0, y, 1, y, dt, f);
+                bad = combine(g, y, 0, y, 1, y, dt, f, &amax);
             else {
-                combine(g, u, 0, y, 1, y, dt, f);
+                combine(g, u, 0, y, 1, y, dt, f, &amax);
                 if ((rc = term->eval(term, t + dt, u, f, &b, err))) goto done;
                 st.evals++;
                 st.cfl_violations += b < dt / o.factor_cfl;
                 if (order == 2)
-                    bad = combine(g, y, 0.5, y, 0.5, u, dt, f);
+                    bad = combine(g, y, 0.5, y, 0.5, u, dt, f, &amax);
                 else {
-                    combine(g, u, 0.75, y, 0.25, u, dt, f);
+                    combine(g, u, 0.75, y, 0.25, u, dt, f, &amax);
                     if ((rc = term->eval(term, t + 0.5 * dt, u, f, &b, err))) goto done;
                     st.evals++;
                     st.cfl_violations += b < dt / o.factor_cfl;
-                    bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f);
+                    bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f, &amax);
                 }
             }
             t = last ? tk : t + dt;
@@ -117,6 +147,12 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             if (bad) {
                 rc = hj_error_set(err, HJ_ENONFINITE, "blow-up: NaN or Inf in the state at t = %.17g after step %ld",
                                   t, st.steps);
+                goto done;
+            }
+            if (amax > limit) {
+                rc = hj_error_set(err, HJ_ENONFINITE,
+                                  "blow-up: max |phi| = %.3g exceeds %g times the initial scale (%.3g) at t = %.17g after "
+                                  "step %ld", amax, o.blowup_factor, limit / o.blowup_factor, t, st.steps);
                 goto done;
             }
             if (o.post && (rc = o.post(t, y, o.post_ctx, err))) goto done;

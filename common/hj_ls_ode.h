@@ -17,8 +17,11 @@
  *
  * Errors (returned, never printed): a NaN or infinite bound without a
  * finite MaxStep, a zero bound, the term's own errors, and a blow-up: NaN
- * or Inf in the state after a step, reported with the time and the step
- * number (HJ_ENONFINITE).
+ * or Inf in the state after a step, or finite growth beyond blowup_factor
+ * times the initial scale (max |y0| or the domain's diameter, the larger:
+ * a level set function changes by at most t max |G|, so growth by 10^6 is
+ * instability, not motion), reported with the time and the step number
+ * (HJ_ENONFINITE).
  */
 #ifndef HJ_LS_ODE_H
 #define HJ_LS_ODE_H
@@ -36,6 +39,9 @@ typedef struct {
     hj_ls_post_fn post;  /* PostTimestep, default NULL */
     void *post_ctx;
     int single_step;     /* SingleStep: return after one step */
+    double blowup_factor; /* a step that leaves max |y| above this many times
+                           * max(max |y0|, the domain's diameter) is a
+                           * blow-up (default 1e6; 0: no bound) */
 } hj_ls_ode_opts;
 
 /* Stats (the library does not print them; the caller may). */

@@ -166,12 +166,27 @@ static void error_reports(void **state)
     for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_OK);
     assert_close(y[g.offset], pow(1.25, 4) - 1, 1e-14, 0);
-    /* blow-up: y' = 1e300 (1 + y) overflows at the second step */
+    /* blow-up: y' = 1e300 (1 + y) overflows at the second step (the bound
+     * on finite growth off, so that the overflow itself is detected) */
     c.bound = 1, c.rate = 1e300;
     hj_ls_ode_stats st;
-    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st, &err), HJ_ENONFINITE);
+    hj_ls_ode_defaults(&o);
+    o.blowup_factor = 0;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, &st, &err), HJ_ENONFINITE);
     assert_non_null(strstr(err.msg, "blow-up"));
     assert_non_null(strstr(err.msg, "after step 2"));
+    /* finite growth: y' = 10 (1 + y) from 0 with dt = 0.5 multiplies 1 + y
+     * by 6 per step; the scale is the diameter 1 of [0, 1], so the default
+     * factor 1e6 is passed at step 8 (6^8 - 1 = 1.7e6), long before any
+     * overflow */
+    for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+    c.rate = 10;
+    double long_span[2] = {0, 100};
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, long_span, 2, y, NULL, NULL, NULL, &st, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "exceeds 1e+06 times the initial scale"));
+    assert_int_equal(st.steps, 8);
+    o.blowup_factor = -1;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_EINVAL);
     assert_int_equal(hj_ls_ode(4, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
     double bad[2] = {1, 0};
     assert_int_equal(hj_ls_ode(1, &g, &c.base, bad, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
