@@ -1,16 +1,19 @@
-/* p3_ub.h -- the UB-HJB scheme (section 2.2 of Bokanowski, Cristiani &
- * Zidani 2010) on a narrow band kept in any p3_store (section 3.5).
+/* hj_ub.h -- the UB-HJB scheme of Bokanowski, Cristiani & Zidani 2010:
+ * the Ultra-Bee scheme for front propagation with a finite set of controls
+ * (section 2.2: averages (7b), fluxes (8)-(9), the min over controls),
+ * run on a narrow band kept in any hj_band store (section 3.5).
  *
  * Equation.  theta_t + max_{a in A} ( f(t, x, a) . grad theta ) = 0 with
  * data +-1 (-1 inside Omega_0), on n nodes per direction from lo to hi, end
  * points included: xi_I = lo + I dx, dx = (hi - lo)/(n - 1), and cells
  * xi_I + [-dx/2, dx/2]^d.  The published 2-D results (Tables 6-7) come
- * from N cells of width L/N tiling the domain [a, b]: p3_cell_grid gives
- * the lo, hi of their centres (the overview gives the evidence; the 3-D
- * and 4-D examples still take the domain's ends as nodes).  This is the sign
- * convention under which the paper's examples and its scheme agree: a
- * single control f gives the advection theta_t + f . grad theta = 0
- * (Example 1), and f = (1, a), a = +-1 gives (13a).  With target = 1 the
+ * from N cells of width L/N tiling the domain [a, b]: hj_ub_cell_grid gives
+ * the lo, hi of their centres (paper3_ultrabee/overview.md gives the
+ * evidence; the 3-D and 4-D examples take the domain's ends as nodes).
+ * This is the sign convention under which the paper's examples and its
+ * scheme agree: a single control f gives the advection
+ * theta_t + f . grad theta = 0 (Example 1), and f = (1, a), a = +-1 gives
+ * (13a).  With target = 1 the
  * equation is (4), theta_t + max(0, max_a f . grad theta) = 0.
  *
  * Scheme.  Dimension splitting of the one-dimensional Ultra-Bee fluxes
@@ -30,31 +33,26 @@
  *
  * Library code: returns HJ_* codes, never prints.
  */
-#ifndef P3_UB_H
-#define P3_UB_H
+#ifndef HJ_UB_H
+#define HJ_UB_H
 
 #include <stdint.h>
 
-#include "p3_store.h"
+#include "hj_band.h"
+#include "hj_front.h"
 
-/* The tolerance the example programs use for the removal test: with the
+/* A tolerance for the removal test (hj_ub_problem.snap): with the
  * dimension splitting, cells the front has left keep values 1e-12 .. 1e-3
  * away from +-1 (staircase residues of the anti-diffusive limiter) and the
  * band grows without bound (Example 4, N = 50: 4410 nodes after 40 steps
  * with 1e-12, 155 with 1e-3).  A residue below 1e-3 is a covered fraction
  * below 0.05 % of a cell, far below what the sign-based errors see. */
-#define P3_SNAP 1e-3
-
-/* The exact sets of the examples are closed: a cell centre on a face is
- * inside.  Their tests allow P3_CLOSED_SLACK dx, so that the round-off of
- * the coordinates (-2 + i dx is ~1e-17 off a face through a centre) does
- * not decide it. */
-#define P3_CLOSED_SLACK 1e-9
+#define HJ_UB_SNAP 1e-3
 
 typedef struct {
     int d;                             /* 2..4 */
     int n;                             /* nodes per direction */
-    double lo[P3_DMAX], hi[P3_DMAX];   /* the domain */
+    double lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX]; /* the domain */
     int ncontrols;                     /* size of the finite control set A */
     /* f(t, x, a) for control a = 0..ncontrols-1 */
     void (*dyn)(double t, const double *x, int a, double *f, void *ctx);
@@ -64,7 +62,7 @@ typedef struct {
     double dtmax;                      /* optional cap on the time step (0: none) */
     int front_sub;                     /* Hausdorff estimate: the exact front is sampled on the
                                           lattice lines refined front_sub times (0, 1: the lines
-                                          through the cell centres); see p3_solver_errors */
+                                          through the cell centres); see hj_ub_errors */
     double snap;                       /* values within snap of +-1 become +-1 (0: 1e-12) */
     /* Average of the initial data phi (+-1) over the box [blo, bhi] (7b). */
     double (*avg0)(const double *blo, const double *bhi, void *ctx);
@@ -72,18 +70,18 @@ typedef struct {
      * avg0 is sampled); without it avg0 = +-1 on a box means constant. */
     int (*uniform)(const double *blo, const double *bhi, void *ctx);
     /* A box that contains the closure of Omega_0 (where to look for it). */
-    double bbox_lo[P3_DMAX], bbox_hi[P3_DMAX];
+    double bbox_lo[HJ_BAND_DMAX], bbox_hi[HJ_BAND_DMAX];
     /* Optional: called once for every cell when its value first becomes -1
      * (at t = 0 for the cells inside Omega_0): the minimal time function
      * of the target problem, streamed without a full grid. */
     void (*reached)(const int *idx, double t, void *ctx);
     void *ctx;
-} p3_problem;
+} hj_ub_problem;
 
 typedef struct {
-    const p3_problem *pb;
-    p3_store *s;
-    double t, dx[P3_DMAX];
+    const hj_ub_problem *pb;
+    hj_band *s;
+    double t, dx[HJ_BAND_DMAX];
     long steps;
     double band_sum;      /* sum over steps of |D^{n+1/2}| */
     size_t band_max;      /* largest |D^{n+1/2}| */
@@ -92,75 +90,65 @@ typedef struct {
     int64_t *lin;
     double **ptr, *v0, *w, *wn, *vmin, *f, *mu;
     int32_t *link;
-} p3_solver;
+} hj_ub_solver;
 
 /* Set up the store (kind) with D^0 and the averages (7b). */
-int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *err);
-void p3_solver_free(p3_solver *sv);
+int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err);
+void hj_ub_free(hj_ub_solver *sv);
 
 /* One step of the scheme, with dt <= tmax - t. */
-int p3_solver_step(p3_solver *sv, double tmax, hj_error *err);
+int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err);
 /* Steps until t = T. */
-int p3_solver_run(p3_solver *sv, double T, hj_error *err);
+int hj_ub_run(hj_ub_solver *sv, double T, hj_error *err);
 
 /* Centre of cell idx. */
-void p3_centre(const p3_solver *sv, const int *idx, double *x);
+void hj_ub_centre(const hj_ub_solver *sv, const int *idx, double *x);
 
 /* Errors of section 4 against the exact solution, whose indicator
- * inside(x) is 1 when x is in Omega_t (exact front at the current t).
- *   l1   = prod dx * #{ I : sign(V_I) != sign(phi(xi_I)) }, sign(0) = -1,
- *          V_I within 1e-12 of 0 counting as 0 (half-cut cells)
- *   haus = Hausdorff distance between the computed front and the exact
- *          one.  Computed front: the centres of the boundary cells of the
- *          computed set {V <= 0} (V <= 0 with a face neighbour V > 0), the
- *          set whose signs the L1 error counts.  Exact front: the points
- *          where it crosses the segments joining neighbouring cell centres
- *          (bisection on inside, to 1e-6 dx); with pb->front_sub = m > 1,
- *          where it crosses the m^(d-1) parallel segments shifted by
- *          (s / m - 1/2) dx (s = 0 .. m - 1) in the other directions, i.e.
- *          the lattice lines refined m times, in the strip of cells around
- *          each crossing.  The exact front's points farthest from the cell
- *          centres lie between the centre lines, so m = 1 underestimates the
- *          distance (a straight front half a cell from the centres: 0.5 dx
- *          against sqrt(0.5) dx with m even).
- * Every cell of the grid is visited; the values of the cells that are not
- * stored are recovered from the band as the scheme does. */
-typedef int (*p3_inside_fn)(const double *x, void *ctx);
-int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err);
+ * inside(x) is 1 when x is in Omega_t (exact front at the current t): the
+ * L1 error and the Hausdorff distance of hj_front.h, with the exact front
+ * sampled on the lattice lines refined pb->front_sub times.  Every cell of
+ * the grid is visited; the values of the cells that are not stored are
+ * recovered from the band as the scheme does (hj_front_band_errors). */
+int hj_ub_errors(hj_ub_solver *sv, hj_front_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err);
 
 /* The value of every cell, recovered from the band as the errors do
  * (stored values; a gap takes its stored neighbour's value; a line without
  * stored cells its neighbour line's): out[l n + i] for line l (the first
- * d - 1 indices, lexicographic) and last index i; n^d doubles.  For figures. */
-int p3_solver_values(p3_solver *sv, double *out, hj_error *err);
-
-/* The same errors for values on the full grid of n^d cell centres lo + i dx
- * (the level set runs): value(idx) is V at cell idx; sub as front_sub.  *ncells (may be
- * NULL) receives #{V <= 0}; an empty computed set gives haus = +inf. */
-typedef double (*p3_value_fn)(const int *idx, void *ctx);
-int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
-                    p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
-                    hj_error *err);
+ * d - 1 indices, lexicographic) and last index i; n^d doubles.  For figures
+ * (hj_front_band_values). */
+int hj_ub_values(hj_ub_solver *sv, double *out, hj_error *err);
 
 /* The grid of the paper's examples: n cells of width (b - a)/n tiling
  * [a, b] in each direction; *lo and *hi receive the first and last cell
- * centres, a + dx/2 and b - dx/2 (the lo, hi of p3_problem). */
-void p3_cell_grid(double a, double b, int n, double *lo, double *hi);
+ * centres, a + dx/2 and b - dx/2 (the lo, hi of hj_ub_problem). */
+void hj_ub_cell_grid(double a, double b, int n, double *lo, double *hi);
 
 /* Helpers for avg0: the exact average of +-1 data for a box target, and a
  * sampled one (m^d points per box, exact away from the sphere) for a ball. */
-double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi);
-double p3_avg_ball(int d, const double *blo, const double *bhi, const double *c, double r, int m);
+double hj_ub_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi);
+double hj_ub_avg_ball(int d, const double *blo, const double *bhi, const double *c, double r, int m);
 /* 1 when the box lies entirely inside or entirely outside the ball. */
-int p3_ball_uniform(int d, const double *blo, const double *bhi, const double *c, double r);
-
-/* Hausdorff distance between two finite point sets in R^d (rows of d
- * doubles); h is a typical spacing used to bucket the points.  +inf when
- * exactly one set is empty, 0 when both are. */
-int p3_hausdorff(int d, const double *a, size_t na, const double *b, size_t nb, double h, double *out, hj_error *err);
+int hj_ub_ball_uniform(int d, const double *blo, const double *bhi, const double *c, double r);
 
 /* The one-dimensional Ultra-Bee update of W_j (w[0..4] = W_{j-2..j+2},
  * mu[0..2] = mu_{j-1..j+1}): W_j - mu_j (W^L_{j+1/2} - W^R_{j-1/2}). */
-double p3_ub_update(const double *w, const double *mu);
+double hj_ub_update(const double *w, const double *mu);
+
+/* One control's velocity for the level set kernel's convection term
+ * (hj_ls_term.h), so that the level set method runs on the same problem:
+ * v = f(t, x, a) from the problem's dynamics; with frozen set, f is
+ * evaluated at time tfix instead of t (a flow piecewise constant in time
+ * is integrated piece by piece, so that no Runge-Kutta stage sees the
+ * switch). */
+typedef struct {
+    void (*dyn)(double t, const double *x, int a, double *f, void *ctx);
+    int a;
+    int frozen;
+    double tfix;
+    void *ctx;
+} hj_ub_control;
+/* An hj_ls_velocity_fn over an hj_ub_control. */
+void hj_ub_control_velocity(double t, const double *x, double dx0, long n, int d, double *v, void *ctx);
 
 #endif
