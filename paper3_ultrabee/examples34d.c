@@ -15,7 +15,8 @@ narrow band, CFL = 0.9 over the band nodes, value 1 outside the domain:
   trajectory meets the ball within T (minimum over the time by sampling
   and golden-section refinement).  The target run streams the minimal
   time function T(x) (first time the cell value is -1) to
-  table11_mintime_N<N>.bin (int32 indices and float64 time per cell).
+  table11_mintime_N<N>.bin (int32 indices and float64 time per cell;
+  common/hj_mintime.h writes it and reads it back onto the grid).
 * Table 12 -- Example 5 on [-1, 1]^4, f = (-2 pi x2, 2 pi x1, -2 pi x4,
   2 pi x3), the box (0.5, 0, 0.5, 0) + [-0.1, 0.1]^4, T = 1 (exact: the
   initial box).
@@ -52,6 +53,7 @@ the exact front; after the timed steps.
 
 #include "hj_cli.h"
 #include "hj_math.h"
+#include "hj_mintime.h"
 #include "hj_sys.h"
 #include "hj_ub.h"
 #include "p3_prog.h"
@@ -62,7 +64,7 @@ typedef struct {
     double T, t, dx;
     double c[4], r;
     double cs, sn; /* cos, sin of the back rotation at time t */
-    FILE *mintime;
+    hj_mintime_stream mintime; /* fp NULL: not recorded */
 } exnd;
 
 static void dyn(double t, const double *x, int a, double *f, void *vctx)
@@ -106,11 +108,8 @@ static int uniform(const double *blo, const double *bhi, void *vctx)
 
 static void reached(const int *idx, double t, void *vctx)
 {
-    const exnd *e = vctx;
-    if (!e->mintime) return;
-    const int32_t i3[3] = {idx[0], idx[1], idx[2]};
-    fwrite(i3, sizeof i3, 1, e->mintime);
-    fwrite(&t, sizeof t, 1, e->mintime);
+    exnd *e = vctx;
+    if (e->mintime.fp) hj_mintime_put(&e->mintime, idx, t);
 }
 
 /* |X(-tau; x) - c|^2 for Example 4's flow. */
@@ -253,7 +252,7 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
         snprintf(name, sizeof name, "table11_mintime_N%d.bin", n);
         int rc = p3_open(&mt, out_dir, name, err);
         if (rc) return rc;
-        e->mintime = mt.fp;
+        e->mintime = (hj_mintime_stream){mt.fp, 3, 0};
         have_mt = 1;
     }
     hj_ub_solver sv;
@@ -269,7 +268,8 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
     res->cpu = hj_sys_cpu_seconds() - c0;
     res->peak = hj_sys_peak_rss_mb();
     if (have_mt) {
-        e->mintime = NULL;
+        if (!rc && e->mintime.failed) rc = hj_error_set(err, HJ_EIO, "write error (minimal time)");
+        e->mintime.fp = NULL;
         if (rc) hj_out_abort(&mt);
         else rc = hj_out_commit(&mt, err);
     }
