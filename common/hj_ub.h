@@ -73,7 +73,7 @@ typedef struct {
     double bbox_lo[HJ_BAND_DMAX], bbox_hi[HJ_BAND_DMAX];
     /* Optional: called once for every cell when its value first becomes -1
      * (at t = 0 for the cells inside Omega_0): the minimal time function
-     * of the target problem, streamed without a full grid. */
+     * of the target problem, streamed without a full grid (hj_mintime.h). */
     void (*reached)(const int *idx, double t, void *ctx);
     void *ctx;
 } hj_ub_problem;

@@ -25,8 +25,8 @@ static void flux_constant_and_step(void **state)
     const double w3[5] = {1, 1, 0, -1, -1}, mu3[3] = {0.5, 0.5, 0.5};
     assert_close(hj_ub_update(w3, mu3), 1, 1e-15, 0);
     /* a pulse narrower than a cell (covered fraction a) is spread, not
-     * moved: a (1 - c) stays, a c goes to the next cell (overview.md,
-     * Table 13's excess past the cap) */
+     * moved: a (1 - c) stays, a c goes to the next cell
+     * (paper3_ultrabee/overview.md, Table 13's excess past the cap) */
     const double a = 0.3, mup[3] = {0.7, 0.7, 0.7};
     const double pj[5] = {1, 1, 1 - 2 * a, 1, 1}, pj1[5] = {1, 1 - 2 * a, 1, 1, 1};
     assert_close(hj_ub_update(pj, mup), 1 - 2 * a * (1 - 0.7), 1e-15, 0);
