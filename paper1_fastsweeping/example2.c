@@ -80,6 +80,7 @@ cases; Table 3.3 also L-infinity), convergence figures, contour plots.
 #include <math.h>
 #include <string.h>
 
+#include "hj_curve.h"
 #include "p1_study.h"
 
 static double sgn(double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
@@ -120,9 +121,9 @@ static void grad_b(double x, double y, double g[2], void *ctx)
 
 static double exact_b(double x, double y) { return (1 - x * x) * (1 - y * y); }
 
-static p1_edge edges[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
+static hj_curve_line edges[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
 
-#define EDGE(k) {.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &edges[k]}
+#define EDGE(k) {.type = HJ_INFLOW_CURVE, .level = hj_curve_line_level, .local = hj_curve_line_local, .ctx = &edges[k]}
 
 int main(int argc, char **argv)
 {

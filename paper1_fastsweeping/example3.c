@@ -34,16 +34,17 @@ delta and norms as in Example 1.  `--quick` runs N = 80, 160.
 */
 #include <math.h>
 
+#include "hj_curve.h"
 #include "p1_study.h"
 
-static p1_circle circle = {0, 0, 0.5};
+static hj_curve_circle circle = {0, 0, 0.5};
 
-static double exact(double x, double y) { return fabs(p1_circle_level(x, y, &circle)); }
+static double exact(double x, double y) { return fabs(hj_curve_circle_level(x, y, &circle)); }
 
 int main(int argc, char **argv)
 {
     static const hj_inflow gamma[] = {
-        {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &circle}};
+        {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &circle}};
     static const p1_box centre[] = {{-0.15, 0.15, -0.15, 0.15, .around_point = 1}};
     static const long sizes[] = {80, 160, 320, 640};
     const p1_case cases[] = {{

@@ -26,21 +26,22 @@ delta and norms as in Example 1.  `--quick` runs N = 80, 160.
 */
 #include <math.h>
 
+#include "hj_curve.h"
 #include "p1_study.h"
 
-static p1_circle circles[2] = {{-1, 0, 0.5}, {0, 0, 0.5}};
+static hj_curve_circle circles[2] = {{-1, 0, 0.5}, {0, 0, 0.5}};
 
 static double exact(double x, double y)
 {
-    return fmin(fabs(p1_circle_level(x, y, &circles[0])), fabs(p1_circle_level(x, y, &circles[1])));
+    return fmin(fabs(hj_curve_circle_level(x, y, &circles[0])), fabs(hj_curve_circle_level(x, y, &circles[1])));
 }
 
 int main(int argc, char **argv)
 {
     circles[1].cx = sqrt(1.5);
     static const hj_inflow gamma[] = {
-        {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &circles[0]},
-        {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &circles[1]}};
+        {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &circles[0]},
+        {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &circles[1]}};
     const double s15 = sqrt(1.5), s0375 = sqrt(0.375);
     const p1_box excl[] = {
         {-1.15, -0.85, -0.15, 0.15, .around_point = 1},

@@ -61,20 +61,4 @@ int p1_main(int argc, char **argv, const p1_study *study, const char *usage_extr
 double p1_unit_speed(double x, double y, void *ctx);
 void p1_unit_speed_grad(double x, double y, double grad[2], void *ctx);
 
-/* Distance helpers for examples with circles of radius r centred at (cx, cy). */
-typedef struct {
-    double cx, cy, r;
-} p1_circle;
-double p1_circle_level(double x, double y, void *circle);
-int p1_circle_local(double x, double y, hj_curve_local *out, void *circle);
-
-/* The four edges of a box as inflow pieces with phi = 0 (Example 2). */
-double p1_edge_level(double x, double y, void *edge);
-int p1_edge_local(double x, double y, hj_curve_local *out, void *edge);
-typedef struct {
-    int axis;     /* 0: the line x = at; 1: the line y = at */
-    double at;
-    double inward; /* +1 or -1: the side of the domain */
-} p1_edge;
-
 #endif

@@ -28,13 +28,13 @@ value 1 outside the domain):
   t1 = min(t, T - t), with the rotation R of the flow as written (the
   paper's formula has the opposite angle, see the overview).
 
-**Method.** p3_ub.h: dimension-split Ultra-Bee fluxes with the errata,
+**Method.** common/hj_ub.h: dimension-split Ultra-Bee fluxes with the errata,
 band maintenance of section 3.5.  Three readings, fixed by the published
 numbers of Tables 6 and 7 (overview, "Grid, data and Hausdorff estimate
 of the 2-D examples"):
 
 * the grid is N cells of width dx = L/N tiling the domain, values at the
-  cell centres (p3_cell_grid);
+  cell centres (hj_ub_cell_grid);
 * (7b) is taken by the midpoint rule: V^0 is phi at the cell centre;
 * the exact front is sampled on the lattice lines refined 8 times.
 
@@ -91,10 +91,11 @@ of V_ub and V_ls beside the exact front.
 #include <string.h>
 
 #include "hj_cli.h"
+#include "hj_math.h"
+#include "hj_sys.h"
+#include "hj_ub.h"
 #include "p3_ls.h"
 #include "p3_prog.h"
-#include "p3_ub.h"
-#include "hj_math.h"
 
 
 typedef struct {
@@ -142,7 +143,7 @@ static double avg0(const double *blo, const double *bhi, void *vctx)
 }
 
 /* Sampled data: a block of cells is uniform only if every centre says so
- * (p3_solver_init then checks them one by one). */
+ * (hj_ub_init then checks them one by one). */
 static int never_uniform(const double *blo, const double *bhi, void *vctx)
 {
     (void)blo, (void)bhi, (void)vctx;
@@ -150,7 +151,7 @@ static int never_uniform(const double *blo, const double *bhi, void *vctx)
 }
 
 /* Hausdorff estimate: the exact front sampled on the lattice lines refined
- * eight times (p3_solver_errors), so that its points between the cell
+ * eight times (hj_ub_errors), so that its points between the cell
  * centre lines count: Table 6's fronts lie 1/4 or 1/2 cell from the centre
  * lines, and the distance the paper prints (0.55, 0.50, 0.70 dx) is that of
  * the continuous front, which the centre lines alone miss (0.25, 0, 0.5). */
@@ -227,11 +228,11 @@ static int ls_errors(p3_ls *ls, ex2d *e, double *l1, double *haus, int64_t *cell
 {
     const double rs = e->r; /* < 0: the thin target r = -rs = dx */
     e->r = fabs(rs);
-    int rc = p3_ls_errors(ls, inside, e, FRONT_SUB, l1, haus, cells, err);
+    int rc = hj_front_ls_errors(&ls->g, ls->y, inside, e, FRONT_SUB, l1, haus, cells, err);
     if (!rc && rs < 0) { /* thin target: L1 against r = 0, as for UB */
         double h0;
         e->r = 0;
-        rc = p3_ls_errors(ls, inside, e, FRONT_SUB, l1, &h0, NULL, err);
+        rc = hj_front_ls_errors(&ls->g, ls->y, inside, e, FRONT_SUB, l1, &h0, NULL, err);
     }
     e->r = rs;
     if (!rc && *cells == 0) *l1 = *haus = NAN;
@@ -243,24 +244,24 @@ static int run_ls(ex2d *e, int n, ls_result *res, fig2d *fig, hj_error *err)
 {
     double da, db, lo[2], hi[2];
     domain(e->example, &da, &db);
-    p3_cell_grid(da, db, n, &lo[0], &hi[0]);
+    hj_ub_cell_grid(da, db, n, &lo[0], &hi[0]);
     lo[1] = lo[0];
     hi[1] = hi[0];
     const int ncontrols = e->example == 3 ? 2 : 1;
     const double rr = e->r;
     if (e->example == 3 && e->r < 0) e->r = e->dx; /* thin target r = dx for the data */
     p3_ls ls;
-    const double c0 = p3_cpu();
+    const double c0 = hj_sys_cpu_seconds();
     int rc = p3_ls_init(&ls, 2, n, lo, hi, phi_ls, e, err);
     e->r = rr;
     hj_ls_convection conv[2];
-    p3_ls_control ctl[2];
+    hj_ub_control ctl[2];
     const hj_ls_term *terms[2];
     hj_ls_extremum hjb = {0};
     for (int a = 0; a < ncontrols && !rc; a++) {
-        ctl[a] = (p3_ls_control){dyn, a, 0, 0, e};
+        ctl[a] = (hj_ub_control){dyn, a, 0, 0, e};
         hj_ls_convection_init(&conv[a], &ls.g, HJ_LS_ENO2);
-        conv[a].velocity_fn = p3_ls_velocity;
+        conv[a].velocity_fn = hj_ub_control_velocity;
         conv[a].ctx = &ctl[a];
         terms[a] = &conv[a].base;
     }
@@ -269,15 +270,15 @@ static int run_ls(ex2d *e, int n, ls_result *res, fig2d *fig, hj_error *err)
     const double tstop = e->example == 4 ? e->T / 2 : e->T;
     if (e->example == 4) ctl[0].frozen = 1, ctl[0].tfix = 0; /* s = +1 up to T / 2 */
     if (!rc) rc = p3_ls_run(&ls, &hjb.base, tstop, P3_LS_CFL, err);
-    res->cpu = p3_cpu() - c0;
+    res->cpu = hj_sys_cpu_seconds() - c0;
     if (!rc && fig) p3_ls_values(&ls, fig->ls[0]);
     e->t = tstop;
     if (!rc) rc = ls_errors(&ls, e, &res->l1, &res->haus, &res->cells, err);
     if (!rc && e->example == 4) {
-        const double c1 = p3_cpu();
+        const double c1 = hj_sys_cpu_seconds();
         ctl[0].tfix = e->T; /* s = -1 after */
         rc = p3_ls_run(&ls, &hjb.base, e->T, P3_LS_CFL, err);
-        res->cpu += p3_cpu() - c1;
+        res->cpu += hj_sys_cpu_seconds() - c1;
         if (!rc && fig) p3_ls_values(&ls, fig->ls[1]);
         e->t = e->T;
         if (!rc) rc = ls_errors(&ls, e, &res->l1b, &res->hausb, &res->cellsb, err);
@@ -291,13 +292,13 @@ static int run_ls(ex2d *e, int n, ls_result *res, fig2d *fig, hj_error *err)
 
 static int run(ex2d *e, int n, run_result *res, fig2d *fig, hj_error *err)
 {
-    p3_problem pb = {.d = 2, .n = n, .ncontrols = e->example == 3 ? 2 : 1, .dyn = dyn, .cfl = 0.9, .boundary = 1, .snap = P3_SNAP,
+    hj_ub_problem pb = {.d = 2, .n = n, .ncontrols = e->example == 3 ? 2 : 1, .dyn = dyn, .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP,
                      .avg0 = avg0, .uniform = never_uniform, .front_sub = FRONT_SUB, .ctx = e};
     double dom, domhi;
     domain(e->example, &dom, &domhi);
     e->dx = (domhi - dom) / n;
     for (int k = 0; k < 2; k++) {
-        p3_cell_grid(dom, domhi, n, &pb.lo[k], &pb.hi[k]);
+        hj_ub_cell_grid(dom, domhi, n, &pb.lo[k], &pb.hi[k]);
         pb.bbox_lo[k] = e->example == 4 ? dom : e->lo[k];
         pb.bbox_hi[k] = e->example == 4 ? (k ? 0 : domhi) : e->hi[k];
     }
@@ -310,36 +311,36 @@ static int run(ex2d *e, int n, run_result *res, fig2d *fig, hj_error *err)
         e->r = -dx; /* marks the thin case for the exact solution */
     }
     const double rr = fabs(e->r);
-    p3_solver sv;
-    const double c0 = p3_cpu();
-    int rc = p3_solver_init(&sv, &pb, P3_SSD, err);
+    hj_ub_solver sv;
+    const double c0 = hj_sys_cpu_seconds();
+    int rc = hj_ub_init(&sv, &pb, HJ_BAND_SSD, err);
     const double tstop = e->example == 4 ? e->T / 2 : e->T;
-    if (!rc) rc = p3_solver_run(&sv, tstop, err);
-    res->cpu = p3_cpu() - c0;
-    if (!rc && fig) rc = p3_solver_values(&sv, fig->ub[0], err);
-    if (rc) { p3_solver_free(&sv); return rc; }
+    if (!rc) rc = hj_ub_run(&sv, tstop, err);
+    res->cpu = hj_sys_cpu_seconds() - c0;
+    if (!rc && fig) rc = hj_ub_values(&sv, fig->ub[0], err);
+    if (rc) { hj_ub_free(&sv); return rc; }
     const double r_saved = e->r;
     e->r = rr;
     e->t = tstop;
-    rc = p3_solver_errors(&sv, inside, e, &res->l1, &res->haus, err);
+    rc = hj_ub_errors(&sv, inside, e, &res->l1, &res->haus, err);
     if (!rc && r_saved < 0) { /* thin target: L1 against r = 0 (see above) */
         double haus0;
         e->r = 0;
-        rc = p3_solver_errors(&sv, inside, e, &res->l1, &haus0, err);
+        rc = hj_ub_errors(&sv, inside, e, &res->l1, &haus0, err);
     }
     res->dx = sv.dx[0];
     if (!rc && e->example == 4) {
-        const double c1 = p3_cpu();
-        rc = p3_solver_run(&sv, e->T, err);
-        res->cpu += p3_cpu() - c1;
-        if (!rc && fig) rc = p3_solver_values(&sv, fig->ub[1], err);
+        const double c1 = hj_sys_cpu_seconds();
+        rc = hj_ub_run(&sv, e->T, err);
+        res->cpu += hj_sys_cpu_seconds() - c1;
+        if (!rc && fig) rc = hj_ub_values(&sv, fig->ub[1], err);
         e->t = e->T;
-        if (!rc) rc = p3_solver_errors(&sv, inside, e, &res->l1b, &res->hausb, err);
+        if (!rc) rc = hj_ub_errors(&sv, inside, e, &res->l1b, &res->hausb, err);
     }
     e->r = r_saved;
     res->steps = (double)sv.steps;
     res->band = sv.steps ? sv.band_sum / (double)sv.steps : 0;
-    p3_solver_free(&sv);
+    hj_ub_free(&sv);
     return rc;
 }
 
@@ -378,7 +379,7 @@ static int write_fig(const p3_args *a, const char *name, const ex2d *e, int n, c
 {
     double lo, hi, c0, c1;
     domain(e->example, &lo, &hi);
-    p3_cell_grid(lo, hi, n, &c0, &c1);
+    hj_ub_cell_grid(lo, hi, n, &c0, &c1);
     const double dx = (hi - lo) / n;
     hj_out out;
     int rc = p3_open(&out, a->out_dir, name, err);

@@ -15,7 +15,8 @@ narrow band, CFL = 0.9 over the band nodes, value 1 outside the domain:
   trajectory meets the ball within T (minimum over the time by sampling
   and golden-section refinement).  The target run streams the minimal
   time function T(x) (first time the cell value is -1) to
-  table11_mintime_N<N>.bin (int32 indices and float64 time per cell).
+  table11_mintime_N<N>.bin (int32 indices and float64 time per cell;
+  common/hj_mintime.h writes it and reads it back onto the grid).
 * Table 12 -- Example 5 on [-1, 1]^4, f = (-2 pi x2, 2 pi x1, -2 pi x4,
   2 pi x3), the box (0.5, 0, 0.5, 0) + [-0.1, 0.1]^4, T = 1 (exact: the
   initial box).
@@ -24,7 +25,7 @@ narrow band, CFL = 0.9 over the band nodes, value 1 outside the domain:
   origin (its cell: N is odd so that the origin is a node), T = 1.
   Exact: x >= 0, x2 + x3 + x4 <= x1 <= t.
 
-**Method.** p3_ub.h on the SSD store; errors as in p3_ub.h (L1 by the
+**Method.** common/hj_ub.h on the SSD store; errors as in common/hj_ub.h (L1 by the
 signs at the cell centres, Hausdorff between the boundary cells of
 {V <= 0} and the exact front sampled on the grid segments).
 
@@ -51,9 +52,11 @@ the exact front; after the timed steps.
 #include <string.h>
 
 #include "hj_cli.h"
-#include "p3_prog.h"
-#include "p3_ub.h"
 #include "hj_math.h"
+#include "hj_mintime.h"
+#include "hj_sys.h"
+#include "hj_ub.h"
+#include "p3_prog.h"
 
 
 typedef struct {
@@ -61,7 +64,7 @@ typedef struct {
     double T, t, dx;
     double c[4], r;
     double cs, sn; /* cos, sin of the back rotation at time t */
-    FILE *mintime;
+    hj_mintime_stream mintime; /* fp NULL: not recorded */
 } exnd;
 
 static void dyn(double t, const double *x, int a, double *f, void *vctx)
@@ -88,28 +91,25 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
 static double avg0(const double *blo, const double *bhi, void *vctx)
 {
     const exnd *e = vctx;
-    if (e->example <= 5) return p3_avg_ball(3, blo, bhi, e->c, e->r, 6);
+    if (e->example <= 5) return hj_ub_avg_ball(3, blo, bhi, e->c, e->r, 6);
     double lo[4], hi[4];
     const double half = e->example == 6 ? 0.1 : e->dx / 2;
     for (int k = 0; k < 4; k++) { lo[k] = e->c[k] - half; hi[k] = e->c[k] + half; }
-    return p3_avg_box(4, blo, bhi, lo, hi);
+    return hj_ub_avg_box(4, blo, bhi, lo, hi);
 }
 
 static int uniform(const double *blo, const double *bhi, void *vctx)
 {
     const exnd *e = vctx;
-    if (e->example <= 5) return p3_ball_uniform(3, blo, bhi, e->c, e->r);
+    if (e->example <= 5) return hj_ub_ball_uniform(3, blo, bhi, e->c, e->r);
     const double b = avg0(blo, bhi, vctx);
     return b == 1 || b == -1;
 }
 
 static void reached(const int *idx, double t, void *vctx)
 {
-    const exnd *e = vctx;
-    if (!e->mintime) return;
-    const int32_t i3[3] = {idx[0], idx[1], idx[2]};
-    fwrite(i3, sizeof i3, 1, e->mintime);
-    fwrite(&t, sizeof t, 1, e->mintime);
+    exnd *e = vctx;
+    if (e->mintime.fp) hj_mintime_put(&e->mintime, idx, t);
 }
 
 /* |X(-tau; x) - c|^2 for Example 4's flow. */
@@ -180,17 +180,17 @@ typedef struct {
  * both sets with two nodes to spare (at least 12 nodes a side): "x y z V g", for a voxel isosurface
  * (the cube side, m, is the cube root of the line count).  Written after
  * the timed steps. */
-static int write_fig09(exnd *e, p3_solver *sv, const char *out_dir, hj_error *err)
+static int write_fig09(exnd *e, hj_ub_solver *sv, const char *out_dir, hj_error *err)
 {
     const int n = sv->pb->n;
     const size_t nn = (size_t)n * n * n;
     double *v = malloc(nn * sizeof *v), *g = malloc(nn * sizeof *g);
-    int rc = v && g ? p3_solver_values(sv, v, err) : hj_error_set(err, HJ_ENOMEM, "out of memory (figure)");
+    int rc = v && g ? hj_ub_values(sv, v, err) : hj_error_set(err, HJ_ENOMEM, "out of memory (figure)");
     int blo[3] = {n, n, n}, bhi[3] = {-1, -1, -1};
     for (size_t q = 0; q < nn && !rc; q++) {
         const int idx[3] = {(int)(q / ((size_t)n * n)), (int)(q / (size_t)n % (size_t)n), (int)(q % (size_t)n)};
         double x[3];
-        p3_centre(sv, idx, x);
+        hj_ub_centre(sv, idx, x);
         double gq;
         if (e->example == 4) {
             const double y[3] = {e->cs * x[0] + e->sn * x[1] - e->c[0], -e->sn * x[0] + e->cs * x[1] - e->c[1], x[2] + e->t - e->c[2]};
@@ -235,8 +235,8 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
 {
     const int d = e->example <= 5 ? 3 : 4;
     const double L = e->example == 6 ? 1 : 2;
-    p3_problem pb = {.d = d, .n = n, .ncontrols = e->example == 7 ? 4 : 1, .dyn = dyn, .target = e->example == 5 || e->example == 7,
-                     .cfl = 0.9, .boundary = 1, .snap = P3_SNAP, .avg0 = avg0, .uniform = uniform, .reached = e->example == 5 ? reached : NULL, .ctx = e};
+    hj_ub_problem pb = {.d = d, .n = n, .ncontrols = e->example == 7 ? 4 : 1, .dyn = dyn, .target = e->example == 5 || e->example == 7,
+                     .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = avg0, .uniform = uniform, .reached = e->example == 5 ? reached : NULL, .ctx = e};
     e->dx = 2 * L / (n - 1);
     for (int k = 0; k < d; k++) {
         pb.lo[k] = -L;
@@ -252,37 +252,38 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
         snprintf(name, sizeof name, "table11_mintime_N%d.bin", n);
         int rc = p3_open(&mt, out_dir, name, err);
         if (rc) return rc;
-        e->mintime = mt.fp;
+        e->mintime = (hj_mintime_stream){mt.fp, 3, 0};
         have_mt = 1;
     }
-    p3_solver sv;
-    const double c0 = p3_cpu();
-    int rc = p3_solver_init(&sv, &pb, P3_SSD, err);
+    hj_ub_solver sv;
+    const double c0 = hj_sys_cpu_seconds();
+    int rc = hj_ub_init(&sv, &pb, HJ_BAND_SSD, err);
     if (!rc) {
         while (!rc && sv.t < e->T) {
-            rc = p3_solver_step(&sv, e->T, err);
-            hj_progress("\r  N=%d t=%.4f/%g band=%zu   ", n, sv.t, e->T, p3_store_count(sv.s));
+            rc = hj_ub_step(&sv, e->T, err);
+            hj_progress("\r  N=%d t=%.4f/%g band=%zu   ", n, sv.t, e->T, hj_band_count(sv.s));
         }
         hj_progress("\n");
     }
-    res->cpu = p3_cpu() - c0;
-    res->peak = p3_peak_mb();
+    res->cpu = hj_sys_cpu_seconds() - c0;
+    res->peak = hj_sys_peak_rss_mb();
     if (have_mt) {
-        e->mintime = NULL;
+        if (!rc && e->mintime.failed) rc = hj_error_set(err, HJ_EIO, "write error (minimal time)");
+        e->mintime.fp = NULL;
         if (rc) hj_out_abort(&mt);
         else rc = hj_out_commit(&mt, err);
     }
-    if (rc) { p3_solver_free(&sv); return rc; }
+    if (rc) { hj_ub_free(&sv); return rc; }
     e->t = e->T;
     const double back = e->example == 6 ? 2 * HJ_PI * e->t : 2 * HJ_PI * e->t;
     e->cs = cos(back);
     e->sn = sin(back);
     if (fig) rc = write_fig09(e, &sv, out_dir, err);
-    if (!rc) rc = p3_solver_errors(&sv, inside, e, &res->l1, &res->haus, err);
+    if (!rc) rc = hj_ub_errors(&sv, inside, e, &res->l1, &res->haus, err);
     res->dx = sv.dx[0];
     res->steps = (double)sv.steps;
     res->band = sv.steps ? sv.band_sum / (double)sv.steps : 0;
-    p3_solver_free(&sv);
+    hj_ub_free(&sv);
     return rc;
 }
 

@@ -5,7 +5,7 @@
 f(x, y, z, a) = (a, 1, 1) and N_a = 11 controls a_i = -1 + 2 i / 10, the
 unit ball as target, on [-2, 2]^3, CFL = 0.9.
 
-**Method.** The UB-HJB scheme of p3_ub.h, on the narrow band kept in the
+**Method.** The UB-HJB scheme of common/hj_ub.h, on the narrow band kept in the
 classical full-matrix narrow band (FLS) and in the sparse semi-dynamic
 structure (SSD) behind the same interface.
 
@@ -32,8 +32,9 @@ step on SSDA (contiguous arrays per line).
 #include <string.h>
 
 #include "hj_cli.h"
+#include "hj_sys.h"
+#include "hj_ub.h"
 #include "p3_prog.h"
-#include "p3_ub.h"
 
 enum { STEPS = 3, NA = 11 };
 
@@ -52,32 +53,32 @@ static void dyn(double t, const double *x, int a, double *f, void *ctx)
 static double avg0(const double *blo, const double *bhi, void *ctx)
 {
     (void)ctx;
-    return p3_avg_ball(3, blo, bhi, CENTRE, 1.0, 4);
+    return hj_ub_avg_ball(3, blo, bhi, CENTRE, 1.0, 4);
 }
 
 static int uniform(const double *blo, const double *bhi, void *ctx)
 {
     (void)ctx;
-    return p3_ball_uniform(3, blo, bhi, CENTRE, 1.0);
+    return hj_ub_ball_uniform(3, blo, bhi, CENTRE, 1.0);
 }
 
 /* Seconds per step, |D^0|, and the bytes the store holds and its node
  * count after the steps; HJ_ENOMEM when the store does not fit. */
-static int run(p3_kind kind, int n, double *secs, size_t *d0, double *bytes, double *nodes, hj_error *err)
+static int run(hj_band_kind kind, int n, double *secs, size_t *d0, double *bytes, double *nodes, hj_error *err)
 {
-    p3_problem pb = {.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn, .target = 1,
-                     .cfl = 0.9, .boundary = 1, .snap = P3_SNAP, .avg0 = avg0, .uniform = uniform,
+    hj_ub_problem pb = {.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn, .target = 1,
+                     .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = avg0, .uniform = uniform,
                      .bbox_lo = {-1, -1, -1}, .bbox_hi = {1, 1, 1}};
-    p3_solver sv;
-    int rc = p3_solver_init(&sv, &pb, kind, err);
-    if (rc) { p3_solver_free(&sv); return rc; }
-    *d0 = p3_store_count(sv.s);
-    const double t0 = p3_cpu();
-    for (int s = 0; s < STEPS && !rc; s++) rc = p3_solver_step(&sv, 10.0, err);
-    *secs = (p3_cpu() - t0) / STEPS;
-    *bytes = (double)p3_store_bytes(sv.s);
-    *nodes = (double)p3_store_count(sv.s);
-    p3_solver_free(&sv);
+    hj_ub_solver sv;
+    int rc = hj_ub_init(&sv, &pb, kind, err);
+    if (rc) { hj_ub_free(&sv); return rc; }
+    *d0 = hj_band_count(sv.s);
+    const double t0 = hj_sys_cpu_seconds();
+    for (int s = 0; s < STEPS && !rc; s++) rc = hj_ub_step(&sv, 10.0, err);
+    *secs = (hj_sys_cpu_seconds() - t0) / STEPS;
+    *bytes = (double)hj_band_bytes(sv.s);
+    *nodes = (double)hj_band_count(sv.s);
+    hj_ub_free(&sv);
     return rc;
 }
 
@@ -98,11 +99,11 @@ int main(int argc, char **argv)
     double prev[2] = {NAN, NAN};
     for (int i = 0; i < ns; i++) {
         if (a.max_n && sizes[i] > a.max_n) continue;
-        static const p3_kind kinds[3] = {P3_FLS, P3_SSD, P3_SSDA};
+        static const hj_band_kind kinds[3] = {HJ_BAND_FLS, HJ_BAND_SSD, HJ_BAND_SSDA};
         double t[3] = {NAN, NAN, NAN}, bytes[3] = {NAN, NAN, NAN}, nodes[3] = {NAN, NAN, NAN};
         size_t d0 = 0;
         for (int k = 0; k < 3; k++) {
-            hj_progress("table5 N=%ld %s ...\n", sizes[i], p3_kind_name(kinds[k]));
+            hj_progress("table5 N=%ld %s ...\n", sizes[i], hj_band_kind_name(kinds[k]));
             const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &bytes[k], &nodes[k], &err);
             if (rc == HJ_ENOMEM) { t[k] = NAN; continue; }
             if (rc) { hj_out_abort(&out); p3_die(a.prog, &err); }
@@ -111,7 +112,7 @@ int main(int argc, char **argv)
         fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
                 p3_num(b[1], t[0] / prev[0]), p3_num(b[2], t[1]), p3_num(b[3], t[1] / prev[1]), p3_num(b[4], t[1] / t[0]),
                 p3_num(b[5], t[2]), p3_num(b[6], t[2] / t[0]), p3_num(b[7], 1e9 * t[1] / (double)d0),
-                p3_num(b[8], bytes[1] / nodes[1]), p3_num(b[9], bytes[1] / 1e6), p3_peak_mb());
+                p3_num(b[8], bytes[1] / nodes[1]), p3_num(b[9], bytes[1] / 1e6), hj_sys_peak_rss_mb());
         fflush(out.fp);
         prev[0] = t[0];
         prev[1] = t[1];

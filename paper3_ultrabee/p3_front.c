@@ -51,12 +51,12 @@ int p3_front_band(const p3_front *f, p3_front_fn fn, void *ctx, hj_error *err)
     if (!mark) return hj_error_set(err, HJ_ENOMEM, "out of memory (front band)");
     int64_t nl = 1;
     for (int k = 0; k < d - 1; k++) nl *= n;
-    int idx[P3_DMAX], rc = 0;
+    int idx[HJ_BAND_DMAX], rc = 0;
     for (int64_t l = 0; l < nl && !rc; l++) {
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
         /* rho^2 of this line and of its face neighbour lines */
-        double q[2 * P3_DMAX + 1];
+        double q[2 * HJ_BAND_DMAX + 1];
         int nq = 0;
         q[nq++] = rho2_of(f, idx);
         for (int k = 0; k < d - 1; k++)

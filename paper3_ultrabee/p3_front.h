@@ -19,8 +19,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "hj_band.h"
 #include "hj_error.h"
-#include "p3_store.h"
 
 typedef struct {
     int example; /* 1 spheres, 2 cylinder */

@@ -32,18 +32,6 @@ void p3_ls_free(p3_ls *ls)
     ls->y = NULL;
 }
 
-void p3_ls_velocity(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
-{
-    const p3_ls_control *c = ctx;
-    double y[HJ_LS_MAXDIM], f[HJ_LS_MAXDIM];
-    memcpy(y, x, sizeof y);
-    for (long j = 0; j < n; j++) {
-        y[0] = x[0] + (double)j * dx0;
-        c->dyn(c->frozen ? c->tfix : t, y, c->a, f, c->ctx);
-        v[j] = f[d];
-    }
-}
-
 /* After every step: note when the computed set {V <= 0} first vanishes. */
 static int watch_front(double t, double *y, void *ctx, hj_error *err)
 {
@@ -86,15 +74,9 @@ static double value_at(const int *idx, void *vctx)
     return ls->y[hj_ls_index(&ls->g, i)];
 }
 
-int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
-                 hj_error *err)
-{
-    return p3_field_errors(ls->d, ls->n, ls->g.min, ls->g.dx, value_at, ls, inside, ctx, sub, l1, haus, ncells, err);
-}
-
 void p3_ls_values(const p3_ls *ls, double *out)
 {
-    int idx[P3_DMAX] = {0};
+    int idx[HJ_BAND_DMAX] = {0};
     int64_t total = 1;
     for (int k = 0; k < ls->d; k++) total *= ls->n;
     for (int64_t m = 0; m < total; m++) {

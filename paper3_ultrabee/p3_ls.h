@@ -6,7 +6,7 @@
  *
  * Grid: the UB grid (n nodes per direction including both ends, dx = L /
  * (n - 1)), so that the level set values sit at the UB cell centres and the
- * errors of p3_field_errors are the UB ones.  Ghost nodes by linear
+ * errors of hj_front_ls_errors are the UB ones.  Ghost nodes by linear
  * extrapolation away from zero (the toolbox's usual level set boundary).
  * Time step: the kernel's CFL bound for the unsplit scheme, dt max_x
  * sum_d |f_d(x)| / dx_d = P3_LS_CFL (for several controls the largest
@@ -23,7 +23,7 @@
 
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
-#include "p3_ub.h"
+#include "hj_ub.h"
 
 typedef struct {
     hj_ls_grid g;
@@ -39,30 +39,12 @@ int p3_ls_init(p3_ls *ls, int d, int n, const double *lo, const double *hi, hj_l
                hj_error *err);
 void p3_ls_free(p3_ls *ls);
 
-/* One control's velocity for hj_ls_convection: v = f(t, x, a) from the
- * UB problem's dynamics; with frozen set, f is evaluated at time tfix
- * instead of t (a flow piecewise constant in time is integrated piece by
- * piece, so that no Runge-Kutta stage sees the switch). */
-typedef struct {
-    void (*dyn)(double t, const double *x, int a, double *f, void *ctx);
-    int a;
-    int frozen;
-    double tfix;
-    void *ctx;
-} p3_ls_control;
-/* hj_ls_velocity_fn over a p3_ls_control. */
-void p3_ls_velocity(double t, const double *x, double dx0, long n, int d, double *v, void *ctx);
-
 /* Advance from ls->t to t1 with the term (TVD RK2, FactorCFL = cfl). */
 int p3_ls_run(p3_ls *ls, const hj_ls_term *term, double t1, double cfl, hj_error *err);
 
-/* The values at the n^d nodes, in the layout of p3_solver_values (last
- * index fastest).  For figures. */
+/* The values at the n^d nodes, in the layout of hj_ub_values (last
+ * index fastest).  For figures.  The errors of section 4 are
+ * hj_front_ls_errors(&ls->g, ls->y, ...), measured as the UB runs are. */
 void p3_ls_values(const p3_ls *ls, double *out);
-
-/* The errors of section 4 (p3_field_errors on the level set values, sub
- * as p3_problem's front_sub). */
-int p3_ls_errors(p3_ls *ls, p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
-                 hj_error *err);
 
 #endif

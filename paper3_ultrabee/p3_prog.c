@@ -5,8 +5,6 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <time.h>
 
 #include "hj_cli.h"
 
@@ -55,20 +53,6 @@ int p3_want(const p3_args *a, long t)
 }
 
 _Noreturn void p3_die(const char *prog, const hj_error *err) { hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg); }
-
-double p3_cpu(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-double p3_peak_mb(void)
-{
-    struct rusage ru;
-    getrusage(RUSAGE_SELF, &ru);
-    return (double)ru.ru_maxrss / 1024.0;
-}
 
 int p3_open(hj_out *out, const char *dir, const char *name, hj_error *err)
 {

@@ -1,6 +1,7 @@
 /* p3_prog.h -- what the paper-3 programs share: the command line
- * (--help, --quick, --out-dir, --sizes, --max-n, --tables), a CPU clock, peak memory
- * and the output tables.  p3_args_parse() and p3_die() are for main()
+ * (--help, --quick, --out-dir, --sizes, --max-n, --tables), the closed
+ * sets of the examples and the output tables (CPU time and peak memory
+ * come from hj_sys.h).  p3_args_parse() and p3_die() are for main()
  * only (they print and exit, as hj_cli_fail does); the rest returns codes. */
 #ifndef P3_PROG_H
 #define P3_PROG_H
@@ -11,6 +12,12 @@
 #include "hj_io.h"
 
 #define P3_MAX_SIZES 16
+
+/* The exact sets of the examples are closed: a cell centre on a face is
+ * inside.  Their tests allow P3_CLOSED_SLACK dx, so that the round-off of
+ * the coordinates (-2 + i dx is ~1e-17 off a face through a centre) does
+ * not decide it. */
+#define P3_CLOSED_SLACK 1e-9
 
 typedef struct {
     const char *prog;
@@ -33,16 +40,11 @@ void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const
 /* Print "prog: message" and exit 1 (a run that failed). */
 _Noreturn void p3_die(const char *prog, const hj_error *err);
 
-/* CPU time of the process in seconds. */
-double p3_cpu(void);
-/* Peak resident memory of the process in MB (getrusage). */
-double p3_peak_mb(void);
-
 /* Open DIR/NAME for an atomic write (hj_out), creating DIR. */
 int p3_open(hj_out *out, const char *dir, const char *name, hj_error *err);
 
 /* Figure data: nf fields on the grid of n nodes per direction in d = 2, 3
- * (field values f[j][l n + i] in the layout of p3_solver_values, node
+ * (field values f[j][l n + i] in the layout of hj_ub_values, node
  * coordinates lo + i dx) as a gnuplot block over the index box
  * [i0[k], i0[k] + m[k]): one line "x y [z] f1 f2 ..." per node, last index
  * fastest, a blank line after each run of it (gnuplot's grid format) and

@@ -4,7 +4,9 @@
 P3 := paper3_ultrabee
 P3_PROGS := examples2d examples34d storage hjbstep
 P3_BINS := $(P3_PROGS:%=$(BUILD)/bin/$(P3)/%)
-P3_LIBOBJ := $(addprefix $(BUILD)/obj/$(P3)/,p3_store.o p3_ub.o p3_errors.o p3_prog.o p3_front.o p3_ls.o)
+# The scheme, the band stores and the error measures are in libhj
+# (common/hj_ub, hj_band, hj_front, hj_mintime); these are the programs'.
+P3_LIBOBJ := $(addprefix $(BUILD)/obj/$(P3)/,p3_prog.o p3_front.o p3_ls.o)
 $(P3_BINS): $(P3_LIBOBJ)
 $(BUILD)/obj/$(P3)/%.o: CPPFLAGS += -I$(P3)
 

@@ -6,7 +6,7 @@
 FS (full), FLS (full + unsorted band list), LS (one sorted list with
 compressed keys), CRS (one dynamic list per first index) and SSD (a static
 (d-1)-dimensional array of lists along the last index), all behind the
-interface of p3_store.h; SSDC is the variant of Remark 3.1 and SSDA the
+interface of hj_band.h; SSDC is the variant of Remark 3.1 and SSDA the
 same line heads with contiguous sorted arrays instead of linked lists.  Fronts
 (p3_front.h): Example 1, six nested spheres (radii 0.3 k: the paper does not give them, these reproduce its N_nb
 exactly in d = 2 and 3);
@@ -56,15 +56,16 @@ both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 #include <string.h>
 #include <sys/resource.h>
 
+#include "hj_band.h"
 #include "hj_cli.h"
+#include "hj_sys.h"
 #include "p3_front.h"
 #include "p3_prog.h"
-#include "p3_store.h"
 
 static double BUDGET = 100.0; /* seconds; 5 with --quick (see the header) */
 
 typedef struct {
-    p3_store *s;
+    hj_band *s;
     hj_error *err;
     int rc;
     size_t nb;
@@ -104,7 +105,7 @@ static int add_node(const int *idx, int side, void *vctx)
 {
     build_ctx *c = vctx;
     c->nb++;
-    if (c->s && (c->rc = p3_store_insert(c->s, idx, side, c->err))) return 1;
+    if (c->s && (c->rc = hj_band_insert(c->s, idx, side, c->err))) return 1;
     if (c->plus) {
         int64_t k = lin(c->d, c->n, idx);
         if (side > 0 ? push(&c->plus, &c->nplus, &c->capplus, k) : push(&c->minus, &c->nminus, &c->capminus, k)) {
@@ -116,21 +117,21 @@ static int add_node(const int *idx, int side, void *vctx)
 }
 
 /* The store of the given kind holding the band of front f. */
-static int build(p3_store **s, p3_kind kind, const p3_front *f, size_t *nb, hj_error *err)
+static int build(hj_band **s, hj_band_kind kind, const p3_front *f, size_t *nb, hj_error *err)
 {
-    int rc = p3_store_new(s, kind, f->d, f->n, err);
+    int rc = hj_band_new(s, kind, f->d, f->n, err);
     if (rc) return rc;
     build_ctx c = {*s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
     p3_front_band(f, add_node, &c, err);
     *nb = c.nb;
-    if (c.rc) { p3_store_free(*s); *s = NULL; }
+    if (c.rc) { hj_band_free(*s); *s = NULL; }
     return c.rc;
 }
 
 /* ---- neighbour search ---------------------------------------------------- */
 
 typedef struct {
-    p3_store *s;
+    hj_band *s;
     int d, n;
     double sum;
     size_t found;
@@ -139,14 +140,14 @@ typedef struct {
 static int search_node(const int *idx, double *v, void *vctx)
 {
     search_ctx *c = vctx;
-    int j[P3_DMAX];
+    int j[HJ_BAND_DMAX];
     memcpy(j, idx, sizeof j);
     c->sum += *v;
     for (int k = 0; k < c->d; k++)
         for (int s = -1; s <= 1; s += 2) {
             j[k] = idx[k] + s;
             if (j[k] >= 0 && j[k] < c->n) {
-                const double *p = p3_store_find(c->s, j);
+                const double *p = hj_band_find(c->s, j);
                 if (p) { c->sum += *p; c->found++; }
             }
             j[k] = idx[k];
@@ -155,16 +156,16 @@ static int search_node(const int *idx, double *v, void *vctx)
 }
 
 /* Seconds per search over the band (FS: over the grid). */
-static double time_search(p3_store *s, const p3_front *f)
+static double time_search(hj_band *s, const p3_front *f)
 {
     search_ctx c = {s, f->d, f->n, 0, 0};
     int reps = 0;
-    const double t0 = p3_cpu();
+    const double t0 = hj_sys_cpu_seconds();
     double t;
     do {
-        p3_store_foreach(s, search_node, &c);
+        hj_band_foreach(s, search_node, &c);
         reps++;
-        t = p3_cpu() - t0;
+        t = hj_sys_cpu_seconds() - t0;
     } while (t < 0.05);
     return c.sum == 12345.678 ? 0 : t / reps; /* the sum keeps the loop alive */
 }
@@ -199,23 +200,23 @@ static void update_ops_free(update_ops *u)
 static int update_lists(const p3_front *f, update_ops *u, hj_error *err)
 {
     memset(u, 0, sizeof *u);
-    p3_store *s;
-    int rc = p3_store_new(&s, P3_SSDA, f->d, f->n, err);
+    hj_band *s;
+    int rc = hj_band_new(&s, HJ_BAND_SSDA, f->d, f->n, err);
     if (rc) return rc;
     build_ctx c = {s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
     c.plus = malloc(sizeof *c.plus);
     c.capplus = 1;
-    if (!c.plus) { p3_store_free(s); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
+    if (!c.plus) { hj_band_free(s); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
     p3_front_band(f, add_node, &c, err);
     rc = c.rc;
     size_t capins = 0;
     for (size_t i = 0; i < c.nplus && !rc; i++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         unlin(f->d, f->n, c.plus[i], idx);
         for (int k = 0; k < f->d && !rc; k++)
             for (int sg = -1; sg <= 1 && !rc; sg += 2) {
                 idx[k] += sg;
-                if (idx[k] >= 0 && idx[k] < f->n && !p3_store_find(s, idx) &&
+                if (idx[k] >= 0 && idx[k] < f->n && !hj_band_find(s, idx) &&
                     push(&u->ins, &u->nins, &capins, lin(f->d, f->n, idx)))
                     rc = hj_error_set(err, HJ_ENOMEM, "out of memory (update lists)");
                 idx[k] -= sg;
@@ -231,32 +232,32 @@ static int update_lists(const p3_front *f, update_ops *u, hj_error *err)
     u->minus = c.minus;
     u->nminus = c.nminus;
     free(c.plus);
-    p3_store_free(s);
+    hj_band_free(s);
     if (rc) update_ops_free(u);
     return rc;
 }
 
 /* Build the band in a store of the given kind, then time the inserts of
  * the unstored neighbours of F+ and the removal of F-. */
-static int time_update(p3_kind kind, const p3_front *f, const update_ops *u, double *secs, hj_error *err)
+static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u, double *secs, hj_error *err)
 {
-    p3_store *s;
+    hj_band *s;
     size_t nb;
     int rc = build(&s, kind, f, &nb, err);
     if (rc) return rc;
-    const double t0 = p3_cpu();
+    const double t0 = hj_sys_cpu_seconds();
     for (size_t i = 0; i < u->nins && !rc; i++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         unlin(f->d, f->n, u->ins[i], idx);
-        rc = p3_store_insert(s, idx, 1.0, err);
+        rc = hj_band_insert(s, idx, 1.0, err);
     }
     for (size_t i = 0; i < u->nminus && !rc; i++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         unlin(f->d, f->n, u->minus[i], idx);
-        p3_store_remove(s, idx);
+        hj_band_remove(s, idx);
     }
-    *secs = p3_cpu() - t0;
-    p3_store_free(s);
+    *secs = hj_sys_cpu_seconds() - t0;
+    hj_band_free(s);
     return rc;
 }
 
@@ -270,7 +271,7 @@ static int affordable(const double *prev, int i, int d)
     return prev[i - 1] * (growth > 2 ? growth : 2) <= BUDGET;
 }
 
-static const p3_kind SEARCH_KINDS[] = {P3_FS, P3_FLS, P3_LS, P3_CRS, P3_SSD, P3_SSDC, P3_SSDA};
+static const hj_band_kind SEARCH_KINDS[] = {HJ_BAND_FS, HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NSK = 7 };
 
 static void search_table(const p3_args *a, const char *table, int example, hj_error *err)
@@ -283,7 +284,7 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
     fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
             example, a->quick ? " --quick" : "");
     fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(SEARCH_KINDS[k]), p3_kind_name(SEARCH_KINDS[k]));
+    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
     fprintf(out.fp, "\tSSD_over_FLS\n");
     for (int d = example == 1 ? 2 : 3; d <= 4; d++) {
         const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
@@ -298,13 +299,13 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
             for (int k = 0; k < NSK; k++) {
                 t[k][i] = NAN;
                 if (!affordable(t[k], i, d)) continue;
-                p3_store *s;
-                hj_progress("%s d=%d N=%ld %s ...\n", table, d, sizes[i], p3_kind_name(SEARCH_KINDS[k]));
+                hj_band *s;
+                hj_progress("%s d=%d N=%ld %s ...\n", table, d, sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
                 const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
                 if (rc == HJ_ENOMEM) continue; /* beyond this machine: no value */
                 if (rc) p3_die(a->prog, err);
                 t[k][i] = time_search(s, &f);
-                p3_store_free(s);
+                hj_band_free(s);
             }
             for (int k = 0; k < NSK; k++) {
                 char b1[32], b2[32];
@@ -320,7 +321,7 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
     if (hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
-static const p3_kind UPDATE_KINDS[] = {P3_FLS, P3_LS, P3_CRS, P3_SSD, P3_SSDC, P3_SSDA};
+static const hj_band_kind UPDATE_KINDS[] = {HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NUK = 6 };
 
 static void update_table(const p3_args *a, hj_error *err)
@@ -331,7 +332,7 @@ static void update_table(const p3_args *a, hj_error *err)
     fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
             a->quick ? " --quick" : "");
     fprintf(out.fp, "ex\tN\tN_nb");
-    for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(UPDATE_KINDS[k]), p3_kind_name(UPDATE_KINDS[k]));
+    for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
     fprintf(out.fp, "\tSSD_over_FLS\n");
     for (int ex = 1; ex <= 2; ex++) {
         const int ns = a->quick ? 2 : 5;
@@ -348,7 +349,7 @@ static void update_table(const p3_args *a, hj_error *err)
             for (int k = 0; k < NUK; k++) {
                 t[k][i] = NAN;
                 if (!affordable(t[k], i, 3)) continue;
-                hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], p3_kind_name(UPDATE_KINDS[k]));
+                hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], hj_band_kind_name(UPDATE_KINDS[k]));
                 rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k][i], err);
                 if (rc == HJ_ENOMEM) { t[k][i] = NAN; continue; }
                 if (rc) p3_die(a->prog, err);
@@ -370,7 +371,7 @@ static void update_table(const p3_args *a, hj_error *err)
  * the unit of the table (MB = 1e6 bytes).  FS at n = 800 needs 4.096e9
  * bytes and fails, as on the paper's 4 GB laptop (whose system took its
  * share too); with 4 GiB = 4.29e9 it would fit. */
-static const char *under_4gb(p3_kind kind, int n)
+static const char *under_4gb(hj_band_kind kind, int n)
 {
     struct rlimit old, lim;
     if (getrlimit(RLIMIT_AS, &old)) return "rlimit unavailable";
@@ -378,10 +379,10 @@ static const char *under_4gb(p3_kind kind, int n)
     lim.rlim_cur = (rlim_t)4000000000u;
     if (old.rlim_max != RLIM_INFINITY && old.rlim_max < lim.rlim_cur) lim.rlim_cur = old.rlim_max;
     if (setrlimit(RLIMIT_AS, &lim)) return "rlimit unavailable";
-    p3_store *s;
+    hj_band *s;
     hj_error err;
-    const int rc = p3_store_new(&s, kind, 3, n, &err);
-    if (!rc) p3_store_free(s);
+    const int rc = hj_band_new(&s, kind, 3, n, &err);
+    if (!rc) hj_band_free(s);
     setrlimit(RLIMIT_AS, &old);
     return rc == HJ_ENOMEM ? "out_of_memory" : rc ? "error" : "ok";
 }
@@ -394,7 +395,7 @@ static void memory_table(const p3_args *a, hj_error *err)
     fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
             a->quick ? " --quick" : "");
     fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", p3_kind_name(SEARCH_KINDS[k]), p3_kind_name(SEARCH_KINDS[k]));
+    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
     fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
     double mb[NSK][4];
     const int ns = a->quick ? 2 : 4;
@@ -408,14 +409,14 @@ static void memory_table(const p3_args *a, hj_error *err)
         size_t nb = 0;
         fprintf(out.fp, "3\t%ld", sizes[i]);
         for (int k = 0; k < NSK; k++) {
-            p3_store *s;
+            hj_band *s;
             mb[k][i] = NAN;
-            hj_progress("table4 N=%ld %s ...\n", sizes[i], p3_kind_name(SEARCH_KINDS[k]));
+            hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
             if (rc == HJ_ENOMEM) continue;
             if (rc) p3_die(a->prog, err);
-            mb[k][i] = (double)p3_store_bytes(s) / 1e6;
-            p3_store_free(s);
+            mb[k][i] = (double)hj_band_bytes(s) / 1e6;
+            hj_band_free(s);
         }
         fprintf(out.fp, "\t%zu", nb);
         for (int k = 0; k < NSK; k++) {
@@ -423,8 +424,8 @@ static void memory_table(const p3_args *a, hj_error *err)
             fprintf(out.fp, "\t%s\t%s", p3_num(b1, mb[k][i]), p3_num(b2, i ? mb[k][i] / mb[k][i - 1] : NAN));
         }
         char bn[32];
-        lim[i][0] = under_4gb(P3_FS, f.n);
-        lim[i][1] = under_4gb(P3_FLS, f.n);
+        lim[i][0] = under_4gb(HJ_BAND_FS, f.n);
+        lim[i][1] = under_4gb(HJ_BAND_FLS, f.n);
         nbs[i] = (long)nb;
         bpn[i] = mb[4][i] * 1e6 / (double)nb; /* SEARCH_KINDS[4] is SSD */
         rows = i + 1;

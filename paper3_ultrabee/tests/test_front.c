@@ -43,7 +43,7 @@ static void band_equals_brute_force(void **state)
             assert_true(c.count > 0);
             size_t brute = 0;
             for (int64_t l = 0; l < total; l++) {
-                int idx[P3_DMAX];
+                int idx[HJ_BAND_DMAX];
                 int64_t r = l;
                 for (int k = d - 1; k >= 0; k--) { idx[k] = (int)(r % f.n); r /= f.n; }
                 const int s0 = p3_front_side(&f, idx);

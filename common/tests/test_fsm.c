@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "hj_fsm.h"
-#include "p1_study.h"
+#include "hj_curve.h"
 #include "hj_math.h"
 
 
@@ -39,14 +39,14 @@ static double max_error(const hj_grid2 *g, const double *phi, double (*exact)(do
 static void lax_wendroff_circle_is_exact(void **state)
 {
     (void)state;
-    p1_circle c = {0.1, -0.2, 0.5};
-    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &c};
+    hj_curve_circle c = {0.1, -0.2, 0.5};
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &c};
     hj_speed sp = {one, zero_grad, NULL};
     const double pts[][2] = {{0.7, -0.2}, {0.3, 0.1}, {0.1, 0.2}, {-0.35, -0.25}};
     for (int k = 0; k < 4; k++) {
         double v;
         assert_int_equal(hj_fsm_lax_wendroff_value(&sp, &piece, pts[k][0], pts[k][1], 0.01, &v, NULL), HJ_OK);
-        assert_close(v, fabs(p1_circle_level(pts[k][0], pts[k][1], &c)), 1e-15, 0);
+        assert_close(v, fabs(hj_curve_circle_level(pts[k][0], pts[k][1], &c)), 1e-15, 0);
     }
 }
 
@@ -57,8 +57,8 @@ static void lax_wendroff_circle_is_exact(void **state)
 static double kappa_sign = 1.0;
 static int linear_on_circle_local(double x, double y, hj_curve_local *L, void *c)
 {
-    int rc = p1_circle_local(x, y, L, c);
-    const double r = ((p1_circle *)c)->r, th = atan2(L->foot[1], L->foot[0]);
+    int rc = hj_curve_circle_local(x, y, L, c);
+    const double r = ((hj_curve_circle *)c)->r, th = atan2(L->foot[1], L->foot[0]);
     const double side = L->kappa > 0 ? 1.0 : -1.0; /* tau = (-n_y, n_x): t runs with theta outside */
     L->g = r * cos(th) + 0.3;
     L->g_t = -side * sin(th);
@@ -70,8 +70,8 @@ static int linear_on_circle_local(double x, double y, hj_curve_local *L, void *c
 static void lax_wendroff_curvature_sign(void **state)
 {
     (void)state;
-    p1_circle c = {0, 0, 0.5};
-    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = linear_on_circle_local, .ctx = &c};
+    hj_curve_circle c = {0, 0, 0.5};
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = linear_on_circle_local, .ctx = &c};
     hj_speed sp = {one, zero_grad, NULL};
     /* inflow sides: outside where cos(theta) > 0, inside where cos(theta) < 0 */
     const double pts[][2] = {{0.55, 0.1}, {0.45, 0.3}, {-0.4, 0.1}, {-0.3, -0.25}};
@@ -144,9 +144,9 @@ static double ex2a_exact(double x, double y) { return (1 - fabs(x)) * (1 - fabs(
 /* The four edges of [-1, 1]^2 as inflow curves (Example 2). */
 static void ex2_box_edges(hj_inflow box[4])
 {
-    static p1_edge e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
+    static hj_curve_line e[4] = {{0, -1, 1}, {0, 1, -1}, {1, -1, 1}, {1, 1, -1}};
     for (int k = 0; k < 4; k++)
-        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = p1_edge_level, .local = p1_edge_local, .ctx = &e[k]};
+        box[k] = (hj_inflow){.type = HJ_INFLOW_CURVE, .level = hj_curve_line_level, .local = hj_curve_line_local, .ctx = &e[k]};
 }
 
 static void polynomial_case_to_roundoff(void **state)
@@ -309,8 +309,8 @@ static void point_source_orders(void **state)
 static void deterministic(void **state)
 {
     (void)state;
-    p1_circle c = {0.01, 0, 0.45}; /* misses every node: no Category I */
-    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = p1_circle_level, .local = p1_circle_local, .ctx = &c};
+    hj_curve_circle c = {0.01, 0, 0.45}; /* misses every node: no Category I */
+    hj_inflow piece = {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &c};
     hj_speed sp = {one, zero_grad, NULL};
     hj_grid2 g = {32, 32, -1, -1, 2.0 / 32};
     double *a = malloc(sizeof(double) * 33 * 33), *b = malloc(sizeof(double) * 33 * 33);

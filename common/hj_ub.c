@@ -1,9 +1,11 @@
-/* p3_ub.c -- UB-HJB scheme on a narrow band (see p3_ub.h). */
-#include "p3_ub.h"
+/* hj_ub.c -- the UB-HJB scheme on a narrow band (see hj_ub.h). */
+#include "hj_ub.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "hj_ls_grid.h"
 
 /* ---- the one-dimensional Ultra-Bee fluxes (8)-(9) ------------------------ */
 
@@ -33,7 +35,7 @@ static inline double flux_right(double wm, double wi, double wp, double mu)
     return wi != wp ? wm : wi;
 }
 
-double p3_ub_update(const double *w, const double *mu)
+double hj_ub_update(const double *w, const double *mu)
 {
     const double m = mu[1];
     if (m > 0) {
@@ -52,7 +54,7 @@ double p3_ub_update(const double *w, const double *mu)
 
 /* ---- geometry ------------------------------------------------------------ */
 
-void p3_centre(const p3_solver *sv, const int *idx, double *x)
+void hj_ub_centre(const hj_ub_solver *sv, const int *idx, double *x)
 {
     for (int k = 0; k < sv->pb->d; k++) x[k] = sv->pb->lo[k] + idx[k] * sv->dx[k];
 }
@@ -73,7 +75,7 @@ static int64_t linear(int d, int n, const int *idx)
 }
 
 /* The 3^d - 1 offsets of Neigh(I). */
-static int offsets(int d, int off[][P3_DMAX])
+static int offsets(int d, int off[][HJ_BAND_DMAX])
 {
     int m = 0, total = 1;
     for (int i = 0; i < d; i++) total *= 3;
@@ -89,9 +91,16 @@ static int offsets(int d, int off[][P3_DMAX])
     return m;
 }
 
+void hj_ub_cell_grid(double a, double b, int n, double *lo, double *hi)
+{
+    const double dx = (b - a) / n;
+    *lo = a + 0.5 * dx;
+    *hi = b - 0.5 * dx;
+}
+
 /* ---- averages of the initial data (7b) ----------------------------------- */
 
-double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi)
+double hj_ub_avg_box(int d, const double *blo, const double *bhi, const double *clo, const double *chi)
 {
     double frac = 1;
     for (int k = 0; k < d; k++) {
@@ -104,7 +113,7 @@ double p3_avg_box(int d, const double *blo, const double *bhi, const double *clo
     return 1 - 2 * frac;
 }
 
-int p3_ball_uniform(int d, const double *blo, const double *bhi, const double *c, double r)
+int hj_ub_ball_uniform(int d, const double *blo, const double *bhi, const double *c, double r)
 {
     double near = 0, far = 0;
     for (int k = 0; k < d; k++) {
@@ -116,7 +125,7 @@ int p3_ball_uniform(int d, const double *blo, const double *bhi, const double *c
     return near >= r * r || far <= r * r;
 }
 
-double p3_avg_ball(int d, const double *blo, const double *bhi, const double *c, double r, int m)
+double hj_ub_avg_ball(int d, const double *blo, const double *bhi, const double *c, double r, int m)
 {
     double near = 0, far = 0; /* squared distances from c to the box */
     for (int k = 0; k < d; k++) {
@@ -144,7 +153,7 @@ double p3_avg_ball(int d, const double *blo, const double *bhi, const double *c,
 
 /* ---- workspace ------------------------------------------------------------ */
 
-static int reserve(p3_solver *sv, size_t m, hj_error *err)
+static int reserve(hj_ub_solver *sv, size_t m, hj_error *err)
 {
     if (m <= sv->cap) return HJ_OK;
     size_t cap = sv->cap ? sv->cap : 1024;
@@ -170,9 +179,9 @@ static int reserve(p3_solver *sv, size_t m, hj_error *err)
     return HJ_OK;
 }
 
-void p3_solver_free(p3_solver *sv)
+void hj_ub_free(hj_ub_solver *sv)
 {
-    p3_store_free(sv->s);
+    hj_band_free(sv->s);
     free(sv->lin);
     free(sv->ptr);
     free(sv->v0);
@@ -191,9 +200,9 @@ void p3_solver_free(p3_solver *sv)
  * the grid: the boundary value): sure when the data average over the whole
  * block is +-1, else checked cell by cell (sampled averages may call a cell
  * uniform that the block test would not). */
-static int uniform_block(const p3_solver *sv, const int *idx, double v, const double *blo, const double *bhi)
+static int uniform_block(const hj_ub_solver *sv, const int *idx, double v, const double *blo, const double *bhi)
 {
-    const p3_problem *pb = sv->pb;
+    const hj_ub_problem *pb = sv->pb;
     for (int k = 0; k < pb->d; k++) /* a neighbour outside has the boundary value */
         if ((idx[k] == 0 || idx[k] == pb->n - 1) && v != pb->boundary) return 0;
     if (pb->uniform) {
@@ -202,10 +211,10 @@ static int uniform_block(const p3_solver *sv, const int *idx, double v, const do
         const double b = pb->avg0(blo, bhi, pb->ctx);
         if (b == 1 || b == -1) return b == v;
     }
-    int off[81][P3_DMAX], j[P3_DMAX];
+    int off[81][HJ_BAND_DMAX], j[HJ_BAND_DMAX];
     const int noff = offsets(pb->d, off);
     for (int o = 0; o < noff; o++) {
-        double clo[P3_DMAX], chi[P3_DMAX];
+        double clo[HJ_BAND_DMAX], chi[HJ_BAND_DMAX];
         for (int k = 0; k < pb->d; k++) {
             j[k] = idx[k] + off[o][k];
             clo[k] = pb->lo[k] + (j[k] - 0.5) * sv->dx[k];
@@ -216,11 +225,11 @@ static int uniform_block(const p3_solver *sv, const int *idx, double v, const do
     return 1;
 }
 
-int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *err)
+int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
 {
     memset(sv, 0, sizeof *sv);
     sv->pb = pb;
-    if (pb->d < 2 || pb->d > P3_DMAX || pb->n < 3 || pb->ncontrols < 1 || !pb->dyn || !pb->avg0 || !(pb->cfl > 0) ||
+    if (pb->d < 2 || pb->d > HJ_BAND_DMAX || pb->n < 3 || pb->ncontrols < 1 || !pb->dyn || !pb->avg0 || !(pb->cfl > 0) ||
         pb->cfl > 1)
         return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, data, 0 < cfl <= 1");
     const int d = pb->d, n = pb->n;
@@ -228,10 +237,10 @@ int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *
         if (!(pb->hi[k] > pb->lo[k])) return hj_error_set(err, HJ_EINVAL, "problem: empty domain");
         sv->dx[k] = (pb->hi[k] - pb->lo[k]) / (n - 1);
     }
-    int rc = p3_store_new(&sv->s, kind, d, n, err);
+    int rc = hj_band_new(&sv->s, kind, d, n, err);
     if (rc) return rc;
     /* scan the cells of the bounding box, widened by two cells */
-    int lo[P3_DMAX], hi[P3_DMAX], idx[P3_DMAX];
+    int lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX], idx[HJ_BAND_DMAX];
     long cells = 1;
     for (int k = 0; k < d; k++) {
         lo[k] = (int)floor((pb->bbox_lo[k] - pb->lo[k]) / sv->dx[k]) - 2;
@@ -247,7 +256,7 @@ int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *
             idx[k] = lo[k] + (int)(r % (hi[k] - lo[k] + 1));
             r /= hi[k] - lo[k] + 1;
         }
-        double clo[P3_DMAX], chi[P3_DMAX], blo[P3_DMAX], bhi[P3_DMAX];
+        double clo[HJ_BAND_DMAX], chi[HJ_BAND_DMAX], blo[HJ_BAND_DMAX], bhi[HJ_BAND_DMAX];
         for (int k = 0; k < d; k++) {
             clo[k] = pb->lo[k] + (idx[k] - 0.5) * sv->dx[k];
             chi[k] = clo[k] + sv->dx[k];
@@ -257,7 +266,7 @@ int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *
         const double v = pb->avg0(clo, chi, pb->ctx);
         if (v == -1 && pb->reached) pb->reached(idx, 0.0, pb->ctx);
         /* D^0: the cells whose 3^d block is not uniform (FS: every cell) */
-        if ((kind == P3_FS || !uniform_block(sv, idx, v, blo, bhi)) && (rc = p3_store_insert(sv->s, idx, v, err)))
+        if ((kind == HJ_BAND_FS || !uniform_block(sv, idx, v, blo, bhi)) && (rc = hj_band_insert(sv->s, idx, v, err)))
             return rc;
     }
     return HJ_OK;
@@ -266,14 +275,14 @@ int p3_solver_init(p3_solver *sv, const p3_problem *pb, p3_kind kind, hj_error *
 /* ---- one step ---------------------------------------------------------------- */
 
 typedef struct {
-    p3_solver *sv;
+    hj_ub_solver *sv;
     size_t m;
 } collect_ctx;
 
 static int collect(const int *idx, double *v, void *vctx)
 {
     collect_ctx *c = vctx;
-    p3_solver *sv = c->sv;
+    hj_ub_solver *sv = c->sv;
     sv->lin[c->m] = linear(sv->pb->d, sv->pb->n, idx);
     sv->ptr[c->m] = v;
     sv->v0[c->m] = *v;
@@ -283,8 +292,8 @@ static int collect(const int *idx, double *v, void *vctx)
 
 /* The 3^(d-1) offsets of the first d - 1 indices (the last index left 0):
  * Neigh(I) is walked as 3^(d-1) runs of 3 nodes along the last index, each
- * run one search of the store (p3_store_find_run). */
-static int line_offsets(int d, int off[][P3_DMAX])
+ * run one search of the store (hj_band_find_run). */
+static int line_offsets(int d, int off[][HJ_BAND_DMAX])
 {
     int m = 0, total = 1;
     for (int i = 0; i < d - 1; i++) total *= 3;
@@ -303,11 +312,11 @@ static int line_offsets(int d, int off[][P3_DMAX])
  * index offset k - 1 (NULL: not stored); in[3 r + k] 1 when the node is in
  * the grid and not I itself, 2 when it is outside the grid (its value is the
  * boundary value), 0 for I itself. */
-static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int nl, double **p, char *in)
+static void neighbours(hj_ub_solver *sv, const int *idx, int loff[][HJ_BAND_DMAX], int nl, double **p, char *in)
 {
     const int d = sv->pb->d, n = sv->pb->n;
     for (int r = 0; r < nl; r++) {
-        int j[P3_DMAX], ok = 1, zero = 1;
+        int j[HJ_BAND_DMAX], ok = 1, zero = 1;
         for (int i = 0; i < d; i++) {
             j[i] = idx[i] + loff[r][i];
             if (i < d - 1) {
@@ -315,7 +324,7 @@ static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int n
                 zero &= loff[r][i] == 0;
             }
         }
-        if (ok) p3_store_find_run(sv->s, j, 3, &p[3 * r]);
+        if (ok) hj_band_find_run(sv->s, j, 3, &p[3 * r]);
         for (int k = 0; k < 3; k++)
             in[3 * r + k] = (char)(zero && k == 1 ? 0 : ok && j[d - 1] + k >= 0 && j[d - 1] + k < n ? 1 : 2);
     }
@@ -323,19 +332,19 @@ static void neighbours(p3_solver *sv, const int *idx, int loff[][P3_DMAX], int n
 
 /* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the +-1 node
  * it neighbours. */
-static int expand_band(p3_solver *sv, hj_error *err)
+static int expand_band(hj_ub_solver *sv, hj_error *err)
 {
     const int d = sv->pb->d;
-    int rc = reserve(sv, p3_store_count(sv->s), err);
+    int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
-    int loff[27][P3_DMAX];
+    int loff[27][HJ_BAND_DMAX];
     const int nl = line_offsets(d, loff);
     double *p[81];
     char in[81];
     collect_ctx c = {sv, 0};
-    p3_store_foreach(sv->s, collect, &c);
+    hj_band_foreach(sv->s, collect, &c);
     for (size_t i = 0; i < c.m; i++) {
-        int idx[P3_DMAX], j[P3_DMAX];
+        int idx[HJ_BAND_DMAX], j[HJ_BAND_DMAX];
         unlin(d, sv->pb->n, sv->lin[i], idx);
         neighbours(sv, idx, loff, nl, p, in);
         /* presence is known before the inserts, which do not change it for
@@ -347,7 +356,7 @@ static int expand_band(p3_solver *sv, hj_error *err)
                     return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
                 for (int q = 0; q < d; q++) j[q] = idx[q] + loff[r][q];
                 j[d - 1] += k;
-                if ((rc = p3_store_insert(sv->s, j, sv->v0[i], err))) return rc;
+                if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) return rc;
             }
     }
     return HJ_OK;
@@ -355,17 +364,17 @@ static int expand_band(p3_solver *sv, hj_error *err)
 
 /* Value slots temporarily hold the node's position in the snapshot, so that
  * the store's own neighbour search gives the links. */
-static int snapshot(p3_solver *sv, size_t *m, hj_error *err)
+static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
 {
     const int d = sv->pb->d;
-    int rc = reserve(sv, p3_store_count(sv->s), err);
+    int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
     collect_ctx c = {sv, 0};
-    p3_store_foreach(sv->s, collect, &c);
+    hj_band_foreach(sv->s, collect, &c);
     *m = c.m;
     for (size_t i = 0; i < c.m; i++) *sv->ptr[i] = (double)i;
     for (size_t i = 0; i < c.m; i++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         unlin(d, sv->pb->n, sv->lin[i], idx);
         for (int k = 0; k < d; k++)
             for (int s = 0; s < 2; s++) {
@@ -373,7 +382,7 @@ static int snapshot(p3_solver *sv, size_t *m, hj_error *err)
                 idx[k] += s ? 1 : -1;
                 if (idx[k] < 0 || idx[k] >= sv->pb->n) *l = -2;
                 else {
-                    const double *p = p3_store_find(sv->s, idx);
+                    const double *p = hj_band_find(sv->s, idx);
                     *l = p ? (int32_t)*p : -1;
                 }
                 idx[k] -= s ? 1 : -1;
@@ -382,15 +391,15 @@ static int snapshot(p3_solver *sv, size_t *m, hj_error *err)
     return HJ_OK;
 }
 
-static double time_step(p3_solver *sv, size_t m, double tmax)
+static double time_step(hj_ub_solver *sv, size_t m, double tmax)
 {
-    const p3_problem *pb = sv->pb;
-    double rate = 0, f[P3_DMAX], x[P3_DMAX];
+    const hj_ub_problem *pb = sv->pb;
+    double rate = 0, f[HJ_BAND_DMAX], x[HJ_BAND_DMAX];
     for (int a = 0; a < pb->ncontrols; a++)
         for (size_t i = 0; i < m; i++) {
-            int idx[P3_DMAX];
+            int idx[HJ_BAND_DMAX];
             unlin(pb->d, pb->n, sv->lin[i], idx);
-            p3_centre(sv, idx, x);
+            hj_ub_centre(sv, idx, x);
             pb->dyn(sv->t, x, a, f, pb->ctx);
             for (int k = 0; k < pb->d; k++) {
                 const double r = fabs(f[k]) / sv->dx[k];
@@ -403,19 +412,19 @@ static double time_step(p3_solver *sv, size_t m, double tmax)
 }
 
 /* mu of direction k at the cell next to node i (s = 0: left, 1: right). */
-static double mu_beside(p3_solver *sv, size_t i, int k, int s, int a, double dt)
+static double mu_beside(hj_ub_solver *sv, size_t i, int k, int s, int a, double dt)
 {
-    int idx[P3_DMAX];
-    double x[P3_DMAX], f[P3_DMAX];
+    int idx[HJ_BAND_DMAX];
+    double x[HJ_BAND_DMAX], f[HJ_BAND_DMAX];
     unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
-    p3_centre(sv, idx, x);
+    hj_ub_centre(sv, idx, x);
     x[k] += s ? sv->dx[k] : -sv->dx[k];
     sv->pb->dyn(sv->t, x, a, f, sv->pb->ctx);
     return dt / sv->dx[k] * f[k];
 }
 
 /* One sweep in direction k for control a: wn = UB update of w. */
-static void sweep(p3_solver *sv, size_t m, int k, int a, double dt)
+static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
 {
     const int d = sv->pb->d;
     const double bnd = sv->pb->boundary;
@@ -440,13 +449,13 @@ static void sweep(p3_solver *sv, size_t m, int k, int a, double dt)
             w5[s ? 4 : 0] = w2;
             mu3[s ? 2 : 0] = m1;
         }
-        sv->wn[i] = p3_ub_update(w5, mu3);
+        sv->wn[i] = hj_ub_update(w5, mu3);
     }
 }
 
-static int equal_to_neighbours(p3_solver *sv, size_t i, int loff[][P3_DMAX], int nl)
+static int equal_to_neighbours(hj_ub_solver *sv, size_t i, int loff[][HJ_BAND_DMAX], int nl)
 {
-    int idx[P3_DMAX];
+    int idx[HJ_BAND_DMAX];
     double *p[81];
     char in[81];
     const double v = sv->vmin[i];
@@ -457,15 +466,15 @@ static int equal_to_neighbours(p3_solver *sv, size_t i, int loff[][P3_DMAX], int
     return 1;
 }
 
-int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
+int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
 {
-    const p3_problem *pb = sv->pb;
+    const hj_ub_problem *pb = sv->pb;
     const int d = pb->d;
-    int loff[27][P3_DMAX];
+    int loff[27][HJ_BAND_DMAX];
     const int nl = line_offsets(d, loff);
     int rc;
     if (!(tmax > sv->t)) return HJ_OK;
-    if (p3_store_kind(sv->s) != P3_FS && (rc = expand_band(sv, err))) return rc;
+    if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = expand_band(sv, err))) return rc;
     size_t m;
     if ((rc = snapshot(sv, &m, err))) return rc;
     sv->band_sum += (double)m;
@@ -473,10 +482,10 @@ int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
     const double dt = time_step(sv, m, tmax), snap = pb->snap > 0 ? pb->snap : 1e-12;
     for (int a = 0; a < pb->ncontrols; a++) {
         for (size_t i = 0; i < m; i++) {
-            int idx[P3_DMAX];
-            double x[P3_DMAX];
+            int idx[HJ_BAND_DMAX];
+            double x[HJ_BAND_DMAX];
             unlin(d, pb->n, sv->lin[i], idx);
-            p3_centre(sv, idx, x);
+            hj_ub_centre(sv, idx, x);
             pb->dyn(sv->t, x, a, &sv->f[i * d], pb->ctx);
             for (int k = 0; k < d; k++) sv->mu[i * d + k] = dt / sv->dx[k] * sv->f[i * d + k];
         }
@@ -497,21 +506,21 @@ int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
         sv->vmin[i] = v;
         *sv->ptr[i] = v;
         if (pb->reached && v == -1 && sv->v0[i] != -1) {
-            int idx[P3_DMAX];
+            int idx[HJ_BAND_DMAX];
             unlin(d, pb->n, sv->lin[i], idx);
             pb->reached(idx, sv->t + dt, pb->ctx);
         }
     }
     /* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to all their neighbours */
-    if (p3_store_kind(sv->s) != P3_FS) {
+    if (hj_band_kind_of(sv->s) != HJ_BAND_FS) {
         size_t r = 0;
         for (size_t i = 0; i < m; i++)
             if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, loff, nl))
                 sv->lin[r++] = sv->lin[i];
         for (size_t i = 0; i < r; i++) {
-            int idx[P3_DMAX];
+            int idx[HJ_BAND_DMAX];
             unlin(d, pb->n, sv->lin[i], idx);
-            p3_store_remove(sv->s, idx);
+            hj_band_remove(sv->s, idx);
         }
     }
     sv->t = dt == tmax - sv->t ? tmax : sv->t + dt;
@@ -519,11 +528,34 @@ int p3_solver_step(p3_solver *sv, double tmax, hj_error *err)
     return HJ_OK;
 }
 
-int p3_solver_run(p3_solver *sv, double T, hj_error *err)
+int hj_ub_run(hj_ub_solver *sv, double T, hj_error *err)
 {
     while (sv->t < T) {
-        int rc = p3_solver_step(sv, T, err);
+        int rc = hj_ub_step(sv, T, err);
         if (rc) return rc;
     }
     return HJ_OK;
+}
+
+/* ---- errors and values (hj_front) --------------------------------------- */
+
+int hj_ub_errors(hj_ub_solver *sv, hj_front_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err)
+{
+    return hj_front_band_errors(sv->s, sv->pb->lo, sv->dx, sv->pb->front_sub, inside, ctx, l1, haus, err);
+}
+
+int hj_ub_values(hj_ub_solver *sv, double *out, hj_error *err) { return hj_front_band_values(sv->s, out, err); }
+
+/* ---- the same problem for the level set kernel -------------------------- */
+
+void hj_ub_control_velocity(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    const hj_ub_control *c = ctx;
+    double y[HJ_LS_MAXDIM], f[HJ_LS_MAXDIM];
+    memcpy(y, x, sizeof y);
+    for (long j = 0; j < n; j++) {
+        y[0] = x[0] + (double)j * dx0;
+        c->dyn(c->frozen ? c->tfix : t, y, c->a, f, c->ctx);
+        v[j] = f[d];
+    }
 }

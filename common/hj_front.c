@@ -1,5 +1,5 @@
-/* p3_errors.c -- L1 error and Hausdorff distance of section 4 (see p3_ub.h). */
-#include "p3_ub.h"
+/* hj_front.c -- L1 error and Hausdorff distance of section 4 (see hj_front.h). */
+#include "hj_front.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -14,7 +14,7 @@
 typedef struct {
     int d;
     const double *p;
-    double h, origin[P3_DMAX];
+    double h, origin[HJ_BAND_DMAX];
     int64_t base;
     int64_t *key; /* bucket key of each point, sorted with order[] */
     size_t *order, n;
@@ -51,7 +51,7 @@ static int bucket_build(bucket_set *b, int d, const double *p, size_t n, double 
     b->order = malloc((n ? n : 1) * sizeof *b->order);
     if (!b->key || !b->order) return HJ_ENOMEM;
     for (size_t i = 0; i < n; i++) {
-        int64_t c[P3_DMAX];
+        int64_t c[HJ_BAND_DMAX];
         bucket_of(b, &p[i * d], c);
         b->key[i] = bucket_key(b, c);
         b->order[i] = i;
@@ -79,7 +79,7 @@ static double dist2(int d, const double *x, const double *y)
 static double nearest(const bucket_set *b, const double *x)
 {
     const int d = b->d;
-    int64_t c[P3_DMAX], q[P3_DMAX];
+    int64_t c[HJ_BAND_DMAX], q[HJ_BAND_DMAX];
     bucket_of(b, x, c);
     double best = INFINITY;
     for (int r = 0; r <= 64; r++) {
@@ -116,10 +116,10 @@ static double nearest(const bucket_set *b, const double *x)
     return sqrt(best);
 }
 
-int p3_hausdorff(int d, const double *a, size_t na, const double *b, size_t nb, double h, double *out, hj_error *err)
+int hj_front_hausdorff(int d, const double *a, size_t na, const double *b, size_t nb, double h, double *out, hj_error *err)
 {
     if (na == 0 || nb == 0) { *out = (na == 0 && nb == 0) ? 0 : INFINITY; return HJ_OK; }
-    double origin[P3_DMAX] = {0}, top[P3_DMAX] = {0};
+    double origin[HJ_BAND_DMAX] = {0}, top[HJ_BAND_DMAX] = {0};
     for (int i = 0; i < d; i++) origin[i] = top[i] = a[i];
     for (size_t s = 0; s < na + nb; s++) {
         const double *x = s < na ? &a[s * d] : &b[(s - na) * d];
@@ -171,8 +171,15 @@ static void push(points *s, const double *x)
 
 /* ---- the computed front and the line values ------------------------------------ */
 
+static void centre(int d, const double *lo, const double *dx, const int *idx, double *x)
+{
+    for (int k = 0; k < d; k++) x[k] = lo[k] + idx[k] * dx[k]; /* as hj_ub_centre */
+}
+
 typedef struct {
-    p3_solver *sv;
+    hj_band *s;
+    int d, n;
+    const double *lo, *dx;
     points *front;
     signed char *line; /* per line: 0 empty, +-2 non-empty with stored +-1 nodes of that value,
                           4 non-empty without; empty lines get +-1 from fill_lines */
@@ -181,24 +188,23 @@ typedef struct {
 static int visit_front(const int *idx, double *v, void *vctx)
 {
     front_ctx *c = vctx;
-    p3_solver *sv = c->sv;
-    const int d = sv->pb->d, n = sv->pb->n;
+    const int d = c->d, n = c->n;
     int64_t line = 0;
     for (int k = 0; k < d - 1; k++) line = line * n + idx[k];
     if (*v == 1 || *v == -1) c->line[line] = (signed char)(2 * *v);
     else if (c->line[line] == 0) c->line[line] = 4; /* non-empty, value not known yet */
     if (*v > ZERO || !c->front) return 0;
     /* a cell of the computed set {V <= 0} with a face neighbour outside it */
-    int j[P3_DMAX];
+    int j[HJ_BAND_DMAX];
     memcpy(j, idx, sizeof j);
     for (int k = 0; k < d; k++)
         for (int s = -1; s <= 1; s += 2) {
             j[k] = idx[k] + s;
             if (j[k] >= 0 && j[k] < n) {
-                const double *p = p3_store_find(sv->s, j);
+                const double *p = hj_band_find(c->s, j);
                 if (p && *p > ZERO) {
-                    double x[P3_DMAX];
-                    p3_centre(sv, idx, x);
+                    double x[HJ_BAND_DMAX];
+                    centre(d, c->lo, c->dx, idx, x);
                     push(c->front, x);
                     return 0;
                 }
@@ -233,10 +239,10 @@ static int fill_lines(signed char *line, int64_t nl, int dl, int n, hj_error *er
 }
 
 /* The point where the exact front crosses the segment [x, y] (bisection). */
-static void crossing(int d, const double *x, const double *y, int in_x, p3_inside_fn inside, void *ctx, double tol,
+static void crossing(int d, const double *x, const double *y, int in_x, hj_front_inside_fn inside, void *ctx, double tol,
                      double *out)
 {
-    double a[P3_DMAX], b[P3_DMAX], m[P3_DMAX];
+    double a[HJ_BAND_DMAX], b[HJ_BAND_DMAX], m[HJ_BAND_DMAX];
     memcpy(a, x, d * sizeof *a);
     memcpy(b, y, d * sizeof *b);
     for (int it = 0; it < 60; it++) {
@@ -254,12 +260,12 @@ static void crossing(int d, const double *x, const double *y, int in_x, p3_insid
  * the strip of cells around the segment.  A sub-segment whose ends are on
  * the same side gives no point. */
 static void sub_crossings(int d, int k, const double *x, const double *y, const double *dx, int sub,
-                          p3_inside_fn inside, void *ctx, double tol, points *exact)
+                          hj_front_inside_fn inside, void *ctx, double tol, points *exact)
 {
     int64_t count = 1;
     for (int j = 0; j < d - 1; j++) count *= sub;
     for (int64_t t = 0; t < count; t++) {
-        double xs[P3_DMAX], ys[P3_DMAX], c[P3_DMAX];
+        double xs[HJ_BAND_DMAX], ys[HJ_BAND_DMAX], c[HJ_BAND_DMAX];
         int64_t r = t;
         for (int j = 0; j < d; j++) {
             double o = 0;
@@ -275,11 +281,6 @@ static void sub_crossings(int d, int k, const double *x, const double *y, const 
         crossing(d, xs, ys, in_x, inside, ctx, tol, c);
         push(exact, c);
     }
-}
-
-static void centre(int d, const double *lo, const double *dx, const int *idx, double *x)
-{
-    for (int k = 0; k < d; k++) x[k] = lo[k] + idx[k] * dx[k]; /* as p3_centre */
 }
 
 /* The exact signs of the lines already visited: lines are visited in
@@ -306,12 +307,12 @@ static int ring_init(sign_ring *r, int d, int n)
  * lines taken from the ring: inside() once per cell.  Shared by the band
  * (UB) and the full grid (LS). */
 static int64_t line_errors(int d, int n, const double *lo, const double *dx, int64_t l, int *idx, const double *vals,
-                           sign_ring *ring, p3_inside_fn inside, void *ctx, double hmin, int sub, points *exact)
+                           sign_ring *ring, hj_front_inside_fn inside, void *ctx, double hmin, int sub, points *exact)
 {
     int64_t wrong = 0;
     signed char *in = &ring->in[(size_t)(l % ring->slots) * (size_t)n];
     for (int i = 0; i < n; i++) {
-        double x[P3_DMAX];
+        double x[HJ_BAND_DMAX];
         idx[d - 1] = i;
         centre(d, lo, dx, idx, x);
         in[i] = (signed char)(inside(x, ctx) != 0);
@@ -324,7 +325,7 @@ static int64_t line_errors(int d, int n, const double *lo, const double *dx, int
         for (int i = k == d - 1 ? 1 : 0; i < n; i++) {
             const int i_lo = k == d - 1 ? i - 1 : i;
             if (below[i_lo] == in[i]) continue;
-            double x[P3_DMAX], y[P3_DMAX], c[P3_DMAX];
+            double x[HJ_BAND_DMAX], y[HJ_BAND_DMAX], c[HJ_BAND_DMAX];
             idx[d - 1] = i;
             centre(d, lo, dx, idx, y);
             idx[k]--; /* the lower cell's own centre */
@@ -344,12 +345,12 @@ static int64_t line_errors(int d, int n, const double *lo, const double *dx, int
 
 /* The values of line idx[0..d-2] (line state ls, from fill_lines): stored
  * ones, gaps from the stored neighbour. */
-static void line_values(p3_solver *sv, signed char ls, int *idx, double *vals)
+static void line_values(hj_band *s, signed char ls, int *idx, double *vals)
 {
-    const int d = sv->pb->d, n = sv->pb->n;
+    const int d = hj_band_dim(s), n = hj_band_size(s);
     for (int i = 0; i < n; i++) {
         idx[d - 1] = i;
-        const double *p = (ls == 1 || ls == -1) ? NULL : p3_store_find(sv->s, idx);
+        const double *p = (ls == 1 || ls == -1) ? NULL : hj_band_find(s, idx);
         vals[i] = p ? *p : (ls == 1 || ls == -1) ? ls : NAN;
     }
     double last = NAN;
@@ -358,30 +359,30 @@ static void line_values(p3_solver *sv, signed char ls, int *idx, double *vals)
     for (int i = n - 1; i >= 0; i--) if (isnan(vals[i])) vals[i] = last; else last = vals[i];
 }
 
-int p3_solver_values(p3_solver *sv, double *out, hj_error *err)
+int hj_front_band_values(hj_band *s, double *out, hj_error *err)
 {
-    const int d = sv->pb->d, n = sv->pb->n;
+    const int d = hj_band_dim(s), n = hj_band_size(s);
     int64_t nl = 1;
     for (int k = 0; k < d - 1; k++) nl *= n;
     signed char *line = calloc((size_t)nl, 1);
     if (!line) return hj_error_set(err, HJ_ENOMEM, "out of memory (line values)");
-    front_ctx fc = {sv, NULL, line};
-    p3_store_foreach(sv->s, visit_front, &fc);
+    front_ctx fc = {s, d, n, NULL, NULL, NULL, line};
+    hj_band_foreach(s, visit_front, &fc);
     int rc = fill_lines(line, nl, d - 1, n, err);
     for (int64_t l = 0; l < nl && !rc; l++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
-        line_values(sv, line[l], idx, out + l * n);
+        line_values(s, line[l], idx, out + l * n);
     }
     free(line);
     return rc;
 }
 
-int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, double *haus, hj_error *err)
+int hj_front_band_errors(hj_band *s, const double *lo, const double *dx, int sub, hj_front_inside_fn inside,
+                         void *ctx, double *l1, double *haus, hj_error *err)
 {
-    const p3_problem *pb = sv->pb;
-    const int d = pb->d, n = pb->n;
+    const int d = hj_band_dim(s), n = hj_band_size(s);
     int64_t nl = 1;
     for (int k = 0; k < d - 1; k++) nl *= n;
     signed char *line = calloc((size_t)nl, 1);
@@ -391,25 +392,25 @@ int p3_solver_errors(p3_solver *sv, p3_inside_fn inside, void *ctx, double *l1, 
     points front = {NULL, 0, 0, d, 0}, exact = {NULL, 0, 0, d, 0};
     int rc = HJ_OK;
     if (!line || !vals || ring_rc) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (errors)"); goto done; }
-    front_ctx fc = {sv, &front, line};
-    p3_store_foreach(sv->s, visit_front, &fc);
+    front_ctx fc = {s, d, n, lo, dx, &front, line};
+    hj_band_foreach(s, visit_front, &fc);
     if ((rc = fill_lines(line, nl, d - 1, n, err))) goto done;
-    double cellvol = 1, hmin = sv->dx[0];
+    double cellvol = 1, hmin = dx[0];
     for (int k = 0; k < d; k++) {
-        cellvol *= sv->dx[k];
-        hmin = sv->dx[k] < hmin ? sv->dx[k] : hmin;
+        cellvol *= dx[k];
+        hmin = dx[k] < hmin ? dx[k] : hmin;
     }
     int64_t wrong = 0;
     for (int64_t l = 0; l < nl; l++) {
-        int idx[P3_DMAX];
+        int idx[HJ_BAND_DMAX];
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
-        line_values(sv, line[l], idx, vals);
-        wrong += line_errors(d, n, pb->lo, sv->dx, l, idx, vals, &ring, inside, ctx, hmin, pb->front_sub, &exact);
+        line_values(s, line[l], idx, vals);
+        wrong += line_errors(d, n, lo, dx, l, idx, vals, &ring, inside, ctx, hmin, sub, &exact);
     }
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
     *l1 = cellvol * (double)wrong;
-    rc = p3_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
+    rc = hj_front_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
 done:
     free(line);
     free(vals);
@@ -419,8 +420,8 @@ done:
     return rc;
 }
 
-int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_fn value, void *vctx,
-                    p3_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
+int hj_front_grid_errors(int d, int n, const double *lo, const double *dx, hj_front_value_fn value, void *vctx,
+                    hj_front_inside_fn inside, void *ctx, int sub, double *l1, double *haus, int64_t *ncells,
                     hj_error *err)
 {
     double *vals = malloc((size_t)n * sizeof *vals);
@@ -437,7 +438,7 @@ int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_f
         hmin = dx[k] < hmin ? dx[k] : hmin;
     }
     for (int64_t l = 0; l < nl; l++) {
-        int idx[P3_DMAX], j[P3_DMAX];
+        int idx[HJ_BAND_DMAX], j[HJ_BAND_DMAX];
         int64_t r = l;
         for (int k = d - 2; k >= 0; k--) { idx[k] = (int)(r % n); r /= n; }
         for (int i = 0; i < n; i++) {
@@ -455,7 +456,7 @@ int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_f
                     j[k] = idx[k];
                 }
             if (edge) {
-                double x[P3_DMAX];
+                double x[HJ_BAND_DMAX];
                 centre(d, lo, dx, idx, x);
                 push(&front, x);
             }
@@ -465,7 +466,7 @@ int p3_field_errors(int d, int n, const double *lo, const double *dx, p3_value_f
     if (front.failed || exact.failed) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory (front points)"); goto done; }
     *l1 = cellvol * (double)wrong;
     if (ncells) *ncells = neg;
-    rc = p3_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
+    rc = hj_front_hausdorff(d, front.p, front.n, exact.p, exact.n, hmin, haus, err);
 done:
     free(vals);
     free(ring.in);
@@ -474,9 +475,23 @@ done:
     return rc;
 }
 
-void p3_cell_grid(double a, double b, int n, double *lo, double *hi)
+typedef struct {
+    const hj_ls_grid *g;
+    const double *y;
+} ls_field;
+
+static double ls_value(const int *idx, void *vctx)
 {
-    const double dx = (b - a) / n;
-    *lo = a + 0.5 * dx;
-    *hi = b - 0.5 * dx;
+    const ls_field *f = vctx;
+    long i[HJ_LS_MAXDIM];
+    for (int k = 0; k < f->g->dim; k++) i[k] = idx[k];
+    return f->y[hj_ls_index(f->g, i)];
+}
+
+int hj_front_ls_errors(const hj_ls_grid *g, const double *y, hj_front_inside_fn inside, void *ctx, int sub,
+                       double *l1, double *haus, int64_t *ncells, hj_error *err)
+{
+    ls_field f = {g, y};
+    return hj_front_grid_errors(g->dim, (int)g->N[0], g->min, g->dx, ls_value, &f, inside, ctx, sub, l1, haus, ncells,
+                                err);
 }

@@ -1,11 +1,11 @@
-/* Unit tests of p3_store: every kind holds the same set after the same
+/* Unit tests of hj_band: every kind holds the same set after the same
  * random inserts and removes, finds the same neighbours, walks in order. */
 #include "hj_test.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-#include "p3_store.h"
+#include "hj_band.h"
 
 /* Reference: a plain array over the small grid, NaN = not stored. */
 typedef struct {
@@ -51,37 +51,37 @@ static void random_sequence_all_kinds(void **state)
     (void)state;
     for (int d = 2; d <= 4; d++) {
         const int n = d == 2 ? 40 : d == 3 ? 14 : 7;
-        for (int kind = P3_FLS; kind < P3_NKINDS; kind++) {
+        for (int kind = HJ_BAND_FLS; kind < HJ_BAND_NKINDS; kind++) {
             ref_grid ref = {d, n, 1, NULL};
             for (int i = 0; i < d; i++) ref.total *= n;
             ref.v = malloc((size_t)ref.total * sizeof *ref.v);
             assert_non_null(ref.v);
             for (int64_t i = 0; i < ref.total; i++) ref.v[i] = NAN;
-            p3_store *s;
-            assert_int_equal(p3_store_new(&s, kind, d, n, NULL), HJ_OK);
+            hj_band *s;
+            assert_int_equal(hj_band_new(&s, kind, d, n, NULL), HJ_OK);
             unsigned seed = 12345u + (unsigned)d;
             for (int step = 0; step < 20000; step++) {
-                int idx[P3_DMAX];
+                int idx[HJ_BAND_DMAX];
                 for (int i = 0; i < d; i++) idx[i] = (int)(rnd(&seed) % (unsigned)n);
                 int64_t k = lin(d, n, idx);
                 unsigned op = rnd(&seed) % 3;
                 if (op == 0) {
                     double v = (double)step;
-                    assert_int_equal(p3_store_insert(s, idx, v, NULL), HJ_OK);
+                    assert_int_equal(hj_band_insert(s, idx, v, NULL), HJ_OK);
                     ref.v[k] = v;
                 } else if (op == 1) {
-                    p3_store_remove(s, idx);
+                    hj_band_remove(s, idx);
                     ref.v[k] = NAN;
                 } else {
                     /* the node and its 2d neighbours */
                     for (int nb = -1; nb < 2 * d; nb++) {
-                        int j[P3_DMAX];
+                        int j[HJ_BAND_DMAX];
                         memcpy(j, idx, sizeof j);
                         if (nb >= 0) {
                             j[nb / 2] += nb % 2 ? 1 : -1;
                             if (j[nb / 2] < 0 || j[nb / 2] >= n) continue;
                         }
-                        double *p = p3_store_find(s, j), r = ref.v[lin(d, n, j)];
+                        double *p = hj_band_find(s, j), r = ref.v[lin(d, n, j)];
                         if (isnan(r)) assert_null(p);
                         else { assert_non_null(p); assert_true(*p == r); }
                     }
@@ -89,12 +89,12 @@ static void random_sequence_all_kinds(void **state)
             }
             size_t stored = 0;
             for (int64_t i = 0; i < ref.total; i++) stored += !isnan(ref.v[i]);
-            assert_int_equal(p3_store_count(s), stored);
-            walk_ctx w = {d, n, -1, 0, &ref, kind != P3_FLS};
-            assert_int_equal(p3_store_foreach(s, check_visit, &w), 0);
+            assert_int_equal(hj_band_count(s), stored);
+            walk_ctx w = {d, n, -1, 0, &ref, kind != HJ_BAND_FLS};
+            assert_int_equal(hj_band_foreach(s, check_visit, &w), 0);
             assert_int_equal(w.seen, stored);
-            assert_true(p3_store_bytes(s) > 0);
-            p3_store_free(s);
+            assert_true(hj_band_bytes(s) > 0);
+            hj_band_free(s);
             free(ref.v);
         }
     }
@@ -103,67 +103,67 @@ static void random_sequence_all_kinds(void **state)
 static void full_storage_holds_every_node(void **state)
 {
     (void)state;
-    p3_store *s;
-    assert_int_equal(p3_store_new(&s, P3_FS, 3, 5, NULL), HJ_OK);
-    assert_int_equal(p3_store_count(s), 125);
+    hj_band *s;
+    assert_int_equal(hj_band_new(&s, HJ_BAND_FS, 3, 5, NULL), HJ_OK);
+    assert_int_equal(hj_band_count(s), 125);
     int idx[3] = {4, 0, 2};
-    double *p = p3_store_find(s, idx);
+    double *p = hj_band_find(s, idx);
     assert_non_null(p);
     assert_true(*p == 1.0);
-    p3_store_remove(s, idx);
-    assert_non_null(p3_store_find(s, idx));
-    p3_store_free(s);
+    hj_band_remove(s, idx);
+    assert_non_null(hj_band_find(s, idx));
+    hj_band_free(s);
 }
 
 /* Full kinds beyond the machine fail cleanly; bad shapes are refused. */
 static void out_of_memory_and_bad_args(void **state)
 {
     (void)state;
-    p3_store *s = (p3_store *)&s;
+    hj_band *s = (hj_band *)&s;
     hj_error err;
-    assert_int_equal(p3_store_new(&s, P3_FS, 4, 3000, &err), HJ_ENOMEM);
+    assert_int_equal(hj_band_new(&s, HJ_BAND_FS, 4, 3000, &err), HJ_ENOMEM);
     assert_null(s);
     assert_non_null(strstr(err.msg, "out of memory"));
-    assert_int_equal(p3_store_new(&s, P3_FLS, 4, 3000, &err), HJ_ENOMEM);
-    assert_int_equal(p3_store_new(&s, P3_SSD, 5, 10, &err), HJ_EINVAL);
-    assert_int_equal(p3_store_new(&s, P3_SSD, 3, 0, &err), HJ_EINVAL);
-    assert_int_equal(p3_kind_from_name("SSD"), P3_SSD);
-    assert_int_equal(p3_kind_from_name("XYZ"), -1);
+    assert_int_equal(hj_band_new(&s, HJ_BAND_FLS, 4, 3000, &err), HJ_ENOMEM);
+    assert_int_equal(hj_band_new(&s, HJ_BAND_SSD, 5, 10, &err), HJ_EINVAL);
+    assert_int_equal(hj_band_new(&s, HJ_BAND_SSD, 3, 0, &err), HJ_EINVAL);
+    assert_int_equal(hj_band_kind_from_name("SSD"), HJ_BAND_SSD);
+    assert_int_equal(hj_band_kind_from_name("XYZ"), -1);
 }
 
-/* p3_store_find_run gives what p3_store_find gives, node by node, for
+/* hj_band_find_run gives what hj_band_find gives, node by node, for
  * every kind, every start (including -1 and runs leaving the grid), with
  * searches interleaved with inserts and removes in random order. */
 static void find_run_equals_find(void **state)
 {
     (void)state;
     for (int d = 2; d <= 4; d++)
-        for (int kind = 0; kind < P3_NKINDS; kind++) {
+        for (int kind = 0; kind < HJ_BAND_NKINDS; kind++) {
             const int n = d == 4 ? 7 : 11;
-            p3_store *s;
-            assert_int_equal(p3_store_new(&s, (p3_kind)kind, d, n, NULL), HJ_OK);
+            hj_band *s;
+            assert_int_equal(hj_band_new(&s, (hj_band_kind)kind, d, n, NULL), HJ_OK);
             unsigned seed = 7u + (unsigned)(d * 10 + kind);
             for (int it = 0; it < 4000; it++) {
-                int idx[P3_DMAX];
+                int idx[HJ_BAND_DMAX];
                 for (int k = 0; k < d; k++) idx[k] = (int)(rnd(&seed) % (unsigned)n);
                 const unsigned op = rnd(&seed) % 4;
-                if (op == 0) assert_int_equal(p3_store_insert(s, idx, (double)it, NULL), HJ_OK);
-                else if (op == 1) p3_store_remove(s, idx);
+                if (op == 0) assert_int_equal(hj_band_insert(s, idx, (double)it, NULL), HJ_OK);
+                else if (op == 1) hj_band_remove(s, idx);
                 else {
                     idx[d - 1] = (int)(rnd(&seed) % (unsigned)(n + 1)) - 1; /* -1 .. n-1 */
                     const int m = 1 + (int)(rnd(&seed) % 3);
                     double *run[3];
-                    p3_store_find_run(s, idx, m, run);
+                    hj_band_find_run(s, idx, m, run);
                     for (int k = 0; k < m; k++) {
-                        int j[P3_DMAX];
+                        int j[HJ_BAND_DMAX];
                         memcpy(j, idx, sizeof j);
                         j[d - 1] += k;
-                        double *one = j[d - 1] >= 0 && j[d - 1] < n ? p3_store_find(s, j) : NULL;
+                        double *one = j[d - 1] >= 0 && j[d - 1] < n ? hj_band_find(s, j) : NULL;
                         assert_true(run[k] == one);
                     }
                 }
             }
-            p3_store_free(s);
+            hj_band_free(s);
         }
 }
 
@@ -175,5 +175,5 @@ int main(void)
         cmocka_unit_test(full_storage_holds_every_node),
         cmocka_unit_test(out_of_memory_and_bad_args),
     };
-    return cmocka_run_group_tests_name("p3_store", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("hj_band", tests, NULL, NULL);
 }

@@ -1,0 +1,46 @@
+/* hj_map.h -- a speed map f(x, y) for the Eikonal solver of paper 1
+ * (hj_fsm.h: |grad phi| = f of Huang, Shu & Zhang 2008, section 2) read
+ * from a grid file, and its bilinear interpolation.
+ *
+ * Files: plain text (one row of numbers per line, whitespace separated,
+ * every value finite and >= 0) or a PGM image (P2 or P5, 8 or 16 bits; a
+ * pixel value v maps to f = fmin + (fmax - fmin) v / maxval).  In both the
+ * first row of the file is the top of the domain (largest y), as in an
+ * image; in memory row 0 is the bottom.  At least 2 x 2 values.
+ *
+ * The map covers the rectangle [xmin, xmax] x [ymin, ymax] (set by the
+ * caller after reading): node (i, j) sits at xmin + i (xmax - xmin) /
+ * (mx - 1), ymin + j (ymax - ymin) / (my - 1).  Between nodes f is
+ * bilinear; outside the rectangle it is clamped to the nearest edge.
+ *
+ * Library code: returns HJ_* codes with a message naming the file and
+ * line, never prints.
+ */
+#ifndef HJ_MAP_H
+#define HJ_MAP_H
+
+#include "hj_error.h"
+
+typedef struct {
+    int mx, my;      /* map nodes per row, rows */
+    double *v;       /* row-major, row 0 = bottom; NULL: the constant speed */
+    double xmin, xmax, ymin, ymax;
+    double constant; /* used when v == NULL */
+} hj_map;
+
+/* f at (x, y); ctx is an hj_map (the signature of hj_speed.f). */
+double hj_map_eval(double x, double y, void *ctx);
+
+/* Read a text grid or a PGM image into m->mx, m->my, m->v (the other
+ * fields are left alone).  HJ_EIO when the file cannot be read,
+ * HJ_EFORMAT when it is malformed, HJ_ENONFINITE for a negative or
+ * non-finite text value, HJ_ENOMEM. */
+int hj_map_read_text(hj_map *m, const char *path, hj_error *err);
+int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
+/* hj_map_read_pgm for a name ending in ".pgm", else hj_map_read_text. */
+int hj_map_read(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
+
+/* Free m->v (m itself is the caller's). */
+void hj_map_free(hj_map *m);
+
+#endif

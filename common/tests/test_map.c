@@ -1,0 +1,98 @@
+/* Unit tests of common/hj_map: text and PGM speed maps (the first row of
+ * the file at the top), malformed files refused with a message, and the
+ * bilinear interpolation. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_map.h"
+
+#define dir hj_test_dir()
+
+static const char *write_file(const char *name, const void *data, size_t len)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+    fclose(f);
+    return path;
+}
+
+static void text_map_rows_flipped(void **state)
+{
+    (void)state;
+    const char txt[] = "1 2 3\n\n4 5 6\n";
+    hj_map m = {0};
+    hj_error err;
+    assert_int_equal(hj_map_read(&m, write_file("m.txt", txt, strlen(txt)), 0, 1, &err), HJ_OK);
+    assert_int_equal(m.mx, 3);
+    assert_int_equal(m.my, 2);
+    const double bottom_first[6] = {4, 5, 6, 1, 2, 3};
+    for (int k = 0; k < 6; k++) assert_true(m.v[k] == bottom_first[k]);
+    hj_map_free(&m);
+    assert_null(m.v);
+}
+
+static void pgm_maps(void **state)
+{
+    (void)state;
+    hj_map m = {0};
+    const char p2[] = "P2\n# a comment\n2 2\n4\n0 4\n2 1\n";
+    assert_int_equal(hj_map_read(&m, write_file("a.pgm", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    assert_int_equal(m.mx, 2);
+    const double p2v[4] = {2, 1.5, 1, 3}; /* f = 1 + 2 v / 4, bottom row first */
+    for (int k = 0; k < 4; k++) assert_true(m.v[k] == p2v[k]);
+    hj_map_free(&m);
+    const unsigned char p5[] = {'P', '5', '\n', '2', ' ', '2', '\n', '2', '5', '5', '\n', 0, 255, 51, 102};
+    assert_int_equal(hj_map_read_pgm(&m, write_file("b.pgm", p5, sizeof p5), 0, 1, NULL), HJ_OK);
+    assert_close(m.v[0], 0.2, 1e-15, 0);
+    assert_close(m.v[3], 1.0, 1e-15, 0);
+    hj_map_free(&m);
+}
+
+static void malformed_maps(void **state)
+{
+    (void)state;
+    hj_map m = {0};
+    hj_error err;
+    assert_int_equal(hj_map_read(&m, "/nonexistent.txt", 0, 1, &err), HJ_EIO);
+    assert_non_null(strstr(err.msg, "cannot read /nonexistent.txt"));
+    const char word[] = "1 2\n3 x\n", ragged[] = "1 2\n3\n", negative[] = "1 -2\n3 4\n", small[] = "1 2\n";
+    assert_int_equal(hj_map_read(&m, write_file("w.txt", word, strlen(word)), 0, 1, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, ":2: 'x' is not a number"));
+    assert_int_equal(hj_map_read(&m, write_file("r.txt", ragged, strlen(ragged)), 0, 1, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, "previous rows have 2"));
+    assert_int_equal(hj_map_read(&m, write_file("n.txt", negative, strlen(negative)), 0, 1, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_map_read(&m, write_file("s.txt", small, strlen(small)), 0, 1, &err), HJ_EFORMAT);
+    const char cut[] = "P2\n2 2\n4\n0 4\n2\n";
+    assert_int_equal(hj_map_read(&m, write_file("c.pgm", cut, strlen(cut)), 0, 1, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, "truncated"));
+    assert_null(m.v);
+}
+
+static void bilinear_and_clamped(void **state)
+{
+    (void)state;
+    double v[6] = {0, 1, 2, 10, 11, 12}; /* rows y = 0 and y = 1, x = 0, 1, 2 */
+    hj_map m = {.mx = 3, .my = 2, .v = v, .xmin = 0, .xmax = 2, .ymin = 0, .ymax = 1};
+    assert_close(hj_map_eval(1, 0, &m), 1, 1e-15, 0);
+    assert_close(hj_map_eval(0.5, 0.5, &m), 5.5, 1e-15, 0);
+    assert_close(hj_map_eval(2, 1, &m), 12, 1e-15, 0);
+    assert_close(hj_map_eval(-1, 2, &m), 10, 1e-15, 0); /* outside: the nearest edge */
+    hj_map c = {.constant = 0.7};
+    assert_true(hj_map_eval(3, 4, &c) == 0.7);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(text_map_rows_flipped),
+        cmocka_unit_test(pgm_maps),
+        cmocka_unit_test(malformed_maps),
+        cmocka_unit_test(bilinear_and_clamped),
+    };
+    return cmocka_run_group_tests_name("hj_map", tests, hj_test_mkdir, hj_test_rmdir);
+}

@@ -1,0 +1,264 @@
+/* Unit tests of common/hj_ub, the UB-HJB scheme: one-dimensional fluxes,
+ * the exact advection of Table 6, the band against the full grid on every
+ * store, the errors of section 4 on the band and on the full grid. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ub.h"
+
+static void flux_constant_and_step(void **state)
+{
+    (void)state;
+    const double c[5] = {1, 1, 1, 1, 1}, mu[3] = {0.7, 0.7, 0.7};
+    assert_true(hj_ub_update(c, mu) == 1);
+    /* a step moving right by mu of a cell: the first -1 cell gets 2 mu - 1 */
+    const double w[5] = {1, 1, -1, -1, -1};
+    assert_close(hj_ub_update(w, mu), 2 * 0.7 - 1, 1e-15, 0);
+    const double w2[5] = {1, 1, 1, -1, -1};
+    assert_true(hj_ub_update(w2, mu) == 1);
+    /* the same to the left */
+    const double wl[5] = {-1, -1, -1, 1, 1}, mul[3] = {-0.4, -0.4, -0.4};
+    assert_close(hj_ub_update(wl, mul), 2 * 0.4 - 1, 1e-15, 0);
+    /* anti-diffusion: a fractional cell behind a sharp front empties first */
+    const double w3[5] = {1, 1, 0, -1, -1}, mu3[3] = {0.5, 0.5, 0.5};
+    assert_close(hj_ub_update(w3, mu3), 1, 1e-15, 0);
+    /* a pulse narrower than a cell (covered fraction a) is spread, not
+     * moved: a (1 - c) stays, a c goes to the next cell
+     * (paper3_ultrabee/overview.md, Table 13's excess past the cap) */
+    const double a = 0.3, mup[3] = {0.7, 0.7, 0.7};
+    const double pj[5] = {1, 1, 1 - 2 * a, 1, 1}, pj1[5] = {1, 1 - 2 * a, 1, 1, 1};
+    assert_close(hj_ub_update(pj, mup), 1 - 2 * a * (1 - 0.7), 1e-15, 0);
+    assert_close(hj_ub_update(pj1, mup), 1 - 2 * a * 0.7, 1e-15, 0);
+}
+
+/* ---- 2-D and 3-D test problems --------------------------------------------- */
+
+typedef struct {
+    double lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX]; /* the target box */
+    double vel[HJ_BAND_DMAX];
+    int kind; /* 0 constant, 1 rotation, 2 rendez-vous (1, a), a = +-1; 3 constant, box through the
+                 grid's edge x1 = -2, flow entering there (the boundary value 1 flows in) */
+    double t; /* time of the exact solution */
+} box_case;
+
+static void dyn(double t, const double *x, int a, double *f, void *vctx)
+{
+    (void)t;
+    const box_case *c = vctx;
+    if (c->kind == 0 || c->kind == 3) { f[0] = c->vel[0]; f[1] = c->vel[1]; f[2] = c->vel[2]; }
+    else if (c->kind == 1) { f[0] = -x[1]; f[1] = x[0]; f[2] = 0.3; }
+    else { f[0] = 1; f[1] = a ? 1 : -1; f[2] = a ? -0.5 : 0.5; }
+}
+
+static double avg_box(const double *blo, const double *bhi, void *vctx)
+{
+    const box_case *c = vctx;
+    return hj_ub_avg_box(2 + (c->hi[2] > c->lo[2]), blo, bhi, c->lo, c->hi);
+}
+
+/* exact for the constant advection in 2-D */
+static int inside_moved(const double *x, void *vctx)
+{
+    const box_case *c = vctx;
+    for (int k = 0; k < 2; k++) {
+        const double y = x[k] - c->vel[k] * c->t;
+        if (y < c->lo[k] || y > c->hi[k]) return 0;
+    }
+    return 1;
+}
+
+static hj_ub_problem square_problem(box_case *c, int n)
+{
+    hj_ub_problem pb = {
+        .d = 2, .n = n, .lo = {-2, -2}, .hi = {2, 2}, .ncontrols = 1, .dyn = dyn, .cfl = 0.9, .boundary = 1,
+        .avg0 = avg_box, .ctx = c,
+    };
+    memcpy(pb.bbox_lo, c->lo, sizeof pb.bbox_lo);
+    memcpy(pb.bbox_hi, c->hi, sizeof pb.bbox_hi);
+    return pb;
+}
+
+/* Table 6: f = (-2, -1), T = 1.  The scheme moves the cell averages
+ * exactly: every value equals the average (7b) of the moved square.  At
+ * N = 50 the signs then match the exact ones everywhere (L1 error 0); at
+ * N = 100, 200 one corner cell has its centre inside but less than half of
+ * it covered (0.625^2), so its sign differs whatever the scheme. */
+static void exact_advection_table6(void **state)
+{
+    (void)state;
+    const int sizes[] = {50, 100, 200};
+    for (int s = 0; s < 3; s++) {
+        box_case c = {{0.5, -0.5, 0}, {1.5, 0.5, 0}, {-2, -1, 0}, 0, 0};
+        hj_ub_problem pb = square_problem(&c, sizes[s]);
+        hj_ub_solver sv;
+        hj_error err;
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+        assert_int_equal(hj_ub_run(&sv, 1.0, &err), HJ_OK);
+        assert_true(sv.t == 1.0);
+        const double moved_lo[2] = {-1.5, -1.5}, moved_hi[2] = {-0.5, -0.5};
+        for (int i = 0; i < pb.n; i++)
+            for (int j = 0; j < pb.n; j++) {
+                int idx[2] = {i, j};
+                double x[2], blo[2], bhi[2];
+                hj_ub_centre(&sv, idx, x);
+                for (int k = 0; k < 2; k++) { blo[k] = x[k] - sv.dx[k] / 2; bhi[k] = x[k] + sv.dx[k] / 2; }
+                const double *p = hj_band_find(sv.s, idx), exact = hj_ub_avg_box(2, blo, bhi, moved_lo, moved_hi);
+                if (p) assert_close(*p, exact, 1e-12, 0);
+                else assert_true(exact == 1 || exact == -1);
+            }
+        c.t = 1.0;
+        double l1, haus;
+        assert_int_equal(hj_ub_errors(&sv, inside_moved, &c, &l1, &haus, &err), HJ_OK);
+        if (s == 0) assert_true(l1 == 0);
+        else assert_close(l1, sv.dx[0] * sv.dx[1], 1e-15, 1e-12);
+        assert_true(haus <= 1.1 * sv.dx[0]);
+        hj_ub_free(&sv);
+    }
+}
+
+/* The band (every sparse store) gives the same values as the full grid. */
+static void band_equals_full_grid(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 3; d++)
+        for (int kind = 0; kind < 4; kind++) {
+            box_case c = {{0.3, -0.5, -0.4}, {1.1, 0.5, 0.2}, {-1.3, 0.7, 0.4}, kind, 0};
+            if (kind == 3) c = (box_case){{-3, -0.5, -0.4}, {0.1, 0.5, 0.2}, {0.9, 0.3, 0.2}, kind, 0};
+            if (d == 2) c.lo[2] = c.hi[2] = 0;
+            hj_ub_problem pb = square_problem(&c, d == 2 ? 41 : 17);
+            pb.d = d;
+            pb.lo[2] = -2;
+            pb.hi[2] = 2;
+            pb.ncontrols = kind == 2 ? 2 : 1;
+            pb.target = kind == 1;
+            pb.dtmax = 0.02; /* the same steps on the band and on the full grid */
+            hj_ub_solver full;
+            assert_int_equal(hj_ub_init(&full, &pb, HJ_BAND_FS, NULL), HJ_OK);
+            for (int st = 0; st < 12; st++) assert_int_equal(hj_ub_step(&full, 0.8, NULL), HJ_OK);
+            for (int sk = HJ_BAND_FLS; sk < HJ_BAND_NKINDS; sk++) {
+                hj_ub_solver band;
+                assert_int_equal(hj_ub_init(&band, &pb, sk, NULL), HJ_OK);
+                for (int st = 0; st < 12; st++) assert_int_equal(hj_ub_step(&band, 0.8, NULL), HJ_OK);
+                assert_true(band.t == full.t);
+                assert_true(hj_band_count(band.s) < hj_band_count(full.s));
+                int idx[HJ_BAND_DMAX] = {0};
+                int64_t total = 1;
+                for (int k = 0; k < d; k++) total *= pb.n;
+                for (int64_t l = 0; l < total; l++) {
+                    int64_t r = l;
+                    for (int k = d - 1; k >= 0; k--) { idx[k] = (int)(r % pb.n); r /= pb.n; }
+                    const double vf = *hj_band_find(full.s, idx);
+                    const double *vb = hj_band_find(band.s, idx);
+                    if (vb) assert_close(*vb, vf, 1e-13, 0);
+                    else assert_true(vf == 1 || vf == -1);
+                }
+                hj_ub_free(&band);
+            }
+            hj_ub_free(&full);
+        }
+}
+
+static double avg_left(const double *blo, const double *bhi, void *vctx)
+{
+    (void)vctx;
+    const double lo[2] = {-10, -10}, hi[2] = {0.13, 10};
+    return hj_ub_avg_box(2, blo, bhi, lo, hi);
+}
+
+static int inside_left(const double *x, void *vctx)
+{
+    (void)vctx;
+    return x[0] <= 0.13;
+}
+
+/* Lines (along x2) entirely inside the set store no node: their values
+ * come from the neighbouring lines; the L1 error of the data is 0.  (The
+ * edge is off the nodes: a node on the edge would be a tie.) */
+static void errors_recover_unstored_lines(void **state)
+{
+    (void)state;
+    box_case c = {{0}, {0}, {0, 0, 0}, 0, 0};
+    hj_ub_problem pb = square_problem(&c, 41);
+    pb.avg0 = avg_left;
+    pb.boundary = -1; /* else the -1 cells on the grid's edge are stored (they border the boundary value) */
+    pb.bbox_lo[0] = pb.bbox_lo[1] = -2;
+    pb.bbox_hi[0] = 0.13;
+    pb.bbox_hi[1] = 2;
+    hj_ub_solver sv;
+    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, NULL), HJ_OK);
+    assert_true(hj_band_count(sv.s) < 41 * 4);
+    double l1, haus;
+    assert_int_equal(hj_ub_errors(&sv, inside_left, NULL, &l1, &haus, NULL), HJ_OK);
+    assert_true(l1 == 0);
+    assert_close(haus, 0.03, 1e-6 * sv.dx[0], 0); /* centres at x = 0.1, front at 0.13; bisection to 1e-6 dx */
+    hj_ub_free(&sv);
+}
+
+static void averages(void **state)
+{
+    (void)state;
+    const double blo[2] = {0, 0}, bhi[2] = {1, 1}, clo[2] = {0.5, -1}, chi[2] = {3, 0.25};
+    assert_close(hj_ub_avg_box(2, blo, bhi, clo, chi), 1 - 2 * 0.125, 1e-15, 0);
+    const double c[3] = {0, 0, 0}, lo3[3] = {-1, -1, -1}, hi3[3] = {1, 1, 1};
+    assert_close(hj_ub_avg_ball(3, lo3, hi3, c, 0.5, 4), 0.75, 1e-15, 0); /* 8 of 64 samples inside */
+    assert_true(hj_ub_avg_ball(3, lo3, hi3, c, 2, 4) == -1);  /* the box inside the ball */
+    const double far[3] = {5, 0, 0};
+    assert_true(hj_ub_avg_ball(3, lo3, hi3, far, 1, 4) == 1);
+}
+
+/* hj_front_grid_errors on the values of a full store gives the errors of
+ * hj_ub_errors (the level set runs are measured as UB is), in 2-D and
+ * 3-D (lines of lines: the signs of the lower lines come from a ring), with
+ * the exact front sampled on the centre lines and on lines refined 4 times. */
+typedef struct {
+    hj_ub_solver *sv;
+} field_ctx;
+
+static double field_value(const int *idx, void *vctx)
+{
+    field_ctx *f = vctx;
+    const double *p = hj_band_find(f->sv->s, idx);
+    return p ? *p : NAN;
+}
+
+static void field_errors_equal_solver_errors(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 3; d++)
+      for (int sub = 1; sub <= 4; sub += 3) {
+        box_case c = {{0.5, -0.5, -0.4}, {1.5, 0.5, d == 3 ? 0.4 : -0.4}, {-2, -1, 0}, 1, 0};
+        hj_ub_problem pb = square_problem(&c, d == 3 ? 21 : 41);
+        pb.d = d;
+        pb.front_sub = sub;
+        pb.lo[2] = -2;
+        pb.hi[2] = 2;
+        hj_ub_solver sv;
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
+        assert_int_equal(hj_ub_run(&sv, 0.4, NULL), HJ_OK);
+        c.t = 0.4;
+        double l1, haus, l1f, hausf;
+        int64_t cells = -1;
+        assert_int_equal(hj_ub_errors(&sv, inside_moved, &c, &l1, &haus, NULL), HJ_OK);
+        field_ctx fc = {&sv};
+        assert_int_equal(hj_front_grid_errors(d, pb.n, pb.lo, sv.dx, field_value, &fc, inside_moved, &c, pb.front_sub, &l1f,
+                                         &hausf, &cells, NULL),
+                         HJ_OK);
+        assert_true(l1 > 0 && haus > 0 && cells > 0);
+        assert_true(l1f == l1);
+        assert_true(hausf == haus);
+        hj_ub_free(&sv);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+        cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
+        cmocka_unit_test(averages),
+        cmocka_unit_test(field_errors_equal_solver_errors),
+    };
+    return cmocka_run_group_tests_name("hj_ub", tests, NULL, NULL);
+}
