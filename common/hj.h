@@ -20,8 +20,11 @@
 #include "hj_io.h"
 #include "hj_cli.h"
 
-/* Fast sweeping for the Eikonal equation (paper 1) */
+/* Fast sweeping for the Eikonal equation (paper 1): the solver, speed
+ * maps read from files, inflow curves */
 #include "hj_fsm.h"
+#include "hj_map.h"
+#include "hj_curve.h"
 
 /* The level set kernel (paper 2) */
 #include "hj_ls_grid.h"
@@ -32,6 +35,13 @@
 #include "hj_ls_helper.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_io.h"
+
+/* Ultra-Bee on sparse narrow bands (paper 3): the band stores, the UB-HJB
+ * scheme, front errors, the minimal time function */
+#include "hj_band.h"
+#include "hj_ub.h"
+#include "hj_front.h"
+#include "hj_mintime.h"
 
 /* Convergence orders and published-versus-computed comparison */
 #include "hj_fit.h"
