@@ -210,7 +210,7 @@ report: $(REPORT)
 define build_report
 	@mkdir -p $(RESULTS)
 	$(HJCHECK) --results $(RESULTS) $(CHECKFLAGS) --no-fail $(CHECK_PAPERS) > $(RESULTS)/check-summary.txt
-	report/build.sh $(RESULTS) $(REPORT_DIR) $(HJCHECK)
+	report/build.sh $(RESULTS) $(REPORT_DIR) $(HJCHECK) $(if $(filter 1,$(QUICK)),quick)
 endef
 
 $(REPORT): $(HJCHECK) $(REPORT_INPUTS) report/build.sh report/intro.md $(wildcard */published/*.tsv */accepted.tsv)

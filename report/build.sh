@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# build.sh RESULTS OUTDIR HJCHECK -- assemble report/out/report.html.
+# build.sh RESULTS OUTDIR HJCHECK [quick] -- assemble OUTDIR/report.html.
 #
 # The report is generated, never edited: report/intro.md, the comparison
 # rules (hjcheck --rules), the check summary, then for each paper its
@@ -9,7 +9,7 @@
 # the fitted orders (<table>.fit.tsv) and its figures.  Markdown goes
 # through cmark (CommonMark); tables are emitted as HTML blocks.
 set -euo pipefail
-res=$1 out=$2 hjcheck=$3
+res=$1 out=$2 hjcheck=$3 quick=${4:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
@@ -146,6 +146,7 @@ md=$tmp/report.md
                 -) ;;
                 *.md) if [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'
                       elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
+                      elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
                       else printf '\n*missing: %s*\n\n' "$f"; fi ;;
                 *) if [ -f "$res/$name/$f" ]; then
                        embed_figure "$res/$name/$f" "$f"
