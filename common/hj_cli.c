@@ -169,9 +169,11 @@ void hj_cli_help(const hj_cli_spec *spec, FILE *out)
         case HJ_OPT_FLAG:
             break;
         }
+        if (o->dflt) snprintf(dflt, sizeof dflt, " (default %s)", o->dflt);
         fprintf(out, "  %-22s %s%s%s\n", head, o->help ? o->help : "", range, dflt);
     }
     fprintf(out, "  %-22s %s\n", "--help", "this text");
+    if (spec->epilog) fputs(spec->epilog, out);
 }
 
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)

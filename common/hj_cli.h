@@ -46,6 +46,7 @@ typedef struct {
     const char *help;    /* one line */
     const char *const *choices; /* CHOICE */
     int *count, maxn;    /* LONG_LIST */
+    const char *dflt;    /* shown as the default instead of the value (e.g. "the paper's") */
     int seen;            /* set by hj_cli_parse when given */
 } hj_cli_opt;
 
@@ -54,6 +55,7 @@ typedef struct {
     const char *summary; /* one line: what the program does */
     hj_cli_opt *opts;
     int nopts;
+    const char *epilog;  /* optional text after the options */
 } hj_cli_spec;
 
 /* Parse argv[1..argc-1] against spec.  Returns HJ_OK, with *help = 1 if

@@ -128,6 +128,8 @@ int main(int argc, char **argv)
     if (!speed_file && cst < 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give --speed FILE or --speed-const F (see --help)");
     if (speed_file && cst >= 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give only one of --speed and --speed-const");
     if (nsrc == 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give at least one --source X,Y");
+    /* A bad output location fails now, not after the solve. */
+    if (strcmp(out_path, "-") && hj_out_check(out_path, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
 
     hj_map m = {0};
     if (speed_file) {

@@ -261,46 +261,13 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
     return hj_out_commit(&tab, err);
 }
 
-/* The options that take a value (all others but --help, --quick are unknown). */
-static int takes_value(const char *a)
-{
-    static const char *const opts[] = {"--sizes", "--out-dir", "--delta", "--eps", "--eps-h2", "--band", "--grid-N", "--max-iter", "--stop-norm", "--exclude", "--l1", "--strategy", "--richardson-box", "--guess", "--guess-noise", "--seed"};
-    for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
-        if (!strcmp(a, opts[k])) return 1;
-    return 0;
-}
 
-static void usage(FILE *f, const p1_study *st, const char *extra)
+/* Index of v in vals[0..n-1] (0 if absent): the default of a choice. */
+static int index_of(const int *vals, int n, int v)
 {
-    fprintf(f,
-            "usage: %s [options]\n"
-            "Reproduces %s of Huang, Shu & Zhang (2008); see the comment at the top of its source.\n"
-            "  --sizes N1,N2,...   grid sizes (intervals per direction; default the published ones)\n"
-            "  --quick             only the %d coarsest published sizes\n"
-            "  --out-dir DIR       where to write %s.tsv and companions (default .)\n"
-            "  --strategy S        richardson | lax-wendroff | first-order (default: the paper's)\n"
-            "  --delta X           stopping threshold of (2.8) (default 1e-11)\n"
-            "  --stop-norm N       l1int (h^2 sum |change|, default) | l1 (mean |change|) | linf\n"
-            "  --eps X             WENO epsilon (default: the paper's for this example)\n"
-            "  --eps-h2 C          WENO epsilon = C h^2\n"
-            "  --l1 M              integral (h^2 sum |e|, default) | mean (mean |e| over measured nodes)\n"
-            "  --exclude M         distance (default: nodes closer than 0.15 to a singular centre are not measured;\n"
-            "                      a band as in literal) | literal (the paper's boxes, edges tested on the computed\n"
-            "                      coordinates) | closed (nodes within 1e-9 h of a box edge are not measured) | open (they are)\n"
-            "  --band B            Category III: horizontal/vertical distance < B h to a curve (default 3)\n"
-            "  --richardson-box M  node (default: [-2h, 2h]^2 around each Category III node of a curve, widened\n"
-            "                      by one node of each grid h, h/2, h/4) | tight (the same box without that node)\n"
-            "                      | piece (one box per inflow curve: exact where first order sweeps are)\n"
-            "  --guess G           initial guess: first order sweeps from the boundary condition alone (physical)\n"
-            "                      or also holding the Category III values (category-iii); default: %s\n"
-            "  --guess-noise R     multiply each Category IV value of the guess by 1 + R u, u uniform in [-1, 1)\n"
-            "                      (round-off sensitivity; default 0: no perturbation)\n"
-            "  --seed S            seed of that perturbation (default 1)\n"
-            "  --max-iter N        at most N iterations (default 10000)\n"
-            "  --grid-N N          write the solution grid of this N (default 80)\n"
-            "  --help              this text\n%s",
-            st->program, st->table, st->nquick, st->table,
-            st->guess == HJ_GUESS_PHYSICAL ? "physical" : "category-iii", extra ? extra : "");
+    for (int k = 0; k < n; k++)
+        if (vals[k] == v) return k;
+    return 0;
 }
 
 int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
@@ -311,75 +278,83 @@ int p1_main(int argc, char **argv, const p1_study *st, const char *usage_extra)
     s.out_dir = ".";
     s.delta = 1e-11;
     s.band = 3;
-    s.exclude_mode = EXCL_DISTANCE; /* see excluded() and the overview */
-    s.l1_integral = 1;
-    s.eps = -1;
-    s.stop_norm = HJ_STOP_L1_INTEGRAL;
-    s.max_iter = 10000;
-    s.grid_N = 80;
-    s.strategy = st->strategy;
-    s.guess = st->guess;
     s.seed = 1;
+    s.grid_N = 80;
     s.nsizes = st->nsizes;
     memcpy(s.sizes, st->sizes, sizeof(long) * (size_t)st->nsizes);
+    long max_iter = 10000;
+    double eps = 1e-6, eps_h2 = 1;
+    int quick = 0;
+    /* Choices: the words, and the values they stand for. */
+    static const char *const strategy_w[] = {"richardson", "lax-wendroff", "first-order", NULL};
+    static const int strategy_v[] = {HJ_BC_RICHARDSON, HJ_BC_LAX_WENDROFF, HJ_BC_FIRST_ORDER};
+    static const char *const norm_w[] = {"l1int", "l1", "linf", NULL};
+    static const int norm_v[] = {HJ_STOP_L1_INTEGRAL, HJ_STOP_L1_MEAN, HJ_STOP_LINF};
+    static const char *const l1_w[] = {"integral", "mean", NULL};
+    /* distance (the default): see excluded() and the overview */
+    static const char *const exclude_w[] = {"distance", "literal", "closed", "open", NULL};
+    static const int exclude_v[] = {EXCL_DISTANCE, EXCL_LITERAL, EXCL_CLOSED, EXCL_OPEN};
+    static const char *const box_w[] = {"node", "tight", "piece", NULL};
+    static const int box_v[] = {HJ_RICH_BOX_NODE, HJ_RICH_BOX_TIGHT, HJ_RICH_BOX_PIECE};
+    static const char *const guess_w[] = {"physical", "category-iii", NULL};
+    static const int guess_v[] = {HJ_GUESS_PHYSICAL, HJ_GUESS_WITH_III};
+    int strategy = index_of(strategy_v, 3, st->strategy), norm = 0, l1 = 0, exclude = 0, box = 0,
+        guess = index_of(guess_v, 2, st->guess);
+    hj_cli_opt opts[] = {
+        {.name = "--sizes", .type = HJ_OPT_LONG_LIST, .value = s.sizes, .min = 8, .max = 10000, .metavar = "N,N,...",
+         .help = "grid sizes (intervals per direction)", .count = &s.nsizes, .maxn = MAX_SIZES},
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "only the coarsest published sizes"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &s.out_dir, .metavar = "DIR",
+         .help = "where to write the table and its companions"},
+        {.name = "--strategy", .type = HJ_OPT_CHOICE, .value = &strategy, .choices = strategy_w, .metavar = "S",
+         .help = "inflow boundary treatment"},
+        {.name = "--delta", .type = HJ_OPT_DOUBLE, .value = &s.delta, .min = 1e-300, .max = 1, .metavar = "X",
+         .help = "stopping threshold of (2.8)"},
+        {.name = "--stop-norm", .type = HJ_OPT_CHOICE, .value = &norm, .choices = norm_w, .metavar = "N",
+         .help = "norm of (2.8): h^2 sum |change|, mean |change|, max |change|"},
+        {.name = "--eps", .type = HJ_OPT_DOUBLE, .value = &eps, .min = 1e-300, .max = 1, .metavar = "X",
+         .help = "WENO epsilon", .dflt = "the paper's for this example"},
+        {.name = "--eps-h2", .type = HJ_OPT_DOUBLE, .value = &eps_h2, .min = 1e-300, .max = 1e6, .metavar = "C",
+         .help = "WENO epsilon = C h^2", .dflt = "none"},
+        {.name = "--l1", .type = HJ_OPT_CHOICE, .value = &l1, .choices = l1_w, .metavar = "M",
+         .help = "L1 error: h^2 sum |e|, or mean |e| over the measured nodes"},
+        {.name = "--exclude", .type = HJ_OPT_CHOICE, .value = &exclude, .choices = exclude_w, .metavar = "M",
+         .help = "nodes not measured: within 0.15 of a singular centre (distance), the paper's boxes as written "
+                 "(literal), with their edges (closed) or without (open)"},
+        {.name = "--band", .type = HJ_OPT_DOUBLE, .value = &s.band, .min = 1, .max = 10, .metavar = "B",
+         .help = "Category III: horizontal/vertical distance < B h to a curve"},
+        {.name = "--richardson-box", .type = HJ_OPT_CHOICE, .value = &box, .choices = box_w, .metavar = "M",
+         .help = "Richardson boxes of a curve: [-2h, 2h]^2 around each Category III node widened by one node of "
+                 "each grid (node), without it (tight), one box per curve (piece)"},
+        {.name = "--guess", .type = HJ_OPT_CHOICE, .value = &guess, .choices = guess_w, .metavar = "G",
+         .help = "initial guess: first order sweeps from the boundary condition alone, or also holding Category III"},
+        {.name = "--guess-noise", .type = HJ_OPT_DOUBLE, .value = &s.guess_noise, .min = 0, .max = 0.5, .metavar = "R",
+         .help = "multiply each Category IV value of the guess by 1 + R u, u uniform in [-1, 1)"},
+        {.name = "--seed", .type = HJ_OPT_LONG, .value = &s.seed, .min = 0, .max = 2147483647L, .metavar = "S",
+         .help = "seed of that perturbation"},
+        {.name = "--max-iter", .type = HJ_OPT_LONG, .value = &max_iter, .min = 1, .max = 10000000, .metavar = "N",
+         .help = "at most N iterations"},
+        {.name = "--grid-N", .type = HJ_OPT_LONG, .value = &s.grid_N, .min = 8, .max = 10000, .metavar = "N",
+         .help = "write the solution grid of this N"},
+    };
+    char summary[256];
+    snprintf(summary, sizeof summary,
+             "Reproduces %s of Huang, Shu & Zhang (2008); see the comment at the top of its source.", st->table);
+    hj_cli_spec spec = {prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), usage_extra};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int rc = HJ_OK;
-        if (!strcmp(a, "--help")) { usage(stdout, st, usage_extra); return 0; }
-        if (!strcmp(a, "--quick")) { s.nsizes = st->nquick; continue; }
-        if (strncmp(a, "--", 2) != 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", a);
-        if (!takes_value(a)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        i++;
-        if (!strcmp(a, "--sizes")) rc = hj_parse_long_list(v, "--sizes", 8, 10000, s.sizes, MAX_SIZES, &s.nsizes, &err);
-        else if (!strcmp(a, "--out-dir")) s.out_dir = v;
-        else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 0, 1, &s.delta, &err);
-        else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &s.eps, &err), s.eps_h2 = 0;
-        else if (!strcmp(a, "--eps-h2")) rc = hj_parse_double(v, "--eps-h2", 1e-300, 1e6, &s.eps, &err), s.eps_h2 = 1;
-        else if (!strcmp(a, "--band")) rc = hj_parse_double(v, "--band", 1, 10, &s.band, &err);
-        else if (!strcmp(a, "--guess-noise")) rc = hj_parse_double(v, "--guess-noise", 0, 0.5, &s.guess_noise, &err);
-        else if (!strcmp(a, "--seed")) rc = hj_parse_long(v, "--seed", 0, 2147483647L, &s.seed, &err);
-        else if (!strcmp(a, "--grid-N")) rc = hj_parse_long(v, "--grid-N", 8, 10000, &s.grid_N, &err);
-        else if (!strcmp(a, "--max-iter")) {
-            long m;
-            rc = hj_parse_long(v, "--max-iter", 1, 10000000, &m, &err);
-            s.max_iter = (int)m;
-        } else if (!strcmp(a, "--stop-norm")) {
-            if (!strcmp(v, "l1")) s.stop_norm = HJ_STOP_L1_MEAN;
-            else if (!strcmp(v, "l1int")) s.stop_norm = HJ_STOP_L1_INTEGRAL;
-            else if (!strcmp(v, "linf")) s.stop_norm = HJ_STOP_LINF;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--stop-norm must be l1, l1int or linf, got '%s'", v);
-        } else if (!strcmp(a, "--exclude")) {
-            if (!strcmp(v, "open")) s.exclude_mode = EXCL_OPEN;
-            else if (!strcmp(v, "closed")) s.exclude_mode = EXCL_CLOSED;
-            else if (!strcmp(v, "literal")) s.exclude_mode = EXCL_LITERAL;
-            else if (!strcmp(v, "distance")) s.exclude_mode = EXCL_DISTANCE;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--exclude must be distance, literal, open or closed, got '%s'", v);
-        } else if (!strcmp(a, "--l1")) {
-            if (!strcmp(v, "mean")) s.l1_integral = 0;
-            else if (!strcmp(v, "integral")) s.l1_integral = 1;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--l1 must be mean or integral, got '%s'", v);
-        } else if (!strcmp(a, "--richardson-box")) {
-            if (!strcmp(v, "node")) s.richardson_box = HJ_RICH_BOX_NODE;
-            else if (!strcmp(v, "tight")) s.richardson_box = HJ_RICH_BOX_TIGHT;
-            else if (!strcmp(v, "piece")) s.richardson_box = HJ_RICH_BOX_PIECE;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--richardson-box must be node, tight or piece, got '%s'", v);
-        } else if (!strcmp(a, "--guess")) {
-            if (!strcmp(v, "physical")) s.guess = HJ_GUESS_PHYSICAL;
-            else if (!strcmp(v, "category-iii")) s.guess = HJ_GUESS_WITH_III;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--guess must be physical or category-iii, got '%s'", v);
-        } else if (!strcmp(a, "--strategy")) {
-            if (!strcmp(v, "richardson")) s.strategy = HJ_BC_RICHARDSON;
-            else if (!strcmp(v, "lax-wendroff")) s.strategy = HJ_BC_LAX_WENDROFF;
-            else if (!strcmp(v, "first-order")) s.strategy = HJ_BC_FIRST_ORDER;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--strategy must be richardson, lax-wendroff or first-order, got '%s'", v);
-        } else {
-            hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    if (quick && opts[0].seen) hj_cli_fail(prog, HJ_EXIT_USAGE, "give --quick or --sizes, not both");
+    if (opts[6].seen && opts[7].seen) hj_cli_fail(prog, HJ_EXIT_USAGE, "give --eps or --eps-h2, not both");
+    if (quick) s.nsizes = st->nquick;
+    s.eps = opts[6].seen ? eps : opts[7].seen ? eps_h2 : -1; /* < 0: the case's own */
+    s.eps_h2 = opts[7].seen;
+    s.max_iter = (int)max_iter;
+    s.strategy = (hj_bc_strategy)strategy_v[strategy];
+    s.stop_norm = (hj_stop_norm)norm_v[norm];
+    s.l1_integral = l1 == 0;
+    s.exclude_mode = exclude_v[exclude];
+    s.richardson_box = (hj_rich_box)box_v[box];
+    s.guess = (hj_fsm_guess)guess_v[guess];
     if (hj_mkdirs(s.out_dir, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     static row rows[MAX_CASES][MAX_SIZES];
     for (int ci = 0; ci < st->ncases; ci++)

@@ -414,7 +414,7 @@ static int write_fig(const p3_args *a, const char *name, const ex2d *e, int n, c
 int main(int argc, char **argv)
 {
     p3_args a = {.prog = "examples2d"};
-    p3_args_parse(&a, argc, argv, "Tables 6-10: UB-HJB on the 2-D examples 1-3 of section 4.", NULL);
+    p3_args_parse(&a, argc, argv, "Tables 6-10: UB-HJB on the 2-D examples 1-3 of section 4.", NULL, 6, 10);
     const table_spec specs[] = {
         {"table6", {1, {0.5, -0.5}, {1.5, 0.5}, 0, 1, 0, 0}, {50, 100, 200, 400}, 4},
         {"table7", {2, {0.5, -0.5}, {1.5, 0.5}, 0, 2 * HJ_PI, 0, 0}, {50, 100, 200, 400}, 4},

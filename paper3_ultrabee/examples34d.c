@@ -290,7 +290,7 @@ static int run(exnd *e, int n, const char *out_dir, int fig, run_result *res, hj
 int main(int argc, char **argv)
 {
     p3_args a = {.prog = "examples34d"};
-    p3_args_parse(&a, argc, argv, "Tables 11-13: UB-HJB on the 3-D and 4-D examples 4-6 of section 4.", NULL);
+    p3_args_parse(&a, argc, argv, "Tables 11-13: UB-HJB on the 3-D and 4-D examples 4-6 of section 4.", NULL, 11, 13);
     hj_error err;
     static const long s11[] = {50, 100, 200, 400, 800}, s12[] = {25, 50, 100, 200}, s13[] = {25, 51, 101, 201};
     for (int table = 11; table <= 13; table++) {

@@ -85,7 +85,7 @@ static int run(hj_band_kind kind, int n, double *secs, size_t *d0, double *bytes
 int main(int argc, char **argv)
 {
     p3_args a = {.prog = "hjbstep"};
-    p3_args_parse(&a, argc, argv, "Table 5: CPU time of one UB-HJB step, FLS against SSD.", NULL);
+    p3_args_parse(&a, argc, argv, "Table 5: CPU time of one UB-HJB step, FLS against SSD.", NULL, 5, 5);
     static const long published[] = {50, 100, 200, 400, 800, 1600};
     const long *sizes = a.nsizes ? a.sizes : published;
     const int ns = a.nsizes ? a.nsizes : a.quick ? 2 : 6;

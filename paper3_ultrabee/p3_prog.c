@@ -8,40 +8,30 @@
 
 #include "hj_cli.h"
 
-void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra)
+void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra, long first_table,
+                   long last_table)
 {
-    hj_error err;
     a->out_dir = ".";
     a->quick = 0;
     a->nsizes = 0;
     a->max_n = 0;
     a->ntables = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(o, "--help")) {
-            printf("Usage: %s [options]\n%s\n"
-                   "  --quick           reduced sizes (CI)\n"
-                   "  --out-dir DIR     where to write the tables (default .)\n"
-                   "  --sizes N,N,...   the grid sizes to run instead of the published ones\n"
-                   "  --max-n N         skip the sizes above N\n"
-                   "  --tables T,T,...  only these tables (numbers, e.g. 2,3)\n"
-                   "  --help            this text\n%s",
-                   a->prog, summary, extra ? extra : "");
-            exit(0);
-        }
-        if (!strcmp(o, "--quick")) { a->quick = 1; continue; }
-        if (strncmp(o, "--", 2)) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", o);
-        if (strcmp(o, "--out-dir") && strcmp(o, "--sizes") && strcmp(o, "--max-n") && strcmp(o, "--tables"))
-            hj_cli_fail(a->prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", o);
-        if (!v) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", o);
-        i++;
-        int rc = HJ_OK;
-        if (!strcmp(o, "--out-dir")) a->out_dir = v;
-        else if (!strcmp(o, "--sizes")) rc = hj_parse_long_list(v, "--sizes", 3, 100000, a->sizes, P3_MAX_SIZES, &a->nsizes, &err);
-        else if (!strcmp(o, "--tables")) rc = hj_parse_long_list(v, "--tables", 1, 13, a->tables, P3_MAX_SIZES, &a->ntables, &err);
-        else rc = hj_parse_long(v, "--max-n", 3, 100000, &a->max_n, &err);
-        if (rc) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &a->quick, .help = "reduced sizes (CI)"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &a->out_dir, .metavar = "DIR",
+         .help = "where to write the tables"},
+        {.name = "--sizes", .type = HJ_OPT_LONG_LIST, .value = a->sizes, .min = 8, .max = 100000, .metavar = "N,N,...",
+         .help = "the grid sizes to run instead of the published ones", .count = &a->nsizes, .maxn = P3_MAX_SIZES,
+         .dflt = "the published ones"},
+        {.name = "--max-n", .type = HJ_OPT_LONG, .value = &a->max_n, .min = 8, .max = 100000, .metavar = "N",
+         .help = "skip the sizes above N", .dflt = "none"},
+        {.name = "--tables", .type = HJ_OPT_LONG_LIST, .value = a->tables, .min = (double)first_table,
+         .max = (double)last_table, .metavar = "T,T,...", .help = "only these tables (numbers)", .count = &a->ntables,
+         .maxn = P3_MAX_SIZES, .dflt = "all"},
+    };
+    hj_cli_spec spec = {a->prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), extra};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    if (a->quick && a->nsizes) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "give --quick or --sizes, not both");
 }
 
 int p3_want(const p3_args *a, long t)

@@ -33,9 +33,12 @@ typedef struct {
 /* Whether table number t was asked for (all when --tables is absent). */
 int p3_want(const p3_args *a, long t);
 
-/* Parse the common options; usage is printed for --help (then exit 0).
- * `extra` (may be NULL) is appended to the usage text. */
-void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra);
+/* Parse the common options (hj_cli's option table); usage is printed for
+ * --help (then exit 0).  `extra` (may be NULL) is appended to the usage
+ * text; --tables takes the numbers first_table..last_table, the tables
+ * the program makes. */
+void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra, long first_table,
+                   long last_table);
 
 /* Print "prog: message" and exit 1 (a run that failed). */
 _Noreturn void p3_die(const char *prog, const hj_error *err);

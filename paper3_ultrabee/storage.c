@@ -480,7 +480,7 @@ static void fig05(const p3_args *a, hj_error *err)
 int main(int argc, char **argv)
 {
     p3_args a = {.prog = "storage"};
-    p3_args_parse(&a, argc, argv, "Tables 1-4: neighbour search, update and memory of FS, FLS, LS, CRS, SSD.", NULL);
+    p3_args_parse(&a, argc, argv, "Tables 1-4: neighbour search, update and memory of FS, FLS, LS, CRS, SSD.", NULL, 1, 4);
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
     if (a.quick) BUDGET = 5.0;

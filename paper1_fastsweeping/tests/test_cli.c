@@ -45,10 +45,14 @@ static void bad_options(void **state)
     expect_failure(P1 "example1 --sizes 1000000", 2, "between 8 and 10000");
     expect_failure(P1 "example1 --delta nan", 2, "must be finite");
     expect_failure(P1 "example3 --eps inf", 2, "must be finite");
-    expect_failure(P1 "example2 --strategy magic", 2, "--strategy must be");
-    expect_failure(P1 "example2 --guess exact", 2, "--guess must be physical or category-iii");
-    expect_failure(P1 "example3 --exclude box", 2, "--exclude must be distance, literal, open or closed");
-    expect_failure(P1 "example2 --richardson-box wide", 2, "--richardson-box must be node, tight or piece");
+    expect_failure(P1 "example2 --strategy magic", 2, "--strategy: 'magic' is not one of richardson, lax-wendroff, first-order");
+    expect_failure(P1 "example2 --guess exact", 2, "--guess: 'exact' is not one of physical, category-iii");
+    expect_failure(P1 "example3 --exclude box", 2, "--exclude: 'box' is not one of distance, literal, closed, open");
+    expect_failure(P1 "example2 --richardson-box wide", 2, "--richardson-box: 'wide' is not one of node, tight, piece");
+    expect_failure(P1 "example1 --delta 0", 2, "--delta must be between");
+    expect_failure(P1 "example1 --quick --sizes 40", 2, "--quick or --sizes, not both");
+    expect_failure(P1 "example2 --eps 1e-6 --eps-h2 1", 2, "--eps or --eps-h2, not both");
+    expect_failure(P1 "example1 --band 3 --band 4", 2, "--band is given twice");
     expect_failure(P1 "example2 --guess-noise 1", 2, "--guess-noise must be between 0 and 0.5");
     expect_failure(P1 "example2 --guess-noise nan", 2, "--guess-noise must be finite");
     expect_failure(P1 "example2 --seed -1", 2, "--seed must be between");
