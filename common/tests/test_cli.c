@@ -6,20 +6,24 @@
 #include "hj_cli.h"
 
 static long N;
-static double cfl;
+static double cfl, eps;
 static const char *out;
 static long sizes[4];
 static int nsizes, quick, scheme;
 static const char *const schemes[] = {"eno2", "weno5", NULL};
 static hj_cli_opt opts[] = {
-    {"--N", HJ_OPT_LONG, &N, 2, 1000, "N", "nodes per dimension", NULL, NULL, 0, 0},
-    {"--cfl", HJ_OPT_DOUBLE, &cfl, 0.01, 1, "C", "CFL factor", NULL, NULL, 0, 0},
-    {"--out", HJ_OPT_STRING, &out, 0, 0, "FILE", "output file", NULL, NULL, 0, 0},
-    {"--sizes", HJ_OPT_LONG_LIST, sizes, 8, 100, "N,N,...", "grid sizes", NULL, &nsizes, 4, 0},
-    {"--quick", HJ_OPT_FLAG, &quick, 0, 0, NULL, "coarse rows only", NULL, NULL, 0, 0},
-    {"--scheme", HJ_OPT_CHOICE, &scheme, 0, 0, "S", "upwind scheme", schemes, NULL, 0, 0},
+    {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 2, .max = 1000, .metavar = "N", .help = "nodes per dimension"},
+    {.name = "--cfl", .type = HJ_OPT_DOUBLE, .value = &cfl, .min = 0.01, .max = 1, .metavar = "C", .help = "CFL factor"},
+    {.name = "--out", .type = HJ_OPT_STRING, .value = &out, .metavar = "FILE", .help = "output file"},
+    {.name = "--sizes", .type = HJ_OPT_LONG_LIST, .value = sizes, .min = 8, .max = 100, .metavar = "N,N,...",
+     .help = "grid sizes", .count = &nsizes, .maxn = 4},
+    {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "coarse rows only"},
+    {.name = "--scheme", .type = HJ_OPT_CHOICE, .value = &scheme, .metavar = "S", .help = "upwind scheme", .choices = schemes},
+    {.name = "--eps", .type = HJ_OPT_DOUBLE, .value = &eps, .min = 0, .max = 1, .metavar = "X", .help = "epsilon",
+     .dflt = "the paper's"},
 };
-static hj_cli_spec spec = {"prog", "A test program.", opts, (int)(sizeof opts / sizeof opts[0])};
+static hj_cli_spec spec = {.prog = "prog", .summary = "A test program.", .opts = opts,
+                           .nopts = (int)(sizeof opts / sizeof opts[0]), .epilog = "Tables: see the source.\n"};
 
 static void defaults(void)
 {
@@ -101,6 +105,8 @@ static void help_lists_every_option(void **state)
     assert_non_null(strstr(text, "(default 10,20)"));
     assert_non_null(strstr(text, "{eno2|weno5} (default weno5)"));
     assert_non_null(strstr(text, "--help"));
+    assert_non_null(strstr(text, "epsilon [0..1] (default the paper's)"));
+    assert_non_null(strstr(text, "Tables: see the source."));
 }
 
 int main(void)
