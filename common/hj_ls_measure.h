@@ -27,4 +27,17 @@ double hj_ls_simplex_fraction(int d, const double *v);
  * for a grid of dimension above 3. */
 int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
 
+/* The same on a grid periodic in dimension periodic_dim (>= 0; < 0 is
+ * hj_ls_measure): the cells between the last node and the first node's
+ * periodic image count too, so the box is a full period, N dx (the grids
+ * of the toolbox's periodic examples, e.g. air3D's heading, section
+ * 2.6.1).  Needs a copy of phi with one more plane (allocated here). */
+int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_dim, double *m, hj_error *err);
+
+/* Radius of the disc (2-D) or ball (3-D) whose area or volume is the
+ * measure of {phi < 0}: the size of a circle or sphere moved by normal or
+ * curvature motion (sections 2.3.1-2.3.2).  HJ_EINVAL for other
+ * dimensions. */
+int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err);
+
 #endif
