@@ -3,6 +3,7 @@
 
 #include <string.h>
 
+#include "hj_io.h"
 #include "hj_ls_io.h"
 
 void hj_ls_seq_times(double t0, double t1, int n, double *tspan)
@@ -52,4 +53,22 @@ int hj_ls_seq_solve(int order, const hj_ls_grid *g, const hj_ls_term *term, cons
     int rc = hj_ls_seq_output(0, tspan[0], y, s, err);
     if (rc) return rc;
     return hj_ls_ode(order, g, term, tspan, n, y, opts, hj_ls_seq_output, s, stats, err);
+}
+
+int hj_ls_seq_solve_file(const char *path, int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan,
+                         int n, double *y, const hj_ls_ode_opts *opts, hj_ls_seq *s, hj_ls_ode_stats *stats,
+                         hj_error *err)
+{
+    if (!path) return hj_ls_seq_solve(order, g, term, tspan, n, y, opts, s, stats, err);
+    hj_out out;
+    int rc = hj_out_open(&out, path, err);
+    if (rc) return rc;
+    s->fp = out.fp;
+    rc = hj_ls_seq_solve(order, g, term, tspan, n, y, opts, s, stats, err);
+    s->fp = NULL;
+    if (rc) {
+        hj_out_abort(&out);
+        return rc;
+    }
+    return hj_out_commit(&out, err);
 }

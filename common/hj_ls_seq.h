@@ -68,4 +68,10 @@ int hj_ls_seq_output(int k, double t, const double *y, void *ctx, hj_error *err)
 int hj_ls_seq_solve(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int n, double *y,
                     const hj_ls_ode_opts *opts, hj_ls_seq *s, hj_ls_ode_stats *stats, hj_error *err);
 
+/* The same with the blocks written to the file path (atomically, hj_out:
+ * a failed run leaves no file; path NULL: no file, s->fp as set). */
+int hj_ls_seq_solve_file(const char *path, int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan,
+                         int n, double *y, const hj_ls_ode_opts *opts, hj_ls_seq *s, hj_ls_ode_stats *stats,
+                         hj_error *err);
+
 #endif

@@ -128,16 +128,21 @@ void hj_ls_shape_complement(const hj_ls_grid *g, const double *a, double *out)
     }
 }
 
-double hj_ls_star_fn(const double *x, void *ctx)
+/* phi of the star at x given |x| = r. */
+static double star_at(const hj_ls_star *s, double r, const double *x)
 {
-    const hj_ls_star *s = ctx;
-    return hypot(x[0], x[1]) - s->scale * (cos(s->points * atan2(x[1], x[0])) + s->shift);
+    return r - s->scale * (cos(s->points * atan2(x[1], x[0])) + s->shift);
 }
+
+double hj_ls_star_fn(const double *x, void *ctx) { return star_at(ctx, hypot(x[0], x[1]), x); }
+
+/* |x| as every grid shape here takes it, the root of the sum of squares. */
+static double star_grid_at(const double *x, void *ctx) { return star_at(ctx, sqrt(x[0] * x[0] + x[1] * x[1]), x); }
 
 int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err)
 {
     if (g->dim != 2) return hj_error_set(err, HJ_EINVAL, "star: 2-D grids only");
-    hj_ls_fill(g, out, hj_ls_star_fn, (void *)s);
+    hj_ls_fill(g, out, star_grid_at, (void *)s);
     return HJ_OK;
 }
 

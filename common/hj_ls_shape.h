@@ -54,10 +54,13 @@ typedef struct {
     double scale, shift, points;
 } hj_ls_star;
 
-/* phi of the star at x (2-D), an hj_ls_field_fn with ctx = hj_ls_star. */
+/* phi of the star at x (2-D), an hj_ls_field_fn with ctx = hj_ls_star;
+ * |x| is hypot(x_1, x_2). */
 double hj_ls_star_fn(const double *x, void *ctx);
 
-/* The star on a 2-D grid (HJ_EINVAL for another dimension). */
+/* The star on a 2-D grid (HJ_EINVAL for another dimension), with |x| the
+ * root of the sum of squares as in the other shapes here (it may differ
+ * from hj_ls_star_fn's hypot in the last bit). */
 int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err);
 
 /* Area of the star, pi scale^2 (1/2 + shift^2) (shift >= 1: r > 0). */
