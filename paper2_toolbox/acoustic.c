@@ -79,6 +79,9 @@ mirror| 3e-12).
 #include "hj_ls_io.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "acoustic";
@@ -214,7 +217,7 @@ typedef struct {
     hole_stat hole[P2_MAXT];
     double asym[P2_MAXT];
     long flips[P2_MAXT];
-    p2_blocks *blocks;
+    hj_ls_seq *blocks;
 } snap;
 
 static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *err)
@@ -224,7 +227,7 @@ static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *er
         s->hole[k] = holes(s->g, y, s->phi0);
         s->asym[k] = asymmetry(s->g, y, &s->flips[k]);
     }
-    return s->blocks ? p2_write_block(k, t, y, s->blocks, err) : HJ_OK;
+    return s->blocks ? hj_ls_seq_output(k, t, y, s->blocks, err) : HJ_OK;
 }
 
 typedef struct {
@@ -256,7 +259,8 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     q = &qq;
     hj_ls_copy(&g, y0, y);
     hj_out out;
-    p2_blocks b = {NULL, &g};
+    hj_ls_seq b;
+    hj_ls_seq_init(&b, NULL, &g, "phi", 0);
     if (path) {
         die(hj_out_open(&out, path, &err), &err);
         b.fp = out.fp;
@@ -265,16 +269,16 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
     die(p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
     hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, &g, p2_accuracy_scheme(acc), diss, ham, partial, (void *)q);
+    hj_ls_lax_friedrichs_init(&lf, &g, hj_ls_accuracy_scheme(acc), diss, ham, partial, (void *)q);
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, &g, &lf.base, 0);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.75;
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     double ts[9];
-    p2_times(0, tmax, 8, ts);
-    hj_progress("acoustic: accuracy %s, dx = %g ...\n", p2_accuracy_name(acc), dx);
-    die(hj_ls_ode(p2_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err), &err);
+    hj_ls_seq_times(0, tmax, 9, ts);
+    hj_progress("acoustic: accuracy %s, dx = %g ...\n", hj_ls_accuracy_name(acc), dx);
+    die(hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err), &err);
     if (path) die(hj_out_commit(&out, &err), &err);
     p2_reach_log_free(&r->log);
     r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
@@ -285,7 +289,7 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     double dx = 0.04, tmax = 4;
     par q = {1.3, 1.5, 0.8, 0.5, NULL};
     hj_error err;
@@ -298,8 +302,8 @@ int main(int argc, char **argv)
         if (v == P2_OPT_QUICK) { quick = 1; continue; }
         int rc = 0;
         switch (v) {
-        case 0: rc = p2_parse_accuracy(s, &acc, &err); break;
-        case 1: rc = p2_parse_dissipation(s, &diss, &err); break;
+        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
+        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
         case 2: rc = hj_parse_double(s, "--dx", 0.002, 0.5, &dx, &err); break;
         case 3: rc = hj_parse_double(s, "--Wp", 0.01, 100, &q.Wp, &err); break;
         case 4: rc = hj_parse_double(s, "--tmax", 1e-9, 100, &tmax, &err); break;
@@ -320,7 +324,7 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/acoustic_run.dat", out_dir);
         run(&q, acc, diss, dx, tmax, path, &R[0]);
         printf("# acoustic accuracy=%s diss=%s dx=%g Wp=%g: %ld steps\n# t\tarea\tincreased\tholes\thole_area\thole_gap\tasym\tflips\n",
-               p2_accuracy_name(acc), p2_dissipation_name(diss), dx, q.Wp, R[0].st.steps);
+               hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), dx, q.Wp, R[0].st.steps);
         for (int k = 0; k < R[0].log.n; k++)
             printf("%.4g\t%.6g\t%ld\t%ld\t%.4g\t%.3g\t%.3g\t%ld\n", R[0].log.t[k], R[0].log.measure[k],
                    R[0].log.increased[k], R[0].sn.hole[k].n, R[0].sn.hole[k].area, R[0].sn.hole[k].gap, R[0].sn.asym[k],

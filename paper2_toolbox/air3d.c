@@ -79,6 +79,9 @@ reachable set, medium, NX = 51; quick: 26), `air3d_vox.dat`; plotted by
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
 #include "p2_air3d.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "air3d";
@@ -137,8 +140,8 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
     r->sn.g = g;
     die(p2_reach_log_init(&r->log, g, 2, 0, y, on_snapshot, &r->sn, &err), &err);
     double ts[P2_MAXT];
-    p2_times(0, tmax, nint, ts);
-    hj_progress("air3d: accuracy %s, NX = %ld ...\n", p2_accuracy_name(acc), Nx);
+    hj_ls_seq_times(0, tmax, nint + 1, ts);
+    hj_progress("air3d: accuracy %s, NX = %ld ...\n", hj_ls_accuracy_name(acc), Nx);
     die(p2_air3d_solve(g, p, acc, diss, ts, nint + 1, y, p2_reach_output, &r->log, &r->st, &err), &err);
     p2_reach_log_free(&r->log);
     if (phi0) *phi0 = y0; else hj_ls_free(y0);
@@ -148,7 +151,7 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     long Nx = 51;
     double tmax = 2.8;
     hj_error err;
@@ -161,8 +164,8 @@ int main(int argc, char **argv)
         if (v == P2_OPT_QUICK) { quick = 1; continue; }
         int rc = 0;
         switch (v) {
-        case 0: rc = p2_parse_accuracy(s, &acc, &err); break;
-        case 1: rc = p2_parse_dissipation(s, &diss, &err); break;
+        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
+        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
         case 2: rc = hj_parse_long(s, "--N", 8, 2000, &Nx, &err); break;
         case 3: rc = hj_parse_double(s, "--tmax", 1e-9, 1000, &tmax, &err); break;
         default: out_dir = s;
@@ -184,7 +187,7 @@ int main(int argc, char **argv)
         const double *f[2] = {phi0, phi};
         die(hj_ls_write_vtk(path, &g, "air3D reachable set", 2, names, f, &err), &err);
         printf("# air3D accuracy=%s diss=%s NX=%ld: %ld steps\n# t\tvolume\tincreased\tasymmetry\tflips\n",
-               p2_accuracy_name(acc), p2_dissipation_name(diss), Nx, fr.st.steps);
+               hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), Nx, fr.st.steps);
         for (int k = 0; k < fr.log.n; k++)
             printf("%.4g\t%.6g\t%ld\t%.3g\t%ld\n", fr.log.t[k], fr.log.measure[k], fr.log.increased[k], fr.sn.asym[k],
                    fr.sn.flips[k]);
@@ -195,14 +198,14 @@ int main(int argc, char **argv)
     /* The grid sequence at the two cheapest accuracies; the figure from
      * medium on the toolbox grid (NX = 51; the quick run: NX = 26). */
     static const long seq[] = {26, 38, 51, 76};
-    const int nseq = quick ? 1 : 4, accs[2] = {P2_MEDIUM, P2_LOW};
+    const int nseq = quick ? 1 : 4, accs[2] = {HJ_LS_ACC_MEDIUM, HJ_LS_ACC_LOW};
     static result R[2][4];
     const long fig_nx = quick ? 26 : 51;
     hj_ls_grid gf;
     double *fig0 = NULL, *fig1 = NULL;
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < nseq; k++) {
-            const int keep = accs[a] == P2_MEDIUM && seq[k] == fig_nx;
+            const int keep = accs[a] == HJ_LS_ACC_MEDIUM && seq[k] == fig_nx;
             run(&par, accs[a], diss, seq[k], 2.8, 8, keep ? &gf : &g, &R[a][k], keep ? &fig0 : NULL, keep ? &fig1 : NULL);
         }
     snprintf(path, sizeof path, "%s/air3d.vtk", out_dir);
@@ -213,7 +216,7 @@ int main(int argc, char **argv)
     hj_out out;
     snprintf(path, sizeof path, "%s/air3d_vox.dat", out_dir);
     die(hj_out_open(&out, path, &err), &err);
-    die(p2_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
+    die(hj_ls_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
     die(hj_out_commit(&out, &err), &err);
     hj_ls_free(fig0);
     hj_ls_free(fig1);
@@ -228,7 +231,7 @@ int main(int argc, char **argv)
         for (int k = 0; k < nseq; k++) {
             const result *r = &R[a][k];
             for (int q = 0; q < r->log.n; q++)
-                fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", p2_accuracy_name(r->acc), r->Nx,
+                fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", hj_ls_accuracy_name(r->acc), r->Nx,
                         r->log.t[q], r->log.measure[q], r->log.increased[q], r->sn.asym[q], r->sn.flips[q], r->st.steps);
         }
     die(hj_out_commit(&out, &err), &err);

@@ -86,6 +86,8 @@ switch2, N = 201), `air_mode_notes.md`; plotted by `plot/fig20.gp`.
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 #include "hj_math.h"
 
@@ -127,14 +129,14 @@ static void find_reach(const hj_ls_grid *g, const par *q, int acc, int is_curved
 {
     hj_error err;
     hj_ls_convection cv;
-    hj_ls_convection_init(&cv, g, p2_accuracy_scheme(acc));
+    hj_ls_convection_init(&cv, g, hj_ls_accuracy_scheme(acc));
     if (is_curved) cv.velocity_fn = curved, cv.ctx = (void *)q;
     else cv.velocity[0] = -q->c1, cv.velocity[1] = -q->c2;
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, g, &cv.base, 0);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.75;
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     hj_ls_mask mask = {g, avoid, 1};
     if (avoid) {
         for (size_t r = 0; r < g->rows; r++) {
@@ -152,7 +154,7 @@ static void find_reach(const hj_ls_grid *g, const par *q, int acc, int is_curved
     ts[nt++] = tmax;
     if (log) die(p2_reach_log_init(log, g, -1, 0, data, NULL, NULL, &err), &err);
     hj_ls_ode_stats st;
-    die(hj_ls_ode(p2_accuracy_order(acc), g, grow ? &rs.base : &cv.base, ts, nt, data, &o,
+    die(hj_ls_ode(hj_ls_accuracy_order(acc), g, grow ? &rs.base : &cv.base, ts, nt, data, &o,
                   log ? p2_reach_output : NULL, log, &st, &err), &err);
     if (log) p2_reach_log_free(log);
     *steps += st.steps;
@@ -196,7 +198,7 @@ static void air_mode(const par *q, int acc, long N, result *res, double **fields
     memset(res, 0, sizeof *res);
     res->N = N;
     p2_reach_log log;
-    hj_progress("air_mode: accuracy %s, N = %ld ...\n", p2_accuracy_name(acc), N);
+    hj_progress("air_mode: accuracy %s, N = %ld ...\n", hj_ls_accuracy_name(acc), N);
     /* mode 3: straight motion, 5 time units */
     hj_ls_copy(g, mode3, data0);
     find_reach(g, q, acc, 0, 5, 1, NULL, mode3, &log, &res->steps);
@@ -275,7 +277,7 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM;
     long N = 101;
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--N", "--out-dir"};
@@ -286,7 +288,7 @@ int main(int argc, char **argv)
         if (v == P2_OPT_HELP) { usage(); return 0; }
         if (v == P2_OPT_QUICK) { quick = 1; continue; }
         int rc = 0;
-        if (v == 0) rc = p2_parse_accuracy(s, &acc, &err);
+        if (v == 0) rc = hj_ls_accuracy_parse(s, &acc, &err);
         else if (v == 1) rc = hj_parse_long(s, "--N", 11, 4001, &N, &err);
         else out_dir = s;
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
@@ -310,7 +312,7 @@ int main(int argc, char **argv)
         die(hj_out_open(&out, path, &err), &err);
         die(hj_ls_write_block(out.fp, &g, 5, names, (const double *const *)f, &err), &err);
         die(hj_out_commit(&out, &err), &err);
-        printf("# airMode accuracy=%s N=%ld: areas in [-25, 25]^2\n", p2_accuracy_name(acc), N);
+        printf("# airMode accuracy=%s N=%ld: areas in [-25, 25]^2\n", hj_ls_accuracy_name(acc), N);
         double e3, e2;
         exact_areas(&q, 2000, &e3, &e2);
         for (int s = 0; s < NSETS; s++) printf("%s\t%.6g\n", set_name[s], R[0].area[s]);
@@ -341,7 +343,7 @@ int main(int argc, char **argv)
     fprintf(out.fp, "# airMode, accuracy %s: area in [-25, 25]^2 of each set at the end of its computation, nodes where phi\n"
                     "# increased between output times (summed; - where the update is not restricted), and nodes of the reach\n"
                     "# set inside the escape set (violations; reach row only); exact = area of the exact set (mode3, mode2)\n"
-                    "set\tN\tarea\texact\tincreased\tviolations\tsteps\n", p2_accuracy_name(acc));
+                    "set\tN\tarea\texact\tincreased\tviolations\tsteps\n", hj_ls_accuracy_name(acc));
     for (int s = 0; s < NSETS; s++)
         for (int k = 0; k < nn; k++) {
             fprintf(out.fp, "%s\t%ld\t%.6g\t", set_name[s], ns[k], R[k].area[s]);
@@ -354,7 +356,7 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/air_mode_notes.md", out_dir);
     die(hj_out_open(&out, path, &err), &err);
     fprintf(out.fp, "\nArea (in the box [-25, 25]^2) of the four computed sets and of the escape set's complement "
-                    "(avoid), accuracy %s, on N x N grids:\n\n| set | exact |", p2_accuracy_name(acc));
+                    "(avoid), accuracy %s, on N x N grids:\n\n| set | exact |", hj_ls_accuracy_name(acc));
     for (int k = 0; k < nn; k++) fprintf(out.fp, " N = %ld |", ns[k]);
     fputs("\n|---|---|", out.fp);
     for (int k = 0; k < nn; k++) fputs("---|", out.fp);

@@ -85,7 +85,7 @@ larger).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
 #include "p2_oshershu.h"
 #include "hj_math.h"
 
@@ -148,7 +148,7 @@ int main(int argc, char **argv)
         p2_os_errors(&g, phi, ex, &l1, &linf);
         printf("burgersLF accuracy=%s diss=%s dim=%d N=%ld tmax=%.6g: L1 (average) %.3e, Linf %.3e "
                "(exact by characteristics, up to %d feet)\n",
-               p2_accuracy_name(r.acc), p2_dissipation_name(r.diss), r.dim, r.N, r.tmax, l1, linf, nr);
+               hj_ls_accuracy_name(r.acc), hj_ls_dissipation_name(r.diss), r.dim, r.N, r.tmax, l1, linf, nr);
         hj_ls_free(phi);
         hj_ls_free(ex);
         return 0;
@@ -166,7 +166,7 @@ int main(int argc, char **argv)
     }
     const long fig_n[2] = {10, 40};
     for (int q = 0; q < 2; q++) {
-        p2_os_run f = {1, fig_n[q], P2_HIGH, HJ_LS_LLF, 0, tk, 1};
+        p2_os_run f = {1, fig_n[q], HJ_LS_ACC_HIGH, HJ_LS_LLF, 0, tk, 1};
         double *phi = run(&f, &g, NULL);
         fprintf(out.fp, "\n\n# index %d: ENO3-LLF (accuracy high, local) on %ld nodes\n", q + 1, fig_n[q]);
         const char *names[1] = {"phi"};
@@ -177,7 +177,7 @@ int main(int argc, char **argv)
     die(hj_out_commit(&out, &err), &err);
     /* Figure 14 (b): 2-D, ENO-LLF on 40^2, the toolbox's 10 output steps. */
     {
-        p2_os_run f = {2, 40, P2_HIGH, HJ_LS_LLF, 0, tk, 10};
+        p2_os_run f = {2, 40, HJ_LS_ACC_HIGH, HJ_LS_LLF, 0, tk, 10};
         snprintf(path, sizeof path, "%s/burgers_2d.dat", out_dir);
         hj_ls_free(run(&f, &g, path));
     }
@@ -186,7 +186,7 @@ int main(int argc, char **argv)
     static const long n1[] = {20, 40, 80, 160, 320, 640, 1280}, n2[] = {20, 40, 80, 160};
     const int nn1 = quick ? 4 : 7, nn2 = quick ? 3 : 4;
     typedef struct { double h, l1, linf; } res;
-    static res R[NCASE][2][P2_NACC][3][MAXN];
+    static res R[NCASE][2][HJ_LS_NACC][3][MAXN];
     int maxroots[NCASE] = {0, 0};
     long identical_llf = 0, compared_llf = 0;
     for (int dim = 1; dim <= 2; dim++) {
@@ -201,7 +201,7 @@ int main(int argc, char **argv)
                 const int mr = p2_os_exact_grid(&p2_os_burgers, &ge, case_t[ci] / (HJ_PI * HJ_PI), ex);
                 maxroots[ci] = mr > maxroots[ci] ? mr : maxroots[ci];
                 hj_progress("burgers_lf: %s dim %d N %ld\n", case_name[ci], dim, ns[k]);
-                for (int acc = 0; acc < P2_NACC; acc++) {
+                for (int acc = 0; acc < HJ_LS_NACC; acc++) {
                     double *prev = NULL;
                     for (int diss = 0; diss < 3; diss++) {
                         p2_os_run f = {dim, ns[k], acc, diss, 0, case_t[ci] / (HJ_PI * HJ_PI), 1};
@@ -211,7 +211,7 @@ int main(int argc, char **argv)
                         p2_os_errors(&g, phi, ex, &o->l1, &o->linf);
                         if (dim == 1 && diss == HJ_LS_LLLF) {
                             compared_llf++;
-                            identical_llf += p2_count_differ(&g, prev, phi) == 0;
+                            identical_llf += hj_ls_count_differ(&g, prev, phi) == 0;
                         }
                         hj_ls_free(prev);
                         prev = phi;
@@ -230,12 +230,12 @@ int main(int argc, char **argv)
                     "case\tdim\tacc\tdiss\tN\th\tL1\tL1_order\tLinf\tLinf_order\n");
     for (int ci = 0; ci < NCASE; ci++)
         for (int dim = 1; dim <= 2; dim++)
-            for (int acc = 0; acc < P2_NACC; acc++)
+            for (int acc = 0; acc < HJ_LS_NACC; acc++)
                 for (int diss = 0; diss < 3; diss++)
                     for (int k = 0; k < (dim == 1 ? nn1 : nn2); k++) {
                         const res *o = &R[ci][dim - 1][acc][diss][k];
-                        fprintf(out.fp, "%s\t%d\t%s\t%s\t%ld\t%.6g\t%.4e\t", case_name[ci], dim, p2_accuracy_name(acc),
-                                p2_dissipation_name(diss), (dim == 1 ? n1 : n2)[k], o->h, o->l1);
+                        fprintf(out.fp, "%s\t%d\t%s\t%s\t%ld\t%.6g\t%.4e\t", case_name[ci], dim, hj_ls_accuracy_name(acc),
+                                hj_ls_dissipation_name(diss), (dim == 1 ? n1 : n2)[k], o->h, o->l1);
                         if (k) fprintf(out.fp, "%.2f\t", hj_pair_order(o[-1].h, o[-1].l1, o->h, o->l1));
                         else fputs("-\t", out.fp);
                         fprintf(out.fp, "%.4e\t", o->linf);
@@ -259,8 +259,8 @@ int main(int argc, char **argv)
         for (int dim = 1; dim <= 2; dim++) {
             const long *ns = dim == 1 ? n1 : n2;
             const int nn = dim == 1 ? nn1 : nn2, nq = dim == 1 ? 4 : 3;
-            char cell[P2_NACC][64];
-            for (int acc = 0; acc < P2_NACC; acc++)
+            char cell[HJ_LS_NACC][64];
+            for (int acc = 0; acc < HJ_LS_NACC; acc++)
                 for (int diss = 0; diss < 3; diss++)
                     for (int span = 0; span < 2; span++) {
                         const int m = span ? nn : nq;
@@ -277,12 +277,12 @@ int main(int argc, char **argv)
                             const char *qn = q ? "Linf" : "L1";
                             if (hj_fit_order(h, e, m, &f, &ferr) == HJ_OK) {
                                 fprintf(fit.fp, "%s\t%d\t%s\t%s\t%ld-%ld\t%s\t%.2f\t%.2f\t%.2f\n", case_name[ci], dim,
-                                        p2_accuracy_name(acc), p2_dissipation_name(diss), ns[0], ns[m - 1], qn, f.p,
+                                        hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), ns[0], ns[m - 1], qn, f.p,
                                         f.p_se, f.p_ls);
                                 pl[q] = f.p;
                             } else {
                                 fprintf(fit.fp, "%s\t%d\t%s\t%s\t%ld-%ld\t%s\tnan\tnan\tnan\n", case_name[ci], dim,
-                                        p2_accuracy_name(acc), p2_dissipation_name(diss), ns[0], ns[m - 1], qn);
+                                        hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), ns[0], ns[m - 1], qn);
                                 pl[q] = NAN;
                             }
                         }

@@ -93,8 +93,12 @@ the time sequence file holds x_1 ... x_4 phi per node).
 #include "hj_ls_io.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
+#include "hj_ls_seq.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_front.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
 #include "hj_math.h"
 
 static const char *const PROG = "convection_demo";
@@ -162,32 +166,30 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
     fail_if(hj_ls_shape_sphere(&g, center, RADIUS, y0, &err), &err);
     hj_ls_copy(&g, y, y0);
 
-    p2b_flow flow = {c->flow == P2B_LINEAR || c->flow == P2B_LINEAR_REV, 1.0, c->dim};
+    p2_flow flow = {c->flow == P2_LINEAR || c->flow == P2_LINEAR_REV, 0, c->dim};
     hj_ls_convection term;
-    hj_ls_convection_init(&term, &g, p2b_acc_scheme[c->acc]);
-    term.velocity_fn = p2b_flow_velocity;
+    hj_ls_convection_init(&term, &g, hj_ls_accuracy_scheme(c->acc));
+    term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
 
     enum { NT = 9 };
     double tspan[NT];
-    p2b_times(0, 1, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &g, "phi", &err), &err);
-    if (c->flow == P2B_CONSTANT_REV || c->flow == P2B_LINEAR_REV) seq.flip = &flow, seq.t_switch = 0.5;
+    hj_ls_seq_times(0, 1, NT, tspan);
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, &g, "phi", 10);
+    if (c->flow == P2_CONSTANT_REV || c->flow == P2_LINEAR_REV) seq.flag = &flow.reversed, seq.t_switch = 0.5;
     voxel_seq vox = {.g = &g};
     if (voxel_path) {
         fail_if(hj_out_open(&vox.out, voxel_path, &err), &err);
         seq.hook = voxel_block, seq.hook_ctx = &vox;
-        fail_if(voxel_block(0, 0, y, &vox, &err), &err);
     }
-    fail_if(p2b_seq_block(&seq, 0, y, &err), &err);
     hj_ls_ode_stats st;
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
     opts.max_step = 1.0 / (NT - 1); /* a zero field (1-D 'linear') has no CFL bound */
-    if (hj_ls_ode(p2b_acc_order[c->acc], &g, &term.base, tspan, NT, y, &opts, p2b_seq_out, &seq, &st, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2b_flow_name[c->flow], p2b_acc_name[c->acc], err.msg);
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    if (hj_ls_seq_solve_file(seq_path, hj_ls_accuracy_order(c->acc), &g, &term.base, tspan, NT, y, &opts, &seq, &st,
+                             &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2_flow_name[c->flow], hj_ls_accuracy_name(c->acc), err.msg);
     if (voxel_path) fail_if(hj_out_commit(&vox.out, &err), &err);
     if (vtk_path) {
         const char *names[2] = {"phi0", "phi1"};
@@ -199,7 +201,7 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
                : c->dim == 3 ? 4.0 / 3.0 * HJ_PI * RADIUS * RADIUS * RADIUS : NAN;
     res->measure = NAN;
     if (c->dim <= 3) fail_if(hj_ls_measure(&g, y, &res->measure, &err), &err);
-    p2b_front_error(&g, y, y0, 2 * dx, &res->front_max, &res->front_mean);
+    hj_ls_front_error(&g, y, y0, 2 * dx, &res->front_max, &res->front_mean);
     hj_ls_free(y0), hj_ls_free(y);
 }
 
@@ -226,14 +228,14 @@ static void table_header(FILE *fp)
 
 static void table_row(FILE *fp, const cfg *c, const result *r)
 {
-    fprintf(fp, "%s\t%d\t%ld\t%s\t%s\t%.6g\t%.4e\t%.4e\t%.6g\t%ld\n", p2b_flow_name[c->flow], c->dim,
-            c->periodic ? c->N - 1 : c->N, c->periodic ? "periodic" : "extrap", p2b_acc_name[c->acc], r->measure,
+    fprintf(fp, "%s\t%d\t%ld\t%s\t%s\t%.6g\t%.4e\t%.4e\t%.6g\t%ld\n", p2_flow_name[c->flow], c->dim,
+            c->periodic ? c->N - 1 : c->N, c->periodic ? "periodic" : "extrap", hj_ls_accuracy_name(c->acc), r->measure,
             r->front_max, r->front_mean, r->exact, r->steps);
 }
 
 int main(int argc, char **argv)
 {
-    cfg one = {P2B_CONSTANT, P2B_LOW, 2, 0, 101};
+    cfg one = {P2_CONSTANT, HJ_LS_ACC_LOW, 2, 0, 101};
     int single = 0, quick = 0;
     const char *dir = ".";
     hj_error err;
@@ -251,8 +253,8 @@ int main(int argc, char **argv)
         long lv = 0;
         if (!strcmp(a, "--out-dir")) { dir = v; continue; }
         single = 1;
-        if (!strcmp(a, "--flow")) rc = p2b_parse_choice(v, "flow", p2b_flow_name, P2B_NFLOW, &one.flow, &err);
-        else if (!strcmp(a, "--accuracy")) rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &one.acc, &err);
+        if (!strcmp(a, "--flow")) rc = p2_parse_choice(v, "flow", p2_flow_name, P2_NFLOW, &one.flow, &err);
+        else if (!strcmp(a, "--accuracy")) rc = hj_ls_accuracy_parse(v, &one.acc, &err);
         else if (!strcmp(a, "--dim")) rc = hj_parse_long(v, "--dim", 1, 4, &lv, &err), one.dim = (int)lv;
         else rc = hj_parse_long(v, "--N", 5, 100000, &one.N, &err);
         if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
@@ -279,19 +281,19 @@ int main(int argc, char **argv)
     cfg runs[MAXRUN];
     result res[MAXRUN];
     int nr = 0;
-    const int flows2[4] = {P2B_CONSTANT, P2B_LINEAR, P2B_CONSTANT_REV, P2B_LINEAR_REV};
+    const int flows2[4] = {P2_CONSTANT, P2_LINEAR, P2_CONSTANT_REV, P2_LINEAR_REV};
     for (int f = 0; f < 4; f++)
-        for (int a = 0; a < P2B_NACC; a++) runs[nr++] = (cfg){flows2[f], a, 2, flows2[f] == P2B_CONSTANT, 101};
-    for (int a = 0; a < P2B_NACC; a++) runs[nr++] = (cfg){P2B_CONSTANT_REV, a, 1, 0, 101};
-    if (!quick) runs[nr++] = (cfg){P2B_LINEAR, P2B_MEDIUM, 3, 0, 101};
+        for (int a = 0; a < HJ_LS_NACC; a++) runs[nr++] = (cfg){flows2[f], a, 2, flows2[f] == P2_CONSTANT, 101};
+    for (int a = 0; a < HJ_LS_NACC; a++) runs[nr++] = (cfg){P2_CONSTANT_REV, a, 1, 0, 101};
+    if (!quick) runs[nr++] = (cfg){P2_LINEAR, HJ_LS_ACC_MEDIUM, 3, 0, 101};
     for (int k = 0; k < nr; k++) {
         const cfg *c = &runs[k];
         const char *seq = NULL, *vox = NULL, *vtk = NULL;
-        const int fig1 = c->dim == 2 && c->flow == P2B_LINEAR && c->acc == P2B_MEDIUM;
-        const int fig2 = c->dim == 2 && c->flow == P2B_LINEAR_REV && c->acc == P2B_LOW;
-        if (fig1 || fig2 || (c->dim == 1 && c->acc == P2B_VERYHIGH) || c->dim == 3) {
-            snprintf(path, sizeof path, "%s/convection_%dd_%s_%s.dat", dir, c->dim, p2b_flow_name[c->flow],
-                     p2b_acc_name[c->acc]);
+        const int fig1 = c->dim == 2 && c->flow == P2_LINEAR && c->acc == HJ_LS_ACC_MEDIUM;
+        const int fig2 = c->dim == 2 && c->flow == P2_LINEAR_REV && c->acc == HJ_LS_ACC_LOW;
+        if (fig1 || fig2 || (c->dim == 1 && c->acc == HJ_LS_ACC_VERYHIGH) || c->dim == 3) {
+            snprintf(path, sizeof path, "%s/convection_%dd_%s_%s.dat", dir, c->dim, p2_flow_name[c->flow],
+                     hj_ls_accuracy_name(c->acc));
             seq = c->dim == 3 ? NULL : path;
             vox = c->dim == 3 ? path : NULL;
         }
@@ -299,7 +301,7 @@ int main(int argc, char **argv)
             snprintf(path2, sizeof path2, "%s/convection_3d_linear_medium.vtk", dir);
             vtk = path2;
         }
-        hj_progress("\rconvection_demo: %dd %s %s (%d of %d)   ", c->dim, p2b_flow_name[c->flow], p2b_acc_name[c->acc],
+        hj_progress("\rconvection_demo: %dd %s %s (%d of %d)   ", c->dim, p2_flow_name[c->flow], hj_ls_accuracy_name(c->acc),
                     k + 1, nr);
         run(c, seq, vox, vtk, &res[k]);
     }
@@ -322,8 +324,8 @@ int main(int argc, char **argv)
     for (int k = 0; k < nr; k++) {
         const cfg *c = &runs[k];
         const result *r = &res[k];
-        fprintf(tab.fp, "| %s | %d | %s | %s | %.5f | %.5f | %+.2f %% | %.2e | %.2e | %ld |\n", p2b_flow_name[c->flow],
-                c->dim, c->periodic ? "periodic" : "extrapolate", p2b_acc_name[c->acc], r->measure, r->exact,
+        fprintf(tab.fp, "| %s | %d | %s | %s | %.5f | %.5f | %+.2f %% | %.2e | %.2e | %ld |\n", p2_flow_name[c->flow],
+                c->dim, c->periodic ? "periodic" : "extrapolate", hj_ls_accuracy_name(c->acc), r->measure, r->exact,
                 100 * (r->measure / r->exact - 1), r->front_max, r->front_mean, r->steps);
     }
     fputc('\n', tab.fp);

@@ -58,7 +58,6 @@ lax_friedrichs_run.tsv and lax_friedrichs_run.dat.
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -66,7 +65,12 @@ lax_friedrichs_run.tsv and lax_friedrichs_run.dat.
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_front.h"
+#include "hj_ls_seq.h"
+#include "hj_sys.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -75,7 +79,7 @@ static const char *const PROG = "lax_friedrichs_demo";
 static const char *const SHAPE[2] = {"circle", "cube"};
 static const char *const DISS[3] = {"global", "local", "locallocal"};
 static const int DISS_CODE[3] = {HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF};
-static const double PUBLISHED_COST[P2B_NACC] = {1, 4, 12, 17};
+static const double PUBLISHED_COST[HJ_LS_NACC] = {1, 4, 12, 17};
 enum { REPS = 3 };
 
 static void fail_if(int rc, const hj_error *err)
@@ -90,7 +94,7 @@ static double ham(double t, const double *x, double phi, const double *p, void *
     double h = 0;
     for (int d = 0; d < 2; d++) {
         double v;
-        p2b_flow_velocity(t, x, 0, 1, d, &v, ctx);
+        p2_flow_velocity(t, x, 0, 1, d, &v, ctx);
         h += v * p[d];
     }
     return h;
@@ -100,15 +104,8 @@ static double partial(double t, const double *x, const double *pmin, const doubl
 {
     (void)pmin, (void)pmax;
     double v;
-    p2b_flow_velocity(t, x, 0, 1, d, &v, ctx);
+    p2_flow_velocity(t, x, 0, 1, d, &v, ctx);
     return fabs(v);
-}
-
-static double cpu_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 typedef struct {
@@ -134,21 +131,20 @@ static void setup(lf_case *c, int shape)
 static double run(const lf_case *c, int flow, int acc, int diss, double *phi, const char *seq_path)
 {
     hj_error err;
-    p2b_flow f = {flow == P2B_LINEAR, 1.0, 2};
+    p2_flow f = {flow == P2_LINEAR, 0, 2};
     hj_ls_lax_friedrichs term;
-    hj_ls_lax_friedrichs_init(&term, &c->g, p2b_acc_scheme[acc], DISS_CODE[diss], ham, partial, &f);
+    hj_ls_lax_friedrichs_init(&term, &c->g, hj_ls_accuracy_scheme(acc), DISS_CODE[diss], ham, partial, &f);
     hj_ls_copy(&c->g, phi, c->phi0);
     enum { NT = 9 };
     double tspan[NT];
-    p2b_times(0, 1, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &c->g, "phi", &err), &err);
-    fail_if(p2b_seq_block(&seq, 0, phi, &err), &err);
-    const double t0 = cpu_seconds();
-    if (hj_ls_ode(p2b_acc_order[acc], &c->g, &term.base, tspan, NT, phi, NULL, p2b_seq_out, &seq, NULL, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s %s: %s", p2b_flow_name[flow], p2b_acc_name[acc], DISS[diss], err.msg);
-    const double secs = cpu_seconds() - t0;
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    hj_ls_seq_times(0, 1, NT, tspan);
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, &c->g, "phi", 10);
+    const double t0 = hj_sys_cpu_seconds();
+    if (hj_ls_seq_solve_file(seq_path, hj_ls_accuracy_order(acc), &c->g, &term.base, tspan, NT, phi, NULL, &seq, NULL,
+                             &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s %s: %s", p2_flow_name[flow], hj_ls_accuracy_name(acc), DISS[diss], err.msg);
+    const double secs = hj_sys_cpu_seconds() - t0;
     return secs;
 }
 
@@ -170,7 +166,7 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int flow = P2B_LINEAR, shape = 1, acc = P2B_LOW, diss = 0, single = 0, quick = 0;
+    int flow = P2_LINEAR, shape = 1, acc = HJ_LS_ACC_LOW, diss = 0, single = 0, quick = 0;
     const char *dir = ".";
     hj_error err;
     for (int i = 1; i < argc; i++) {
@@ -185,10 +181,10 @@ int main(int argc, char **argv)
         int rc = 0;
         if (!strcmp(a, "--out-dir")) { dir = v; continue; }
         single = 1;
-        if (!strcmp(a, "--flow")) rc = p2b_parse_choice(v, "flow (time-independent)", p2b_flow_name, 2, &flow, &err);
-        else if (!strcmp(a, "--shape")) rc = p2b_parse_choice(v, "shape", SHAPE, 2, &shape, &err);
-        else if (!strcmp(a, "--accuracy")) rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &acc, &err);
-        else rc = p2b_parse_choice(v, "dissipation", DISS, 3, &diss, &err);
+        if (!strcmp(a, "--flow")) rc = p2_parse_choice(v, "flow (time-independent)", p2_flow_name, 2, &flow, &err);
+        else if (!strcmp(a, "--shape")) rc = p2_parse_choice(v, "shape", SHAPE, 2, &shape, &err);
+        else if (!strcmp(a, "--accuracy")) rc = hj_ls_accuracy_parse(v, &acc, &err);
+        else rc = p2_parse_choice(v, "dissipation", DISS, 3, &diss, &err);
         if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
     }
     fail_if(hj_mkdirs(dir, &err), &err);
@@ -203,13 +199,13 @@ int main(int argc, char **argv)
         const double secs = run(&c, flow, acc, diss, phi, path);
         double area, fmax, fmean;
         fail_if(hj_ls_measure(&c.g, phi, &area, &err), &err);
-        p2b_front_error(&c.g, phi, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
+        hj_ls_front_error(&c.g, phi, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
         snprintf(path, sizeof path, "%s/lax_friedrichs_run.tsv", dir);
         fail_if(hj_out_open(&tab, path, &err), &err);
         fprintf(tab.fp, "# one run; front errors against phi_0 are meaningful for 'linear' (one full turn)\n"
                         "flow\tshape\tacc\tdiss\tarea\texact_area\tfront_max\tfront_mean\tcpu_s\n"
                         "%s\t%s\t%s\t%s\t%.6g\t%.6g\t%.4e\t%.4e\t%.3f\n",
-                p2b_flow_name[flow], SHAPE[shape], p2b_acc_name[acc], DISS[diss], area, c.exact_area, fmax, fmean, secs);
+                p2_flow_name[flow], SHAPE[shape], hj_ls_accuracy_name(acc), DISS[diss], area, c.exact_area, fmax, fmean, secs);
         fail_if(hj_out_commit(&tab, &err), &err);
         hj_ls_free(phi), hj_ls_free(c.phi0);
         return 0;
@@ -219,8 +215,8 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
     omp_set_num_threads(1); /* timings: one thread (the results do not depend on it) */
 #endif
-    const int nacc = quick ? 2 : P2B_NACC;
-    double *phi = hj_ls_alloc(&c.g), *glf[P2B_NACC] = {0};
+    const int nacc = quick ? 2 : HJ_LS_NACC;
+    double *phi = hj_ls_alloc(&c.g), *glf[HJ_LS_NACC] = {0};
     if (!phi) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
     for (int a = 0; a < nacc; a++)
         if (!(glf[a] = hj_ls_alloc(&c.g))) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
@@ -237,25 +233,25 @@ int main(int argc, char **argv)
     double base[3] = {0};
     for (int a = 0; a < nacc; a++)
         for (int d = 0; d < 3; d++) {
-            hj_progress("\rlax_friedrichs_demo: %s %s   ", p2b_acc_name[a], DISS[d]);
-            const int fig = a == P2B_LOW && d == 0;
+            hj_progress("\rlax_friedrichs_demo: %s %s   ", hj_ls_accuracy_name(a), DISS[d]);
+            const int fig = a == HJ_LS_ACC_LOW && d == 0;
             snprintf(path, sizeof path, "%s/lax_friedrichs_low.dat", dir);
             double *y = d == 0 ? glf[a] : phi;
             /* the cost: the least CPU time of REPS identical runs on one
              * thread (the state is the same bits every time) */
             double secs = INFINITY;
             for (int rep = 0; rep < (quick ? 1 : REPS); rep++) {
-                const double s1 = run(&c, P2B_LINEAR, a, d, y, fig && rep == 0 ? path : NULL);
+                const double s1 = run(&c, P2_LINEAR, a, d, y, fig && rep == 0 ? path : NULL);
                 secs = s1 < secs ? s1 : secs;
             }
             if (a == 0) base[d] = secs;
             double diff = 0, mean, area, fmax, fmean;
             if (d) hj_ls_norms(&c.g, phi, glf[a], &diff, &mean, NULL);
             fail_if(hj_ls_measure(&c.g, y, &area, &err), &err);
-            p2b_front_error(&c.g, y, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
-            fprintf(tab.fp, "%s\t%s\t%.4e\t%.6g\t%.4e\t%.4e\t%.3f\t%.3f\t%.6g\n", p2b_acc_name[a], DISS[d], diff, area,
+            hj_ls_front_error(&c.g, y, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
+            fprintf(tab.fp, "%s\t%s\t%.4e\t%.6g\t%.4e\t%.4e\t%.3f\t%.3f\t%.6g\n", hj_ls_accuracy_name(a), DISS[d], diff, area,
                     fmax, fmean, secs / base[d], secs, c.exact_area);
-            fprintf(notes.fp, "| %s | %s | %s | %.4f (%+.1f %%) | %.2e / %.2e | %.2f | %.1f (%g) |\n", p2b_acc_name[a],
+            fprintf(notes.fp, "| %s | %s | %s | %.4f (%+.1f %%) | %.2e / %.2e | %.2f | %.1f (%g) |\n", hj_ls_accuracy_name(a),
                     DISS[d], d ? (diff == 0 ? "0 (bitwise equal)" : "nonzero") : "-", area,
                     100 * (area / c.exact_area - 1), fmax, fmean, secs, secs / base[d], PUBLISHED_COST[a]);
             if (d && diff != 0) fprintf(notes.fp, "| | | %.3e | | | | |\n", diff);

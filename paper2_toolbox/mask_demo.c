@@ -68,7 +68,9 @@ mask_run_seq.dat, mask_run_min.dat.
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_convection.h"
 
 static const char *const PROG = "mask_demo";
 static const double TMAX = 0.6;
@@ -161,24 +163,22 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
     hj_ls_copy(&g, y2, y);
     hj_ls_copy(&g, min2, y);
 
-    p2b_flow flow = {0, 1.0, 2};
+    p2_flow flow = {0, 0, 2};
     hj_ls_convection term;
-    hj_ls_convection_init(&term, &g, p2b_acc_scheme[acc]);
-    term.velocity_fn = p2b_flow_velocity;
+    hj_ls_convection_init(&term, &g, hj_ls_accuracy_scheme(acc));
+    term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
     double tspan[NT];
-    p2b_times(0, TMAX, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &g, "phi", &err), &err);
+    hj_ls_seq_times(0, TMAX, NT, tspan);
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, &g, "phi", 10);
     seq.nextra = 1, seq.extra_name[0] = "psi", seq.extra[0] = psi;
-    fail_if(p2b_seq_block(&seq, 0, y, &err), &err);
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
     opts.post = mask_and_keep_min, opts.post_ctx = &km;
     hj_ls_ode_stats st;
-    if (hj_ls_ode(p2b_acc_order[acc], &g, &term.base, tspan, NT, y, &opts, p2b_seq_out, &seq, &st, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", p2b_acc_name[acc], err.msg);
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    if (hj_ls_seq_solve_file(seq_path, hj_ls_accuracy_order(acc), &g, &term.base, tspan, NT, y, &opts, &seq, &st, &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", hj_ls_accuracy_name(acc), err.msg);
 
     /* The independent minimum: one CFL step per call, the kernel's mask as
      * PostTimestep, the minimum taken here. */
@@ -190,7 +190,7 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
         while (tspan[k] - t > 1e-12) {
             const double span[2] = {t, tspan[k]};
             hj_ls_ode_stats s2;
-            fail_if(hj_ls_ode(p2b_acc_order[acc], &g, &term.base, span, 2, y2, &opts, NULL, NULL, &s2, &err), &err);
+            fail_if(hj_ls_ode(hj_ls_accuracy_order(acc), &g, &term.base, span, 2, y2, &opts, NULL, NULL, &s2, &err), &err);
             t = s2.t, steps2++;
             update_min(&g, y2, psi, min2, &dummy);
         }
@@ -229,7 +229,7 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int acc = P2B_LOW, single = 0;
+    int acc = HJ_LS_ACC_LOW, single = 0;
     const char *dir = ".";
     hj_error err;
     for (int i = 1; i < argc; i++) {
@@ -242,7 +242,7 @@ int main(int argc, char **argv)
         const char *v = argv[++i];
         if (!strcmp(a, "--out-dir")) { dir = v; continue; }
         single = 1;
-        if (p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &acc, &err))
+        if (hj_ls_accuracy_parse(v, &acc, &err))
             hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
     }
     fail_if(hj_mkdirs(dir, &err), &err);
@@ -262,16 +262,16 @@ int main(int argc, char **argv)
                           "max difference of min | steps |\n|---|---|---|---|---|---|---|\n",
                 TMAX, AREA_FINAL, AREA_MIN);
     }
-    for (int a = 0; a < P2B_NACC; a++) {
+    for (int a = 0; a < HJ_LS_NACC; a++) {
         if (single && a != acc) continue;
         snprintf(seq, sizeof seq, "%s/%s", dir, single ? "mask_run_seq.dat" : "mask_seq.dat");
         snprintf(mn, sizeof mn, "%s/%s", dir, single ? "mask_run_min.dat" : "mask_min.dat");
         result r;
-        run(a, single || a == P2B_LOW ? seq : NULL, single || a == P2B_LOW ? mn : NULL, &r);
-        fprintf(tab.fp, "%s\t%.6g\t%.6g\t%ld\t%ld\t%.4e\t%ld\n", p2b_acc_name[a], r.area_final, r.area_min, r.pieces,
+        run(a, single || a == HJ_LS_ACC_LOW ? seq : NULL, single || a == HJ_LS_ACC_LOW ? mn : NULL, &r);
+        fprintf(tab.fp, "%s\t%.6g\t%.6g\t%ld\t%ld\t%.4e\t%ld\n", hj_ls_accuracy_name(a), r.area_final, r.area_min, r.pieces,
                 r.in_s, r.diff_min, r.steps);
         if (!single)
-            fprintf(notes.fp, "| %s | %.5f (%+.1f %%) | %.5f (%+.1f %%) | %ld | %ld | %.1e | %ld |\n", p2b_acc_name[a],
+            fprintf(notes.fp, "| %s | %.5f (%+.1f %%) | %.5f (%+.1f %%) | %ld | %ld | %.1e | %ld |\n", hj_ls_accuracy_name(a),
                     r.area_final, 100 * (r.area_final / AREA_FINAL - 1), r.area_min, 100 * (r.area_min / AREA_MIN - 1),
                     r.pieces, r.in_s, r.diff_min, r.steps);
     }

@@ -70,7 +70,7 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
 #include "p2_oshershu.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
 #include "hj_math.h"
 
 static const char *prog = "nonconvex_lf";
@@ -152,12 +152,12 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/nonconvex_1d.dat", out_dir);
     die(hj_out_open(&out, path, &err), &err);
     const long fig_n[3] = {2560, 10, 40};
-    const int fig_acc[3] = {P2_VERYHIGH, P2_HIGH, P2_HIGH};
+    const int fig_acc[3] = {HJ_LS_ACC_VERYHIGH, HJ_LS_ACC_HIGH, HJ_LS_ACC_HIGH};
     for (int q = 0; q < 3; q++) {
         p2_os_run f = {1, fig_n[q], fig_acc[q], HJ_LS_GLF, 0, tk, 1};
         double *phi = run(&f, &g, NULL);
         fprintf(out.fp, "%s# index %d: accuracy %s, global, %ld nodes, t = 1.5/pi^2\n", q ? "\n\n" : "", q,
-                p2_accuracy_name(fig_acc[q]), fig_n[q]);
+                hj_ls_accuracy_name(fig_acc[q]), fig_n[q]);
         const char *names[1] = {"phi"};
         const double *fl[1] = {phi};
         die(hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
@@ -165,7 +165,7 @@ int main(int argc, char **argv)
     }
     die(hj_out_commit(&out, &err), &err);
     {
-        p2_os_run f = {2, 40, P2_HIGH, HJ_LS_GLF, 0, tk, 10};
+        p2_os_run f = {2, 40, HJ_LS_ACC_HIGH, HJ_LS_GLF, 0, tk, 10};
         snprintf(path, sizeof path, "%s/nonconvex_2d.dat", out_dir);
         hj_ls_free(run(&f, &g, path));
     }
@@ -187,7 +187,7 @@ int main(int argc, char **argv)
     fprintf(notes.fp, "\nBefore the kink (t = 0.5/pi^2), against the exact solution, 1-D, global, orders fitted "
                       "over N = 20-%ld (L1 / Linf):\n\n| accuracy | L1 at N = %ld | fitted orders |\n|---|---|---|\n",
             n1[nn1 - 1], n1[nn1 - 1]);
-    for (int acc = 0; acc < P2_NACC; acc++) {
+    for (int acc = 0; acc < HJ_LS_NACC; acc++) {
         double h[MAXN], e1[MAXN], ei[MAXN];
         for (int k = 0; k < nn1; k++) {
             p2_os_run f = {1, n1[k], acc, HJ_LS_GLF, 0, ts, 1};
@@ -198,7 +198,7 @@ int main(int argc, char **argv)
                 hj_cli_fail(prog, HJ_EXIT_RUN, "exact solution: characteristics cross before t = 0.5/pi^2");
             h[k] = g.dx[0];
             p2_os_errors(&g, phi, ex, &e1[k], &ei[k]);
-            fprintf(tab.fp, "smooth\t1\t%s\tglobal\ttoolbox\t%ld\t%.4e\t", p2_accuracy_name(acc), n1[k], e1[k]);
+            fprintf(tab.fp, "smooth\t1\t%s\tglobal\ttoolbox\t%ld\t%.4e\t", hj_ls_accuracy_name(acc), n1[k], e1[k]);
             if (k) fprintf(tab.fp, "%.2f\t", hj_pair_order(h[k - 1], e1[k - 1], h[k], e1[k])); else fputs("-\t", tab.fp);
             fprintf(tab.fp, "%.4e\t", ei[k]);
             if (k) fprintf(tab.fp, "%.2f\t-\t-\t-\n", hj_pair_order(h[k - 1], ei[k - 1], h[k], ei[k]));
@@ -209,7 +209,7 @@ int main(int argc, char **argv)
         hj_order_fit f1, fi;
         hj_error ferr;
         const int ok1 = !hj_fit_order(h, e1, nn1, &f1, &ferr), oki = !hj_fit_order(h, ei, nn1, &fi, &ferr);
-        fprintf(notes.fp, "| %s | %.3e | %.2f / %.2f |\n", p2_accuracy_name(acc), e1[nn1 - 1], ok1 ? f1.p : NAN,
+        fprintf(notes.fp, "| %s | %.3e | %.2f / %.2f |\n", hj_ls_accuracy_name(acc), e1[nn1 - 1], ok1 ? f1.p : NAN,
                 oki ? fi.p : NAN);
     }
 
@@ -227,10 +227,10 @@ int main(int argc, char **argv)
         const long *ns = dim == 1 ? nk1 : nk2;
         const int nn = dim == 1 ? (quick ? 4 : 6) : (quick ? 3 : 4);
         for (int ai = 0; ai < 2; ai++) {
-            const int acc = ai ? P2_HIGH : P2_LOW;
+            const int acc = ai ? HJ_LS_ACC_HIGH : HJ_LS_ACC_LOW;
             for (int tight = 0; tight < 2; tight++)
                 for (int k = 0; k < nn; k++) {
-                    hj_progress("nonconvex_lf: kink dim %d %s %s N %ld\n", dim, p2_accuracy_name(acc),
+                    hj_progress("nonconvex_lf: kink dim %d %s %s N %ld\n", dim, hj_ls_accuracy_name(acc),
                                 tight ? "tight" : "toolbox", ns[k]);
                     double *phi[3];
                     for (int diss = 0; diss < 3; diss++) {
@@ -249,14 +249,14 @@ int main(int argc, char **argv)
                     long dif[3] = {0, 0, 0};
                     for (int diss = 0; diss < 3; diss++) {
                         sp[diss] = max_diff(&g, phi[diss], phi[0]);
-                        dif[diss] = p2_count_differ(&g, phi[0], phi[diss]);
+                        dif[diss] = hj_ls_count_differ(&g, phi[0], phi[diss]);
                         if (!tight) toolbox_differ += dif[diss];
-                        fprintf(tab.fp, "kink\t%d\t%s\t%s\t%s\t%ld\t-\t-\t-\t-\t", dim, p2_accuracy_name(acc),
-                                p2_dissipation_name(diss), tight ? "tight" : "toolbox", ns[k]);
+                        fprintf(tab.fp, "kink\t%d\t%s\t%s\t%s\t%ld\t-\t-\t-\t-\t", dim, hj_ls_accuracy_name(acc),
+                                hj_ls_dissipation_name(diss), tight ? "tight" : "toolbox", ns[k]);
                         if (!tight && diss == 0) fprintf(tab.fp, "%.4e\t", cy); else fputs("-\t", tab.fp);
                         fprintf(tab.fp, "%.4e\t%ld\n", sp[diss], dif[diss]);
                     }
-                    if (tight && acc == P2_HIGH) {
+                    if (tight && acc == HJ_LS_ACC_HIGH) {
                         /* the Cauchy column of the same N from the toolbox-partial run above */
                         p2_os_run f = {dim, 2 * ns[k], acc, HJ_LS_GLF, 1, tk, 1};
                         double *fine = run(&f, &g2, NULL);
@@ -272,7 +272,7 @@ int main(int argc, char **argv)
     /* 3. Thread-count independence: 2-D, high, global, 80^2, 1 against 2 threads. */
     long tdiff = -1;
     {
-        p2_os_run f = {2, 80, P2_HIGH, HJ_LS_GLF, 0, tk, 1};
+        p2_os_run f = {2, 80, HJ_LS_ACC_HIGH, HJ_LS_GLF, 0, tk, 1};
         double *one = run(&f, &g, NULL);
 #ifdef _OPENMP
         omp_set_num_threads(2);
@@ -281,7 +281,7 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
         omp_set_num_threads(1);
 #endif
-        tdiff = p2_count_differ(&g, one, two);
+        tdiff = hj_ls_count_differ(&g, one, two);
         fprintf(tab.fp, "threads\t2\thigh\tglobal\ttoolbox\t80\t-\t-\t-\t-\t-\t%.4e\t%ld\n", max_diff(&g, one, two), tdiff);
         hj_ls_free(one);
         hj_ls_free(two);
