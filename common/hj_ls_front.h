@@ -3,7 +3,7 @@
  * exact solutions: convectionDemo and laxFriedrichsDemo (sections 2.1,
  * 2.2.2: phi after a full turn against phi_0 near the front), reinitDemo
  * and reinitTest (sections 2.2.1, 2.7.3: |grad phi| = 1, equation (4),
- * and how far reinitialization moved the front).
+ * and how far reinitialization shifted the front).
  *
  * Sums are serial, in row order.  Nothing here prints or exits.
  */

@@ -1,6 +1,8 @@
 /* hj_ls_io.h -- writing arrays of the level set kernel as plain data:
  * gnuplot-ready text blocks (1-3 D) and legacy VTK files (3-D fields for
- * ParaView/VisIt; 1-D and 2-D work too).
+ * ParaView/VisIt; 1-D and 2-D work too), the data behind the figures of
+ * Mitchell's toolbox (section 2, e.g. the isosurfaces of Figures 3, 13,
+ * 17 as voxel lattices).
  *
  * Text blocks: one line per interior node, the coordinates then one column
  * per field ("%.*g" with 10 significant digits); dimension 0 runs fastest.

@@ -1,5 +1,8 @@
 /* hj_ls_measure.h -- the measure (length, area, volume) of the set
- * {phi < 0} of a level set function on a grid of dimension 1, 2 or 3.
+ * {phi < 0} of a level set function on a grid of dimension 1, 2 or 3: the
+ * areas and volumes that check the examples of Mitchell's toolbox (section
+ * 2: convectionDemo's area loss, curvature motion's 2 pi b t, the
+ * reachable sets of sections 2.5-2.6); not a toolbox routine itself.
  *
  * phi is interpolated linearly on the Kuhn simplices of every grid cell
  * (a cell of 2^d nodes is cut into d! simplices along its main diagonal),
@@ -35,7 +38,7 @@ int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *e
 int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_dim, double *m, hj_error *err);
 
 /* Radius of the disc (2-D) or ball (3-D) whose area or volume is the
- * measure of {phi < 0}: the size of a circle or sphere moved by normal or
+ * measure of {phi < 0}: the size of a circle or sphere under normal or
  * curvature motion (sections 2.3.1-2.3.2).  HJ_EINVAL for other
  * dimensions. */
 int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err);

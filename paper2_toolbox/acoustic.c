@@ -111,11 +111,6 @@ static void usage(void)
            "See the comment at the top of acoustic.c.\n", prog);
 }
 
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
-}
-
 static double speed_bound(const par *q, double x, double y)
 {
     const double r = sqrt(x * x + y * y);
@@ -243,7 +238,7 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     hj_ls_grid g;
     const double lo[2] = {-4, -2}, hi[2] = {4, 3}, dxs[2] = {dx, dx};
     const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    die(hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
+    p2_fail_if(prog, hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
     double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     /* the target [-3.5, 3.5] x [-0.2, 0]: max of the four half-plane
@@ -262,12 +257,12 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     hj_ls_seq b;
     hj_ls_seq_init(&b, NULL, &g, "phi", 0);
     if (path) {
-        die(hj_out_open(&out, path, &err), &err);
+        p2_fail_if(prog, hj_out_open(&out, path, &err), &err);
         b.fp = out.fp;
     }
     r->dx = dx;
     r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
-    die(p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
+    p2_fail_if(prog, p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, &g, hj_ls_accuracy_scheme(acc), diss, ham, partial, (void *)q);
     hj_ls_restrict rs;
@@ -278,8 +273,10 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     double ts[9];
     hj_ls_seq_times(0, tmax, 9, ts);
     hj_progress("acoustic: accuracy %s, dx = %g ...\n", hj_ls_accuracy_name(acc), dx);
-    die(hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err), &err);
-    if (path) die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog,
+               hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err),
+               &err);
+    if (path) p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     p2_reach_log_free(&r->log);
     r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
     hj_ls_free(y);
@@ -295,11 +292,9 @@ int main(int argc, char **argv)
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        int v;
         const char *s;
-        if (p2_next_option(argc, argv, &i, valued, 6, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v == P2_OPT_HELP) { usage(); return 0; }
-        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        const int v = p2_option(prog, usage, argc, argv, &i, valued, 6, &quick, &s);
+        if (v < 0) continue;
         int rc = 0;
         switch (v) {
         case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
@@ -312,7 +307,7 @@ int main(int argc, char **argv)
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
         if (v < 5) single = 1;
     }
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in
      * synchronisation on a shared machine; results do not depend on it). */
@@ -340,8 +335,7 @@ int main(int argc, char **argv)
         run(&q, acc, diss, dxs[k], tmax, k == 1 ? path : NULL, &R[k]);
     }
     hj_out out;
-    snprintf(path, sizeof path, "%s/acoustic.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "acoustic.tsv", &err), &err);
     fprintf(out.fp, "# acoustic capture, accuracy medium: area of the reachable set, nodes where phi increased since the\n"
                     "# previous output, holes = enclosed components of the complement not touching the target (their\n"
                     "# number, area, distance to the target), asym = max |phi(x,y) - phi(-x,y)|, flips = nodes whose\n"
@@ -355,9 +349,7 @@ int main(int argc, char **argv)
             if (h->n) fprintf(out.fp, "%.3g\t", h->gap); else fputs("-\t", out.fp);
             fprintf(out.fp, "%.3e\t%ld\n", R[k].sn.asym[m], R[k].sn.flips[m]);
         }
-    die(hj_out_commit(&out, &err), &err);
-    snprintf(path, sizeof path, "%s/acoustic_notes.md", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_next_file(prog, &out, out_dir, "acoustic_notes.md");
     fprintf(out.fp, "\nArea of the reachable set and of its holes (components of the complement enclosed by the set "
                     "and more than 1.5 dx from the target) on three grids, accuracy medium:\n\n"
                     "| t | area, dx = 0.08 | dx = 0.04 | dx = 0.02 | hole area (0.08 / 0.04 / 0.02) | hole distance to "
@@ -382,6 +374,6 @@ int main(int argc, char **argv)
     fprintf(out.fp, "\nphi increased at %ld nodes between output times in all runs (the set never shrinks).  Mirror "
                     "x -> -x: %ld nodes in all changed membership of the set; largest |phi(x, y) - phi(-x, y)|: "
                     "%.1e.\n\n", inc, flips, asym);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

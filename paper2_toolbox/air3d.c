@@ -95,11 +95,6 @@ static void usage(void)
            "written to air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n", prog);
 }
 
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
-}
-
 /* Asymmetry at every output time (snapshot callback of the reach log). */
 typedef struct {
     const hj_ls_grid *g;
@@ -131,18 +126,18 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
                 double **phi0, double **phi)
 {
     hj_error err;
-    die(p2_air3d_grid(Nx, g, &err), &err);
+    p2_fail_if(prog, p2_air3d_grid(Nx, g, &err), &err);
     double *y = hj_ls_alloc(g), *y0 = hj_ls_alloc(g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for NX = %ld", Nx);
-    die(p2_air3d_target(g, p, y, &err), &err);
+    p2_fail_if(prog, p2_air3d_target(g, p, y, &err), &err);
     hj_ls_copy(g, y0, y);
     r->acc = acc, r->Nx = Nx, r->nint = nint, r->tmax = tmax;
     r->sn.g = g;
-    die(p2_reach_log_init(&r->log, g, 2, 0, y, on_snapshot, &r->sn, &err), &err);
+    p2_fail_if(prog, p2_reach_log_init(&r->log, g, 2, 0, y, on_snapshot, &r->sn, &err), &err);
     double ts[P2_MAXT];
     hj_ls_seq_times(0, tmax, nint + 1, ts);
     hj_progress("air3d: accuracy %s, NX = %ld ...\n", hj_ls_accuracy_name(acc), Nx);
-    die(p2_air3d_solve(g, p, acc, diss, ts, nint + 1, y, p2_reach_output, &r->log, &r->st, &err), &err);
+    p2_fail_if(prog, p2_air3d_solve(g, p, acc, diss, ts, nint + 1, y, p2_reach_output, &r->log, &r->st, &err), &err);
     p2_reach_log_free(&r->log);
     if (phi0) *phi0 = y0; else hj_ls_free(y0);
     if (phi) *phi = y; else hj_ls_free(y);
@@ -157,11 +152,9 @@ int main(int argc, char **argv)
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--diss", "--N", "--tmax", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        int v;
         const char *s;
-        if (p2_next_option(argc, argv, &i, valued, 5, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v == P2_OPT_HELP) { usage(); return 0; }
-        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        const int v = p2_option(prog, usage, argc, argv, &i, valued, 5, &quick, &s);
+        if (v < 0) continue;
         int rc = 0;
         switch (v) {
         case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
@@ -173,7 +166,7 @@ int main(int argc, char **argv)
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
         if (v < 4) single = 1;
     }
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
     p2_air3d_par par;
     p2_air3d_defaults(&par);
     char path[4096];
@@ -185,7 +178,7 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/air3d_run.vtk", out_dir);
         const char *names[2] = {"target", "reach"};
         const double *f[2] = {phi0, phi};
-        die(hj_ls_write_vtk(path, &g, "air3D reachable set", 2, names, f, &err), &err);
+        p2_fail_if(prog, hj_ls_write_vtk(path, &g, "air3D reachable set", 2, names, f, &err), &err);
         printf("# air3D accuracy=%s diss=%s NX=%ld: %ld steps\n# t\tvolume\tincreased\tasymmetry\tflips\n",
                hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), Nx, fr.st.steps);
         for (int k = 0; k < fr.log.n; k++)
@@ -211,18 +204,18 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/air3d.vtk", out_dir);
     const char *names[2] = {"target", "reach"};
     const double *f[2] = {fig0, fig1};
-    die(hj_ls_write_vtk(path, &gf, "air3D: target cylinder and reachable set at t = 2.8 (medium)", 2, names, f, &err),
+    p2_fail_if(
+        prog,
+        hj_ls_write_vtk(path, &gf, "air3D: target cylinder and reachable set at t = 2.8 (medium)", 2, names, f, &err),
         &err);
     hj_out out;
-    snprintf(path, sizeof path, "%s/air3d_vox.dat", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
-    die(hj_ls_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "air3d_vox.dat", &err), &err);
+    p2_fail_if(prog, hj_ls_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     hj_ls_free(fig0);
     hj_ls_free(fig1);
 
-    snprintf(path, sizeof path, "%s/air3d.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "air3d.tsv", &err), &err);
     fprintf(out.fp, "# air3D: volume of the reachable set (x, y, psi; second order measure), nodes where phi increased\n"
                     "# since the previous output time, max |phi(x,y,psi) - phi(x,-y,-psi)|, nodes whose membership of the set\n"
                     "# differs from their mirror image's (flips); N = NX, the nodes in x\n"
@@ -234,17 +227,14 @@ int main(int argc, char **argv)
                 fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", hj_ls_accuracy_name(r->acc), r->Nx,
                         r->log.t[q], r->log.measure[q], r->log.increased[q], r->sn.asym[q], r->sn.flips[q], r->st.steps);
         }
-    die(hj_out_commit(&out, &err), &err);
-
-    snprintf(path, sizeof path, "%s/air3d_notes.md", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_next_file(prog, &out, out_dir, "air3d_notes.md");
     fprintf(out.fp, "\nVolume of the reachable set at t = 2.8 on the grid sequence (the target cylinder's volume "
                     "in the box is 25 pi * 2 pi = %.3f), with the change from the previous grid:\n\n"
                     "| NX | grid | medium | change | low | change |\n|---|---|---|---|---|---|\n",
             25 * 3.14159265358979323846 * 2 * 3.14159265358979323846);
     for (int k = 0; k < nseq; k++) {
         hj_ls_grid gs;
-        die(p2_air3d_grid(seq[k], &gs, &err), &err);
+        p2_fail_if(prog, p2_air3d_grid(seq[k], &gs, &err), &err);
         fprintf(out.fp, "| %ld | %ldx%ldx%ld |", seq[k], gs.N[0], gs.N[1], gs.N[2]);
         for (int a = 0; a < 2; a++) {
             const double v = R[a][k].log.measure[R[a][k].log.n - 1];
@@ -267,6 +257,6 @@ int main(int argc, char **argv)
                     "the set never shrinks).  Reflection y -> -y, psi -> -psi: %ld nodes in all changed membership "
                     "of the set; the largest |phi(x, y, psi) - phi(x, -y, -psi)| was %.1e for medium and %.1e for "
                     "low.\n\n", inc, flips, asym[0], asym[1]);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -81,8 +81,8 @@ int main(int argc, char **argv)
 #endif
             best[a][th] = 1e300;
             for (long r = 0; r < repeat; r++) {
-                hj_progress("bench_air3d: %s, %d thread(s), run %ld of %ld\n", hj_ls_accuracy_name(accs[a]), th + 1, r + 1,
-                            repeat);
+                hj_progress("bench_air3d: %s, %d thread(s), run %ld of %ld\n", hj_ls_accuracy_name(accs[a]), th + 1,
+                            r + 1, repeat);
                 if (p2_air3d_target(&g, &par, y, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
                 hj_ls_ode_stats st;
                 const double t0 = now();

@@ -232,16 +232,20 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral.dat", &err), &err);
-    fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n", hj_ls_accuracy_name(o.acc),
-            initial ? "points" : "ellipse", o.N);
-    p2_commit_run(prog, &out, run_spiral(&g, hj_ls_accuracy_order(o.acc), initial, samples, tspan, 9, out.fp, area, "spiral", &err), &err);
+    fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
+            hj_ls_accuracy_name(o.acc), initial ? "points" : "ellipse", o.N);
+    p2_commit_run(prog, &out,
+                  run_spiral(&g, hj_ls_accuracy_order(o.acc), initial, samples, tspan, 9, out.fp, area, "spiral", &err),
+                  &err);
     /* Figure 8 (b): the point cloud, whatever --initial chose for (a). */
     double area_points[9];
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral_points.dat", &err), &err);
     fprintf(out.fp, "# curvatureSpiralDemo(%s, 'points') on %ld^2 nodes, %ld points: phi at t = k/8, k = 0..8\n",
             hj_ls_accuracy_name(o.acc), o.N, samples);
-    p2_commit_run(prog, &out, run_spiral(&g, hj_ls_accuracy_order(o.acc), 1, samples, tspan, 9, out.fp, area_points, "spiral points", &err),
-                  &err);
+    p2_commit_run(
+        prog, &out,
+        run_spiral(&g, hj_ls_accuracy_order(o.acc), 1, samples, tspan, 9, out.fp, area_points, "spiral points", &err),
+        &err);
 
     /* The check: area loss 2 pi b t for both initial data on three grids,
      * up to t = 0.25. */
@@ -254,7 +258,10 @@ int main(int argc, char **argv)
         for (int ini = 0; ini < 2; ini++) {
             char label[64];
             snprintf(label, sizeof label, "spiral %s, N = %ld", init_name[ini], grids[n]);
-            p2_fail_if(prog, run_spiral(&g, hj_ls_accuracy_order(o.acc), ini, samples, tspan, 3, NULL, areas[n][ini], label, &err), &err);
+            p2_fail_if(
+                prog,
+                run_spiral(&g, hj_ls_accuracy_order(o.acc), ini, samples, tspan, 3, NULL, areas[n][ini], label, &err),
+                &err);
         }
     }
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral.tsv", &err), &err);
@@ -265,9 +272,7 @@ int main(int argc, char **argv)
         for (int ini = 0; ini < 2; ini++)
             fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\n", grids[n], init_name[ini], areas[n][ini][0] - areas[n][ini][2],
                     areas[n][ini][0]);
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "curvature_spiral_notes.md");
     fprintf(out.fp, "\nArea lost since t = 0 divided by the exact 2 pi b t (b = 0.075), `%s` accuracy.  The law "
                     "holds for any simple closed curve until it vanishes.\n\n"
                     "| initial | nodes per side | A(0) | t = 0.125 | t = 0.25 |\n|---|---|---|---|---|\n",

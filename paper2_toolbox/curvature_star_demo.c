@@ -93,14 +93,9 @@ static int run_curv(const hj_ls_grid *g, int order, double b0, int split, const 
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
-    int only = -1;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--split-flow", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    int only = -1; /* -1: both cases */
+    p2_parse_demo(&o, argc, argv, "--split-flow", &only);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     const double b0 = 0.02;
     const double tspan[4] = {0, 0.25, 0.5, 1.0};
     const hj_ls_star star = {0.25, 2, 7};
@@ -119,7 +114,8 @@ int main(int argc, char **argv)
         fprintf(out.fp, "# curvatureStarDemo(%s, splitFlow = %d) on %ld^2 nodes: phi at t = 0, 0.25, 0.5, 1\n",
                 hj_ls_accuracy_name(o.acc), split, o.N);
         p2_commit_run(prog, &out,
-                      run_curv(&g, hj_ls_accuracy_order(o.acc), b0, split, tspan, 4, phi, out.fp, NULL, split ? "star, split" : "star", &err),
+                      run_curv(&g, hj_ls_accuracy_order(o.acc), b0, split, tspan, 4, phi, out.fp, NULL,
+                               split ? "star, split" : "star", &err),
                       &err);
     }
     hj_ls_free(phi);
@@ -141,7 +137,9 @@ int main(int argc, char **argv)
             double area[4];
             char label[64];
             snprintf(label, sizeof label, "%s, N = %ld", shape[s], grids[n]);
-            p2_fail_if(prog, run_curv(&g, hj_ls_accuracy_order(o.acc), b0, s == 2, tspan, 4, phi, NULL, area, label, &err), &err);
+            p2_fail_if(prog,
+                       run_curv(&g, hj_ls_accuracy_order(o.acc), b0, s == 2, tspan, 4, phi, NULL, area, label, &err),
+                       &err);
             loss[n][s] = area[0] - area[3];
             if (s == 0) rc[n] = sqrt(area[3] / HJ_PI);
         }
@@ -158,9 +156,7 @@ int main(int argc, char **argv)
             if (s == 0) fprintf(out.fp, "%.6f\t%.6f\n", rc[n], loss_exact);
             else fprintf(out.fp, "-\t%s\n", s == 1 ? "0.125664" : "-");
         }
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_star_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "curvature_star_notes.md");
     fprintf(out.fp, "\nArea lost by t = 1 under curvature motion with b0 = 0.02 (`%s` accuracy), exact 2 pi b0 t = "
                     "%.6f for the circle and the star; radius of the circle (r0 = 0.4) at t = 1, exact %.6f.  The "
                     "splitFlow star has no closed form (shown only).\n\n"

@@ -297,14 +297,10 @@ static double run_sphere(long n, int order)
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_parse_demo(&o, argc, argv, NULL, NULL);
     if (!o.N) o.N = o.quick ? 61 : 101;
     if (o.N % 4 != 1) hj_cli_fail(prog, HJ_EXIT_USAGE, "--N must be 1 more than a multiple of 4 (got %ld)", o.N);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[9];
     hj_ls_seq_times(0, 0.025, 9, tspan);
 
@@ -331,9 +327,7 @@ int main(int argc, char **argv)
         fprintf(out.fp, "%ld\tsphere\t%.6f\t-\n", grids[n], rs[n]);
         fprintf(out.fp, "%ld\tdumbbell\t-\t%.7f\n", grids[n], tp[n]);
     }
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "dumbbell_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "dumbbell_notes.md");
     fprintf(out.fp, "\nPinch-off time t_p (phi at the origin crosses 0; phi^2 extrapolated linearly from the last two steps "
                     "before) and the "
                     "sphere check (radius at t = 0.0125, exact 0.2), `%s` accuracy.  An infinite cylinder of the "

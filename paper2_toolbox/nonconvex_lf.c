@@ -69,6 +69,7 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
+#include "p2_cli.h"
 #include "p2_oshershu.h"
 #include "hj_ls_accuracy.h"
 #include "hj_math.h"
@@ -83,11 +84,6 @@ static void usage(void)
            "nonconvex_2d.dat, nonconvex_notes.md).  With any of them: one run (defaults as the toolbox: low,\n"
            "global, dim 2, N = 80 / 2^(dim-1), tmax = 1.5/pi^2, the toolbox's partial bound 1), its time\n"
            "sequence in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n", prog);
-}
-
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
@@ -132,7 +128,7 @@ int main(int argc, char **argv)
     if (cli.help) { usage(); return 0; }
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
     omp_set_num_threads(1);
@@ -149,8 +145,7 @@ int main(int argc, char **argv)
     /* Figure 15 (a): 1-D at t = 1.5/pi^2: a reference on 2560 nodes (WENO5,
      * RK3) and ENO3-LF (high, global) on 10 and 40 nodes. */
     hj_out out;
-    snprintf(path, sizeof path, "%s/nonconvex_1d.dat", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "nonconvex_1d.dat", &err), &err);
     const long fig_n[3] = {2560, 10, 40};
     const int fig_acc[3] = {HJ_LS_ACC_VERYHIGH, HJ_LS_ACC_HIGH, HJ_LS_ACC_HIGH};
     for (int q = 0; q < 3; q++) {
@@ -160,10 +155,10 @@ int main(int argc, char **argv)
                 hj_ls_accuracy_name(fig_acc[q]), fig_n[q]);
         const char *names[1] = {"phi"};
         const double *fl[1] = {phi};
-        die(hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
+        p2_fail_if(prog, hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
         hj_ls_free(phi);
     }
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     {
         p2_os_run f = {2, 40, HJ_LS_ACC_HIGH, HJ_LS_GLF, 0, tk, 10};
         snprintf(path, sizeof path, "%s/nonconvex_2d.dat", out_dir);
@@ -171,10 +166,8 @@ int main(int argc, char **argv)
     }
 
     hj_out tab, notes;
-    snprintf(path, sizeof path, "%s/nonconvex.tsv", out_dir);
-    die(hj_out_open(&tab, path, &err), &err);
-    snprintf(path, sizeof path, "%s/nonconvex_notes.md", out_dir);
-    die(hj_out_open(&notes, path, &err), &err);
+    p2_fail_if(prog, p2_open(&tab, out_dir, "nonconvex.tsv", &err), &err);
+    p2_fail_if(prog, p2_open(&notes, out_dir, "nonconvex_notes.md", &err), &err);
     fprintf(tab.fp, "# nonconvexLF checks: smooth = errors against the exact solution (characteristics) at t = 0.5/pi^2;\n"
                     "# kink (t = 1.5/pi^2): cauchy = max |phi_N - phi_2N| on the N grid's nodes (global),\n"
                     "# spread = max |phi_diss - phi_global|, differ = nodes where phi_diss != phi_global bitwise;\n"
@@ -290,7 +283,7 @@ int main(int argc, char **argv)
                       "dissipations gave bitwise identical states at every grid (%ld differing nodes in all), as "
                       "section 2.5.2 says.  One and two OpenMP threads: %ld differing nodes (2-D, 80^2, high).\n\n",
             toolbox_differ, tdiff);
-    die(hj_out_commit(&tab, &err), &err);
-    die(hj_out_commit(&notes, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&tab, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&notes, &err), &err);
     return 0;
 }

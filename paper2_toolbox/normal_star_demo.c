@@ -83,17 +83,25 @@ static int run_normal(const hj_ls_grid *g, const p2_opts *o, double a0, int reve
     return p2_run(hj_ls_accuracy_order(o->acc), g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
 }
 
+/* The check's case c: speed[c], reversed at t = 0.5 for the third. */
+typedef struct {
+    const p2_opts *o;
+    double speed[3];
+} circle_case;
+
+static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err)
+{
+    const circle_case *cc = ctx;
+    const double tc[3] = {0, 0.5, 1}; /* t_switch = 0.5 must be an output time */
+    return run_normal(g, cc->o, cc->speed[c], c == 2, tc, 3, phi, NULL, label, err);
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--reverse-flow", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_parse_demo(&o, argc, argv, "--reverse-flow", &only);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     const double a0 = 0.25;
     double tspan[9];
     hj_ls_seq_times(0, 1, 9, tspan);
@@ -121,42 +129,22 @@ int main(int argc, char **argv)
     const long grids[3] = {51, 101, 201};
     const int ngrids = o.quick ? 2 : 3;
     const char *case_name[3] = {"grow", "shrink", "reverse"};
-    const double speed[3] = {a0, -a0, a0}, exact[3] = {0.75, 0.25, 0.5};
+    const double exact[3] = {0.75, 0.25, 0.5};
     double r[3][3];
-    const double tc[3] = {0, 0.5, 1}; /* t_switch = 0.5 must be an output time */
-    for (int n = 0; n < ngrids; n++) {
-        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
-        phi = hj_ls_alloc(&g);
-        if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-        for (int c = 0; c < 3; c++) {
-            p2_circle circ = {{0, 0, 0}, 0.5};
-            hj_ls_fill(&g, phi, p2_circle_fn, &circ);
-            char label[64];
-            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
-            p2_fail_if(prog, run_normal(&g, &o, speed[c], c == 2, tc, 3, phi, NULL, label, &err), &err);
-            p2_fail_if(prog, hj_ls_measure_radius(&g, phi, &r[n][c], &err), &err);
-        }
-        hj_ls_free(phi);
-    }
+    circle_case cc = {&o, {a0, -a0, a0}};
+    const p2_circle circ = {{0, 0, 0}, 0.5};
+    p2_fail_if(prog, p2_circle_radii(grids, ngrids, &circ, 3, case_name, circle_run, &cc, r[0], &err), &err);
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "normal_circle.tsv", &err), &err);
     fprintf(out.fp, "# normalStarDemo check: circle r0 = 0.5 under normal motion, accuracy %s, radius at t = 1 "
                     "from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n", hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 3; c++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "normal_star_notes.md", &err), &err);
+    p2_check_rows(out.fp, grids, ngrids, 3, case_name, r[0], exact);
+    p2_next_file(prog, &out, o.out_dir, "normal_star_notes.md");
     fprintf(out.fp, "\nCircle of radius 0.5 under normal motion (speed +-0.25, `%s` accuracy): radius at t = 1 "
                     "from the area of {phi < 0}, against r0 + a t.\n\n"
                     "| nodes per side | case | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n",
             hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 3; c++)
-            fprintf(out.fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]), fabs(r[n][c] - exact[c]) * (grids[n] - 1) / 2.0);
+    p2_check_notes(out.fp, grids, ngrids, 3, case_name, r[0], exact);
     fputc('\n', out.fp);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

@@ -2,6 +2,7 @@
 #include "p2_motion.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #include "hj_cli.h"
 #include "hj_ls_measure.h"
@@ -61,4 +62,46 @@ int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err)
     (void)t;
     p2_areas *a = ctx;
     return hj_ls_measure(a->grid, y, &a->area[k], err);
+}
+
+int p2_circle_radii(const long *grids, int ngrids, const p2_circle *circ, int ncase, const char *const *case_name,
+                    p2_case_fn run, void *ctx, double *r, hj_error *err)
+{
+    int rc = HJ_OK;
+    for (int n = 0; n < ngrids && !rc; n++) {
+        hj_ls_grid g;
+        if ((rc = p2_square_grid(&g, grids[n], err))) break;
+        double *phi = hj_ls_alloc(&g);
+        if (!phi) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+        for (int c = 0; c < ncase && !rc; c++) {
+            hj_ls_fill(&g, phi, p2_circle_fn, (void *)circ);
+            char label[64];
+            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
+            rc = run(&g, c, phi, label, ctx, err);
+            if (!rc) rc = hj_ls_measure_radius(&g, phi, &r[n * ncase + c], err);
+        }
+        hj_ls_free(phi);
+    }
+    return rc;
+}
+
+void p2_check_rows(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_name,
+                   const double *value, const double *exact)
+{
+    for (int n = 0; n < ngrids; n++)
+        for (int c = 0; c < ncase; c++) {
+            const double v = value[n * ncase + c];
+            fprintf(fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], v, exact[c], fabs(v - exact[c]));
+        }
+}
+
+void p2_check_notes(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_label,
+                    const double *value, const double *exact)
+{
+    for (int n = 0; n < ngrids; n++)
+        for (int c = 0; c < ncase; c++) {
+            const double v = value[n * ncase + c];
+            fprintf(fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", grids[n], case_label[c], v, exact[c],
+                    fabs(v - exact[c]), fabs(v - exact[c]) * (grids[n] - 1) / 2.0);
+        }
 }

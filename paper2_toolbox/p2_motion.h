@@ -68,4 +68,23 @@ typedef struct {
 } p2_areas;
 int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err);
 
+/* The circle checks of normalStarDemo and spinStarDemo: for every square
+ * grid of grids[0..ngrids-1] nodes per side (p2_square_grid) and case c
+ * < ncase, the circle circ evolved by run(g, c, phi, label, ctx, err) and
+ * its radius at the end (hj_ls_measure_radius) into r[n * ncase + c];
+ * label is "circle <case_name[c]>, N = <grid>". */
+typedef int (*p2_case_fn)(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err);
+int p2_circle_radii(const long *grids, int ngrids, const p2_circle *circ, int ncase, const char *const *case_name,
+                    p2_case_fn run, void *ctx, double *r, hj_error *err);
+
+/* Rows "N case value exact error" (tab-separated; %ld %s %.6f %.6f %.3e)
+ * of a check table, value[n * ncase + c] of grid n against exact[c]. */
+void p2_check_rows(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_name,
+                   const double *value, const double *exact);
+
+/* The same as markdown rows "| N | case | r | exact | error | error / dx |"
+ * (%.5f %.2f %.2e %.3f; dx = 2 / (N - 1) of the square grid). */
+void p2_check_notes(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_label,
+                    const double *value, const double *exact);
+
 #endif

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hj_cli.h"
 #include "hj_ls_accuracy.h"
 #include "hj_ls_front.h"
 #include "hj_ls_helper.h"
@@ -49,7 +50,8 @@ int p2_reinit_setup(p2_reinit_case *c, int shape, hj_error *err)
         return rc;
     }
     for (long k = 0; k < NCOARSE; k++)
-        c->coarse[2 * k] = c->curve[2 * k * P2_CURVE_STRIDE], c->coarse[2 * k + 1] = c->curve[2 * k * P2_CURVE_STRIDE + 1];
+        c->coarse[2 * k] = c->curve[2 * k * P2_CURVE_STRIDE],
+                      c->coarse[2 * k + 1] = c->curve[2 * k * P2_CURVE_STRIDE + 1];
     long idx[2];
     for (size_t r = 0; r < c->g.rows; r++) {
         const size_t k = hj_ls_row(&c->g, r, idx);
@@ -124,4 +126,21 @@ int p2_reinit_options(int argc, char **argv, p2_reinit_opts *o, hj_error *err)
         o->single |= v < 2;
     }
     return HJ_OK;
+}
+
+void p2_reinit_begin(const char *prog, void (*usage)(void), int argc, char **argv, const char *base,
+                     const char *comment, p2_reinit_opts *o, hj_out *tab)
+{
+    hj_error err;
+    if (p2_reinit_options(argc, argv, o, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    if (o->help) {
+        usage();
+        exit(0);
+    }
+    p2_fail_if(prog, hj_mkdirs(o->dir, &err), &err);
+    char name[256];
+    snprintf(name, sizeof name, "%s%s.tsv", base, o->single ? "_run" : "");
+    p2_fail_if(prog, p2_open(tab, o->dir, name, &err), &err);
+    fputs(comment, tab->fp);
+    p2_reinit_header(tab->fp);
 }

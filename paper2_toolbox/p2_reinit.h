@@ -17,6 +17,7 @@
 #include <stdio.h>
 
 #include "hj_error.h"
+#include "hj_io.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_shape.h"
 
@@ -65,5 +66,12 @@ typedef struct {
     const char *dir;
 } p2_reinit_opts;
 int p2_reinit_options(int argc, char **argv, p2_reinit_opts *o, hj_error *err);
+
+/* For main() (ends the program on bad usage or a failure): the options
+ * (--help prints usage() and exits), the output directory, and the table
+ * o->dir/<base>.tsv (one run: <base>_run.tsv) opened in *tab with the
+ * comment line(s) and the columns. */
+void p2_reinit_begin(const char *prog, void (*usage)(void), int argc, char **argv, const char *base,
+                     const char *comment, p2_reinit_opts *o, hj_out *tab);
 
 #endif

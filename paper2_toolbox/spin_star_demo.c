@@ -103,18 +103,26 @@ static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, 
     return rc;
 }
 
+/* The check's case c: rigid rotation plus normal speed speed[c] to t = 1. */
+typedef struct {
+    const p2_opts *o;
+    double speed[2];
+} circle_case;
+
+static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err)
+{
+    const circle_case *cc = ctx;
+    const double tc[2] = {0, 1};
+    return run_spin(g, cc->o, cc->speed[c], 1, tc, 2, phi, NULL, label, err);
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
-    int only = -1;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--rigid", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    int only = -1; /* -1: both cases */
+    p2_parse_demo(&o, argc, argv, "--rigid", &only);
     if (!o.N) o.N = o.quick ? 101 : 201; /* the figure grid: 201^2 as in the text, 101^2 in quick mode */
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[9];
     hj_ls_seq_times(0, 1, 9, tspan);
 
@@ -129,8 +137,8 @@ int main(int argc, char **argv)
         hj_ls_fill(&g, phi, hj_ls_star_fn, &star);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, rigid ? "spin_star_a.dat" : "spin_star_b.dat", &err), &err);
-        fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n", hj_ls_accuracy_name(o.acc),
-                rigid, o.N);
+        fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
+                hj_ls_accuracy_name(o.acc), rigid, o.N);
         p2_commit_run(prog, &out,
                       run_spin(&g, &o, 0.20, rigid, tspan, 9, phi, out.fp, rigid ? "star, rigid" : "star, |x|^2", &err),
                       &err);
@@ -140,44 +148,24 @@ int main(int argc, char **argv)
     /* The check: an off-centre circle, rigid rotation plus normal motion. */
     const long grids[3] = {51, 101, 201};
     const int ngrids = o.quick ? 2 : 3;
-    const char *case_name[2] = {"grow", "shrink"};
-    const double speed[2] = {0.1, -0.1}, exact[2] = {0.4, 0.2};
-    const double tc[2] = {0, 1};
+    const char *case_name[2] = {"grow", "shrink"}, *speed_label[2] = {"+0.1", "-0.1"};
+    const double exact[2] = {0.4, 0.2};
     double r[3][2];
-    for (int n = 0; n < ngrids; n++) {
-        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
-        phi = hj_ls_alloc(&g);
-        if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-        for (int c = 0; c < 2; c++) {
-            p2_circle circ = {{0.4, 0, 0}, 0.3};
-            hj_ls_fill(&g, phi, p2_circle_fn, &circ);
-            char label[64];
-            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
-            p2_fail_if(prog, run_spin(&g, &o, speed[c], 1, tc, 2, phi, NULL, label, &err), &err);
-            p2_fail_if(prog, hj_ls_measure_radius(&g, phi, &r[n][c], &err), &err);
-        }
-        hj_ls_free(phi);
-    }
+    circle_case cc = {&o, {0.1, -0.1}};
+    const p2_circle circ = {{0.4, 0, 0}, 0.3};
+    p2_fail_if(prog, p2_circle_radii(grids, ngrids, &circ, 2, case_name, circle_run, &cc, r[0], &err), &err);
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "spin_circle.tsv", &err), &err);
     fprintf(out.fp, "# spinStarDemo check: circle r0 = 0.3 at (0.4, 0), rigid rotation 0.75 pi plus normal speed a, "
                     "accuracy %s, radius at t = 1 from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n",
             hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 2; c++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "spin_star_notes.md", &err), &err);
+    p2_check_rows(out.fp, grids, ngrids, 2, case_name, r[0], exact);
+    p2_next_file(prog, &out, o.out_dir, "spin_star_notes.md");
     fprintf(out.fp, "\nCircle of radius 0.3 centred at (0.4, 0), rigid rotation at 0.75 pi plus normal speed "
                     "a = +-0.1 (`%s` accuracy): radius at t = 1 from the area of {phi < 0}, against r0 + a t.\n\n"
                     "| nodes per side | a | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n",
             hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 2; c++)
-            fprintf(out.fp, "| %ld | %+.1f | %.5f | %.2f | %.2e | %.3f |\n", grids[n], speed[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]), fabs(r[n][c] - exact[c]) * (grids[n] - 1) / 2.0);
+    p2_check_notes(out.fp, grids, ngrids, 2, speed_label, r[0], exact);
     fputc('\n', out.fp);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

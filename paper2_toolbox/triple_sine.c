@@ -112,7 +112,8 @@ static int run_sine(const hj_ls_grid *g, const p2_opts *o, double b, const doubl
     hj_ls_curvature_term_init(&curv, g);
     curv.b.value = b;
     p2_seq seq = {fp, g, "phi", NULL, NULL, NULL, label, NULL, NULL};
-    if (b == 0) return p2_run(hj_ls_accuracy_order(o->acc), g, &normal.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
+    if (b == 0)
+        return p2_run(hj_ls_accuracy_order(o->acc), g, &normal.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
     const hj_ls_term *terms[2] = {&normal.base, &curv.base};
     hj_ls_sum sum;
     int rc = hj_ls_sum_init(&sum, g, terms, 2, err);
@@ -157,8 +158,8 @@ int main(int argc, char **argv)
         snprintf(label, sizeof label, "tripleSine b = %g", bs[k]);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, name, &err), &err);
-        fprintf(out.fp, "# tripleSine(%g, %s) on %ld^2 nodes: phi at t = 0.5 k / 11, k = 0..11\n", bs[k], hj_ls_accuracy_name(o.acc),
-                o.N);
+        fprintf(out.fp, "# tripleSine(%g, %s) on %ld^2 nodes: phi at t = 0.5 k / 11, k = 0..11\n", bs[k],
+                hj_ls_accuracy_name(o.acc), o.N);
         p2_commit_run(prog, &out, run_sine(&g, &o, bs[k], tspan, 12, phi, out.fp, label, &err), &err);
         hfig[k][0] = front_height(&g, phi, 0);
         hfig[k][1] = front_height(&g, phi, o.N / 2);
@@ -188,13 +189,8 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine.tsv", &err), &err);
     fprintf(out.fp, "# tripleSine check: b = 0, accuracy %s, front height at t = 0.5 on the column x_1 = 0.2 (flank) "
                     "and x_1 = 1 (valley)\nN\tpoint\theight\texact\terror\n", hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        for (int p = 0; p < 2; p++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], point[p], h[n][p], exact[p],
-                    fabs(h[n][p] - exact[p]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine_notes.md", &err), &err);
+    p2_check_rows(out.fp, grids, ngrids, 2, point, h[0], exact);
+    p2_next_file(prog, &out, o.out_dir, "triple_sine_notes.md");
     fprintf(out.fp, "\nFront height at t = 0.5 for b = 0 (`%s` accuracy) against Huygens' principle (flank x_1 = 0.2: "
                     "1.710286, valley x_1 = 1: 1.630852):\n\n| nodes per side | flank | error | valley | error |\n|---|---|---|---|---|\n",
             hj_ls_accuracy_name(o.acc));

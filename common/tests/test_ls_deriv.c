@@ -346,7 +346,8 @@ static void gradient_norm(void **state)
     for (size_t r = 0; r < g.rows; r++) {
         long i[2] = {0, 0};
         const size_t k = hj_ls_row(&g, r, i);
-        for (long j = 0; j < 11; j++) phi[k + (size_t)j] = 3 * (-1 + 0.2 * (double)j) - 4 * (-1 + 0.2 * (double)i[1]) + 10;
+        for (long j = 0; j < 11; j++)
+            phi[k + (size_t)j] = 3 * (-1 + 0.2 * (double)j) - 4 * (-1 + 0.2 * (double)i[1]) + 10;
     }
     assert_int_equal(hj_ls_gradient_norm(&g, phi, work, out, NULL), HJ_OK);
     for (size_t r = 0; r < g.rows; r++) {
