@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "hj_cli.h"
+#include "hj_ls_accuracy.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_seq.h"
 
@@ -64,44 +65,63 @@ int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err)
     return hj_ls_measure(a->grid, y, &a->area[k], err);
 }
 
-int p2_circle_radii(const long *grids, int ngrids, const p2_circle *circ, int ncase, const char *const *case_name,
-                    p2_case_fn run, void *ctx, double *r, hj_error *err)
+void p2_check_rows(FILE *fp, const p2_check *c)
 {
-    int rc = HJ_OK;
-    for (int n = 0; n < ngrids && !rc; n++) {
+    for (int n = 0; n < c->ngrids; n++)
+        for (int k = 0; k < c->ncase; k++) {
+            const double v = c->value[n * c->ncase + k], e = c->exact[k];
+            fprintf(fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", c->grids[n], c->case_name[k], v, e, fabs(v - e));
+        }
+}
+
+void p2_check_notes(FILE *fp, const p2_check *c)
+{
+    for (int n = 0; n < c->ngrids; n++)
+        for (int k = 0; k < c->ncase; k++) {
+            const double v = c->value[n * c->ncase + k], e = c->exact[k];
+            fprintf(fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", c->grids[n], c->case_label[k], v, e, fabs(v - e),
+                    fabs(v - e) * (c->grids[n] - 1) / 2.0);
+        }
+}
+
+void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *md, const char *md_head,
+                    const p2_check *c)
+{
+    hj_error err;
+    hj_out out;
+    const char *acc = hj_ls_accuracy_name(o->acc);
+    p2_fail_if(o->prog, p2_open(&out, o->out_dir, tsv, &err), &err);
+    fprintf(out.fp, tsv_head, acc);
+    p2_check_rows(out.fp, c);
+    p2_next_file(o->prog, &out, o->out_dir, md);
+    fprintf(out.fp, md_head, acc);
+    p2_check_notes(out.fp, c);
+    fputc('\n', out.fp);
+    p2_fail_if(o->prog, hj_out_commit(&out, &err), &err);
+}
+
+void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
+                     const char *tsv_head, const char *md, const char *md_head)
+{
+    static const long grids[3] = {51, 101, 201};
+    double r[3 * 4];
+    hj_error err;
+    c->grids = grids, c->ngrids = o->quick ? 2 : 3, c->value = r;
+    if (c->ncase > 4) hj_cli_fail(o->prog, HJ_EXIT_RUN, "circle check: more than 4 cases");
+    for (int n = 0; n < c->ngrids; n++) {
         hj_ls_grid g;
-        if ((rc = p2_square_grid(&g, grids[n], err))) break;
+        p2_fail_if(o->prog, p2_square_grid(&g, grids[n], &err), &err);
         double *phi = hj_ls_alloc(&g);
-        if (!phi) return hj_error_set(err, HJ_ENOMEM, "out of memory");
-        for (int c = 0; c < ncase && !rc; c++) {
+        if (!phi) hj_cli_fail(o->prog, HJ_EXIT_RUN, "out of memory");
+        for (int k = 0; k < c->ncase; k++) {
             hj_ls_fill(&g, phi, p2_circle_fn, (void *)circ);
             char label[64];
-            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
-            rc = run(&g, c, phi, label, ctx, err);
-            if (!rc) rc = hj_ls_measure_radius(&g, phi, &r[n * ncase + c], err);
+            snprintf(label, sizeof label, "circle %s, N = %ld", c->case_name[k], grids[n]);
+            p2_fail_if(o->prog, run(&g, k, phi, label, ctx, &err), &err);
+            p2_fail_if(o->prog, hj_ls_measure_radius(&g, phi, &r[n * c->ncase + k], &err), &err);
         }
         hj_ls_free(phi);
     }
-    return rc;
-}
-
-void p2_check_rows(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_name,
-                   const double *value, const double *exact)
-{
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < ncase; c++) {
-            const double v = value[n * ncase + c];
-            fprintf(fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], v, exact[c], fabs(v - exact[c]));
-        }
-}
-
-void p2_check_notes(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_label,
-                    const double *value, const double *exact)
-{
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < ncase; c++) {
-            const double v = value[n * ncase + c];
-            fprintf(fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", grids[n], case_label[c], v, exact[c],
-                    fabs(v - exact[c]), fabs(v - exact[c]) * (grids[n] - 1) / 2.0);
-        }
+    p2_check_files(o, tsv, tsv_head, md, md_head, c);
+    c->value = NULL;
 }

@@ -1,11 +1,13 @@
 /* p2_motion.h -- what the demos of sections 2.3-2.4 share (curvature,
  * normal motion, spin, tripleSine, dumbbell): the square grid, the
  * circle, a switching scalar (the toolbox's switchValue), the run through
- * the output times with the states written as gnuplot index blocks, and
- * the area of {phi < 0} at every output time.
+ * the output times with the states written as gnuplot index blocks, the
+ * area of {phi < 0} at every output time, and the check tables against
+ * exact radii and heights.
  *
- * Library-style code (hj_error codes) but for the progress line p2_run
- * prints on a terminal (hj_progress), which makes it for programs only.
+ * For programs only: p2_run prints a progress line on a terminal
+ * (hj_progress), and p2_check_files and p2_circle_check end the program
+ * on a failure; the others return hj_error codes.
  */
 #ifndef P2_MOTION_H
 #define P2_MOTION_H
@@ -16,6 +18,7 @@
 #include "hj_ls_grid.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
+#include "p2_cli.h"
 
 /* The square [-1, 1]^2 with n nodes per side and extrapolation boundary
  * conditions, the domain of the section 2.3 demos. */
@@ -68,23 +71,39 @@ typedef struct {
 } p2_areas;
 int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err);
 
-/* The circle checks of normalStarDemo and spinStarDemo: for every square
- * grid of grids[0..ngrids-1] nodes per side (p2_square_grid) and case c
- * < ncase, the circle circ evolved by run(g, c, phi, label, ctx, err) and
- * its radius at the end (hj_ls_measure_radius) into r[n * ncase + c];
- * label is "circle <case_name[c]>, N = <grid>". */
-typedef int (*p2_case_fn)(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err);
-int p2_circle_radii(const long *grids, int ngrids, const p2_circle *circ, int ncase, const char *const *case_name,
-                    p2_case_fn run, void *ctx, double *r, hj_error *err);
+/* A check table: value[n * ncase + c] of case c on the grid of grids[n]
+ * nodes per side against exact[c]; case_name in the TSV table, case_label
+ * in the notes. */
+typedef struct {
+    const long *grids;
+    int ngrids, ncase;
+    const char *const *case_name, *const *case_label;
+    const double *value, *exact;
+} p2_check;
 
-/* Rows "N case value exact error" (tab-separated; %ld %s %.6f %.6f %.3e)
- * of a check table, value[n * ncase + c] of grid n against exact[c]. */
-void p2_check_rows(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_name,
-                   const double *value, const double *exact);
+/* Rows "N case value exact error" (tab-separated; %ld %s %.6f %.6f %.3e). */
+void p2_check_rows(FILE *fp, const p2_check *c);
 
-/* The same as markdown rows "| N | case | r | exact | error | error / dx |"
- * (%.5f %.2f %.2e %.3f; dx = 2 / (N - 1) of the square grid). */
-void p2_check_notes(FILE *fp, const long *grids, int ngrids, int ncase, const char *const *case_label,
-                    const double *value, const double *exact);
+/* Markdown rows "| N | case | value | exact | error | error / dx |" (%.5f
+ * %.2f %.2e %.3f; dx = 2 / (N - 1) of the square grid). */
+void p2_check_notes(FILE *fp, const p2_check *c);
+
+/* Both as files of o->out_dir: tsv (tsv_head, then the rows) and md
+ * (md_head, the markdown rows and a blank line); the heads are printf
+ * formats of the accuracy's name.  For main(): ends the program on a
+ * failure. */
+void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *md, const char *md_head,
+                    const p2_check *c);
+
+/* The circle checks of normalStarDemo and spinStarDemo, for main(): on
+ * the square grids (p2_square_grid) of 51, 101, 201 nodes per side (with
+ * o->quick the first two) and for each case k < c->ncase (at most 4), the
+ * circle circ evolved by run(g, k, phi, label, ctx, err), label "circle
+ * <case_name[k]>, N = <nodes>", and its radius at the end
+ * (hj_ls_measure_radius) against c->exact[k]; c's grids and values are set
+ * here, then p2_check_files writes the tables. */
+typedef int (*p2_case_fn)(const hj_ls_grid *g, int k, double *phi, const char *label, void *ctx, hj_error *err);
+void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
+                     const char *tsv_head, const char *md, const char *md_head);
 
 #endif

@@ -103,17 +103,12 @@ static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, 
     return rc;
 }
 
-/* The check's case c: rigid rotation plus normal speed speed[c] to t = 1. */
-typedef struct {
-    const p2_opts *o;
-    double speed[2];
-} circle_case;
-
+/* The check's case c (ctx: the options): rigid rotation plus normal
+ * speed +-0.1 to t = 1. */
 static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err)
 {
-    const circle_case *cc = ctx;
     const double tc[2] = {0, 1};
-    return run_spin(g, cc->o, cc->speed[c], 1, tc, 2, phi, NULL, label, err);
+    return run_spin(g, ctx, c ? -0.1 : 0.1, 1, tc, 2, phi, NULL, label, err);
 }
 
 int main(int argc, char **argv)
@@ -146,27 +141,16 @@ int main(int argc, char **argv)
     hj_ls_free(phi);
 
     /* The check: an off-centre circle, rigid rotation plus normal motion. */
-    const long grids[3] = {51, 101, 201};
-    const int ngrids = o.quick ? 2 : 3;
     const char *case_name[2] = {"grow", "shrink"}, *speed_label[2] = {"+0.1", "-0.1"};
     const double exact[2] = {0.4, 0.2};
-    double r[3][2];
-    circle_case cc = {&o, {0.1, -0.1}};
     const p2_circle circ = {{0.4, 0, 0}, 0.3};
-    p2_fail_if(prog, p2_circle_radii(grids, ngrids, &circ, 2, case_name, circle_run, &cc, r[0], &err), &err);
-    hj_out out;
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "spin_circle.tsv", &err), &err);
-    fprintf(out.fp, "# spinStarDemo check: circle r0 = 0.3 at (0.4, 0), rigid rotation 0.75 pi plus normal speed a, "
+    p2_check check = {NULL, 0, 2, case_name, speed_label, NULL, exact};
+    p2_circle_check(&o, &circ, circle_run, &o, &check, "spin_circle.tsv",
+                    "# spinStarDemo check: circle r0 = 0.3 at (0.4, 0), rigid rotation 0.75 pi plus normal speed a, "
                     "accuracy %s, radius at t = 1 from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n",
-            hj_ls_accuracy_name(o.acc));
-    p2_check_rows(out.fp, grids, ngrids, 2, case_name, r[0], exact);
-    p2_next_file(prog, &out, o.out_dir, "spin_star_notes.md");
-    fprintf(out.fp, "\nCircle of radius 0.3 centred at (0.4, 0), rigid rotation at 0.75 pi plus normal speed "
+                    "spin_star_notes.md",
+                    "\nCircle of radius 0.3 centred at (0.4, 0), rigid rotation at 0.75 pi plus normal speed "
                     "a = +-0.1 (`%s` accuracy): radius at t = 1 from the area of {phi < 0}, against r0 + a t.\n\n"
-                    "| nodes per side | a | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n",
-            hj_ls_accuracy_name(o.acc));
-    p2_check_notes(out.fp, grids, ngrids, 2, speed_label, r[0], exact);
-    fputc('\n', out.fp);
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+                    "| nodes per side | a | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n");
     return 0;
 }

@@ -189,7 +189,8 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine.tsv", &err), &err);
     fprintf(out.fp, "# tripleSine check: b = 0, accuracy %s, front height at t = 0.5 on the column x_1 = 0.2 (flank) "
                     "and x_1 = 1 (valley)\nN\tpoint\theight\texact\terror\n", hj_ls_accuracy_name(o.acc));
-    p2_check_rows(out.fp, grids, ngrids, 2, point, h[0], exact);
+    const p2_check check = {grids, ngrids, 2, point, point, h[0], exact};
+    p2_check_rows(out.fp, &check);
     p2_next_file(prog, &out, o.out_dir, "triple_sine_notes.md");
     fprintf(out.fp, "\nFront height at t = 0.5 for b = 0 (`%s` accuracy) against Huygens' principle (flank x_1 = 0.2: "
                     "1.710286, valley x_1 = 1: 1.630852):\n\n| nodes per side | flank | error | valley | error |\n|---|---|---|---|---|\n",

@@ -18,15 +18,21 @@ static hj_ls_grid grid2(long n)
     return g;
 }
 
+/* The circle of radius r about c as a signed distance on g (allocated). */
+static double *circle(const hj_ls_grid *g, const double *c, double r)
+{
+    double *phi = hj_ls_alloc(g);
+    assert_int_equal(hj_ls_shape_sphere(g, c, r, phi, NULL), HJ_OK);
+    return phi;
+}
+
 /* |phi - exact| counted only within the band of exact. */
 static void error_in_band(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid2(21);
-    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), mx, mean;
     const double c[2] = {0, 0};
-    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, a, NULL), HJ_OK);
-    hj_ls_copy(&g, b, a);
+    hj_ls_grid g = grid2(21);
+    double *a = circle(&g, c, 0.5), *b = circle(&g, c, 0.5), mx, mean;
     const long far[2] = {0, 0}, near[2] = {10, 15}; /* corner, and (0, 0.5) on the circle */
     b[hj_ls_index(&g, far)] += 1;
     b[hj_ls_index(&g, near)] += 0.25;
@@ -43,15 +49,12 @@ static void error_in_band(void **state)
 static void grad_deviation(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid2(41);
-    double *phi = hj_ls_alloc(&g), *work = hj_ls_alloc(&g), mean, mx;
     const double c[2] = {0, 0};
-    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, phi, NULL), HJ_OK);
+    hj_ls_grid g = grid2(41);
+    double *phi = circle(&g, c, 0.5), *dist = circle(&g, c, 0.5), *work = hj_ls_alloc(&g), mean, mx;
     assert_int_equal(hj_ls_front_grad_deviation(&g, phi, phi, 0.2, work, &mean, &mx, NULL), HJ_OK);
     assert_true(mx < 0.02);
     for (size_t k = 0; k < g.total; k++) phi[k] *= 2;
-    double *dist = hj_ls_alloc(&g);
-    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, dist, NULL), HJ_OK);
     assert_int_equal(hj_ls_front_grad_deviation(&g, phi, dist, 0.2, work, &mean, &mx, NULL), HJ_OK);
     assert_close(mean, 1, 0.02, 0);
     hj_ls_free(phi), hj_ls_free(work), hj_ls_free(dist);
@@ -62,11 +65,10 @@ static void grad_deviation(void **state)
 static void crossings(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid2(41);
-    double *phi = hj_ls_alloc(&g), *pts, *curve, mx, mean;
-    long n;
     const double c[2] = {0.1, -0.05};
-    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.6, phi, NULL), HJ_OK);
+    hj_ls_grid g = grid2(41);
+    double *phi = circle(&g, c, 0.6), *pts, *curve, mx, mean;
+    long n;
     assert_int_equal(hj_ls_front_crossings(&g, phi, &pts, &n, NULL), HJ_OK);
     assert_true(n > 60);
     for (long k = 0; k < n; k++) assert_close(hypot(pts[2 * k] - c[0], pts[2 * k + 1] - c[1]), 0.6, 2e-3, 0);
@@ -88,11 +90,8 @@ static void crossings(void **state)
 
 int main(void)
 {
-    hj_test_one_thread();
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(error_in_band),
-        cmocka_unit_test(grad_deviation),
-        cmocka_unit_test(crossings),
+        cmocka_unit_test(error_in_band), cmocka_unit_test(grad_deviation), cmocka_unit_test(crossings),
     };
     return cmocka_run_group_tests_name("hj_ls_front", tests, NULL, NULL);
 }
