@@ -408,3 +408,25 @@ int hj_ls_curvature(const hj_ls_grid *g, double *data, double *kappa, double *gr
     }
     return HJ_OK;
 }
+
+int hj_ls_gradient_norm(const hj_ls_grid *g, double *data, double *work, double *out, hj_error *err)
+{
+    long idx[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) out[k + (size_t)j] = 0;
+    }
+    for (int d = 0; d < g->dim; d++) {
+        int rc = hj_ls_centered_first(g, data, d, work, err);
+        if (rc) return rc;
+        for (size_t r = 0; r < g->rows; r++) {
+            const size_t k = hj_ls_row(g, r, idx);
+            for (long j = 0; j < g->N[0]; j++) out[k + (size_t)j] += work[k + (size_t)j] * work[k + (size_t)j];
+        }
+    }
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) out[k + (size_t)j] = sqrt(out[k + (size_t)j]);
+    }
+    return HJ_OK;
+}

@@ -89,6 +89,10 @@ int hj_ls_upwind(const hj_ls_grid *g, int scheme, double *data, int d, double *d
 /* Centered first derivative in dimension d. */
 int hj_ls_centered_first(const hj_ls_grid *g, double *data, int d, double *out, hj_error *err);
 
+/* out = |grad phi| by centered differences (second order); work is an
+ * array on g (ghosts are filled in data). */
+int hj_ls_gradient_norm(const hj_ls_grid *g, double *data, double *work, double *out, hj_error *err);
+
 /* Hessian entry d^2 phi / dx_i dx_j (i = j: the second derivative). */
 int hj_ls_hessian(const hj_ls_grid *g, double *data, int i, int j, double *out, hj_error *err);
 

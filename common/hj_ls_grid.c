@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "hj_sys.h"
 
@@ -194,3 +195,20 @@ void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *
     if (avg) *avg = s1 / (double)g->nodes;
     if (rms) *rms = sqrt(s2 / (double)g->nodes);
 }
+
+static long count_rows(const hj_ls_grid *g, const double *a, const double *b, int differ)
+{
+    long c = 0;
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM] = {0};
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++) {
+            const double x = a[k + (size_t)j], y = b[k + (size_t)j];
+            c += differ ? memcmp(&x, &y, sizeof x) != 0 : y > x;
+        }
+    }
+    return c;
+}
+
+long hj_ls_count_increase(const hj_ls_grid *g, const double *a, const double *b) { return count_rows(g, a, b, 0); }
+long hj_ls_count_differ(const hj_ls_grid *g, const double *a, const double *b) { return count_rows(g, a, b, 1); }

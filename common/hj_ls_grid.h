@@ -102,4 +102,12 @@ void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src);
  * on the number of threads. */
 void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms);
 
+/* Number of interior nodes where b > a (a set that only grows, as under
+ * the toolbox's termRestrictUpdate, section 2.6, has phi non-increasing
+ * in time: 0 from an earlier a to a later b). */
+long hj_ls_count_increase(const hj_ls_grid *g, const double *a, const double *b);
+
+/* Number of interior nodes where a and b differ in any bit. */
+long hj_ls_count_differ(const hj_ls_grid *g, const double *a, const double *b);
+
 #endif

@@ -1,6 +1,8 @@
 /* hj_ls_io.c -- gnuplot blocks and legacy VTK; see hj_ls_io.h. */
 #include "hj_ls_io.h"
 
+#include <math.h>
+
 #include "hj_io.h"
 
 static const char *axis_name[3] = {"x", "y", "z"};
@@ -57,4 +59,63 @@ int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, in
         return hj_error_set(err, HJ_EIO, "%s: write error", path);
     }
     return hj_out_commit(&out, err);
+}
+
+int hj_ls_write_dat(const char *path, const hj_ls_grid *g, int nfields, const char *const *names,
+                    const double *const *fields, hj_error *err)
+{
+    hj_out out;
+    int rc = hj_out_open(&out, path, err);
+    if (rc) return rc;
+    rc = hj_ls_write_block(out.fp, g, nfields, names, fields, err);
+    if (rc) {
+        hj_out_abort(&out);
+        return rc;
+    }
+    return hj_out_commit(&out, err);
+}
+
+int hj_ls_write_voxels(FILE *fp, const hj_ls_grid *g, int nfields, const double *const *fields, int M, int periodic_dim,
+                       hj_error *err)
+{
+    if (g->dim != 3 || M < 2) return hj_error_set(err, HJ_EINVAL, "voxels: a 3-D grid and M >= 2 are needed");
+    double hi[3];
+    for (int d = 0; d < 3; d++) hi[d] = d == periodic_dim ? g->min[d] + (double)g->N[d] * g->dx[d] : g->max[d];
+    fprintf(fp, "# %d^3 lattice on [%.10g, %.10g] x [%.10g, %.10g] x [%.10g, %.10g]: x y z fields\n", M, g->min[0],
+            hi[0], g->min[1], hi[1], g->min[2], hi[2]);
+    for (int c = 0; c < M; c++)
+        for (int b = 0; b < M; b++)
+            for (int a = 0; a < M; a++) {
+                const int l[3] = {a, b, c};
+                double x[3], w[3];
+                long i0[3], i1[3];
+                for (int d = 0; d < 3; d++) {
+                    x[d] = g->min[d] + (hi[d] - g->min[d]) * l[d] / (M - 1);
+                    double s = (x[d] - g->min[d]) / g->dx[d];
+                    long i = (long)floor(s);
+                    const long last = d == periodic_dim ? g->N[d] - 1 : g->N[d] - 2;
+                    i = i < 0 ? 0 : i > last ? last : i;
+                    w[d] = s - (double)i;
+                    w[d] = w[d] < 0 ? 0 : w[d] > 1 ? 1 : w[d];
+                    i0[d] = i;
+                    i1[d] = d == periodic_dim ? (i + 1) % g->N[d] : i + 1;
+                }
+                fprintf(fp, "%.9g %.9g %.9g", x[0], x[1], x[2]);
+                for (int f = 0; f < nfields; f++) {
+                    double v = 0;
+                    for (int corner = 0; corner < 8; corner++) {
+                        long i[3];
+                        double wt = 1;
+                        for (int d = 0; d < 3; d++) {
+                            const int up = corner >> d & 1;
+                            i[d] = up ? i1[d] : i0[d];
+                            wt *= up ? w[d] : 1 - w[d];
+                        }
+                        v += wt * fields[f][hj_ls_index(g, i)];
+                    }
+                    fprintf(fp, " %.6g", v);
+                }
+                fputc('\n', fp);
+            }
+    return ferror(fp) ? hj_error_set(err, HJ_EIO, "voxels: write error") : HJ_OK;
 }

@@ -1,6 +1,8 @@
 /* hj_ls_io.h -- writing arrays of the level set kernel as plain data:
  * gnuplot-ready text blocks (1-3 D) and legacy VTK files (3-D fields for
- * ParaView/VisIt; 1-D and 2-D work too).
+ * ParaView/VisIt; 1-D and 2-D work too), the data behind the figures of
+ * Mitchell's toolbox (section 2, e.g. the isosurfaces of Figures 3, 13,
+ * 17 as voxel lattices).
  *
  * Text blocks: one line per interior node, the coordinates then one column
  * per field ("%.*g" with 10 significant digits); dimension 0 runs fastest.
@@ -28,5 +30,20 @@ int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *co
  * field), written atomically (hj_out).  title is the one-line header. */
 int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, int nfields,
                     const char *const *names, const double *const *fields, hj_error *err);
+
+/* One block of nfields arrays on g (with the header line of names) as
+ * the whole of a file, written atomically (hj_out). */
+int hj_ls_write_dat(const char *path, const hj_ls_grid *g, int nfields, const char *const *names,
+                    const double *const *fields, hj_error *err);
+
+/* 3-D fields resampled (trilinearly) on an M x M x M lattice spanning the
+ * grid's box, for gnuplot's voxel grids (`set vgrid $v size M` with the
+ * axis ranges set to the lattice's box, then `vfill ... using
+ * 1:2:3:(0):(column)`): a comment line, then one line "x y z f_1 ... f_n"
+ * per lattice point.  With periodic_dim >= 0 the box extends to the period
+ * in that dimension (interpolating between the last node and the first).
+ * HJ_EINVAL unless g is 3-D and M >= 2; HJ_EIO on a write error. */
+int hj_ls_write_voxels(FILE *fp, const hj_ls_grid *g, int nfields, const double *const *fields, int M, int periodic_dim,
+                       hj_error *err);
 
 #endif

@@ -3,6 +3,9 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "hj_math.h"
 
 /* t_ax = a / (a - x): the fraction of the edge from a (< 0) to x (>= 0) on
  * which the interpolant is negative. */
@@ -99,5 +102,48 @@ int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *e
     for (int e = 0; e < g->dim; e++) cell *= g->dx[e];
     free(rowsum);
     *m = total * cell;
+    return HJ_OK;
+}
+
+int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_dim, double *m, hj_error *err)
+{
+    if (periodic_dim < 0) return hj_ls_measure(g, phi, m, err);
+    if (periodic_dim >= g->dim)
+        return hj_error_set(err, HJ_EINVAL, "measure: periodic dimension %d of a %d-D grid", periodic_dim, g->dim);
+    /* A grid with one more node in the periodic dimension, its last plane
+     * a copy of the first. */
+    hj_ls_grid e;
+    long N[HJ_LS_MAXDIM];
+    double lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
+    for (int d = 0; d < g->dim; d++) N[d] = g->N[d], lo[d] = g->min[d], hi[d] = g->max[d];
+    N[periodic_dim] += 1;
+    hi[periodic_dim] = g->min[periodic_dim] + (double)g->N[periodic_dim] * g->dx[periodic_dim];
+    int rc = hj_ls_grid_init(&e, g->dim, lo, hi, N, g->bc, err);
+    if (rc) return rc;
+    double *a = hj_ls_alloc(&e);
+    if (!a) return hj_error_set(err, HJ_ENOMEM, "measure: out of memory");
+    for (size_t r = 0; r < e.rows; r++) {
+        long i[HJ_LS_MAXDIM] = {0};
+        const size_t k = hj_ls_row(&e, r, i);
+        if (i[periodic_dim] == g->N[periodic_dim]) i[periodic_dim] = 0;
+        const size_t ks = hj_ls_index(g, i);
+        if (periodic_dim == 0) {
+            memcpy(a + k, phi + ks, sizeof(double) * (size_t)g->N[0]);
+            a[k + (size_t)g->N[0]] = phi[ks];
+        } else
+            memcpy(a + k, phi + ks, sizeof(double) * (size_t)e.N[0]);
+    }
+    rc = hj_ls_measure(&e, a, m, err);
+    hj_ls_free(a);
+    return rc;
+}
+
+int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err)
+{
+    if (g->dim != 2 && g->dim != 3) return hj_error_set(err, HJ_EINVAL, "radius: 2-D or 3-D grids only");
+    double m;
+    int rc = hj_ls_measure(g, phi, &m, err);
+    if (rc) return rc;
+    *r = g->dim == 2 ? sqrt(m / HJ_PI) : cbrt(3 * m / (4 * HJ_PI));
     return HJ_OK;
 }

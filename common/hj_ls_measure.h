@@ -1,5 +1,8 @@
 /* hj_ls_measure.h -- the measure (length, area, volume) of the set
- * {phi < 0} of a level set function on a grid of dimension 1, 2 or 3.
+ * {phi < 0} of a level set function on a grid of dimension 1, 2 or 3: the
+ * areas and volumes that check the examples of Mitchell's toolbox (section
+ * 2: convectionDemo's area loss, curvature motion's 2 pi b t, the
+ * reachable sets of sections 2.5-2.6); not a toolbox routine itself.
  *
  * phi is interpolated linearly on the Kuhn simplices of every grid cell
  * (a cell of 2^d nodes is cut into d! simplices along its main diagonal),
@@ -26,5 +29,18 @@ double hj_ls_simplex_fraction(int d, const double *v);
 /* Measure of {phi < 0} over the grid's box; *m receives it.  HJ_EINVAL
  * for a grid of dimension above 3. */
 int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
+
+/* The same on a grid periodic in dimension periodic_dim (>= 0; < 0 is
+ * hj_ls_measure): the cells between the last node and the first node's
+ * periodic image count too, so the box is a full period, N dx (the grids
+ * of the toolbox's periodic examples, e.g. air3D's heading, section
+ * 2.6.1).  Needs a copy of phi with one more plane (allocated here). */
+int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_dim, double *m, hj_error *err);
+
+/* Radius of the disc (2-D) or ball (3-D) whose area or volume is the
+ * measure of {phi < 0}: the size of a circle or sphere under normal or
+ * curvature motion (sections 2.3.1-2.3.2).  HJ_EINVAL for other
+ * dimensions. */
+int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err);
 
 #endif

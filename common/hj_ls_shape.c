@@ -2,6 +2,9 @@
 #include "hj_ls_shape.h"
 
 #include <math.h>
+#include <stdlib.h>
+
+#include "hj_math.h"
 
 /* Parameters of a shape, evaluated node by node through hj_ls_fill. */
 typedef struct {
@@ -123,4 +126,41 @@ void hj_ls_shape_complement(const hj_ls_grid *g, const double *a, double *out)
         const size_t k0 = hj_ls_row(g, r, idx);
         for (long j = 0; j < g->N[0]; j++) out[k0 + (size_t)j] = -a[k0 + (size_t)j];
     }
+}
+
+/* phi of the star at x given |x| = r. */
+static double star_at(const hj_ls_star *s, double r, const double *x)
+{
+    return r - s->scale * (cos(s->points * atan2(x[1], x[0])) + s->shift);
+}
+
+double hj_ls_star_fn(const double *x, void *ctx) { return star_at(ctx, hypot(x[0], x[1]), x); }
+
+/* |x| as every grid shape here takes it, the root of the sum of squares. */
+static double star_grid_at(const double *x, void *ctx) { return star_at(ctx, sqrt(x[0] * x[0] + x[1] * x[1]), x); }
+
+int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err)
+{
+    if (g->dim != 2) return hj_error_set(err, HJ_EINVAL, "star: 2-D grids only");
+    hj_ls_fill(g, out, star_grid_at, (void *)s);
+    return HJ_OK;
+}
+
+double hj_ls_star_area(const hj_ls_star *s) { return HJ_PI * s->scale * s->scale * (0.5 + s->shift * s->shift); }
+
+int hj_ls_shape_curve(const hj_ls_star *star, const double *center, double radius, long n, double **pts, hj_error *err)
+{
+    double *p = malloc(sizeof(double) * 2 * (size_t)n);
+    if (!p) return hj_error_set(err, HJ_ENOMEM, "curve samples: out of memory");
+    for (long k = 0; k < n; k++) {
+        const double th = 2 * HJ_PI * (double)k / (double)n;
+        if (star) {
+            const double r = star->scale * (cos(star->points * th) + star->shift);
+            p[2 * k] = r * cos(th), p[2 * k + 1] = r * sin(th);
+        } else {
+            p[2 * k] = center[0] + radius * cos(th), p[2 * k + 1] = center[1] + radius * sin(th);
+        }
+    }
+    *pts = p;
+    return HJ_OK;
 }

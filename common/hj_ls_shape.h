@@ -43,4 +43,32 @@ void hj_ls_shape_intersection(const hj_ls_grid *g, const double *a, const double
 void hj_ls_shape_difference(const hj_ls_grid *g, const double *a, const double *b, double *out);
 void hj_ls_shape_complement(const hj_ls_grid *g, const double *a, double *out);
 
+/* The star of equation (13) (section 2.2.1; reinitDemo, curvatureStarDemo,
+ * normalStarDemo, spinStarDemo):
+ *     phi(x) = |x| - scale (cos(points theta) + shift),
+ * theta the polar angle of (x_1, x_2) (atan2, the toolbox's cart2pol; the
+ * printed arctan(x_2 / x_1) changes the shape for odd points).  Not a
+ * signed distance function: |grad phi| = sqrt(1 + (r'/r)^2) on the
+ * boundary r(theta) = scale (cos(points theta) + shift). */
+typedef struct {
+    double scale, shift, points;
+} hj_ls_star;
+
+/* phi of the star at x (2-D), an hj_ls_field_fn with ctx = hj_ls_star;
+ * |x| is hypot(x_1, x_2). */
+double hj_ls_star_fn(const double *x, void *ctx);
+
+/* The star on a 2-D grid (HJ_EINVAL for another dimension), with |x| the
+ * root of the sum of squares as in the other shapes here (it may differ
+ * from hj_ls_star_fn's hypot in the last bit). */
+int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err);
+
+/* Area of the star, pi scale^2 (1/2 + shift^2) (shift >= 1: r > 0). */
+double hj_ls_star_area(const hj_ls_star *s);
+
+/* n points of the star's boundary at the angles 2 pi k / n, or (star NULL)
+ * of the circle of the given centre and radius: *pts (malloc'd, 2 doubles
+ * per point, freed by the caller). */
+int hj_ls_shape_curve(const hj_ls_star *star, const double *center, double radius, long n, double **pts, hj_error *err);
+
 #endif

@@ -707,3 +707,21 @@ void hj_ls_extremum_free(hj_ls_extremum *c)
     hj_ls_free(c->work);
     c->work = NULL;
 }
+
+static const char *const dissipation_name[3] = {"global", "local", "locallocal"};
+
+const char *hj_ls_dissipation_name(int diss)
+{
+    return diss >= HJ_LS_GLF && diss <= HJ_LS_LLLF ? dissipation_name[diss] : "?";
+}
+
+int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err)
+{
+    const int v[3] = {HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF};
+    for (int k = 0; k < 3; k++)
+        if (!strcmp(s, dissipation_name[k])) {
+            *diss = v[k];
+            return HJ_OK;
+        }
+    return hj_error_set(err, HJ_EINVAL, "unknown dissipation '%s' (global, local, locallocal)", s);
+}

@@ -102,6 +102,12 @@ void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const d
  * CFL bound 1 / max_x sum_d alpha_d / dx_d.  A NaN from either callback is
  * an HJ_ENONFINITE error naming the node. */
 enum { HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF };
+/* The toolbox's names of the dissipations (artificialDissipationGLF, LLF,
+ * LLLF as its examples' arguments): "global", "local", "locallocal"; "?"
+ * for another value.  hj_ls_dissipation_parse: HJ_EINVAL naming the
+ * choices for an unknown name. */
+const char *hj_ls_dissipation_name(int diss);
+int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err);
 typedef double (*hj_ls_ham_fn)(double t, const double *x, double phi, const double *p, void *ctx);
 typedef double (*hj_ls_partial_fn)(double t, const double *x, const double *pmin, const double *pmax, int d,
                                    void *ctx);

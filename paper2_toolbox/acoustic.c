@@ -79,6 +79,9 @@ mirror| 3e-12).
 #include "hj_ls_io.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "acoustic";
@@ -106,11 +109,6 @@ static void usage(void)
            "acoustic_notes.md).  With any of them: one run (defaults: medium, global, dx = 1/25, Wp = 1.5,\n"
            "tmax = 4), its time sequence in acoustic_run.dat and its areas on stdout.\n"
            "See the comment at the top of acoustic.c.\n", prog);
-}
-
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
 static double speed_bound(const par *q, double x, double y)
@@ -214,7 +212,7 @@ typedef struct {
     hole_stat hole[P2_MAXT];
     double asym[P2_MAXT];
     long flips[P2_MAXT];
-    p2_blocks *blocks;
+    hj_ls_seq *blocks;
 } snap;
 
 static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *err)
@@ -224,7 +222,7 @@ static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *er
         s->hole[k] = holes(s->g, y, s->phi0);
         s->asym[k] = asymmetry(s->g, y, &s->flips[k]);
     }
-    return s->blocks ? p2_write_block(k, t, y, s->blocks, err) : HJ_OK;
+    return s->blocks ? hj_ls_seq_output(k, t, y, s->blocks, err) : HJ_OK;
 }
 
 typedef struct {
@@ -240,7 +238,7 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     hj_ls_grid g;
     const double lo[2] = {-4, -2}, hi[2] = {4, 3}, dxs[2] = {dx, dx};
     const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    die(hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
+    p2_fail_if(prog, hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
     double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     /* the target [-3.5, 3.5] x [-0.2, 0]: max of the four half-plane
@@ -256,26 +254,29 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     q = &qq;
     hj_ls_copy(&g, y0, y);
     hj_out out;
-    p2_blocks b = {NULL, &g};
+    hj_ls_seq b;
+    hj_ls_seq_init(&b, NULL, &g, "phi", 0);
     if (path) {
-        die(hj_out_open(&out, path, &err), &err);
+        p2_fail_if(prog, hj_out_open(&out, path, &err), &err);
         b.fp = out.fp;
     }
     r->dx = dx;
     r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
-    die(p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
+    p2_fail_if(prog, p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
     hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, &g, p2_accuracy_scheme(acc), diss, ham, partial, (void *)q);
+    hj_ls_lax_friedrichs_init(&lf, &g, hj_ls_accuracy_scheme(acc), diss, ham, partial, (void *)q);
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, &g, &lf.base, 0);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.75;
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     double ts[9];
-    p2_times(0, tmax, 8, ts);
-    hj_progress("acoustic: accuracy %s, dx = %g ...\n", p2_accuracy_name(acc), dx);
-    die(hj_ls_ode(p2_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err), &err);
-    if (path) die(hj_out_commit(&out, &err), &err);
+    hj_ls_seq_times(0, tmax, 9, ts);
+    hj_progress("acoustic: accuracy %s, dx = %g ...\n", hj_ls_accuracy_name(acc), dx);
+    p2_fail_if(prog,
+               hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err),
+               &err);
+    if (path) p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     p2_reach_log_free(&r->log);
     r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
     hj_ls_free(y);
@@ -285,21 +286,19 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     double dx = 0.04, tmax = 4;
     par q = {1.3, 1.5, 0.8, 0.5, NULL};
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        int v;
         const char *s;
-        if (p2_next_option(argc, argv, &i, valued, 6, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v == P2_OPT_HELP) { usage(); return 0; }
-        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        const int v = p2_option(prog, usage, argc, argv, &i, valued, 6, &quick, &s);
+        if (v < 0) continue;
         int rc = 0;
         switch (v) {
-        case 0: rc = p2_parse_accuracy(s, &acc, &err); break;
-        case 1: rc = p2_parse_dissipation(s, &diss, &err); break;
+        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
+        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
         case 2: rc = hj_parse_double(s, "--dx", 0.002, 0.5, &dx, &err); break;
         case 3: rc = hj_parse_double(s, "--Wp", 0.01, 100, &q.Wp, &err); break;
         case 4: rc = hj_parse_double(s, "--tmax", 1e-9, 100, &tmax, &err); break;
@@ -308,7 +307,7 @@ int main(int argc, char **argv)
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
         if (v < 5) single = 1;
     }
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in
      * synchronisation on a shared machine; results do not depend on it). */
@@ -320,7 +319,7 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/acoustic_run.dat", out_dir);
         run(&q, acc, diss, dx, tmax, path, &R[0]);
         printf("# acoustic accuracy=%s diss=%s dx=%g Wp=%g: %ld steps\n# t\tarea\tincreased\tholes\thole_area\thole_gap\tasym\tflips\n",
-               p2_accuracy_name(acc), p2_dissipation_name(diss), dx, q.Wp, R[0].st.steps);
+               hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), dx, q.Wp, R[0].st.steps);
         for (int k = 0; k < R[0].log.n; k++)
             printf("%.4g\t%.6g\t%ld\t%ld\t%.4g\t%.3g\t%.3g\t%ld\n", R[0].log.t[k], R[0].log.measure[k],
                    R[0].log.increased[k], R[0].sn.hole[k].n, R[0].sn.hole[k].area, R[0].sn.hole[k].gap, R[0].sn.asym[k],
@@ -336,8 +335,7 @@ int main(int argc, char **argv)
         run(&q, acc, diss, dxs[k], tmax, k == 1 ? path : NULL, &R[k]);
     }
     hj_out out;
-    snprintf(path, sizeof path, "%s/acoustic.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "acoustic.tsv", &err), &err);
     fprintf(out.fp, "# acoustic capture, accuracy medium: area of the reachable set, nodes where phi increased since the\n"
                     "# previous output, holes = enclosed components of the complement not touching the target (their\n"
                     "# number, area, distance to the target), asym = max |phi(x,y) - phi(-x,y)|, flips = nodes whose\n"
@@ -351,9 +349,7 @@ int main(int argc, char **argv)
             if (h->n) fprintf(out.fp, "%.3g\t", h->gap); else fputs("-\t", out.fp);
             fprintf(out.fp, "%.3e\t%ld\n", R[k].sn.asym[m], R[k].sn.flips[m]);
         }
-    die(hj_out_commit(&out, &err), &err);
-    snprintf(path, sizeof path, "%s/acoustic_notes.md", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_next_file(prog, &out, out_dir, "acoustic_notes.md");
     fprintf(out.fp, "\nArea of the reachable set and of its holes (components of the complement enclosed by the set "
                     "and more than 1.5 dx from the target) on three grids, accuracy medium:\n\n"
                     "| t | area, dx = 0.08 | dx = 0.04 | dx = 0.02 | hole area (0.08 / 0.04 / 0.02) | hole distance to "
@@ -378,6 +374,6 @@ int main(int argc, char **argv)
     fprintf(out.fp, "\nphi increased at %ld nodes between output times in all runs (the set never shrinks).  Mirror "
                     "x -> -x: %ld nodes in all changed membership of the set; largest |phi(x, y) - phi(-x, y)|: "
                     "%.1e.\n\n", inc, flips, asym);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

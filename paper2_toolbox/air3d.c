@@ -79,6 +79,9 @@ reachable set, medium, NX = 51; quick: 26), `air3d_vox.dat`; plotted by
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
 #include "p2_air3d.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "air3d";
@@ -90,11 +93,6 @@ static void usage(void)
            "With none of the run options: Figure 17's data and the checks (air3d.tsv, air3d.vtk, air3d_vox.dat,\n"
            "air3d_notes.md).  With any of them: one run (defaults as air3D.m: medium, global, NX = 51, tmax = 2.8)\n"
            "written to air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n", prog);
-}
-
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
 /* Asymmetry at every output time (snapshot callback of the reach log). */
@@ -128,18 +126,18 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
                 double **phi0, double **phi)
 {
     hj_error err;
-    die(p2_air3d_grid(Nx, g, &err), &err);
+    p2_fail_if(prog, p2_air3d_grid(Nx, g, &err), &err);
     double *y = hj_ls_alloc(g), *y0 = hj_ls_alloc(g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for NX = %ld", Nx);
-    die(p2_air3d_target(g, p, y, &err), &err);
+    p2_fail_if(prog, p2_air3d_target(g, p, y, &err), &err);
     hj_ls_copy(g, y0, y);
     r->acc = acc, r->Nx = Nx, r->nint = nint, r->tmax = tmax;
     r->sn.g = g;
-    die(p2_reach_log_init(&r->log, g, 2, 0, y, on_snapshot, &r->sn, &err), &err);
+    p2_fail_if(prog, p2_reach_log_init(&r->log, g, 2, 0, y, on_snapshot, &r->sn, &err), &err);
     double ts[P2_MAXT];
-    p2_times(0, tmax, nint, ts);
-    hj_progress("air3d: accuracy %s, NX = %ld ...\n", p2_accuracy_name(acc), Nx);
-    die(p2_air3d_solve(g, p, acc, diss, ts, nint + 1, y, p2_reach_output, &r->log, &r->st, &err), &err);
+    hj_ls_seq_times(0, tmax, nint + 1, ts);
+    hj_progress("air3d: accuracy %s, NX = %ld ...\n", hj_ls_accuracy_name(acc), Nx);
+    p2_fail_if(prog, p2_air3d_solve(g, p, acc, diss, ts, nint + 1, y, p2_reach_output, &r->log, &r->st, &err), &err);
     p2_reach_log_free(&r->log);
     if (phi0) *phi0 = y0; else hj_ls_free(y0);
     if (phi) *phi = y; else hj_ls_free(y);
@@ -148,21 +146,19 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     long Nx = 51;
     double tmax = 2.8;
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--diss", "--N", "--tmax", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        int v;
         const char *s;
-        if (p2_next_option(argc, argv, &i, valued, 5, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v == P2_OPT_HELP) { usage(); return 0; }
-        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        const int v = p2_option(prog, usage, argc, argv, &i, valued, 5, &quick, &s);
+        if (v < 0) continue;
         int rc = 0;
         switch (v) {
-        case 0: rc = p2_parse_accuracy(s, &acc, &err); break;
-        case 1: rc = p2_parse_dissipation(s, &diss, &err); break;
+        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
+        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
         case 2: rc = hj_parse_long(s, "--N", 8, 2000, &Nx, &err); break;
         case 3: rc = hj_parse_double(s, "--tmax", 1e-9, 1000, &tmax, &err); break;
         default: out_dir = s;
@@ -170,7 +166,7 @@ int main(int argc, char **argv)
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
         if (v < 4) single = 1;
     }
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
     p2_air3d_par par;
     p2_air3d_defaults(&par);
     char path[4096];
@@ -182,9 +178,9 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/air3d_run.vtk", out_dir);
         const char *names[2] = {"target", "reach"};
         const double *f[2] = {phi0, phi};
-        die(hj_ls_write_vtk(path, &g, "air3D reachable set", 2, names, f, &err), &err);
+        p2_fail_if(prog, hj_ls_write_vtk(path, &g, "air3D reachable set", 2, names, f, &err), &err);
         printf("# air3D accuracy=%s diss=%s NX=%ld: %ld steps\n# t\tvolume\tincreased\tasymmetry\tflips\n",
-               p2_accuracy_name(acc), p2_dissipation_name(diss), Nx, fr.st.steps);
+               hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), Nx, fr.st.steps);
         for (int k = 0; k < fr.log.n; k++)
             printf("%.4g\t%.6g\t%ld\t%.3g\t%ld\n", fr.log.t[k], fr.log.measure[k], fr.log.increased[k], fr.sn.asym[k],
                    fr.sn.flips[k]);
@@ -195,31 +191,31 @@ int main(int argc, char **argv)
     /* The grid sequence at the two cheapest accuracies; the figure from
      * medium on the toolbox grid (NX = 51; the quick run: NX = 26). */
     static const long seq[] = {26, 38, 51, 76};
-    const int nseq = quick ? 1 : 4, accs[2] = {P2_MEDIUM, P2_LOW};
+    const int nseq = quick ? 1 : 4, accs[2] = {HJ_LS_ACC_MEDIUM, HJ_LS_ACC_LOW};
     static result R[2][4];
     const long fig_nx = quick ? 26 : 51;
     hj_ls_grid gf;
     double *fig0 = NULL, *fig1 = NULL;
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < nseq; k++) {
-            const int keep = accs[a] == P2_MEDIUM && seq[k] == fig_nx;
+            const int keep = accs[a] == HJ_LS_ACC_MEDIUM && seq[k] == fig_nx;
             run(&par, accs[a], diss, seq[k], 2.8, 8, keep ? &gf : &g, &R[a][k], keep ? &fig0 : NULL, keep ? &fig1 : NULL);
         }
     snprintf(path, sizeof path, "%s/air3d.vtk", out_dir);
     const char *names[2] = {"target", "reach"};
     const double *f[2] = {fig0, fig1};
-    die(hj_ls_write_vtk(path, &gf, "air3D: target cylinder and reachable set at t = 2.8 (medium)", 2, names, f, &err),
+    p2_fail_if(
+        prog,
+        hj_ls_write_vtk(path, &gf, "air3D: target cylinder and reachable set at t = 2.8 (medium)", 2, names, f, &err),
         &err);
     hj_out out;
-    snprintf(path, sizeof path, "%s/air3d_vox.dat", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
-    die(p2_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "air3d_vox.dat", &err), &err);
+    p2_fail_if(prog, hj_ls_write_voxels(out.fp, &gf, 2, f, 51, 2, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     hj_ls_free(fig0);
     hj_ls_free(fig1);
 
-    snprintf(path, sizeof path, "%s/air3d.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "air3d.tsv", &err), &err);
     fprintf(out.fp, "# air3D: volume of the reachable set (x, y, psi; second order measure), nodes where phi increased\n"
                     "# since the previous output time, max |phi(x,y,psi) - phi(x,-y,-psi)|, nodes whose membership of the set\n"
                     "# differs from their mirror image's (flips); N = NX, the nodes in x\n"
@@ -228,20 +224,17 @@ int main(int argc, char **argv)
         for (int k = 0; k < nseq; k++) {
             const result *r = &R[a][k];
             for (int q = 0; q < r->log.n; q++)
-                fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", p2_accuracy_name(r->acc), r->Nx,
+                fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", hj_ls_accuracy_name(r->acc), r->Nx,
                         r->log.t[q], r->log.measure[q], r->log.increased[q], r->sn.asym[q], r->sn.flips[q], r->st.steps);
         }
-    die(hj_out_commit(&out, &err), &err);
-
-    snprintf(path, sizeof path, "%s/air3d_notes.md", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_next_file(prog, &out, out_dir, "air3d_notes.md");
     fprintf(out.fp, "\nVolume of the reachable set at t = 2.8 on the grid sequence (the target cylinder's volume "
                     "in the box is 25 pi * 2 pi = %.3f), with the change from the previous grid:\n\n"
                     "| NX | grid | medium | change | low | change |\n|---|---|---|---|---|---|\n",
             25 * 3.14159265358979323846 * 2 * 3.14159265358979323846);
     for (int k = 0; k < nseq; k++) {
         hj_ls_grid gs;
-        die(p2_air3d_grid(seq[k], &gs, &err), &err);
+        p2_fail_if(prog, p2_air3d_grid(seq[k], &gs, &err), &err);
         fprintf(out.fp, "| %ld | %ldx%ldx%ld |", seq[k], gs.N[0], gs.N[1], gs.N[2]);
         for (int a = 0; a < 2; a++) {
             const double v = R[a][k].log.measure[R[a][k].log.n - 1];
@@ -264,6 +257,6 @@ int main(int argc, char **argv)
                     "the set never shrinks).  Reflection y -> -y, psi -> -psi: %ld nodes in all changed membership "
                     "of the set; the largest |phi(x, y, psi) - phi(x, -y, -psi)| was %.1e for medium and %.1e for "
                     "low.\n\n", inc, flips, asym[0], asym[1]);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -86,6 +86,8 @@ switch2, N = 201), `air_mode_notes.md`; plotted by `plot/fig20.gp`.
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "p2_cli.h"
 #include "p2_reach.h"
 #include "hj_math.h"
 
@@ -105,11 +107,6 @@ static void usage(void)
            "See the comment at the top of air_mode.c.\n", prog);
 }
 
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
-}
-
 /* The curved mode's PDE velocity -f_c(x) = -(c1 + omega y, c2 - omega x), one row at a time. */
 static void curved(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
 {
@@ -127,14 +124,14 @@ static void find_reach(const hj_ls_grid *g, const par *q, int acc, int is_curved
 {
     hj_error err;
     hj_ls_convection cv;
-    hj_ls_convection_init(&cv, g, p2_accuracy_scheme(acc));
+    hj_ls_convection_init(&cv, g, hj_ls_accuracy_scheme(acc));
     if (is_curved) cv.velocity_fn = curved, cv.ctx = (void *)q;
     else cv.velocity[0] = -q->c1, cv.velocity[1] = -q->c2;
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, g, &cv.base, 0);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.75;
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     hj_ls_mask mask = {g, avoid, 1};
     if (avoid) {
         for (size_t r = 0; r < g->rows; r++) {
@@ -150,9 +147,9 @@ static void find_reach(const hj_ls_grid *g, const par *q, int acc, int is_curved
     int nt = 0;
     for (double t = 0; t < tmax - 1e-12 && nt < P2_MAXT - 1; t += 1) ts[nt++] = t;
     ts[nt++] = tmax;
-    if (log) die(p2_reach_log_init(log, g, -1, 0, data, NULL, NULL, &err), &err);
+    if (log) p2_fail_if(prog, p2_reach_log_init(log, g, -1, 0, data, NULL, NULL, &err), &err);
     hj_ls_ode_stats st;
-    die(hj_ls_ode(p2_accuracy_order(acc), g, grow ? &rs.base : &cv.base, ts, nt, data, &o,
+    p2_fail_if(prog, hj_ls_ode(hj_ls_accuracy_order(acc), g, grow ? &rs.base : &cv.base, ts, nt, data, &o,
                   log ? p2_reach_output : NULL, log, &st, &err), &err);
     if (log) p2_reach_log_free(log);
     *steps += st.steps;
@@ -186,17 +183,17 @@ static void air_mode(const par *q, int acc, long N, result *res, double **fields
     const double lo[2] = {-25, -25}, hi[2] = {25, 25};
     const long n[2] = {N, N};
     const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    die(hj_ls_grid_init(g, 2, lo, hi, n, bc, &err), &err);
+    p2_fail_if(prog, hj_ls_grid_init(g, 2, lo, hi, n, bc, &err), &err);
     double *a[7];
     for (int k = 0; k < 7; k++)
         if (!(a[k] = hj_ls_alloc(g))) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     double *data0 = a[0], *mode3 = a[1], *mode2 = a[2], *switch2 = a[3], *reach = a[4], *avoid = a[5], *tmp = a[6];
     const double c[2] = {0, 0};
-    die(hj_ls_shape_sphere(g, c, q->r, data0, &err), &err);
+    p2_fail_if(prog, hj_ls_shape_sphere(g, c, q->r, data0, &err), &err);
     memset(res, 0, sizeof *res);
     res->N = N;
     p2_reach_log log;
-    hj_progress("air_mode: accuracy %s, N = %ld ...\n", p2_accuracy_name(acc), N);
+    hj_progress("air_mode: accuracy %s, N = %ld ...\n", hj_ls_accuracy_name(acc), N);
     /* mode 3: straight motion, 5 time units */
     hj_ls_copy(g, mode3, data0);
     find_reach(g, q, acc, 0, 5, 1, NULL, mode3, &log, &res->steps);
@@ -218,7 +215,7 @@ static void air_mode(const par *q, int acc, long N, result *res, double **fields
     for (int k = 0; k < log.n; k++) res->increased[S_REACH] += log.increased[k];
     res->increased[S_AVOID] = -1;
     const double *sets[NSETS] = {mode3, mode2, switch2, reach, avoid};
-    for (int s = 0; s < NSETS; s++) die(hj_ls_measure(g, sets[s], &res->area[s], &err), &err);
+    for (int s = 0; s < NSETS; s++) p2_fail_if(prog, hj_ls_measure(g, sets[s], &res->area[s], &err), &err);
     for (size_t r = 0; r < g->rows; r++) {
         long i[2] = {0, 0};
         const size_t k = hj_ls_row(g, r, i);
@@ -275,30 +272,27 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = P2_MEDIUM;
+    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM;
     long N = 101;
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--N", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        int v;
         const char *s;
-        if (p2_next_option(argc, argv, &i, valued, 3, &v, &s, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v == P2_OPT_HELP) { usage(); return 0; }
-        if (v == P2_OPT_QUICK) { quick = 1; continue; }
+        const int v = p2_option(prog, usage, argc, argv, &i, valued, 3, &quick, &s);
+        if (v < 0) continue;
         int rc = 0;
-        if (v == 0) rc = p2_parse_accuracy(s, &acc, &err);
+        if (v == 0) rc = hj_ls_accuracy_parse(s, &acc, &err);
         else if (v == 1) rc = hj_parse_long(s, "--N", 11, 4001, &N, &err);
         else out_dir = s;
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
         if (v < 2) single = 1;
     }
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     omp_set_num_threads(1); /* 2-D grids: see acoustic.c */
 #endif
     par q = {5, 3, 4, -4 * HJ_PI / 3, 1, 0, 0};
     q.c1 = -q.va + q.vb * cos(q.psi), q.c2 = q.vb * sin(q.psi);
-    char path[4096];
     hj_ls_grid g;
     static result R[4];
     double *f[5];
@@ -306,11 +300,8 @@ int main(int argc, char **argv)
     hj_out out;
     if (single) {
         air_mode(&q, acc, N, &R[0], f, &g);
-        snprintf(path, sizeof path, "%s/air_mode_run.dat", out_dir);
-        die(hj_out_open(&out, path, &err), &err);
-        die(hj_ls_write_block(out.fp, &g, 5, names, (const double *const *)f, &err), &err);
-        die(hj_out_commit(&out, &err), &err);
-        printf("# airMode accuracy=%s N=%ld: areas in [-25, 25]^2\n", p2_accuracy_name(acc), N);
+        p2_fail_if(prog, p2_write_dat(out_dir, "air_mode_run.dat", &g, 5, names, (const double *const *)f, &err), &err);
+        printf("# airMode accuracy=%s N=%ld: areas in [-25, 25]^2\n", hj_ls_accuracy_name(acc), N);
         double e3, e2;
         exact_areas(&q, 2000, &e3, &e2);
         for (int s = 0; s < NSETS; s++) printf("%s\t%.6g\n", set_name[s], R[0].area[s]);
@@ -326,22 +317,19 @@ int main(int argc, char **argv)
     for (int k = 0; k < nn; k++) {
         air_mode(&q, acc, ns[k], &R[k], k == 1 ? f : NULL, &g);
         if (k == 1) {
-            snprintf(path, sizeof path, "%s/air_mode_2d.dat", out_dir);
-            die(hj_out_open(&out, path, &err), &err);
-            die(hj_ls_write_block(out.fp, &g, 5, names, (const double *const *)f, &err), &err);
-            die(hj_out_commit(&out, &err), &err);
+            p2_fail_if(prog, p2_write_dat(out_dir, "air_mode_2d.dat", &g, 5, names, (const double *const *)f, &err),
+                       &err);
             for (int m = 0; m < 5; m++) hj_ls_free(f[m]);
         }
     }
     double e3, e2, e3c, e2c;
     exact_areas(&q, 4000, &e3, &e2);
     exact_areas(&q, 2000, &e3c, &e2c);
-    snprintf(path, sizeof path, "%s/air_mode.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "air_mode.tsv", &err), &err);
     fprintf(out.fp, "# airMode, accuracy %s: area in [-25, 25]^2 of each set at the end of its computation, nodes where phi\n"
                     "# increased between output times (summed; - where the update is not restricted), and nodes of the reach\n"
                     "# set inside the escape set (violations; reach row only); exact = area of the exact set (mode3, mode2)\n"
-                    "set\tN\tarea\texact\tincreased\tviolations\tsteps\n", p2_accuracy_name(acc));
+                    "set\tN\tarea\texact\tincreased\tviolations\tsteps\n", hj_ls_accuracy_name(acc));
     for (int s = 0; s < NSETS; s++)
         for (int k = 0; k < nn; k++) {
             fprintf(out.fp, "%s\t%ld\t%.6g\t", set_name[s], ns[k], R[k].area[s]);
@@ -350,11 +338,9 @@ int main(int argc, char **argv)
             if (s == S_REACH) fprintf(out.fp, "%ld\t", R[k].violations); else fputs("-\t", out.fp);
             fprintf(out.fp, "%ld\n", R[k].steps);
         }
-    die(hj_out_commit(&out, &err), &err);
-    snprintf(path, sizeof path, "%s/air_mode_notes.md", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_next_file(prog, &out, out_dir, "air_mode_notes.md");
     fprintf(out.fp, "\nArea (in the box [-25, 25]^2) of the four computed sets and of the escape set's complement "
-                    "(avoid), accuracy %s, on N x N grids:\n\n| set | exact |", p2_accuracy_name(acc));
+                    "(avoid), accuracy %s, on N x N grids:\n\n| set | exact |", hj_ls_accuracy_name(acc));
     for (int k = 0; k < nn; k++) fprintf(out.fp, " N = %ld |", ns[k]);
     fputs("\n|---|---|", out.fp);
     for (int k = 0; k < nn; k++) fputs("---|", out.fp);
@@ -373,6 +359,6 @@ int main(int argc, char **argv)
     fprintf(out.fp, "\nExact areas by the midpoint rule on 4000^2 points (on 2000^2: %.3f and %.3f).  The restricted "
                     "computations (mode3, mode2, reach) increased phi at %ld nodes in all between output times; the "
                     "reach-avoid set met the escape set at %ld nodes in all.\n\n", e3c, e2c, inc, viol);
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -28,7 +28,8 @@ threads otherwise steal the other thread's core).
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "p2_air3d.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
+#include "hj_sys.h"
 
 static const char *prog = "bench_air3d";
 
@@ -70,7 +71,7 @@ int main(int argc, char **argv)
     double *y = hj_ls_alloc(&g), *keep = hj_ls_alloc(&g);
     if (!y || !keep) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     const double ts[2] = {0, 2.8};
-    const int accs[2] = {P2_LOW, P2_MEDIUM};
+    const int accs[2] = {HJ_LS_ACC_LOW, HJ_LS_ACC_MEDIUM};
     double best[2][2];
     long steps[2], differ[2];
     for (int a = 0; a < 2; a++) {
@@ -80,8 +81,8 @@ int main(int argc, char **argv)
 #endif
             best[a][th] = 1e300;
             for (long r = 0; r < repeat; r++) {
-                hj_progress("bench_air3d: %s, %d thread(s), run %ld of %ld\n", p2_accuracy_name(accs[a]), th + 1, r + 1,
-                            repeat);
+                hj_progress("bench_air3d: %s, %d thread(s), run %ld of %ld\n", hj_ls_accuracy_name(accs[a]), th + 1,
+                            r + 1, repeat);
                 if (p2_air3d_target(&g, &par, y, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
                 hj_ls_ode_stats st;
                 const double t0 = now();
@@ -92,7 +93,7 @@ int main(int argc, char **argv)
                 steps[a] = st.steps;
             }
             if (th == 0) hj_ls_copy(&g, keep, y);
-            else differ[a] = p2_count_differ(&g, keep, y);
+            else differ[a] = hj_ls_count_differ(&g, keep, y);
         }
     }
     char path[4096];
@@ -106,11 +107,11 @@ int main(int argc, char **argv)
             g.N[0], g.N[1], g.N[2], g.nodes, repeat);
     for (int a = 0; a < 2; a++) {
         const double stages = (double)steps[a] * (a ? 2.0 : 1.0) * (double)g.nodes;
-        fprintf(out.fp, "| %s | %ld | %.2f | %.2f | %.2f | %.0f | %ld |\n", p2_accuracy_name(accs[a]), steps[a],
+        fprintf(out.fp, "| %s | %ld | %.2f | %.2f | %.2f | %.0f | %ld |\n", hj_ls_accuracy_name(accs[a]), steps[a],
                 best[a][0], best[a][1], best[a][0] / best[a][1], 1e9 * best[a][0] / stages, differ[a]);
     }
     fprintf(out.fp, "\nPeak resident memory (getrusage ru_maxrss): %.1f MB.  Timings depend on the machine and its "
-                    "load (measured on a machine shared with other jobs).\n\n", p2_peak_rss_mb());
+                    "load (measured on a machine shared with other jobs).\n\n", hj_sys_peak_rss_mb());
     if (hj_out_commit(&out, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     hj_ls_free(y);
     hj_ls_free(keep);

@@ -41,8 +41,6 @@ enclosed volume, counted in grid cells), and the peak resident memory
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <time.h>
 #include <unistd.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -52,22 +50,15 @@ enclosed volume, counted in grid cells), and the peak resident memory
 #include "hj_io.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h" /* the flow field of convectionDemo, shared with convection_demo */
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "hj_sys.h"
+#include "p2_convection.h"
 
 static const char *const PROG = "bench_convection";
 
-enum { NLEVEL = 4 };
-static const char *const LEVEL[NLEVEL] = {"low", "medium", "high", "veryHigh"};
-static const int ORDER[NLEVEL] = {1, 2, 3, 3};
-static const int SCHEME[NLEVEL] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
+enum { NLEVEL = HJ_LS_NACC };
 static const double PUBLISHED[NLEVEL] = {140, 684, 2433, 2585};
-
-static double cpu_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static void usage(FILE *f)
 {
@@ -116,7 +107,7 @@ int main(int argc, char **argv)
     const double center[3] = {-0.4, 0, 0};
     if (hj_ls_shape_sphere(&g, center, 0.35, y0, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     double tspan[9];
-    for (int k = 0; k < 9; k++) tspan[k] = k / 8.0;
+    hj_ls_seq_times(0, 1, 9, tspan);
 
     char path[4096];
     snprintf(path, sizeof path, "%s/convection.md", dir);
@@ -136,9 +127,9 @@ int main(int argc, char **argv)
     for (int li = 0; li < nlev; li++) {
         const int L = (int)levels[li];
         hj_ls_convection c;
-        hj_ls_convection_init(&c, &g, SCHEME[L]);
-        p2b_flow flow = {1, 1.0, 3}; /* convectionDemo's 'linear' */
-        c.velocity_fn = p2b_flow_velocity;
+        hj_ls_convection_init(&c, &g, hj_ls_accuracy_scheme(L));
+        p2_flow flow = {1, 0, 3}; /* convectionDemo's 'linear' */
+        c.velocity_fn = p2_flow_velocity;
         c.ctx = &flow;
         hj_ls_ode_stats st;
         double secs[8], cpu[8];
@@ -147,13 +138,13 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
             omp_set_num_threads((int)threads[q]);
 #endif
-            hj_progress("\r%s, %ld thread(s)   ", LEVEL[L], threads[q]);
+            hj_progress("\r%s, %ld thread(s)   ", hj_ls_accuracy_name(L), threads[q]);
             memcpy(y, y0, sizeof(double) * g.total);
-            const double c0 = cpu_seconds();
-            if (hj_ls_ode(ORDER[L], &g, &c.base, tspan, 9, y, NULL, NULL, NULL, &st, &err))
-                hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", LEVEL[L], err.msg);
+            const double c0 = hj_sys_cpu_seconds();
+            if (hj_ls_ode(hj_ls_accuracy_order(L), &g, &c.base, tspan, 9, y, NULL, NULL, NULL, &st, &err))
+                hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", hj_ls_accuracy_name(L), err.msg);
             secs[q] = st.seconds;
-            cpu[q] = cpu_seconds() - c0;
+            cpu[q] = hj_sys_cpu_seconds() - c0;
             if (li == 0) base[q] = st.seconds;
             if (q == 0) memcpy(first, y, sizeof(double) * g.total);
             else same &= !memcmp(first, y, sizeof(double) * g.total);
@@ -171,18 +162,17 @@ int main(int argc, char **argv)
                 vol += b < 0;
             }
         }
-        fprintf(o.fp, "| %s | %g (%.1f) |", LEVEL[L], PUBLISHED[L], PUBLISHED[L] / PUBLISHED[0]);
+        fprintf(o.fp, "| %s | %g (%.1f) |", hj_ls_accuracy_name(L), PUBLISHED[L], PUBLISHED[L] / PUBLISHED[0]);
         for (int q = 0; q < nthr; q++) fprintf(o.fp, " %.2f (%.1f) | %.2f |", secs[q], secs[q] / base[q], cpu[q]);
         fprintf(o.fp, " %ld | %s | %.3e | %+.2f %% |\n", st.steps, nthr > 1 ? (same ? "yes" : "**no**") : "-", emax,
                 100.0 * (double)(vol - vol0) / (double)vol0);
-        printf("%-9s steps %ld", LEVEL[L], st.steps);
+        printf("%-9s steps %ld", hj_ls_accuracy_name(L), st.steps);
         for (int q = 0; q < nthr; q++) printf("  %ld thr %.2f s (cpu %.2f s)", threads[q], secs[q], cpu[q]);
         printf("  bitwise %s  err %.3e\n", same ? "same" : "DIFFERENT", emax);
         fflush(stdout);
     }
     hj_progress("\n");
-    struct rusage ru;
-    getrusage(RUSAGE_SELF, &ru);
+    const double peak_mb = hj_sys_peak_rss_mb();
     getloadavg(load1, 3);
     fprintf(o.fp, "\nMachine load (1-minute load average) %.2f at the start and %.2f at the end of the runs on "
                   "this %g-core machine: when it exceeds the thread count, other processes shared the cores and "
@@ -193,9 +183,9 @@ int main(int argc, char **argv)
                   "The integrator holds the state and two more arrays (stage, derivative); the benchmark keeps "
                   "two more (the initial state, and the first thread count's result for the bitwise "
                   "comparison).\n",
-            (double)ru.ru_maxrss / 1024.0, arr);
+            peak_mb, arr);
     if (hj_out_commit(&o, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
-    printf("peak memory %.1f MB (array %.1f MB)\n", (double)ru.ru_maxrss / 1024.0, arr);
+    printf("peak memory %.1f MB (array %.1f MB)\n", peak_mb, arr);
     hj_ls_free(y0), hj_ls_free(y), hj_ls_free(first);
     return 0;
 }

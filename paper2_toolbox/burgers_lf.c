@@ -85,7 +85,8 @@ larger).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
+#include "p2_cli.h"
 #include "p2_oshershu.h"
 #include "hj_math.h"
 
@@ -100,11 +101,6 @@ static void usage(void)
            "With any of them: one run (defaults as the toolbox: low, global, dim 2, N = 80 / 2^(dim-1),\n"
            "tmax = 1.5/pi^2), its time sequence in burgers_run.dat and its errors on stdout.\n"
            "See the comment at the top of burgers_lf.c.\n", prog);
-}
-
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
@@ -129,7 +125,7 @@ int main(int argc, char **argv)
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
     p2_os_run r = cli.run;
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* Grids of at most 1280 or 160^2 nodes: a second thread costs more in
      * synchronisation than it saves (results do not depend on it). */
@@ -148,7 +144,7 @@ int main(int argc, char **argv)
         p2_os_errors(&g, phi, ex, &l1, &linf);
         printf("burgersLF accuracy=%s diss=%s dim=%d N=%ld tmax=%.6g: L1 (average) %.3e, Linf %.3e "
                "(exact by characteristics, up to %d feet)\n",
-               p2_accuracy_name(r.acc), p2_dissipation_name(r.diss), r.dim, r.N, r.tmax, l1, linf, nr);
+               hj_ls_accuracy_name(r.acc), hj_ls_dissipation_name(r.diss), r.dim, r.N, r.tmax, l1, linf, nr);
         hj_ls_free(phi);
         hj_ls_free(ex);
         return 0;
@@ -157,8 +153,7 @@ int main(int argc, char **argv)
     /* Figure 14 (a): exact and ENO3-LLF on 10 and 40 nodes, 1-D, t = 1.5/pi^2. */
     const double tk = 1.5 / (HJ_PI * HJ_PI);
     hj_out out;
-    snprintf(path, sizeof path, "%s/burgers_1d.dat", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "burgers_1d.dat", &err), &err);
     fprintf(out.fp, "# index 0: exact solution at t = 1.5/pi^2 (x phi)\n");
     for (int k = 0; k <= 400; k++) {
         const double x = -1 + 2.0 * k / 400;
@@ -166,18 +161,18 @@ int main(int argc, char **argv)
     }
     const long fig_n[2] = {10, 40};
     for (int q = 0; q < 2; q++) {
-        p2_os_run f = {1, fig_n[q], P2_HIGH, HJ_LS_LLF, 0, tk, 1};
+        p2_os_run f = {1, fig_n[q], HJ_LS_ACC_HIGH, HJ_LS_LLF, 0, tk, 1};
         double *phi = run(&f, &g, NULL);
         fprintf(out.fp, "\n\n# index %d: ENO3-LLF (accuracy high, local) on %ld nodes\n", q + 1, fig_n[q]);
         const char *names[1] = {"phi"};
         const double *fl[1] = {phi};
-        die(hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
+        p2_fail_if(prog, hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
         hj_ls_free(phi);
     }
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     /* Figure 14 (b): 2-D, ENO-LLF on 40^2, the toolbox's 10 output steps. */
     {
-        p2_os_run f = {2, 40, P2_HIGH, HJ_LS_LLF, 0, tk, 10};
+        p2_os_run f = {2, 40, HJ_LS_ACC_HIGH, HJ_LS_LLF, 0, tk, 10};
         snprintf(path, sizeof path, "%s/burgers_2d.dat", out_dir);
         hj_ls_free(run(&f, &g, path));
     }
@@ -186,7 +181,7 @@ int main(int argc, char **argv)
     static const long n1[] = {20, 40, 80, 160, 320, 640, 1280}, n2[] = {20, 40, 80, 160};
     const int nn1 = quick ? 4 : 7, nn2 = quick ? 3 : 4;
     typedef struct { double h, l1, linf; } res;
-    static res R[NCASE][2][P2_NACC][3][MAXN];
+    static res R[NCASE][2][HJ_LS_NACC][3][MAXN];
     int maxroots[NCASE] = {0, 0};
     long identical_llf = 0, compared_llf = 0;
     for (int dim = 1; dim <= 2; dim++) {
@@ -195,13 +190,13 @@ int main(int argc, char **argv)
         for (int ci = 0; ci < NCASE; ci++)
             for (int k = 0; k < nn; k++) {
                 hj_ls_grid ge;
-                die(p2_os_grid(dim, ns[k], &ge, &err), &err);
+                p2_fail_if(prog, p2_os_grid(dim, ns[k], &ge, &err), &err);
                 double *ex = hj_ls_alloc(&ge);
                 if (!ex) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
                 const int mr = p2_os_exact_grid(&p2_os_burgers, &ge, case_t[ci] / (HJ_PI * HJ_PI), ex);
                 maxroots[ci] = mr > maxroots[ci] ? mr : maxroots[ci];
                 hj_progress("burgers_lf: %s dim %d N %ld\n", case_name[ci], dim, ns[k]);
-                for (int acc = 0; acc < P2_NACC; acc++) {
+                for (int acc = 0; acc < HJ_LS_NACC; acc++) {
                     double *prev = NULL;
                     for (int diss = 0; diss < 3; diss++) {
                         p2_os_run f = {dim, ns[k], acc, diss, 0, case_t[ci] / (HJ_PI * HJ_PI), 1};
@@ -211,7 +206,7 @@ int main(int argc, char **argv)
                         p2_os_errors(&g, phi, ex, &o->l1, &o->linf);
                         if (dim == 1 && diss == HJ_LS_LLLF) {
                             compared_llf++;
-                            identical_llf += p2_count_differ(&g, prev, phi) == 0;
+                            identical_llf += hj_ls_count_differ(&g, prev, phi) == 0;
                         }
                         hj_ls_free(prev);
                         prev = phi;
@@ -223,33 +218,31 @@ int main(int argc, char **argv)
     }
 
     /* burgers.tsv: errors and pairwise orders. */
-    snprintf(path, sizeof path, "%s/burgers.tsv", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "burgers.tsv", &err), &err);
     fprintf(out.fp, "# burgersLF against the exact solution by characteristics; L1 = average |error| over the nodes,"
                     " Linf = maximum; smooth: t = 0.5/pi^2, kink: t = 1.5/pi^2\n"
                     "case\tdim\tacc\tdiss\tN\th\tL1\tL1_order\tLinf\tLinf_order\n");
     for (int ci = 0; ci < NCASE; ci++)
         for (int dim = 1; dim <= 2; dim++)
-            for (int acc = 0; acc < P2_NACC; acc++)
+            for (int acc = 0; acc < HJ_LS_NACC; acc++)
                 for (int diss = 0; diss < 3; diss++)
                     for (int k = 0; k < (dim == 1 ? nn1 : nn2); k++) {
                         const res *o = &R[ci][dim - 1][acc][diss][k];
-                        fprintf(out.fp, "%s\t%d\t%s\t%s\t%ld\t%.6g\t%.4e\t", case_name[ci], dim, p2_accuracy_name(acc),
-                                p2_dissipation_name(diss), (dim == 1 ? n1 : n2)[k], o->h, o->l1);
+                        fprintf(out.fp, "%s\t%d\t%s\t%s\t%ld\t%.6g\t%.4e\t", case_name[ci], dim,
+                                hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), (dim == 1 ? n1 : n2)[k], o->h,
+                                o->l1);
                         if (k) fprintf(out.fp, "%.2f\t", hj_pair_order(o[-1].h, o[-1].l1, o->h, o->l1));
                         else fputs("-\t", out.fp);
                         fprintf(out.fp, "%.4e\t", o->linf);
                         if (k) fprintf(out.fp, "%.2f\n", hj_pair_order(o[-1].h, o[-1].linf, o->h, o->linf));
                         else fputs("-\n", out.fp);
                     }
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
 
     /* burgers_fit.tsv: orders fitted over the quick range and (full run) all grids. */
     hj_out fit, notes;
-    snprintf(path, sizeof path, "%s/burgers_fit.tsv", out_dir);
-    die(hj_out_open(&fit, path, &err), &err);
-    snprintf(path, sizeof path, "%s/burgers_notes.md", out_dir);
-    die(hj_out_open(&notes, path, &err), &err);
+    p2_fail_if(prog, p2_open(&fit, out_dir, "burgers_fit.tsv", &err), &err);
+    p2_fail_if(prog, p2_open(&notes, out_dir, "burgers_notes.md", &err), &err);
     fprintf(fit.fp, "# burgersLF: orders p of e = C h^p fitted by Ceres (common/hj_fit.h) over the grids N in range\n"
                     "case\tdim\tacc\tdiss\trange\tnorm\tp\tp_se\tp_lsq\n");
     fprintf(notes.fp, "\nFitted orders (e = C h^p, Huber loss, over all grids of the run; L1 / Linf), dissipation "
@@ -259,8 +252,8 @@ int main(int argc, char **argv)
         for (int dim = 1; dim <= 2; dim++) {
             const long *ns = dim == 1 ? n1 : n2;
             const int nn = dim == 1 ? nn1 : nn2, nq = dim == 1 ? 4 : 3;
-            char cell[P2_NACC][64];
-            for (int acc = 0; acc < P2_NACC; acc++)
+            char cell[HJ_LS_NACC][64];
+            for (int acc = 0; acc < HJ_LS_NACC; acc++)
                 for (int diss = 0; diss < 3; diss++)
                     for (int span = 0; span < 2; span++) {
                         const int m = span ? nn : nq;
@@ -277,12 +270,12 @@ int main(int argc, char **argv)
                             const char *qn = q ? "Linf" : "L1";
                             if (hj_fit_order(h, e, m, &f, &ferr) == HJ_OK) {
                                 fprintf(fit.fp, "%s\t%d\t%s\t%s\t%ld-%ld\t%s\t%.2f\t%.2f\t%.2f\n", case_name[ci], dim,
-                                        p2_accuracy_name(acc), p2_dissipation_name(diss), ns[0], ns[m - 1], qn, f.p,
-                                        f.p_se, f.p_ls);
+                                        hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), ns[0], ns[m - 1], qn,
+                                        f.p, f.p_se, f.p_ls);
                                 pl[q] = f.p;
                             } else {
                                 fprintf(fit.fp, "%s\t%d\t%s\t%s\t%ld-%ld\t%s\tnan\tnan\tnan\n", case_name[ci], dim,
-                                        p2_accuracy_name(acc), p2_dissipation_name(diss), ns[0], ns[m - 1], qn);
+                                        hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), ns[0], ns[m - 1], qn);
                                 pl[q] = NAN;
                             }
                         }
@@ -295,7 +288,7 @@ int main(int argc, char **argv)
                       "%ld of %ld runs gave bitwise identical states.  The exact solution had at most %d "
                       "characteristic foot at t = 0.5/pi^2 and %d at t = 1.5/pi^2 (the minimum is taken).\n\n",
             identical_llf, compared_llf, maxroots[0], maxroots[1]);
-    die(hj_out_commit(&fit, &err), &err);
-    die(hj_out_commit(&notes, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&fit, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&notes, &err), &err);
     return 0;
 }

@@ -93,8 +93,12 @@ the time sequence file holds x_1 ... x_4 phi per node).
 #include "hj_ls_io.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
+#include "hj_ls_seq.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_front.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
 #include "hj_math.h"
 
 static const char *const PROG = "convection_demo";
@@ -133,11 +137,6 @@ static int voxel_block(int k, double t, const double *y, void *ctx, hj_error *er
     return ferror(v->out.fp) ? hj_error_set(err, HJ_EIO, "write error") : HJ_OK;
 }
 
-static void fail_if(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err->msg);
-}
-
 /* One run of convectionDemo(flow, accuracy) in c->dim dimensions; seq_path
  * (may be NULL): the time sequence; voxel_path / vtk_path (3-D, may be
  * NULL). */
@@ -155,57 +154,52 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
         hi[d] = -1 + (double)(n[d] - 1) * dx;
         bc[d] = (hj_ls_bc){c->periodic ? HJ_LS_BC_PERIODIC : HJ_LS_BC_EXTRAP_AWAY, 0, 0};
     }
-    fail_if(hj_ls_grid_init(&g, c->dim, lo, hi, n, bc, &err), &err);
+    p2_fail_if(PROG, hj_ls_grid_init(&g, c->dim, lo, hi, n, bc, &err), &err);
     double *y0 = hj_ls_alloc(&g), *y = hj_ls_alloc(&g);
     if (!y0 || !y) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
     const double center[HJ_LS_MAXDIM] = {-0.4, 0, 0, 0, 0, 0, 0, 0};
-    fail_if(hj_ls_shape_sphere(&g, center, RADIUS, y0, &err), &err);
+    p2_fail_if(PROG, hj_ls_shape_sphere(&g, center, RADIUS, y0, &err), &err);
     hj_ls_copy(&g, y, y0);
 
-    p2b_flow flow = {c->flow == P2B_LINEAR || c->flow == P2B_LINEAR_REV, 1.0, c->dim};
+    p2_flow flow = {c->flow == P2_LINEAR || c->flow == P2_LINEAR_REV, 0, c->dim};
     hj_ls_convection term;
-    hj_ls_convection_init(&term, &g, p2b_acc_scheme[c->acc]);
-    term.velocity_fn = p2b_flow_velocity;
+    hj_ls_convection_init(&term, &g, hj_ls_accuracy_scheme(c->acc));
+    term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
 
-    enum { NT = 9 };
-    double tspan[NT];
-    p2b_times(0, 1, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &g, "phi", &err), &err);
-    if (c->flow == P2B_CONSTANT_REV || c->flow == P2B_LINEAR_REV) seq.flip = &flow, seq.t_switch = 0.5;
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, &g, "phi", 10);
+    if (c->flow == P2_CONSTANT_REV || c->flow == P2_LINEAR_REV) seq.flag = &flow.reversed, seq.t_switch = 0.5;
     voxel_seq vox = {.g = &g};
     if (voxel_path) {
-        fail_if(hj_out_open(&vox.out, voxel_path, &err), &err);
+        p2_fail_if(PROG, hj_out_open(&vox.out, voxel_path, &err), &err);
         seq.hook = voxel_block, seq.hook_ctx = &vox;
-        fail_if(voxel_block(0, 0, y, &vox, &err), &err);
     }
-    fail_if(p2b_seq_block(&seq, 0, y, &err), &err);
     hj_ls_ode_stats st;
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
-    opts.max_step = 1.0 / (NT - 1); /* a zero field (1-D 'linear') has no CFL bound */
-    if (hj_ls_ode(p2b_acc_order[c->acc], &g, &term.base, tspan, NT, y, &opts, p2b_seq_out, &seq, &st, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2b_flow_name[c->flow], p2b_acc_name[c->acc], err.msg);
-    fail_if(p2b_seq_commit(&seq, &err), &err);
-    if (voxel_path) fail_if(hj_out_commit(&vox.out, &err), &err);
+    opts.max_step = 1.0 / (P2_NT - 1); /* a zero field (1-D 'linear') has no CFL bound */
+    if (p2_solve(seq_path, c->acc, &g, &term.base, 1, y, &opts, &seq, &st, &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2_flow_name[c->flow], hj_ls_accuracy_name(c->acc), err.msg);
+    if (voxel_path) p2_fail_if(PROG, hj_out_commit(&vox.out, &err), &err);
     if (vtk_path) {
         const char *names[2] = {"phi0", "phi1"};
         const double *f[2] = {y0, y};
-        fail_if(hj_ls_write_vtk(vtk_path, &g, "convectionDemo: phi at t = 0 and t = 1", 2, names, f, &err), &err);
+        p2_fail_if(PROG, hj_ls_write_vtk(vtk_path, &g, "convectionDemo: phi at t = 0 and t = 1", 2, names, f, &err),
+                   &err);
     }
     res->steps = st.steps;
     res->exact = c->dim == 1 ? 2 * RADIUS : c->dim == 2 ? HJ_PI * RADIUS * RADIUS
                : c->dim == 3 ? 4.0 / 3.0 * HJ_PI * RADIUS * RADIUS * RADIUS : NAN;
     res->measure = NAN;
-    if (c->dim <= 3) fail_if(hj_ls_measure(&g, y, &res->measure, &err), &err);
-    p2b_front_error(&g, y, y0, 2 * dx, &res->front_max, &res->front_mean);
+    if (c->dim <= 3) p2_fail_if(PROG, hj_ls_measure(&g, y, &res->measure, &err), &err);
+    hj_ls_front_error(&g, y, y0, 2 * dx, &res->front_max, &res->front_mean);
     hj_ls_free(y0), hj_ls_free(y);
 }
 
-static void usage(FILE *f)
+static void usage(void)
 {
-    fprintf(f,
+    printf(
             "usage: %s [--flow F] [--accuracy A] [--dim D] [--N N] [--periodic] [--quick] --out-dir DIR\n"
             "convectionDemo of Mitchell's toolbox (section 2.1); see the comment at the top of convection_demo.c.\n"
             "  --flow F       constant (default), linear, constantRev, linearRev\n"
@@ -226,34 +220,30 @@ static void table_header(FILE *fp)
 
 static void table_row(FILE *fp, const cfg *c, const result *r)
 {
-    fprintf(fp, "%s\t%d\t%ld\t%s\t%s\t%.6g\t%.4e\t%.4e\t%.6g\t%ld\n", p2b_flow_name[c->flow], c->dim,
-            c->periodic ? c->N - 1 : c->N, c->periodic ? "periodic" : "extrap", p2b_acc_name[c->acc], r->measure,
+    fprintf(fp, "%s\t%d\t%ld\t%s\t%s\t%.6g\t%.4e\t%.4e\t%.6g\t%ld\n", p2_flow_name[c->flow], c->dim,
+            c->periodic ? c->N - 1 : c->N, c->periodic ? "periodic" : "extrap", hj_ls_accuracy_name(c->acc), r->measure,
             r->front_max, r->front_mean, r->exact, r->steps);
 }
 
 int main(int argc, char **argv)
 {
-    cfg one = {P2B_CONSTANT, P2B_LOW, 2, 0, 101};
+    cfg one = {P2_CONSTANT, HJ_LS_ACC_LOW, 2, 0, 101};
     int single = 0, quick = 0;
     const char *dir = ".";
     hj_error err;
+    static const char *const valued[] = {"--flow", "--accuracy", "--dim", "--N", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) { quick = 1; continue; }
-        if (!strcmp(a, "--periodic")) { one.periodic = 1, single = 1; continue; }
-        if (strcmp(a, "--flow") && strcmp(a, "--accuracy") && strcmp(a, "--dim") && strcmp(a, "--N") &&
-            strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (i + 1 >= argc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        const char *v = argv[++i];
+        if (!strcmp(argv[i], "--periodic")) { one.periodic = 1, single = 1; continue; }
+        const char *v;
+        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 5, &quick, &v);
         int rc = 0;
         long lv = 0;
-        if (!strcmp(a, "--out-dir")) { dir = v; continue; }
+        if (k < 0) continue;
+        if (k == 4) { dir = v; continue; }
         single = 1;
-        if (!strcmp(a, "--flow")) rc = p2b_parse_choice(v, "flow", p2b_flow_name, P2B_NFLOW, &one.flow, &err);
-        else if (!strcmp(a, "--accuracy")) rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &one.acc, &err);
-        else if (!strcmp(a, "--dim")) rc = hj_parse_long(v, "--dim", 1, 4, &lv, &err), one.dim = (int)lv;
+        if (k == 0) rc = p2_parse_choice(v, "flow", p2_flow_name, P2_NFLOW, &one.flow, &err);
+        else if (k == 1) rc = hj_ls_accuracy_parse(v, &one.acc, &err);
+        else if (k == 2) rc = hj_parse_long(v, "--dim", 1, 4, &lv, &err), one.dim = (int)lv;
         else rc = hj_parse_long(v, "--N", 5, 100000, &one.N, &err);
         if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
     }
@@ -264,13 +254,12 @@ int main(int argc, char **argv)
         result r;
         snprintf(path, sizeof path, "%s/convection_run.dat", dir);
         run(&one, path, NULL, NULL, &r);
-        snprintf(path, sizeof path, "%s/convection_run.tsv", dir);
-        fail_if(hj_out_open(&tab, path, &err), &err);
+        p2_fail_if(PROG, p2_open(&tab, dir, "convection_run.tsv", &err), &err);
         fprintf(tab.fp, "# convectionDemo, one run: the error against the exact solution at t = 1 is meaningful only\n"
                         "# when it returns to the initial data (linear, the Rev flows, constant with --periodic)\n");
         table_header(tab.fp);
         table_row(tab.fp, &one, &r);
-        fail_if(hj_out_commit(&tab, &err), &err);
+        p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
         return 0;
     }
 
@@ -279,19 +268,19 @@ int main(int argc, char **argv)
     cfg runs[MAXRUN];
     result res[MAXRUN];
     int nr = 0;
-    const int flows2[4] = {P2B_CONSTANT, P2B_LINEAR, P2B_CONSTANT_REV, P2B_LINEAR_REV};
+    const int flows2[4] = {P2_CONSTANT, P2_LINEAR, P2_CONSTANT_REV, P2_LINEAR_REV};
     for (int f = 0; f < 4; f++)
-        for (int a = 0; a < P2B_NACC; a++) runs[nr++] = (cfg){flows2[f], a, 2, flows2[f] == P2B_CONSTANT, 101};
-    for (int a = 0; a < P2B_NACC; a++) runs[nr++] = (cfg){P2B_CONSTANT_REV, a, 1, 0, 101};
-    if (!quick) runs[nr++] = (cfg){P2B_LINEAR, P2B_MEDIUM, 3, 0, 101};
+        for (int a = 0; a < HJ_LS_NACC; a++) runs[nr++] = (cfg){flows2[f], a, 2, flows2[f] == P2_CONSTANT, 101};
+    for (int a = 0; a < HJ_LS_NACC; a++) runs[nr++] = (cfg){P2_CONSTANT_REV, a, 1, 0, 101};
+    if (!quick) runs[nr++] = (cfg){P2_LINEAR, HJ_LS_ACC_MEDIUM, 3, 0, 101};
     for (int k = 0; k < nr; k++) {
         const cfg *c = &runs[k];
         const char *seq = NULL, *vox = NULL, *vtk = NULL;
-        const int fig1 = c->dim == 2 && c->flow == P2B_LINEAR && c->acc == P2B_MEDIUM;
-        const int fig2 = c->dim == 2 && c->flow == P2B_LINEAR_REV && c->acc == P2B_LOW;
-        if (fig1 || fig2 || (c->dim == 1 && c->acc == P2B_VERYHIGH) || c->dim == 3) {
-            snprintf(path, sizeof path, "%s/convection_%dd_%s_%s.dat", dir, c->dim, p2b_flow_name[c->flow],
-                     p2b_acc_name[c->acc]);
+        const int fig1 = c->dim == 2 && c->flow == P2_LINEAR && c->acc == HJ_LS_ACC_MEDIUM;
+        const int fig2 = c->dim == 2 && c->flow == P2_LINEAR_REV && c->acc == HJ_LS_ACC_LOW;
+        if (fig1 || fig2 || (c->dim == 1 && c->acc == HJ_LS_ACC_VERYHIGH) || c->dim == 3) {
+            snprintf(path, sizeof path, "%s/convection_%dd_%s_%s.dat", dir, c->dim, p2_flow_name[c->flow],
+                     hj_ls_accuracy_name(c->acc));
             seq = c->dim == 3 ? NULL : path;
             vox = c->dim == 3 ? path : NULL;
         }
@@ -299,21 +288,20 @@ int main(int argc, char **argv)
             snprintf(path2, sizeof path2, "%s/convection_3d_linear_medium.vtk", dir);
             vtk = path2;
         }
-        hj_progress("\rconvection_demo: %dd %s %s (%d of %d)   ", c->dim, p2b_flow_name[c->flow], p2b_acc_name[c->acc],
-                    k + 1, nr);
+        hj_progress("\rconvection_demo: %dd %s %s (%d of %d)   ", c->dim, p2_flow_name[c->flow],
+                    hj_ls_accuracy_name(c->acc), k + 1, nr);
         run(c, seq, vox, vtk, &res[k]);
     }
     hj_progress("\n");
 
-    snprintf(path, sizeof path, "%s/convection.tsv", dir);
-    fail_if(hj_out_open(&tab, path, &err), &err);
+    p2_fail_if(PROG, p2_open(&tab, dir, "convection.tsv", &err), &err);
     fprintf(tab.fp, "# convectionDemo: measure of {phi < 0} and |phi - phi_0| within 2 dx of the front at t = 1\n");
     table_header(tab.fp);
     for (int k = 0; k < nr; k++) table_row(tab.fp, &runs[k], &res[k]);
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
 
     snprintf(path3, sizeof path3, "%s/convection_notes.md", dir);
-    fail_if(hj_out_open(&tab, path3, &err), &err);
+    p2_fail_if(PROG, hj_out_open(&tab, path3, &err), &err);
     fprintf(tab.fp, "\nAt t = 1 every run below should return to its initial data.  Measure of {phi < 0} "
                     "(length, area, volume) against the exact one, and |phi - phi_0| on the nodes within 2 dx "
                     "of the initial front:\n\n"
@@ -322,11 +310,11 @@ int main(int argc, char **argv)
     for (int k = 0; k < nr; k++) {
         const cfg *c = &runs[k];
         const result *r = &res[k];
-        fprintf(tab.fp, "| %s | %d | %s | %s | %.5f | %.5f | %+.2f %% | %.2e | %.2e | %ld |\n", p2b_flow_name[c->flow],
-                c->dim, c->periodic ? "periodic" : "extrapolate", p2b_acc_name[c->acc], r->measure, r->exact,
+        fprintf(tab.fp, "| %s | %d | %s | %s | %.5f | %.5f | %+.2f %% | %.2e | %.2e | %ld |\n", p2_flow_name[c->flow],
+                c->dim, c->periodic ? "periodic" : "extrapolate", hj_ls_accuracy_name(c->acc), r->measure, r->exact,
                 100 * (r->measure / r->exact - 1), r->front_max, r->front_mean, r->steps);
     }
     fputc('\n', tab.fp);
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
     return 0;
 }

@@ -83,6 +83,9 @@ curvature_spiral_notes.md.
 #include "hj_ls_grid.h"
 #include "hj_ls_helper.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 #include "hj_math.h"
 
@@ -191,7 +194,7 @@ static int run_spiral(const hj_ls_grid *g, int order, int points, long samples, 
         term.b.value = 0.075;
         p2_areas areas = {g, area};
         p2_seq seq = {fp, g, "phi", NULL, p2_area_hook, &areas, label, NULL, NULL};
-        rc = p2_run(order, g, &term.base, tspan, nt, phi, &seq, 0.5, err);
+        rc = p2_run(order, g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
     }
     hj_ls_free(phi);
     return rc;
@@ -199,8 +202,7 @@ static int run_spiral(const hj_ls_grid *g, int order, int points, long samples, 
 
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 101, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int initial = 0; /* 0 ellipse, 1 points */
     long samples = 4000;
     hj_error err;
@@ -222,7 +224,7 @@ int main(int argc, char **argv)
     }
     p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[9], area[9];
-    for (int k = 0; k < 9; k++) tspan[k] = k / 8.0;
+    hj_ls_seq_times(0, 1, 9, tspan);
     const double b = 0.075;
 
     /* Figure 8. */
@@ -230,16 +232,20 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral.dat", &err), &err);
-    fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n", o.accuracy,
-            initial ? "points" : "ellipse", o.N);
-    p2_commit_run(prog, &out, run_spiral(&g, o.order, initial, samples, tspan, 9, out.fp, area, "spiral", &err), &err);
+    fprintf(out.fp, "# curvatureSpiralDemo(%s, '%s') on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
+            hj_ls_accuracy_name(o.acc), initial ? "points" : "ellipse", o.N);
+    p2_commit_run(prog, &out,
+                  run_spiral(&g, hj_ls_accuracy_order(o.acc), initial, samples, tspan, 9, out.fp, area, "spiral", &err),
+                  &err);
     /* Figure 8 (b): the point cloud, whatever --initial chose for (a). */
     double area_points[9];
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral_points.dat", &err), &err);
     fprintf(out.fp, "# curvatureSpiralDemo(%s, 'points') on %ld^2 nodes, %ld points: phi at t = k/8, k = 0..8\n",
-            o.accuracy, o.N, samples);
-    p2_commit_run(prog, &out, run_spiral(&g, o.order, 1, samples, tspan, 9, out.fp, area_points, "spiral points", &err),
-                  &err);
+            hj_ls_accuracy_name(o.acc), o.N, samples);
+    p2_commit_run(
+        prog, &out,
+        run_spiral(&g, hj_ls_accuracy_order(o.acc), 1, samples, tspan, 9, out.fp, area_points, "spiral points", &err),
+        &err);
 
     /* The check: area loss 2 pi b t for both initial data on three grids,
      * up to t = 0.25. */
@@ -252,24 +258,25 @@ int main(int argc, char **argv)
         for (int ini = 0; ini < 2; ini++) {
             char label[64];
             snprintf(label, sizeof label, "spiral %s, N = %ld", init_name[ini], grids[n]);
-            p2_fail_if(prog, run_spiral(&g, o.order, ini, samples, tspan, 3, NULL, areas[n][ini], label, &err), &err);
+            p2_fail_if(
+                prog,
+                run_spiral(&g, hj_ls_accuracy_order(o.acc), ini, samples, tspan, 3, NULL, areas[n][ini], label, &err),
+                &err);
         }
     }
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral.tsv", &err), &err);
     fprintf(out.fp, "# curvatureSpiralDemo check: area loss A(0) - A(0.25) under curvature motion, b = 0.075, "
                     "accuracy %s, %ld points for the point cloud (exact 2 pi b t = 0.117810)\n"
-                    "N\tinitial\tarea_loss\tarea0\n", o.accuracy, samples);
+                    "N\tinitial\tarea_loss\tarea0\n", hj_ls_accuracy_name(o.acc), samples);
     for (int n = 0; n < ngrids; n++)
         for (int ini = 0; ini < 2; ini++)
             fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\n", grids[n], init_name[ini], areas[n][ini][0] - areas[n][ini][2],
                     areas[n][ini][0]);
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_spiral_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "curvature_spiral_notes.md");
     fprintf(out.fp, "\nArea lost since t = 0 divided by the exact 2 pi b t (b = 0.075), `%s` accuracy.  The law "
                     "holds for any simple closed curve until it vanishes.\n\n"
                     "| initial | nodes per side | A(0) | t = 0.125 | t = 0.25 |\n|---|---|---|---|---|\n",
-            o.accuracy);
+            hj_ls_accuracy_name(o.acc));
     for (int ini = 0; ini < 2; ini++)
         for (int n = 0; n < ngrids; n++)
             fprintf(out.fp, "| %s | %ld | %.4f | %.4f | %.4f |\n", init_name[ini], grids[n], areas[n][ini][0],

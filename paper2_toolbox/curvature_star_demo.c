@@ -59,7 +59,11 @@ published/curvature_star.tsv); curvature_star_notes.md.
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "hj_ls_grid.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 #include "hj_math.h"
 
@@ -83,24 +87,18 @@ static int run_curv(const hj_ls_grid *g, int order, double b0, int split, const 
     term.b.ctx = &sw;
     p2_areas areas = {g, area};
     p2_seq seq = {fp, g, "phi", &sw, area ? p2_area_hook : NULL, &areas, label, NULL, NULL};
-    return p2_run(order, g, &term.base, tspan, nt, phi, &seq, 0.9, err);
+    return p2_run(order, g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL_CURVATURE, err);
 }
 
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 101, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
-    int only = -1;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--split-flow", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
+    int only = -1; /* -1: both cases */
+    p2_parse_demo(&o, argc, argv, "--split-flow", &only);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     const double b0 = 0.02;
     const double tspan[4] = {0, 0.25, 0.5, 1.0};
-    const p2_star star = {7, 2, 0.25};
+    const hj_ls_star star = {0.25, 2, 7};
 
     /* Figure 9. */
     hj_ls_grid g;
@@ -109,14 +107,15 @@ int main(int argc, char **argv)
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
     for (int split = 0; split < 2; split++) {
         if (only >= 0 && split != only) continue;
-        hj_ls_fill(&g, phi, p2_star_fn, (void *)&star);
+        hj_ls_fill(&g, phi, hj_ls_star_fn, (void *)&star);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, split ? "curvature_star_b.dat" : "curvature_star_a.dat", &err),
                    &err);
         fprintf(out.fp, "# curvatureStarDemo(%s, splitFlow = %d) on %ld^2 nodes: phi at t = 0, 0.25, 0.5, 1\n",
-                o.accuracy, split, o.N);
+                hj_ls_accuracy_name(o.acc), split, o.N);
         p2_commit_run(prog, &out,
-                      run_curv(&g, o.order, b0, split, tspan, 4, phi, out.fp, NULL, split ? "star, split" : "star", &err),
+                      run_curv(&g, hj_ls_accuracy_order(o.acc), b0, split, tspan, 4, phi, out.fp, NULL,
+                               split ? "star, split" : "star", &err),
                       &err);
     }
     hj_ls_free(phi);
@@ -134,11 +133,13 @@ int main(int argc, char **argv)
         for (int s = 0; s < 3; s++) {
             p2_circle circ = {{0, 0, 0}, r0};
             if (s == 0) hj_ls_fill(&g, phi, p2_circle_fn, &circ);
-            else hj_ls_fill(&g, phi, p2_star_fn, (void *)&star);
+            else hj_ls_fill(&g, phi, hj_ls_star_fn, (void *)&star);
             double area[4];
             char label[64];
             snprintf(label, sizeof label, "%s, N = %ld", shape[s], grids[n]);
-            p2_fail_if(prog, run_curv(&g, o.order, b0, s == 2, tspan, 4, phi, NULL, area, label, &err), &err);
+            p2_fail_if(prog,
+                       run_curv(&g, hj_ls_accuracy_order(o.acc), b0, s == 2, tspan, 4, phi, NULL, area, label, &err),
+                       &err);
             loss[n][s] = area[0] - area[3];
             if (s == 0) rc[n] = sqrt(area[3] / HJ_PI);
         }
@@ -148,22 +149,20 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_star.tsv", &err), &err);
     fprintf(out.fp, "# curvatureStarDemo check: area loss A(0) - A(1) under curvature motion, b0 = 0.02, accuracy %s "
                     "(exact 2 pi b0 t for a simple closed curve and constant b); r(1) of the circle r0 = 0.4\n"
-                    "N\tshape\tarea_loss\tr\tarea_loss_exact\n", o.accuracy);
+                    "N\tshape\tarea_loss\tr\tarea_loss_exact\n", hj_ls_accuracy_name(o.acc));
     for (int n = 0; n < ngrids; n++)
         for (int s = 0; s < 3; s++) {
             fprintf(out.fp, "%ld\t%s\t%.6f\t", grids[n], shape[s], loss[n][s]);
             if (s == 0) fprintf(out.fp, "%.6f\t%.6f\n", rc[n], loss_exact);
             else fprintf(out.fp, "-\t%s\n", s == 1 ? "0.125664" : "-");
         }
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "curvature_star_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "curvature_star_notes.md");
     fprintf(out.fp, "\nArea lost by t = 1 under curvature motion with b0 = 0.02 (`%s` accuracy), exact 2 pi b0 t = "
                     "%.6f for the circle and the star; radius of the circle (r0 = 0.4) at t = 1, exact %.6f.  The "
                     "splitFlow star has no closed form (shown only).\n\n"
                     "| nodes per side | circle: loss | circle: r(1) | star: loss | star: loss / exact | splitFlow star: "
                     "loss |\n|---|---|---|---|---|---|\n",
-            o.accuracy, loss_exact, r_exact);
+            hj_ls_accuracy_name(o.acc), loss_exact, r_exact);
     for (int n = 0; n < ngrids; n++)
         fprintf(out.fp, "| %ld | %.6f | %.6f | %.6f | %.4f | %.6f |\n", grids[n], loss[n][0], rc[n], loss[n][1],
                 loss[n][1] / loss_exact, loss[n][2]);

@@ -76,7 +76,12 @@ published/dumbbell.tsv), dumbbell_notes.md (the convergence table).
 #include "hj_io.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_io.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 
 static const char *prog = "dumbbell1";
@@ -243,7 +248,7 @@ static double run_dumbbell(long n, int order, const double *tspan, int nt, figur
         seq.hook = figure_hook;
         seq.hook_ctx = fo;
     }
-    if (p2_run(order, &g, &term.base, tspan, nt, phi, &seq, 0.5, &err)) {
+    if (p2_run(order, &g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, &err)) {
         if (fo) {
             hj_out_abort(&vox);
             hj_out_abort(&slice);
@@ -283,26 +288,21 @@ static double run_sphere(long n, int order)
     snprintf(label, sizeof label, "sphere, N = %ld", n);
     p2_seq seq = {NULL, &g, "phi", NULL, NULL, NULL, label, NULL, NULL};
     const double tspan[2] = {0, 0.0125};
-    p2_fail_if(prog, p2_run(order, &g, &term.base, tspan, 2, phi, &seq, 0.5, &err), &err);
-    p2_fail_if(prog, p2_radius(&g, phi, &r, &err), &err);
+    p2_fail_if(prog, p2_run(order, &g, &term.base, tspan, 2, phi, &seq, HJ_LS_FACTOR_CFL, &err), &err);
+    p2_fail_if(prog, hj_ls_measure_radius(&g, phi, &r, &err), &err);
     hj_ls_free(phi);
     return r;
 }
 
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 0, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
+    p2_parse_demo(&o, argc, argv, NULL, NULL);
     if (!o.N) o.N = o.quick ? 61 : 101;
     if (o.N % 4 != 1) hj_cli_fail(prog, HJ_EXIT_USAGE, "--N must be 1 more than a multiple of 4 (got %ld)", o.N);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[9];
-    for (int k = 0; k < 9; k++) tspan[k] = 0.025 * k / 8.0;
+    hj_ls_seq_times(0, 0.025, 9, tspan);
 
     const long grids[5] = {41, 61, 81, 101, 121};
     const int ngrids = o.quick ? 3 : 5;
@@ -312,30 +312,28 @@ int main(int argc, char **argv)
     memset(&fo, 0, sizeof fo);
     for (int n = 0; n < ngrids; n++) {
         const int fig = grids[n] == o.N;
-        tp[n] = run_dumbbell(grids[n], o.order, tspan, 9, fig ? &fo : NULL, o.out_dir);
+        tp[n] = run_dumbbell(grids[n], hj_ls_accuracy_order(o.acc), tspan, 9, fig ? &fo : NULL, o.out_dir);
         fig_done |= fig;
-        rs[n] = run_sphere(grids[n], o.order);
+        rs[n] = run_sphere(grids[n], hj_ls_accuracy_order(o.acc));
     }
-    if (!fig_done) run_dumbbell(o.N, o.order, tspan, 9, &fo, o.out_dir);
+    if (!fig_done) run_dumbbell(o.N, hj_ls_accuracy_order(o.acc), tspan, 9, &fo, o.out_dir);
 
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "dumbbell.tsv", &err), &err);
     fprintf(out.fp, "# dumbbell1 check, accuracy %s: radius at t = 0.0125 of a sphere r0 = 0.3 under b = 1 (exact 0.2), "
                     "and the dumbbell's pinch-off time (phi at the origin crosses 0)\nN\tcase\tr\tt_pinch\n",
-            o.accuracy);
+            hj_ls_accuracy_name(o.acc));
     for (int n = 0; n < ngrids; n++) {
         fprintf(out.fp, "%ld\tsphere\t%.6f\t-\n", grids[n], rs[n]);
         fprintf(out.fp, "%ld\tdumbbell\t-\t%.7f\n", grids[n], tp[n]);
     }
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "dumbbell_notes.md", &err), &err);
+    p2_next_file(prog, &out, o.out_dir, "dumbbell_notes.md");
     fprintf(out.fp, "\nPinch-off time t_p (phi at the origin crosses 0; phi^2 extrapolated linearly from the last two steps "
                     "before) and the "
                     "sphere check (radius at t = 0.0125, exact 0.2), `%s` accuracy.  An infinite cylinder of the "
                     "handle's radius would collapse at 0.02.\n\n"
                     "| nodes | dx | t_p | t_p - t_p(previous grid) | sphere r(0.0125) | error |\n"
-                    "|---|---|---|---|---|---|\n", o.accuracy);
+                    "|---|---|---|---|---|---|\n", hj_ls_accuracy_name(o.acc));
     for (int n = 0; n < ngrids; n++) {
         fprintf(out.fp, "| %ld x %ld x %ld | 1/%ld | %.6f | ", grids[n], (grids[n] + 1) / 2, (grids[n] + 1) / 2,
                 (grids[n] - 1) / 2, tp[n]);

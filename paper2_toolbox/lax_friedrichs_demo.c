@@ -58,7 +58,6 @@ lax_friedrichs_run.tsv and lax_friedrichs_run.dat.
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -66,22 +65,20 @@ lax_friedrichs_run.tsv and lax_friedrichs_run.dat.
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_front.h"
+#include "hj_ls_seq.h"
+#include "hj_sys.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
 static const char *const PROG = "lax_friedrichs_demo";
 static const char *const SHAPE[2] = {"circle", "cube"};
-static const char *const DISS[3] = {"global", "local", "locallocal"};
-static const int DISS_CODE[3] = {HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF};
-static const double PUBLISHED_COST[P2B_NACC] = {1, 4, 12, 17};
+static const double PUBLISHED_COST[HJ_LS_NACC] = {1, 4, 12, 17};
 enum { REPS = 3 };
-
-static void fail_if(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err->msg);
-}
 
 /* H(x, p) = v(x) . p and alpha_d = |v_d(x)|, v from convectionDemo's flow. */
 static double ham(double t, const double *x, double phi, const double *p, void *ctx)
@@ -90,7 +87,7 @@ static double ham(double t, const double *x, double phi, const double *p, void *
     double h = 0;
     for (int d = 0; d < 2; d++) {
         double v;
-        p2b_flow_velocity(t, x, 0, 1, d, &v, ctx);
+        p2_flow_velocity(t, x, 0, 1, d, &v, ctx);
         h += v * p[d];
     }
     return h;
@@ -100,15 +97,8 @@ static double partial(double t, const double *x, const double *pmin, const doubl
 {
     (void)pmin, (void)pmax;
     double v;
-    p2b_flow_velocity(t, x, 0, 1, d, &v, ctx);
+    p2_flow_velocity(t, x, 0, 1, d, &v, ctx);
     return fabs(v);
-}
-
-static double cpu_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 typedef struct {
@@ -123,10 +113,10 @@ static void setup(lf_case *c, int shape)
     const double lo[2] = {-1, -1}, hi[2] = {1, 1}, center[2] = {-0.4, 0}, width[2] = {0.7, 0.7};
     const long n[2] = {101, 101};
     const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    fail_if(hj_ls_grid_init(&c->g, 2, lo, hi, n, bc, &err), &err);
+    p2_fail_if(PROG, hj_ls_grid_init(&c->g, 2, lo, hi, n, bc, &err), &err);
     if (!(c->phi0 = hj_ls_alloc(&c->g))) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-    if (shape) fail_if(hj_ls_shape_rectangle_center(&c->g, center, width, c->phi0, &err), &err);
-    else fail_if(hj_ls_shape_sphere(&c->g, center, 0.35, c->phi0, &err), &err);
+    if (shape) p2_fail_if(PROG, hj_ls_shape_rectangle_center(&c->g, center, width, c->phi0, &err), &err);
+    else p2_fail_if(PROG, hj_ls_shape_sphere(&c->g, center, 0.35, c->phi0, &err), &err);
     c->exact_area = shape ? 0.49 : 3.14159265358979323846 * 0.35 * 0.35;
 }
 
@@ -134,27 +124,21 @@ static void setup(lf_case *c, int shape)
 static double run(const lf_case *c, int flow, int acc, int diss, double *phi, const char *seq_path)
 {
     hj_error err;
-    p2b_flow f = {flow == P2B_LINEAR, 1.0, 2};
+    p2_flow f = {flow == P2_LINEAR, 0, 2};
     hj_ls_lax_friedrichs term;
-    hj_ls_lax_friedrichs_init(&term, &c->g, p2b_acc_scheme[acc], DISS_CODE[diss], ham, partial, &f);
+    hj_ls_lax_friedrichs_init(&term, &c->g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &f);
     hj_ls_copy(&c->g, phi, c->phi0);
-    enum { NT = 9 };
-    double tspan[NT];
-    p2b_times(0, 1, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &c->g, "phi", &err), &err);
-    fail_if(p2b_seq_block(&seq, 0, phi, &err), &err);
-    const double t0 = cpu_seconds();
-    if (hj_ls_ode(p2b_acc_order[acc], &c->g, &term.base, tspan, NT, phi, NULL, p2b_seq_out, &seq, NULL, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s %s: %s", p2b_flow_name[flow], p2b_acc_name[acc], DISS[diss], err.msg);
-    const double secs = cpu_seconds() - t0;
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    const double t0 = hj_sys_cpu_seconds();
+    if (p2_solve(seq_path, acc, &c->g, &term.base, 1, phi, NULL, NULL, NULL, &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s %s: %s", p2_flow_name[flow], hj_ls_accuracy_name(acc),
+                    hj_ls_dissipation_name(diss), err.msg);
+    const double secs = hj_sys_cpu_seconds() - t0;
     return secs;
 }
 
-static void usage(FILE *f)
+static void usage(void)
 {
-    fprintf(f,
+    printf(
             "usage: %s [--flow F] [--shape S] [--accuracy A] [--dissipation D] [--quick] --out-dir DIR\n"
             "laxFriedrichsDemo of Mitchell's toolbox (section 2.2.2); see the comment at the top of "
             "lax_friedrichs_demo.c.\n"
@@ -170,28 +154,24 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int flow = P2B_LINEAR, shape = 1, acc = P2B_LOW, diss = 0, single = 0, quick = 0;
+    int flow = P2_LINEAR, shape = 1, acc = HJ_LS_ACC_LOW, diss = 0, single = 0, quick = 0;
     const char *dir = ".";
     hj_error err;
+    static const char *const valued[] = {"--flow", "--shape", "--accuracy", "--dissipation", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) { quick = 1; continue; }
-        if (strcmp(a, "--flow") && strcmp(a, "--shape") && strcmp(a, "--accuracy") && strcmp(a, "--dissipation") &&
-            strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (i + 1 >= argc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        const char *v = argv[++i];
+        const char *v;
+        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 5, &quick, &v);
         int rc = 0;
-        if (!strcmp(a, "--out-dir")) { dir = v; continue; }
+        if (k < 0) continue;
+        if (k == 4) { dir = v; continue; }
         single = 1;
-        if (!strcmp(a, "--flow")) rc = p2b_parse_choice(v, "flow (time-independent)", p2b_flow_name, 2, &flow, &err);
-        else if (!strcmp(a, "--shape")) rc = p2b_parse_choice(v, "shape", SHAPE, 2, &shape, &err);
-        else if (!strcmp(a, "--accuracy")) rc = p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &acc, &err);
-        else rc = p2b_parse_choice(v, "dissipation", DISS, 3, &diss, &err);
+        if (k == 0) rc = p2_parse_choice(v, "flow (time-independent)", p2_flow_name, 2, &flow, &err);
+        else if (k == 1) rc = p2_parse_choice(v, "shape", SHAPE, 2, &shape, &err);
+        else if (k == 2) rc = hj_ls_accuracy_parse(v, &acc, &err);
+        else rc = hj_ls_dissipation_parse(v, &diss, &err);
         if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
     }
-    fail_if(hj_mkdirs(dir, &err), &err);
+    p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
     char path[4096];
     hj_out tab, notes;
     lf_case c;
@@ -202,15 +182,16 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/lax_friedrichs_run.dat", dir);
         const double secs = run(&c, flow, acc, diss, phi, path);
         double area, fmax, fmean;
-        fail_if(hj_ls_measure(&c.g, phi, &area, &err), &err);
-        p2b_front_error(&c.g, phi, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
-        snprintf(path, sizeof path, "%s/lax_friedrichs_run.tsv", dir);
-        fail_if(hj_out_open(&tab, path, &err), &err);
-        fprintf(tab.fp, "# one run; front errors against phi_0 are meaningful for 'linear' (one full turn)\n"
-                        "flow\tshape\tacc\tdiss\tarea\texact_area\tfront_max\tfront_mean\tcpu_s\n"
-                        "%s\t%s\t%s\t%s\t%.6g\t%.6g\t%.4e\t%.4e\t%.3f\n",
-                p2b_flow_name[flow], SHAPE[shape], p2b_acc_name[acc], DISS[diss], area, c.exact_area, fmax, fmean, secs);
-        fail_if(hj_out_commit(&tab, &err), &err);
+        p2_fail_if(PROG, hj_ls_measure(&c.g, phi, &area, &err), &err);
+        hj_ls_front_error(&c.g, phi, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
+        p2_fail_if(PROG, p2_open(&tab, dir, "lax_friedrichs_run.tsv", &err), &err);
+        fprintf(tab.fp,
+                "# one run; front errors against phi_0 are meaningful for 'linear' (one full turn)\n"
+                "flow\tshape\tacc\tdiss\tarea\texact_area\tfront_max\tfront_mean\tcpu_s\n"
+                "%s\t%s\t%s\t%s\t%.6g\t%.6g\t%.4e\t%.4e\t%.3f\n",
+                p2_flow_name[flow], SHAPE[shape], hj_ls_accuracy_name(acc), hj_ls_dissipation_name(diss), area,
+                c.exact_area, fmax, fmean, secs);
+        p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
         hj_ls_free(phi), hj_ls_free(c.phi0);
         return 0;
     }
@@ -219,17 +200,15 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
     omp_set_num_threads(1); /* timings: one thread (the results do not depend on it) */
 #endif
-    const int nacc = quick ? 2 : P2B_NACC;
-    double *phi = hj_ls_alloc(&c.g), *glf[P2B_NACC] = {0};
+    const int nacc = quick ? 2 : HJ_LS_NACC;
+    double *phi = hj_ls_alloc(&c.g), *glf[HJ_LS_NACC] = {0};
     if (!phi) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
     for (int a = 0; a < nacc; a++)
         if (!(glf[a] = hj_ls_alloc(&c.g))) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-    snprintf(path, sizeof path, "%s/lax_friedrichs.tsv", dir);
-    fail_if(hj_out_open(&tab, path, &err), &err);
+    p2_fail_if(PROG, p2_open(&tab, dir, "lax_friedrichs.tsv", &err), &err);
     fprintf(tab.fp, "# laxFriedrichsDemo('linear', 'cube'): t = 1 after one full turn; cost = CPU s relative to low\n"
                     "acc\tdiss\tdiff_glf\tarea\tfront_max\tfront_mean\tcost\tcpu_s\texact_area\n");
-    snprintf(path, sizeof path, "%s/lax_friedrichs_notes.md", dir);
-    fail_if(hj_out_open(&notes, path, &err), &err);
+    p2_fail_if(PROG, p2_open(&notes, dir, "lax_friedrichs_notes.md", &err), &err);
     fprintf(notes.fp, "\n`laxFriedrichsDemo('linear', 'cube', accuracy, dissipation)` at t = 1 (one full turn; "
                       "exact: the initial square, area 0.49):\n\n| accuracy | dissipation | max abs(phi - phi_GLF) | "
                       "area (change) | max / mean abs(phi - phi_0) within 2 dx | CPU s | cost relative to low "
@@ -237,43 +216,43 @@ int main(int argc, char **argv)
     double base[3] = {0};
     for (int a = 0; a < nacc; a++)
         for (int d = 0; d < 3; d++) {
-            hj_progress("\rlax_friedrichs_demo: %s %s   ", p2b_acc_name[a], DISS[d]);
-            const int fig = a == P2B_LOW && d == 0;
+            hj_progress("\rlax_friedrichs_demo: %s %s   ", hj_ls_accuracy_name(a), hj_ls_dissipation_name(d));
+            const int fig = a == HJ_LS_ACC_LOW && d == 0;
             snprintf(path, sizeof path, "%s/lax_friedrichs_low.dat", dir);
             double *y = d == 0 ? glf[a] : phi;
             /* the cost: the least CPU time of REPS identical runs on one
              * thread (the state is the same bits every time) */
             double secs = INFINITY;
             for (int rep = 0; rep < (quick ? 1 : REPS); rep++) {
-                const double s1 = run(&c, P2B_LINEAR, a, d, y, fig && rep == 0 ? path : NULL);
+                const double s1 = run(&c, P2_LINEAR, a, d, y, fig && rep == 0 ? path : NULL);
                 secs = s1 < secs ? s1 : secs;
             }
             if (a == 0) base[d] = secs;
             double diff = 0, mean, area, fmax, fmean;
             if (d) hj_ls_norms(&c.g, phi, glf[a], &diff, &mean, NULL);
-            fail_if(hj_ls_measure(&c.g, y, &area, &err), &err);
-            p2b_front_error(&c.g, y, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
-            fprintf(tab.fp, "%s\t%s\t%.4e\t%.6g\t%.4e\t%.4e\t%.3f\t%.3f\t%.6g\n", p2b_acc_name[a], DISS[d], diff, area,
-                    fmax, fmean, secs / base[d], secs, c.exact_area);
-            fprintf(notes.fp, "| %s | %s | %s | %.4f (%+.1f %%) | %.2e / %.2e | %.2f | %.1f (%g) |\n", p2b_acc_name[a],
-                    DISS[d], d ? (diff == 0 ? "0 (bitwise equal)" : "nonzero") : "-", area,
-                    100 * (area / c.exact_area - 1), fmax, fmean, secs, secs / base[d], PUBLISHED_COST[a]);
+            p2_fail_if(PROG, hj_ls_measure(&c.g, y, &area, &err), &err);
+            hj_ls_front_error(&c.g, y, c.phi0, 2 * c.g.dx[0], &fmax, &fmean);
+            fprintf(tab.fp, "%s\t%s\t%.4e\t%.6g\t%.4e\t%.4e\t%.3f\t%.3f\t%.6g\n", hj_ls_accuracy_name(a),
+                    hj_ls_dissipation_name(d), diff, area, fmax, fmean, secs / base[d], secs, c.exact_area);
+            fprintf(notes.fp, "| %s | %s | %s | %.4f (%+.1f %%) | %.2e / %.2e | %.2f | %.1f (%g) |\n",
+                    hj_ls_accuracy_name(a), hj_ls_dissipation_name(d),
+                    d ? (diff == 0 ? "0 (bitwise equal)" : "nonzero") : "-", area, 100 * (area / c.exact_area - 1),
+                    fmax, fmean, secs, secs / base[d], PUBLISHED_COST[a]);
             if (d && diff != 0) fprintf(notes.fp, "| | | %.3e | | | | |\n", diff);
         }
     hj_progress("\n");
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
     fprintf(notes.fp, "\nCPU times: one thread, the least of %d identical runs, on a machine shared with other jobs; "
                       "the ratios are not gated by `make check`.\n", quick ? 1 : REPS);
-    fail_if(hj_out_commit(&notes, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
 
     hj_out o;
-    snprintf(path, sizeof path, "%s/lax_friedrichs_final.dat", dir);
-    fail_if(hj_out_open(&o, path, &err), &err);
+    p2_fail_if(PROG, p2_open(&o, dir, "lax_friedrichs_final.dat", &err), &err);
     const char *names[5] = {"phi0", "low", "medium", "high", "veryHigh"};
     const double *f[5] = {c.phi0, glf[0], glf[1], glf[2] ? glf[2] : glf[1], glf[3] ? glf[3] : glf[1]};
     if (quick) fprintf(o.fp, "# quick run: the high and veryHigh columns repeat medium\n");
-    fail_if(hj_ls_write_block(o.fp, &c.g, 5, names, f, &err), &err);
-    fail_if(hj_out_commit(&o, &err), &err);
+    p2_fail_if(PROG, hj_ls_write_block(o.fp, &c.g, 5, names, f, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&o, &err), &err);
     for (int a = 0; a < nacc; a++) hj_ls_free(glf[a]);
     hj_ls_free(phi), hj_ls_free(c.phi0);
     return 0;

@@ -68,17 +68,15 @@ mask_run_seq.dat, mask_run_min.dat.
 #include "hj_ls_measure.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_shape.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
 
 static const char *const PROG = "mask_demo";
 static const double TMAX = 0.6;
 static const double AREA_FINAL = 0.1208995, AREA_MIN = 0.7900404; /* exact, see the comment above */
-enum { NT = 9 };
-
-static void fail_if(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err->msg);
-}
+enum { NT = P2_NT };
 
 /* maskAndKeepMin: the constraint phi >= psi, then the running minimum. */
 typedef struct {
@@ -148,40 +146,38 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
     const double lo[2] = {-1, -1}, hi[2] = {1, 1}, c0[2] = {-0.6, 0}, o[2] = {0, 0};
     const long n[2] = {101, 101};
     const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    fail_if(hj_ls_grid_init(&g, 2, lo, hi, n, bc, &err), &err);
+    p2_fail_if(PROG, hj_ls_grid_init(&g, 2, lo, hi, n, bc, &err), &err);
     double *y = hj_ls_alloc(&g), *psi = hj_ls_alloc(&g), *min = hj_ls_alloc(&g), *y2 = hj_ls_alloc(&g),
            *min2 = hj_ls_alloc(&g);
     if (!y || !psi || !min || !y2 || !min2) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-    fail_if(hj_ls_shape_sphere(&g, c0, 0.35, y, &err), &err);
-    fail_if(hj_ls_shape_sphere(&g, o, 0.2, psi, &err), &err);
+    p2_fail_if(PROG, hj_ls_shape_sphere(&g, c0, 0.35, y, &err), &err);
+    p2_fail_if(PROG, hj_ls_shape_sphere(&g, o, 0.2, psi, &err), &err);
     hj_ls_shape_complement(&g, psi, psi); /* psi = 0.2 - |x|: the complement of S */
     keep_min km = {{&g, psi, 1}, min, 0};
-    fail_if(hj_ls_post_mask(0, y, &km.mask, &err), &err);
+    p2_fail_if(PROG, hj_ls_post_mask(0, y, &km.mask, &err), &err);
     hj_ls_copy(&g, min, y);
     hj_ls_copy(&g, y2, y);
     hj_ls_copy(&g, min2, y);
 
-    p2b_flow flow = {0, 1.0, 2};
+    p2_flow flow = {0, 0, 2};
     hj_ls_convection term;
-    hj_ls_convection_init(&term, &g, p2b_acc_scheme[acc]);
-    term.velocity_fn = p2b_flow_velocity;
+    hj_ls_convection_init(&term, &g, hj_ls_accuracy_scheme(acc));
+    term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
-    double tspan[NT];
-    p2b_times(0, TMAX, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &g, "phi", &err), &err);
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, &g, "phi", 10);
     seq.nextra = 1, seq.extra_name[0] = "psi", seq.extra[0] = psi;
-    fail_if(p2b_seq_block(&seq, 0, y, &err), &err);
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
     opts.post = mask_and_keep_min, opts.post_ctx = &km;
     hj_ls_ode_stats st;
-    if (hj_ls_ode(p2b_acc_order[acc], &g, &term.base, tspan, NT, y, &opts, p2b_seq_out, &seq, &st, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", p2b_acc_name[acc], err.msg);
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    if (p2_solve(seq_path, acc, &g, &term.base, TMAX, y, &opts, &seq, &st, &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", hj_ls_accuracy_name(acc), err.msg);
 
     /* The independent minimum: one CFL step per call, the kernel's mask as
      * PostTimestep, the minimum taken here. */
+    double tspan[NT];
+    hj_ls_seq_times(0, TMAX, NT, tspan);
     hj_ls_mask plain = {&g, psi, 1};
     opts.post = hj_ls_post_mask, opts.post_ctx = &plain, opts.single_step = 1;
     double t = 0;
@@ -190,7 +186,9 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
         while (tspan[k] - t > 1e-12) {
             const double span[2] = {t, tspan[k]};
             hj_ls_ode_stats s2;
-            fail_if(hj_ls_ode(p2b_acc_order[acc], &g, &term.base, span, 2, y2, &opts, NULL, NULL, &s2, &err), &err);
+            p2_fail_if(PROG,
+                       hj_ls_ode(hj_ls_accuracy_order(acc), &g, &term.base, span, 2, y2, &opts, NULL, NULL, &s2, &err),
+                       &err);
             t = s2.t, steps2++;
             update_min(&g, y2, psi, min2, &dummy);
         }
@@ -199,25 +197,22 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
     hj_ls_norms(&g, y, y2, &dy, &avg, NULL);
     res->diff_min = dmin > dy ? dmin : dy;
     if (steps2 != st.steps) res->diff_min = INFINITY; /* not the same steps: not independent of the schedule */
-    fail_if(hj_ls_measure(&g, y, &res->area_final, &err), &err);
-    fail_if(hj_ls_measure(&g, min, &res->area_min, &err), &err);
+    p2_fail_if(PROG, hj_ls_measure(&g, y, &res->area_final, &err), &err);
+    p2_fail_if(PROG, hj_ls_measure(&g, min, &res->area_min, &err), &err);
     res->pieces = pieces(&g, y);
     res->in_s = km.in_s;
     res->steps = st.steps;
     if (min_path) {
-        hj_out o2;
-        fail_if(hj_out_open(&o2, min_path, &err), &err);
         const char *names[3] = {"psi", "min_phi", "phi_final"};
         const double *f[3] = {psi, min, y};
-        fail_if(hj_ls_write_block(o2.fp, &g, 3, names, f, &err), &err);
-        fail_if(hj_out_commit(&o2, &err), &err);
+        p2_fail_if(PROG, hj_ls_write_dat(min_path, &g, 3, names, f, &err), &err);
     }
     hj_ls_free(y), hj_ls_free(psi), hj_ls_free(min), hj_ls_free(y2), hj_ls_free(min2);
 }
 
-static void usage(FILE *f)
+static void usage(void)
 {
-    fprintf(f,
+    printf(
             "usage: %s [--accuracy A] [--quick] --out-dir DIR\n"
             "maskDemo of Mitchell's toolbox (section 2.2.3); see the comment at the top of mask_demo.c.\n"
             "  --accuracy A   low (default), medium, high, veryHigh\n"
@@ -229,32 +224,26 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int acc = P2B_LOW, single = 0;
+    int acc = HJ_LS_ACC_LOW, single = 0, quick = 0; /* --quick: the same set */
     const char *dir = ".";
     hj_error err;
+    static const char *const valued[] = {"--accuracy", "--out-dir"};
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) continue;
-        if (strcmp(a, "--accuracy") && strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (i + 1 >= argc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        const char *v = argv[++i];
-        if (!strcmp(a, "--out-dir")) { dir = v; continue; }
-        single = 1;
-        if (p2b_parse_choice(v, "accuracy", p2b_acc_name, P2B_NACC, &acc, &err))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
+        const char *v;
+        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 2, &quick, &v);
+        if (k == 1) dir = v;
+        else if (k == 0 && hj_ls_accuracy_parse(v, &acc, &err)) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
+        single |= k == 0;
     }
-    fail_if(hj_mkdirs(dir, &err), &err);
+    p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
     char path[4096], seq[4096], mn[4096];
     hj_out tab, notes;
     snprintf(path, sizeof path, "%s/%s", dir, single ? "mask_run.tsv" : "mask.tsv");
-    fail_if(hj_out_open(&tab, path, &err), &err);
+    p2_fail_if(PROG, hj_out_open(&tab, path, &err), &err);
     fprintf(tab.fp, "# maskDemo: circle convected through the masked disc, t = %g\n"
                     "acc\tarea_final\tarea_min\tpieces\tin_S\tdiff_min\tsteps\n", TMAX);
     if (!single) {
-        snprintf(path, sizeof path, "%s/mask_notes.md", dir);
-        fail_if(hj_out_open(&notes, path, &err), &err);
+        p2_fail_if(PROG, p2_open(&notes, dir, "mask_notes.md", &err), &err);
         fprintf(notes.fp, "\nmaskDemo at t = %g: areas against the exact ones (final set %.7f, union over time "
                           "%.7f), pieces of the final set (exact 2), nodes of the masked disc inside the set after "
                           "any step, and the recorded min_t phi against an independent single-step run:\n\n"
@@ -262,23 +251,23 @@ int main(int argc, char **argv)
                           "max difference of min | steps |\n|---|---|---|---|---|---|---|\n",
                 TMAX, AREA_FINAL, AREA_MIN);
     }
-    for (int a = 0; a < P2B_NACC; a++) {
+    for (int a = 0; a < HJ_LS_NACC; a++) {
         if (single && a != acc) continue;
         snprintf(seq, sizeof seq, "%s/%s", dir, single ? "mask_run_seq.dat" : "mask_seq.dat");
         snprintf(mn, sizeof mn, "%s/%s", dir, single ? "mask_run_min.dat" : "mask_min.dat");
         result r;
-        run(a, single || a == P2B_LOW ? seq : NULL, single || a == P2B_LOW ? mn : NULL, &r);
-        fprintf(tab.fp, "%s\t%.6g\t%.6g\t%ld\t%ld\t%.4e\t%ld\n", p2b_acc_name[a], r.area_final, r.area_min, r.pieces,
-                r.in_s, r.diff_min, r.steps);
+        run(a, single || a == HJ_LS_ACC_LOW ? seq : NULL, single || a == HJ_LS_ACC_LOW ? mn : NULL, &r);
+        fprintf(tab.fp, "%s\t%.6g\t%.6g\t%ld\t%ld\t%.4e\t%ld\n", hj_ls_accuracy_name(a), r.area_final, r.area_min,
+                r.pieces, r.in_s, r.diff_min, r.steps);
         if (!single)
-            fprintf(notes.fp, "| %s | %.5f (%+.1f %%) | %.5f (%+.1f %%) | %ld | %ld | %.1e | %ld |\n", p2b_acc_name[a],
-                    r.area_final, 100 * (r.area_final / AREA_FINAL - 1), r.area_min, 100 * (r.area_min / AREA_MIN - 1),
-                    r.pieces, r.in_s, r.diff_min, r.steps);
+            fprintf(notes.fp, "| %s | %.5f (%+.1f %%) | %.5f (%+.1f %%) | %ld | %ld | %.1e | %ld |\n",
+                    hj_ls_accuracy_name(a), r.area_final, 100 * (r.area_final / AREA_FINAL - 1), r.area_min,
+                    100 * (r.area_min / AREA_MIN - 1), r.pieces, r.in_s, r.diff_min, r.steps);
     }
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
     if (!single) {
         fputc('\n', notes.fp);
-        fail_if(hj_out_commit(&notes, &err), &err);
+        p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
     }
     return 0;
 }

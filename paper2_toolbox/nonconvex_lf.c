@@ -69,8 +69,9 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_term.h"
+#include "p2_cli.h"
 #include "p2_oshershu.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
 #include "hj_math.h"
 
 static const char *prog = "nonconvex_lf";
@@ -83,11 +84,6 @@ static void usage(void)
            "nonconvex_2d.dat, nonconvex_notes.md).  With any of them: one run (defaults as the toolbox: low,\n"
            "global, dim 2, N = 80 / 2^(dim-1), tmax = 1.5/pi^2, the toolbox's partial bound 1), its time\n"
            "sequence in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n", prog);
-}
-
-static void die(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
 }
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
@@ -132,7 +128,7 @@ int main(int argc, char **argv)
     if (cli.help) { usage(); return 0; }
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-    die(hj_mkdirs(out_dir, &err), &err);
+    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
     omp_set_num_threads(1);
@@ -149,32 +145,29 @@ int main(int argc, char **argv)
     /* Figure 15 (a): 1-D at t = 1.5/pi^2: a reference on 2560 nodes (WENO5,
      * RK3) and ENO3-LF (high, global) on 10 and 40 nodes. */
     hj_out out;
-    snprintf(path, sizeof path, "%s/nonconvex_1d.dat", out_dir);
-    die(hj_out_open(&out, path, &err), &err);
+    p2_fail_if(prog, p2_open(&out, out_dir, "nonconvex_1d.dat", &err), &err);
     const long fig_n[3] = {2560, 10, 40};
-    const int fig_acc[3] = {P2_VERYHIGH, P2_HIGH, P2_HIGH};
+    const int fig_acc[3] = {HJ_LS_ACC_VERYHIGH, HJ_LS_ACC_HIGH, HJ_LS_ACC_HIGH};
     for (int q = 0; q < 3; q++) {
         p2_os_run f = {1, fig_n[q], fig_acc[q], HJ_LS_GLF, 0, tk, 1};
         double *phi = run(&f, &g, NULL);
         fprintf(out.fp, "%s# index %d: accuracy %s, global, %ld nodes, t = 1.5/pi^2\n", q ? "\n\n" : "", q,
-                p2_accuracy_name(fig_acc[q]), fig_n[q]);
+                hj_ls_accuracy_name(fig_acc[q]), fig_n[q]);
         const char *names[1] = {"phi"};
         const double *fl[1] = {phi};
-        die(hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
+        p2_fail_if(prog, hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
         hj_ls_free(phi);
     }
-    die(hj_out_commit(&out, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     {
-        p2_os_run f = {2, 40, P2_HIGH, HJ_LS_GLF, 0, tk, 10};
+        p2_os_run f = {2, 40, HJ_LS_ACC_HIGH, HJ_LS_GLF, 0, tk, 10};
         snprintf(path, sizeof path, "%s/nonconvex_2d.dat", out_dir);
         hj_ls_free(run(&f, &g, path));
     }
 
     hj_out tab, notes;
-    snprintf(path, sizeof path, "%s/nonconvex.tsv", out_dir);
-    die(hj_out_open(&tab, path, &err), &err);
-    snprintf(path, sizeof path, "%s/nonconvex_notes.md", out_dir);
-    die(hj_out_open(&notes, path, &err), &err);
+    p2_fail_if(prog, p2_open(&tab, out_dir, "nonconvex.tsv", &err), &err);
+    p2_fail_if(prog, p2_open(&notes, out_dir, "nonconvex_notes.md", &err), &err);
     fprintf(tab.fp, "# nonconvexLF checks: smooth = errors against the exact solution (characteristics) at t = 0.5/pi^2;\n"
                     "# kink (t = 1.5/pi^2): cauchy = max |phi_N - phi_2N| on the N grid's nodes (global),\n"
                     "# spread = max |phi_diss - phi_global|, differ = nodes where phi_diss != phi_global bitwise;\n"
@@ -187,7 +180,7 @@ int main(int argc, char **argv)
     fprintf(notes.fp, "\nBefore the kink (t = 0.5/pi^2), against the exact solution, 1-D, global, orders fitted "
                       "over N = 20-%ld (L1 / Linf):\n\n| accuracy | L1 at N = %ld | fitted orders |\n|---|---|---|\n",
             n1[nn1 - 1], n1[nn1 - 1]);
-    for (int acc = 0; acc < P2_NACC; acc++) {
+    for (int acc = 0; acc < HJ_LS_NACC; acc++) {
         double h[MAXN], e1[MAXN], ei[MAXN];
         for (int k = 0; k < nn1; k++) {
             p2_os_run f = {1, n1[k], acc, HJ_LS_GLF, 0, ts, 1};
@@ -198,7 +191,7 @@ int main(int argc, char **argv)
                 hj_cli_fail(prog, HJ_EXIT_RUN, "exact solution: characteristics cross before t = 0.5/pi^2");
             h[k] = g.dx[0];
             p2_os_errors(&g, phi, ex, &e1[k], &ei[k]);
-            fprintf(tab.fp, "smooth\t1\t%s\tglobal\ttoolbox\t%ld\t%.4e\t", p2_accuracy_name(acc), n1[k], e1[k]);
+            fprintf(tab.fp, "smooth\t1\t%s\tglobal\ttoolbox\t%ld\t%.4e\t", hj_ls_accuracy_name(acc), n1[k], e1[k]);
             if (k) fprintf(tab.fp, "%.2f\t", hj_pair_order(h[k - 1], e1[k - 1], h[k], e1[k])); else fputs("-\t", tab.fp);
             fprintf(tab.fp, "%.4e\t", ei[k]);
             if (k) fprintf(tab.fp, "%.2f\t-\t-\t-\n", hj_pair_order(h[k - 1], ei[k - 1], h[k], ei[k]));
@@ -209,7 +202,7 @@ int main(int argc, char **argv)
         hj_order_fit f1, fi;
         hj_error ferr;
         const int ok1 = !hj_fit_order(h, e1, nn1, &f1, &ferr), oki = !hj_fit_order(h, ei, nn1, &fi, &ferr);
-        fprintf(notes.fp, "| %s | %.3e | %.2f / %.2f |\n", p2_accuracy_name(acc), e1[nn1 - 1], ok1 ? f1.p : NAN,
+        fprintf(notes.fp, "| %s | %.3e | %.2f / %.2f |\n", hj_ls_accuracy_name(acc), e1[nn1 - 1], ok1 ? f1.p : NAN,
                 oki ? fi.p : NAN);
     }
 
@@ -227,10 +220,10 @@ int main(int argc, char **argv)
         const long *ns = dim == 1 ? nk1 : nk2;
         const int nn = dim == 1 ? (quick ? 4 : 6) : (quick ? 3 : 4);
         for (int ai = 0; ai < 2; ai++) {
-            const int acc = ai ? P2_HIGH : P2_LOW;
+            const int acc = ai ? HJ_LS_ACC_HIGH : HJ_LS_ACC_LOW;
             for (int tight = 0; tight < 2; tight++)
                 for (int k = 0; k < nn; k++) {
-                    hj_progress("nonconvex_lf: kink dim %d %s %s N %ld\n", dim, p2_accuracy_name(acc),
+                    hj_progress("nonconvex_lf: kink dim %d %s %s N %ld\n", dim, hj_ls_accuracy_name(acc),
                                 tight ? "tight" : "toolbox", ns[k]);
                     double *phi[3];
                     for (int diss = 0; diss < 3; diss++) {
@@ -249,14 +242,14 @@ int main(int argc, char **argv)
                     long dif[3] = {0, 0, 0};
                     for (int diss = 0; diss < 3; diss++) {
                         sp[diss] = max_diff(&g, phi[diss], phi[0]);
-                        dif[diss] = p2_count_differ(&g, phi[0], phi[diss]);
+                        dif[diss] = hj_ls_count_differ(&g, phi[0], phi[diss]);
                         if (!tight) toolbox_differ += dif[diss];
-                        fprintf(tab.fp, "kink\t%d\t%s\t%s\t%s\t%ld\t-\t-\t-\t-\t", dim, p2_accuracy_name(acc),
-                                p2_dissipation_name(diss), tight ? "tight" : "toolbox", ns[k]);
+                        fprintf(tab.fp, "kink\t%d\t%s\t%s\t%s\t%ld\t-\t-\t-\t-\t", dim, hj_ls_accuracy_name(acc),
+                                hj_ls_dissipation_name(diss), tight ? "tight" : "toolbox", ns[k]);
                         if (!tight && diss == 0) fprintf(tab.fp, "%.4e\t", cy); else fputs("-\t", tab.fp);
                         fprintf(tab.fp, "%.4e\t%ld\n", sp[diss], dif[diss]);
                     }
-                    if (tight && acc == P2_HIGH) {
+                    if (tight && acc == HJ_LS_ACC_HIGH) {
                         /* the Cauchy column of the same N from the toolbox-partial run above */
                         p2_os_run f = {dim, 2 * ns[k], acc, HJ_LS_GLF, 1, tk, 1};
                         double *fine = run(&f, &g2, NULL);
@@ -272,7 +265,7 @@ int main(int argc, char **argv)
     /* 3. Thread-count independence: 2-D, high, global, 80^2, 1 against 2 threads. */
     long tdiff = -1;
     {
-        p2_os_run f = {2, 80, P2_HIGH, HJ_LS_GLF, 0, tk, 1};
+        p2_os_run f = {2, 80, HJ_LS_ACC_HIGH, HJ_LS_GLF, 0, tk, 1};
         double *one = run(&f, &g, NULL);
 #ifdef _OPENMP
         omp_set_num_threads(2);
@@ -281,7 +274,7 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
         omp_set_num_threads(1);
 #endif
-        tdiff = p2_count_differ(&g, one, two);
+        tdiff = hj_ls_count_differ(&g, one, two);
         fprintf(tab.fp, "threads\t2\thigh\tglobal\ttoolbox\t80\t-\t-\t-\t-\t-\t%.4e\t%ld\n", max_diff(&g, one, two), tdiff);
         hj_ls_free(one);
         hj_ls_free(two);
@@ -290,7 +283,7 @@ int main(int argc, char **argv)
                       "dissipations gave bitwise identical states at every grid (%ld differing nodes in all), as "
                       "section 2.5.2 says.  One and two OpenMP threads: %ld differing nodes (2-D, 80^2, high).\n\n",
             toolbox_differ, tdiff);
-    die(hj_out_commit(&tab, &err), &err);
-    die(hj_out_commit(&notes, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&tab, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&notes, &err), &err);
     return 0;
 }

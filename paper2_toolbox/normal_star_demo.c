@@ -55,7 +55,12 @@ radii in published/normal_circle.tsv), normal_star_notes.md.
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "hj_ls_grid.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 
 static const char *prog = "normal_star_demo";
@@ -71,42 +76,44 @@ static int run_normal(const hj_ls_grid *g, const p2_opts *o, double a0, int reve
 {
     p2_switch sw = {0.5 * tspan[nt - 1], {a0, reverse ? -a0 : a0}, {0, 0}, 0};
     hj_ls_normal term;
-    hj_ls_normal_init(&term, g, o->scheme);
+    hj_ls_normal_init(&term, g, hj_ls_accuracy_scheme(o->acc));
     term.speed.fn = p2_switch_fn;
     term.speed.ctx = &sw;
     p2_seq seq = {fp, g, "phi", &sw, NULL, NULL, label, NULL, NULL};
-    return p2_run(o->order, g, &term.base, tspan, nt, phi, &seq, 0.5, err);
+    return p2_run(hj_ls_accuracy_order(o->acc), g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
+}
+
+/* The check's case c (ctx: the options): speed +-0.25, reversed at
+ * t_switch = 0.5 for the third (an output time, as it must be). */
+static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err)
+{
+    const double speed[3] = {0.25, -0.25, 0.25}, tc[3] = {0, 0.5, 1};
+    return run_normal(g, ctx, speed[c], c == 2, tc, 3, phi, NULL, label, err);
 }
 
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 101, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--reverse-flow", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_parse_demo(&o, argc, argv, "--reverse-flow", &only);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     const double a0 = 0.25;
     double tspan[9];
-    for (int k = 0; k < 9; k++) tspan[k] = k / 8.0;
+    hj_ls_seq_times(0, 1, 9, tspan);
 
     /* Figure 10: the star, constant and reversed speed. */
     hj_ls_grid g;
     p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     double *phi = hj_ls_alloc(&g);
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    p2_star star = {7, 2.5, 0.20};
+    hj_ls_star star = {0.20, 2.5, 7};
     for (int rev = 0; rev < 2; rev++) {
         if (only >= 0 && rev != only) continue;
-        hj_ls_fill(&g, phi, p2_star_fn, &star);
+        hj_ls_fill(&g, phi, hj_ls_star_fn, &star);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, rev ? "normal_star_b.dat" : "normal_star_a.dat", &err), &err);
         fprintf(out.fp, "# normalStarDemo(%s, reverseFlow = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
-                o.accuracy, rev, o.N);
+                hj_ls_accuracy_name(o.acc), rev, o.N);
         p2_commit_run(prog, &out,
                       run_normal(&g, &o, a0, rev, tspan, 9, phi, out.fp, rev ? "star, reversed" : "star", &err),
                       &err);
@@ -114,46 +121,16 @@ int main(int argc, char **argv)
     hj_ls_free(phi);
 
     /* The check: a circle under the same term. */
-    const long grids[3] = {51, 101, 201};
-    const int ngrids = o.quick ? 2 : 3;
     const char *case_name[3] = {"grow", "shrink", "reverse"};
-    const double speed[3] = {a0, -a0, a0}, exact[3] = {0.75, 0.25, 0.5};
-    double r[3][3];
-    const double tc[3] = {0, 0.5, 1}; /* t_switch = 0.5 must be an output time */
-    for (int n = 0; n < ngrids; n++) {
-        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
-        phi = hj_ls_alloc(&g);
-        if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-        for (int c = 0; c < 3; c++) {
-            p2_circle circ = {{0, 0, 0}, 0.5};
-            hj_ls_fill(&g, phi, p2_circle_fn, &circ);
-            char label[64];
-            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
-            p2_fail_if(prog, run_normal(&g, &o, speed[c], c == 2, tc, 3, phi, NULL, label, &err), &err);
-            p2_fail_if(prog, p2_radius(&g, phi, &r[n][c], &err), &err);
-        }
-        hj_ls_free(phi);
-    }
-    hj_out out;
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "normal_circle.tsv", &err), &err);
-    fprintf(out.fp, "# normalStarDemo check: circle r0 = 0.5 under normal motion, accuracy %s, radius at t = 1 "
-                    "from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n", o.accuracy);
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 3; c++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "normal_star_notes.md", &err), &err);
-    fprintf(out.fp, "\nCircle of radius 0.5 under normal motion (speed +-0.25, `%s` accuracy): radius at t = 1 "
+    const double exact[3] = {0.75, 0.25, 0.5};
+    const p2_circle circ = {{0, 0, 0}, 0.5};
+    p2_check check = {NULL, 0, 3, case_name, case_name, NULL, exact};
+    p2_circle_check(&o, &circ, circle_run, &o, &check, "normal_circle.tsv",
+                    "# normalStarDemo check: circle r0 = 0.5 under normal motion, accuracy %s, radius at t = 1 "
+                    "from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n",
+                    "normal_star_notes.md",
+                    "\nCircle of radius 0.5 under normal motion (speed +-0.25, `%s` accuracy): radius at t = 1 "
                     "from the area of {phi < 0}, against r0 + a t.\n\n"
-                    "| nodes per side | case | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n",
-            o.accuracy);
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 3; c++)
-            fprintf(out.fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]), fabs(r[n][c] - exact[c]) * (grids[n] - 1) / 2.0);
-    fputc('\n', out.fp);
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+                    "| nodes per side | case | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n");
     return 0;
 }

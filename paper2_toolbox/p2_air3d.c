@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "hj_ls_term.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
 #include "hj_math.h"
 
 
@@ -101,13 +101,13 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     }
     for (long j = 0; j < n2; j++) c.ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
     hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, g, p2_accuracy_scheme(acc), diss, ham, partial, &c);
+    hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &c);
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, g, &lf.base, 0);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.75;
-    int rc = hj_ls_ode(p2_accuracy_order(acc), g, &rs.base, ts, nt, phi, &o, out, out_ctx, stats, err);
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
+    int rc = hj_ls_ode(hj_ls_accuracy_order(acc), g, &rs.base, ts, nt, phi, &o, out, out_ctx, stats, err);
     free(c.cs);
     return rc;
 }

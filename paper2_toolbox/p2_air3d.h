@@ -37,7 +37,7 @@ int p2_air3d_grid(long Nx, hj_ls_grid *g, hj_error *err);
 int p2_air3d_target(const hj_ls_grid *g, const p2_air3d_par *p, double *phi, hj_error *err);
 
 /* Integrate phi (the target on entry) from 0 through ts[1..nt-1]
- * (factorCFL 0.75 as air3D.m) at the given accuracy (P2_*) and
+ * (HJ_LS_FACTOR_CFL_REACH, 0.75 as air3D.m) at the given accuracy (HJ_LS_ACC_*) and
  * dissipation (HJ_LS_GLF ...); out/out_ctx as hj_ls_ode. */
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
                    double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);

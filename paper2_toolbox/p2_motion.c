@@ -3,80 +3,11 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
-#include "hj_ls_deriv.h"
-#include "hj_ls_io.h"
+#include "hj_ls_accuracy.h"
 #include "hj_ls_measure.h"
-#include "hj_ls_ode.h"
-#include "hj_math.h"
-
-int p2_accuracy(const char *name, int *scheme, int *order)
-{
-    static const char *names[4] = {"low", "medium", "high", "veryHigh"};
-    static const int schemes[4] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
-    static const int orders[4] = {1, 2, 3, 3};
-    for (int k = 0; k < 4; k++)
-        if (!strcmp(name, names[k])) {
-            *scheme = schemes[k];
-            *order = orders[k];
-            return 0;
-        }
-    return -1;
-}
-
-int p2_common_option(p2_opts *o, int argc, char **argv, int *i)
-{
-    const char *a = argv[*i];
-    hj_error err;
-    if (!strcmp(a, "--help")) {
-        printf("%s", o->usage);
-        exit(0);
-    }
-    if (!strcmp(a, "--quick")) {
-        o->quick = 1;
-        return 1;
-    }
-    if (strcmp(a, "--accuracy") && strcmp(a, "--N") && strcmp(a, "--out-dir")) return 0;
-    if (*i + 1 >= argc) hj_cli_fail(o->prog, HJ_EXIT_USAGE, "option %s needs a value", a);
-    const char *v = argv[++*i];
-    if (!strcmp(a, "--out-dir")) {
-        o->out_dir = v;
-    } else if (!strcmp(a, "--accuracy")) {
-        if (p2_accuracy(v, &o->scheme, &o->order))
-            hj_cli_fail(o->prog, HJ_EXIT_USAGE, "unknown accuracy '%s' (low, medium, high or veryHigh)", v);
-        o->accuracy = v;
-    } else if (hj_parse_long(v, "--N", 11, 801, &o->N, &err)) {
-        hj_cli_fail(o->prog, HJ_EXIT_USAGE, "%s", err.msg);
-    }
-    return 1;
-}
-
-void p2_fail_if(const char *prog, int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
-}
-
-int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value)
-{
-    if (strcmp(argv[*i], name)) return 0;
-    if (*i + 1 >= argc || (strcmp(argv[*i + 1], "0") && strcmp(argv[*i + 1], "1")))
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s needs 0 or 1", name);
-    *value = argv[++*i][0] - '0';
-    return 1;
-}
-
-void p2_commit_run(const char *prog, hj_out *out, int rc, const hj_error *err)
-{
-    if (rc) {
-        hj_out_abort(out); /* no half-written figure file is left behind */
-        p2_fail_if(prog, 1, err);
-    }
-    hj_error cerr;
-    p2_fail_if(prog, hj_out_commit(out, &cerr), &cerr);
-}
+#include "hj_ls_seq.h"
 
 int p2_square_grid(hj_ls_grid *g, long n, hj_error *err)
 {
@@ -84,12 +15,6 @@ int p2_square_grid(hj_ls_grid *g, long n, hj_error *err)
     const double lo[2] = {-1, -1}, hi[2] = {1, 1};
     const long N[2] = {n, n};
     return hj_ls_grid_init(g, 2, lo, hi, N, bc, err);
-}
-
-double p2_star_fn(const double *x, void *ctx)
-{
-    const p2_star *s = ctx;
-    return hypot(x[0], x[1]) - s->scale * (cos(s->points * atan2(x[1], x[0])) + s->shift);
 }
 
 double p2_circle_fn(const double *x, void *ctx)
@@ -110,46 +35,27 @@ double p2_switch_fn(double t, const double *x, double phi, void *ctx)
     return s->value[k] * (1 + s->cos_coef[k] * c);
 }
 
-static int seq_write(p2_seq *s, int k, double t, const double *y, hj_error *err)
+/* The hook of the sequence: the progress line, then the demo's hook. */
+static int progress_hook(int k, double t, const double *y, void *ctx, hj_error *err)
 {
-    if (s->fp) {
-        if (k > 0) fputs("\n\n", s->fp);
-        fprintf(s->fp, "# t = %.6g\n", t);
-        const char *names[1] = {s->name};
-        const double *fields[1] = {y};
-        int rc = hj_ls_write_block(s->fp, s->grid, 1, names, fields, err);
-        if (rc) return rc;
-    }
-    if (s->sw && !s->sw->after && t >= s->sw->t_switch) s->sw->after = 1;
+    const p2_seq *s = ctx;
     if (s->progress) hj_progress("%s: t = %.4g\n", s->progress, t);
     return s->hook ? s->hook(k, t, y, s->hook_ctx, err) : HJ_OK;
-}
-
-static int seq_out(int k, double t, const double *y, void *ctx, hj_error *err)
-{
-    return seq_write(ctx, k, t, y, err);
 }
 
 int p2_run(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int n, double *y,
            p2_seq *seq, double factor_cfl, hj_error *err)
 {
-    int rc = seq_write(seq, 0, tspan[0], y, err);
-    if (rc) return rc;
+    hj_ls_seq s;
+    hj_ls_seq_init(&s, seq->fp, seq->grid, seq->name, 6);
+    if (seq->sw) s.flag = &seq->sw->after, s.t_switch = seq->sw->t_switch;
+    s.hook = progress_hook, s.hook_ctx = seq;
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
     o.factor_cfl = factor_cfl;
     o.post = seq->post;
     o.post_ctx = seq->post_ctx;
-    return hj_ls_ode(order, g, term, tspan, n, y, &o, seq_out, seq, NULL, err);
-}
-
-int p2_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err)
-{
-    double m;
-    int rc = hj_ls_measure(g, phi, &m, err);
-    if (rc) return rc;
-    *r = g->dim == 2 ? sqrt(m / HJ_PI) : cbrt(3 * m / (4 * HJ_PI));
-    return HJ_OK;
+    return hj_ls_seq_solve(order, g, term, tspan, n, y, &o, &s, NULL, err);
 }
 
 int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err)
@@ -159,10 +65,63 @@ int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err)
     return hj_ls_measure(a->grid, y, &a->area[k], err);
 }
 
-int p2_open(hj_out *out, const char *dir, const char *name, hj_error *err)
+void p2_check_rows(FILE *fp, const p2_check *c)
 {
-    char path[4096];
-    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, name) >= sizeof path)
-        return hj_error_set(err, HJ_EINVAL, "path too long: %s/%s", dir, name);
-    return hj_out_open(out, path, err);
+    for (int n = 0; n < c->ngrids; n++)
+        for (int k = 0; k < c->ncase; k++) {
+            const double v = c->value[n * c->ncase + k], e = c->exact[k];
+            fprintf(fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", c->grids[n], c->case_name[k], v, e, fabs(v - e));
+        }
+}
+
+void p2_check_notes(FILE *fp, const p2_check *c)
+{
+    for (int n = 0; n < c->ngrids; n++)
+        for (int k = 0; k < c->ncase; k++) {
+            const double v = c->value[n * c->ncase + k], e = c->exact[k];
+            fprintf(fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", c->grids[n], c->case_label[k], v, e, fabs(v - e),
+                    fabs(v - e) * (c->grids[n] - 1) / 2.0);
+        }
+}
+
+void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *md, const char *md_head,
+                    const p2_check *c)
+{
+    hj_error err;
+    hj_out out;
+    const char *acc = hj_ls_accuracy_name(o->acc);
+    p2_fail_if(o->prog, p2_open(&out, o->out_dir, tsv, &err), &err);
+    fprintf(out.fp, tsv_head, acc);
+    p2_check_rows(out.fp, c);
+    p2_next_file(o->prog, &out, o->out_dir, md);
+    fprintf(out.fp, md_head, acc);
+    p2_check_notes(out.fp, c);
+    fputc('\n', out.fp);
+    p2_fail_if(o->prog, hj_out_commit(&out, &err), &err);
+}
+
+void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
+                     const char *tsv_head, const char *md, const char *md_head)
+{
+    static const long grids[3] = {51, 101, 201};
+    double r[3 * 4];
+    hj_error err;
+    c->grids = grids, c->ngrids = o->quick ? 2 : 3, c->value = r;
+    if (c->ncase > 4) hj_cli_fail(o->prog, HJ_EXIT_RUN, "circle check: more than 4 cases");
+    for (int n = 0; n < c->ngrids; n++) {
+        hj_ls_grid g;
+        p2_fail_if(o->prog, p2_square_grid(&g, grids[n], &err), &err);
+        double *phi = hj_ls_alloc(&g);
+        if (!phi) hj_cli_fail(o->prog, HJ_EXIT_RUN, "out of memory");
+        for (int k = 0; k < c->ncase; k++) {
+            hj_ls_fill(&g, phi, p2_circle_fn, (void *)circ);
+            char label[64];
+            snprintf(label, sizeof label, "circle %s, N = %ld", c->case_name[k], grids[n]);
+            p2_fail_if(o->prog, run(&g, k, phi, label, ctx, &err), &err);
+            p2_fail_if(o->prog, hj_ls_measure_radius(&g, phi, &r[n * c->ncase + k], &err), &err);
+        }
+        hj_ls_free(phi);
+    }
+    p2_check_files(o, tsv, tsv_head, md, md_head, c);
+    c->value = NULL;
 }

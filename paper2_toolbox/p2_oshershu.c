@@ -9,16 +9,21 @@
 #include "hj_io.h"
 
 #include "hj_ls_term.h"
-#include "p2_reach.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "hj_math.h"
 
+
+/* Output times of one run at the most. */
+enum { OS_MAXT = 64 };
 
 static double burgers_h(double q) { return 0.5 * (1 + q) * (1 + q); }
 static double burgers_dh(double q) { return 1 + q; }
 static double nonconvex_h(double q) { return -cos(1 + q); }
 static double nonconvex_dh(double q) { return sin(1 + q); }
 
-const p2_os_problem p2_os_burgers = {"burgers", burgers_h, burgers_dh, 1 + 3.14159265358979323846, 1};
+const p2_os_problem p2_os_burgers = {"burgers", burgers_h, burgers_dh, 1 + HJ_PI, 1};
 const p2_os_problem p2_os_nonconvex = {"nonconvex", nonconvex_h, nonconvex_dh, 1, 0};
 
 static double os_ham(double t, const double *x, double phi, const double *p, void *ctx)
@@ -86,15 +91,15 @@ int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, doub
     hj_ls_fill(g, y, initial, &dim);
     p2_os_ctx c = {pb, r->dim, r->tight};
     hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, g, p2_accuracy_scheme(r->acc), r->diss, os_ham, os_partial, &c);
+    hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(r->acc), r->diss, os_ham, os_partial, &c);
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
-    o.factor_cfl = 0.5; /* burgersLF, nonconvexLF */
-    double ts[P2_MAXT];
-    const int nint = r->nout < 1 ? 1 : r->nout >= P2_MAXT ? P2_MAXT - 1 : r->nout;
-    p2_times(0, r->tmax, nint, ts);
+    o.factor_cfl = HJ_LS_FACTOR_CFL; /* burgersLF, nonconvexLF */
+    double ts[OS_MAXT];
+    const int nint = r->nout < 1 ? 1 : r->nout >= OS_MAXT ? OS_MAXT - 1 : r->nout;
+    hj_ls_seq_times(0, r->tmax, nint + 1, ts);
     if (out && (rc = out(0, 0, y, out_ctx, err))) { hj_ls_free(y); return rc; }
-    rc = hj_ls_ode(p2_accuracy_order(r->acc), g, &lf.base, ts, nint + 1, y, &o, out, out_ctx, stats, err);
+    rc = hj_ls_ode(hj_ls_accuracy_order(r->acc), g, &lf.base, ts, nint + 1, y, &o, out, out_ctx, stats, err);
     if (rc) { hj_ls_free(y); return rc; }
     *phi = y;
     return HJ_OK;
@@ -182,13 +187,14 @@ double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_g
                             hj_error *err)
 {
     hj_out out;
-    p2_blocks b = {NULL, g};
+    hj_ls_seq seq;
+    hj_ls_seq_init(&seq, NULL, g, "phi", 0);
     if (path) {
         if (hj_out_open(&out, path, err)) return NULL;
-        b.fp = out.fp;
+        seq.fp = out.fp;
     }
     double *phi;
-    if (p2_os_solve(pb, r, g, &phi, path ? p2_write_block : NULL, &b, NULL, err)) {
+    if (p2_os_solve(pb, r, g, &phi, path ? hj_ls_seq_output : NULL, &seq, NULL, err)) {
         if (path) hj_out_abort(&out);
         return NULL;
     }
@@ -198,9 +204,9 @@ double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_g
 
 int p2_os_parse_cli(int argc, char **argv, int allow_partial, p2_os_cli *c, hj_error *err)
 {
-    static const double pi2 = 3.14159265358979323846 * 3.14159265358979323846;
+    static const double pi2 = HJ_PI * HJ_PI;
     memset(c, 0, sizeof *c);
-    c->run = (p2_os_run){2, 0, P2_LOW, HJ_LS_GLF, 0, 1.5 / pi2, 10};
+    c->run = (p2_os_run){2, 0, HJ_LS_ACC_LOW, HJ_LS_GLF, 0, 1.5 / pi2, 10};
     c->out_dir = ".";
     static const char *const valued[] = {"--accuracy", "--diss", "--dim", "--N", "--tmax", "--partial", "--out-dir"};
     for (int i = 1; i < argc; i++) {
@@ -214,8 +220,8 @@ int p2_os_parse_cli(int argc, char **argv, int allow_partial, p2_os_cli *c, hj_e
         long l = 0;
         int rc = HJ_OK;
         switch (v) {
-        case 0: rc = p2_parse_accuracy(s, &c->run.acc, err); break;
-        case 1: rc = p2_parse_dissipation(s, &c->run.diss, err); break;
+        case 0: rc = hj_ls_accuracy_parse(s, &c->run.acc, err); break;
+        case 1: rc = hj_ls_dissipation_parse(s, &c->run.diss, err); break;
         case 2: rc = hj_parse_long(s, "--dim", 1, 3, &l, err); c->run.dim = (int)l; break;
         case 3: rc = hj_parse_long(s, "--N", 4, 100000, &c->run.N, err); break;
         case 4: rc = hj_parse_double(s, "--tmax", 1e-12, 100, &c->run.tmax, err); break;

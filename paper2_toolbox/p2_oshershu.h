@@ -40,7 +40,7 @@ typedef struct {
 typedef struct {
     int dim;
     long N;        /* nodes per dimension */
-    int acc;       /* P2_LOW .. P2_VERYHIGH */
+    int acc;       /* HJ_LS_ACC_LOW .. HJ_LS_ACC_VERYHIGH */
     int diss;      /* HJ_LS_GLF .. HJ_LS_LLLF */
     int tight;     /* exact partial bound instead of the toolbox's */
     double tmax;

@@ -70,39 +70,31 @@ times as gnuplot index blocks).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_ode.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
+#include "p2_convection.h"
+#include "p2_reinit.h"
 
 static const char *const PROG = "reinit_demo";
 
-static void fail_if(int rc, const hj_error *err)
-{
-    if (rc) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err->msg);
-}
-
 /* One run: reinitialize c->phi0 at accuracy acc until t = 1; the result
  * in phi; seq_path (may be NULL) receives the nine output times. */
-static long run(const p2b_reinit_case *c, int acc, double *phi, const char *seq_path)
+static long run(const p2_reinit_case *c, int acc, double *phi, const char *seq_path)
 {
     hj_error err;
     hj_ls_reinit term;
-    hj_ls_reinit_init(&term, &c->g, p2b_acc_scheme[acc], c->phi0);
+    hj_ls_reinit_init(&term, &c->g, hj_ls_accuracy_scheme(acc), c->phi0);
     hj_ls_copy(&c->g, phi, c->phi0);
-    enum { NT = 9 };
-    double tspan[NT];
-    p2b_times(0, 1, NT, tspan);
-    p2b_seq seq;
-    fail_if(p2b_seq_open(&seq, seq_path, &c->g, "phi", &err), &err);
-    fail_if(p2b_seq_block(&seq, 0, phi, &err), &err);
     hj_ls_ode_stats st;
-    if (hj_ls_ode(p2b_acc_order[acc], &c->g, &term.base, tspan, NT, phi, NULL, p2b_seq_out, &seq, &st, &err))
-        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2b_shape_name[c->shape], p2b_acc_name[acc], err.msg);
-    fail_if(p2b_seq_commit(&seq, &err), &err);
+    if (p2_solve(seq_path, acc, &c->g, &term.base, 1, phi, NULL, NULL, &st, &err))
+        hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2_shape_name[c->shape], hj_ls_accuracy_name(acc), err.msg);
     return st.steps;
 }
 
-static void usage(FILE *f)
+static void usage(void)
 {
-    fprintf(f,
+    printf(
             "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
             "reinitDemo of Mitchell's toolbox (section 2.2.1); see the comment at the top of reinit_demo.c.\n"
             "  --shape S      circle or star (default star)\n"
@@ -115,65 +107,56 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    p2b_reinit_opts opt;
-    hj_error err;
-    if (p2b_reinit_options(argc, argv, &opt, &err)) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    if (opt.help) { usage(stdout); return 0; }
+    p2_reinit_opts opt;
+    hj_out tab, notes;
+    p2_reinit_begin(PROG, usage, argc, argv, "reinit",
+                    "# reinitDemo: near the front (within 5 dx of the exact initial curve) before and after t = 1\n",
+                    &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
     const char *dir = opt.dir;
-    fail_if(hj_mkdirs(dir, &err), &err);
+    hj_error err;
     char path[4096];
-    hj_out tab, notes;
-    snprintf(path, sizeof path, "%s/%s", dir, single ? "reinit_run.tsv" : "reinit.tsv");
-    fail_if(hj_out_open(&tab, path, &err), &err);
-    fprintf(tab.fp, "# reinitDemo: near the front (within 5 dx of the exact initial curve) before and after t = 1\n");
-    p2b_reinit_header(tab.fp);
     if (!single) {
-        snprintf(path, sizeof path, "%s/reinit_notes.md", dir);
-        fail_if(hj_out_open(&notes, path, &err), &err);
+        p2_fail_if(PROG, p2_open(&notes, dir, "reinit_notes.md", &err), &err);
         fprintf(notes.fp, "\nNear the front (nodes within 5 dx of the exact initial curve), before -> after "
                           "reinitialization to t = 1:\n\n| shape | accuracy | mean abs(abs(grad phi) - 1) | "
                           "max abs(phi - d) | zero crossings from the exact curve: max (mean) | area change | "
                           "steps |\n|---|---|---|---|---|---|---|\n");
     }
-    for (int s = 0; s < P2B_NSHAPE; s++) {
+    for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
-        p2b_reinit_case c;
-        fail_if(p2b_reinit_setup(&c, s, &err), &err);
+        p2_reinit_case c;
+        p2_fail_if(PROG, p2_reinit_setup(&c, s, &err), &err);
         double *phi = hj_ls_alloc(&c.g), *g0 = hj_ls_alloc(&c.g), *g1 = hj_ls_alloc(&c.g);
         if (!phi || !g0 || !g1) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-        p2b_reinit_meas before, after;
-        fail_if(p2b_reinit_measure(&c, c.phi0, &before, &err), &err);
-        for (int a = 0; a < P2B_NACC; a++) {
+        p2_reinit_meas before, after;
+        p2_fail_if(PROG, p2_reinit_measure(&c, c.phi0, &before, &err), &err);
+        for (int a = 0; a < HJ_LS_NACC; a++) {
             if (single && a != acc) continue;
             snprintf(path, sizeof path, "%s/reinit_run.dat", dir);
             const long steps = run(&c, a, phi, single ? path : NULL);
-            fail_if(p2b_reinit_measure(&c, phi, &after, &err), &err);
-            p2b_reinit_row(tab.fp, &c, a, &before, &after, steps);
+            p2_fail_if(PROG, p2_reinit_measure(&c, phi, &after, &err), &err);
+            p2_reinit_row(tab.fp, &c, a, &before, &after, steps);
             if (single) continue;
-            p2b_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
+            p2_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
             fputc('\n', notes.fp);
-            if (s == P2B_STAR && a == P2B_MEDIUM) { /* Figures 4 and 5 */
-                fail_if(p2b_grad_magnitude(&c.g, c.phi0, c.work, g0, &err), &err);
-                fail_if(p2b_grad_magnitude(&c.g, phi, c.work, g1, &err), &err);
-                hj_out o;
-                snprintf(path, sizeof path, "%s/reinit_star_medium.dat", dir);
-                fail_if(hj_out_open(&o, path, &err), &err);
+            if (s == P2_STAR && a == HJ_LS_ACC_MEDIUM) { /* Figures 4 and 5 */
+                p2_fail_if(PROG, hj_ls_gradient_norm(&c.g, c.phi0, c.work, g0, &err), &err);
+                p2_fail_if(PROG, hj_ls_gradient_norm(&c.g, phi, c.work, g1, &err), &err);
                 const char *names[4] = {"phi0", "phi1", "grad0", "grad1"};
                 const double *f[4] = {c.phi0, phi, g0, g1};
-                fail_if(hj_ls_write_block(o.fp, &c.g, 4, names, f, &err), &err);
-                fail_if(hj_out_commit(&o, &err), &err);
+                p2_fail_if(PROG, p2_write_dat(dir, "reinit_star_medium.dat", &c.g, 4, names, f, &err), &err);
             }
         }
         hj_ls_free(phi), hj_ls_free(g0), hj_ls_free(g1);
-        p2b_reinit_free(&c);
+        p2_reinit_free(&c);
     }
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
     if (!single) {
         fprintf(notes.fp, "\nThe circle's phi_0 is already a signed distance function near the front, so its "
                           "numbers show what reinitialization costs there: the front moves by the scheme's "
                           "dissipation (no subcell fix).\n");
-        fail_if(hj_out_commit(&notes, &err), &err);
+        p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
     }
     return 0;
 }

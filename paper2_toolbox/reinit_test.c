@@ -24,7 +24,7 @@ does not say how the toolbox measures the update (per step, as here, or
 per unit time), which decides how often the rule fires.
 
 **Check** (reinit_test.tsv against published/reinit_test.tsv), the same
-quantities as reinitDemo's (see reinit_demo.c; measured by p2_basic.c):
+quantities as reinitDemo's (see reinit_demo.c; measured by p2_reinit.c):
 mean | |grad phi| - 1 | within 5 dx of the exact initial
 curve before and after, max |phi - d| there (d the exact signed distance),
 the distance of the final zero crossings from the exact initial curve, and
@@ -46,18 +46,15 @@ phi, gnuplot grid).
 #include "hj_io.h"
 #include "hj_ls_helper.h"
 #include "hj_ls_io.h"
-#include "p2_basic.h"
+#include "hj_ls_accuracy.h"
+#include "p2_cli.h"
+#include "p2_reinit.h"
 
 static const char *const PROG = "reinit_test";
 
-static void fail_if(int rc, const hj_error *err)
+static void usage(void)
 {
-    if (rc) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err->msg);
-}
-
-static void usage(FILE *f)
-{
-    fprintf(f,
+    printf(
             "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
             "reinitTest of Mitchell's toolbox (section 2.7.3); see the comment at the top of reinit_test.c.\n"
             "  --shape S      circle or star (default star)\n"
@@ -70,69 +67,59 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    p2b_reinit_opts opt;
-    hj_error err;
-    if (p2b_reinit_options(argc, argv, &opt, &err)) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    if (opt.help) { usage(stdout); return 0; }
+    p2_reinit_opts opt;
+    hj_out tab, notes;
+    p2_reinit_begin(PROG, usage, argc, argv, "reinit_test",
+                    "# reinitTest (signedDistanceIterative, default t_max and errorMax): near the front (within 5 dx "
+                    "of the exact initial curve) before and after\n", &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
     const char *dir = opt.dir;
-    fail_if(hj_mkdirs(dir, &err), &err);
-    char path[4096];
-    hj_out tab, notes;
-    snprintf(path, sizeof path, "%s/%s", dir, single ? "reinit_test_run.tsv" : "reinit_test.tsv");
-    fail_if(hj_out_open(&tab, path, &err), &err);
-    fprintf(tab.fp, "# reinitTest (signedDistanceIterative, default t_max and errorMax): near the front (within 5 dx "
-                    "of the exact initial curve) before and after\n");
-    p2b_reinit_header(tab.fp);
+    hj_error err;
     if (!single) {
-        snprintf(path, sizeof path, "%s/reinit_test_notes.md", dir);
-        fail_if(hj_out_open(&notes, path, &err), &err);
+        p2_fail_if(PROG, p2_open(&notes, dir, "reinit_test_notes.md", &err), &err);
         fprintf(notes.fp, "\nsignedDistanceIterative with its default t_max (the diagonal of [-1, 0.98]^2, 2.80) and errorMax "
                           "(1e-3); near the front (nodes within 5 dx of the exact initial curve), before -> after:"
                           "\n\n| shape | accuracy | mean abs(abs(grad phi) - 1) | max abs(phi - d) | zero crossings "
                           "from the exact curve: max (mean) | area change | steps | stopped by errorMax |\n"
                           "|---|---|---|---|---|---|---|---|\n");
     }
-    for (int s = 0; s < P2B_NSHAPE; s++) {
+    for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
-        p2b_reinit_case c;
-        fail_if(p2b_reinit_setup(&c, s, &err), &err);
+        p2_reinit_case c;
+        p2_fail_if(PROG, p2_reinit_setup(&c, s, &err), &err);
         double *phi = hj_ls_alloc(&c.g);
         if (!phi) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
-        p2b_reinit_meas before, after;
-        fail_if(p2b_reinit_measure(&c, c.phi0, &before, &err), &err);
-        for (int a = 0; a < P2B_NACC; a++) {
+        p2_reinit_meas before, after;
+        p2_fail_if(PROG, p2_reinit_measure(&c, c.phi0, &before, &err), &err);
+        for (int a = 0; a < HJ_LS_NACC; a++) {
             if (single && a != acc) continue;
-            hj_progress("\rreinit_test: %s %s   ", p2b_shape_name[s], p2b_acc_name[a]);
+            hj_progress("\rreinit_test: %s %s   ", p2_shape_name[s], hj_ls_accuracy_name(a));
             hj_ls_copy(&c.g, phi, c.phi0);
             long steps;
             int converged;
-            if (hj_ls_signed_distance(&c.g, phi, 0, 0, p2b_acc_scheme[a], p2b_acc_order[a], &steps, &converged, &err))
-                hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2b_shape_name[s], p2b_acc_name[a], err.msg);
-            fail_if(p2b_reinit_measure(&c, phi, &after, &err), &err);
-            p2b_reinit_row(tab.fp, &c, a, &before, &after, steps);
+            if (hj_ls_signed_distance(&c.g, phi, 0, 0, hj_ls_accuracy_scheme(a), hj_ls_accuracy_order(a), &steps,
+                                      &converged, &err))
+                hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2_shape_name[s], hj_ls_accuracy_name(a), err.msg);
+            p2_fail_if(PROG, p2_reinit_measure(&c, phi, &after, &err), &err);
+            p2_reinit_row(tab.fp, &c, a, &before, &after, steps);
             if (single) {
-                hj_out o;
-                snprintf(path, sizeof path, "%s/reinit_test_run.dat", dir);
-                fail_if(hj_out_open(&o, path, &err), &err);
                 const char *names[2] = {"phi0", "phi"};
                 const double *f[2] = {c.phi0, phi};
-                fail_if(hj_ls_write_block(o.fp, &c.g, 2, names, f, &err), &err);
-                fail_if(hj_out_commit(&o, &err), &err);
+                p2_fail_if(PROG, p2_write_dat(dir, "reinit_test_run.dat", &c.g, 2, names, f, &err), &err);
                 continue;
             }
-            p2b_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
+            p2_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
             fprintf(notes.fp, " %s |\n", converged ? "yes" : "no");
         }
         hj_ls_free(phi);
-        p2b_reinit_free(&c);
+        p2_reinit_free(&c);
     }
     hj_progress("\n");
-    fail_if(hj_out_commit(&tab, &err), &err);
+    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
     if (!single) {
         fprintf(notes.fp, "\nCompare reinitDemo's table (t = 1): a longer reinitialization improves the gradient "
                           "far from the front but keeps moving the front by the scheme's dissipation.\n");
-        fail_if(hj_out_commit(&notes, &err), &err);
+        p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
     }
     return 0;
 }

@@ -49,7 +49,12 @@ spin_star_notes.md.
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "hj_ls_grid.h"
+#include "hj_ls_measure.h"
+#include "hj_ls_shape.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 #include "hj_math.h"
 
@@ -82,10 +87,10 @@ static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, 
 {
     rotation rot = {0.75 * HJ_PI, rigid};
     hj_ls_normal normal;
-    hj_ls_normal_init(&normal, g, o->scheme);
+    hj_ls_normal_init(&normal, g, hj_ls_accuracy_scheme(o->acc));
     normal.speed.value = a;
     hj_ls_convection conv;
-    hj_ls_convection_init(&conv, g, o->scheme);
+    hj_ls_convection_init(&conv, g, hj_ls_accuracy_scheme(o->acc));
     conv.velocity_fn = rotation_velocity;
     conv.ctx = &rot;
     const hj_ls_term *terms[2] = {&normal.base, &conv.base};
@@ -93,40 +98,42 @@ static int run_spin(const hj_ls_grid *g, const p2_opts *o, double a, int rigid, 
     int rc = hj_ls_sum_init(&sum, g, terms, 2, err);
     if (rc) return rc;
     p2_seq seq = {fp, g, "phi", NULL, NULL, NULL, label, NULL, NULL};
-    rc = p2_run(o->order, g, &sum.base, tspan, nt, phi, &seq, 0.5, err);
+    rc = p2_run(hj_ls_accuracy_order(o->acc), g, &sum.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
     hj_ls_sum_free(&sum);
     return rc;
 }
 
+/* The check's case c (ctx: the options): rigid rotation plus normal
+ * speed +-0.1 to t = 1. */
+static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label, void *ctx, hj_error *err)
+{
+    const double tc[2] = {0, 1};
+    return run_spin(g, ctx, c ? -0.1 : 0.1, 1, tc, 2, phi, NULL, label, err);
+}
+
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 0, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
-    int only = -1;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (p2_binary_option(prog, "--rigid", argc, argv, &i, &only)) continue;
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
+    int only = -1; /* -1: both cases */
+    p2_parse_demo(&o, argc, argv, "--rigid", &only);
     if (!o.N) o.N = o.quick ? 101 : 201; /* the figure grid: 201^2 as in the text, 101^2 in quick mode */
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[9];
-    for (int k = 0; k < 9; k++) tspan[k] = k / 8.0;
+    hj_ls_seq_times(0, 1, 9, tspan);
 
     /* Figure 11: (a) rigid, (b) rotation times |x|^2. */
     hj_ls_grid g;
     p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
     double *phi = hj_ls_alloc(&g);
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    p2_star star = {7, 2.5, 0.20};
+    hj_ls_star star = {0.20, 2.5, 7};
     for (int rigid = 1; rigid >= 0; rigid--) {
         if (only >= 0 && rigid != only) continue;
-        hj_ls_fill(&g, phi, p2_star_fn, &star);
+        hj_ls_fill(&g, phi, hj_ls_star_fn, &star);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, rigid ? "spin_star_a.dat" : "spin_star_b.dat", &err), &err);
-        fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n", o.accuracy,
-                rigid, o.N);
+        fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
+                hj_ls_accuracy_name(o.acc), rigid, o.N);
         p2_commit_run(prog, &out,
                       run_spin(&g, &o, 0.20, rigid, tspan, 9, phi, out.fp, rigid ? "star, rigid" : "star, |x|^2", &err),
                       &err);
@@ -134,47 +141,16 @@ int main(int argc, char **argv)
     hj_ls_free(phi);
 
     /* The check: an off-centre circle, rigid rotation plus normal motion. */
-    const long grids[3] = {51, 101, 201};
-    const int ngrids = o.quick ? 2 : 3;
-    const char *case_name[2] = {"grow", "shrink"};
-    const double speed[2] = {0.1, -0.1}, exact[2] = {0.4, 0.2};
-    const double tc[2] = {0, 1};
-    double r[3][2];
-    for (int n = 0; n < ngrids; n++) {
-        p2_fail_if(prog, p2_square_grid(&g, grids[n], &err), &err);
-        phi = hj_ls_alloc(&g);
-        if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-        for (int c = 0; c < 2; c++) {
-            p2_circle circ = {{0.4, 0, 0}, 0.3};
-            hj_ls_fill(&g, phi, p2_circle_fn, &circ);
-            char label[64];
-            snprintf(label, sizeof label, "circle %s, N = %ld", case_name[c], grids[n]);
-            p2_fail_if(prog, run_spin(&g, &o, speed[c], 1, tc, 2, phi, NULL, label, &err), &err);
-            p2_fail_if(prog, p2_radius(&g, phi, &r[n][c], &err), &err);
-        }
-        hj_ls_free(phi);
-    }
-    hj_out out;
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "spin_circle.tsv", &err), &err);
-    fprintf(out.fp, "# spinStarDemo check: circle r0 = 0.3 at (0.4, 0), rigid rotation 0.75 pi plus normal speed a, "
+    const char *case_name[2] = {"grow", "shrink"}, *speed_label[2] = {"+0.1", "-0.1"};
+    const double exact[2] = {0.4, 0.2};
+    const p2_circle circ = {{0.4, 0, 0}, 0.3};
+    p2_check check = {NULL, 0, 2, case_name, speed_label, NULL, exact};
+    p2_circle_check(&o, &circ, circle_run, &o, &check, "spin_circle.tsv",
+                    "# spinStarDemo check: circle r0 = 0.3 at (0.4, 0), rigid rotation 0.75 pi plus normal speed a, "
                     "accuracy %s, radius at t = 1 from the area of {phi < 0}\nN\tcase\tr\tr_exact\terror\n",
-            o.accuracy);
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 2; c++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], case_name[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "spin_star_notes.md", &err), &err);
-    fprintf(out.fp, "\nCircle of radius 0.3 centred at (0.4, 0), rigid rotation at 0.75 pi plus normal speed "
+                    "spin_star_notes.md",
+                    "\nCircle of radius 0.3 centred at (0.4, 0), rigid rotation at 0.75 pi plus normal speed "
                     "a = +-0.1 (`%s` accuracy): radius at t = 1 from the area of {phi < 0}, against r0 + a t.\n\n"
-                    "| nodes per side | a | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n",
-            o.accuracy);
-    for (int n = 0; n < ngrids; n++)
-        for (int c = 0; c < 2; c++)
-            fprintf(out.fp, "| %ld | %+.1f | %.5f | %.2f | %.2e | %.3f |\n", grids[n], speed[c], r[n][c], exact[c],
-                    fabs(r[n][c] - exact[c]), fabs(r[n][c] - exact[c]) * (grids[n] - 1) / 2.0);
-    fputc('\n', out.fp);
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
+                    "| nodes per side | a | r(1) | exact | error | error / dx |\n|---|---|---|---|---|---|\n");
     return 0;
 }

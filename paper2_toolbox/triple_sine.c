@@ -62,6 +62,9 @@ values in published/triple_sine.tsv), triple_sine_notes.md.
 #include "hj_io.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "p2_cli.h"
 #include "p2_motion.h"
 #include "hj_math.h"
 
@@ -103,26 +106,26 @@ static int run_sine(const hj_ls_grid *g, const p2_opts *o, double b, const doubl
                     FILE *fp, const char *label, hj_error *err)
 {
     hj_ls_normal normal;
-    hj_ls_normal_init(&normal, g, o->scheme);
+    hj_ls_normal_init(&normal, g, hj_ls_accuracy_scheme(o->acc));
     normal.speed.value = 1;
     hj_ls_curvature_term curv;
     hj_ls_curvature_term_init(&curv, g);
     curv.b.value = b;
     p2_seq seq = {fp, g, "phi", NULL, NULL, NULL, label, NULL, NULL};
-    if (b == 0) return p2_run(o->order, g, &normal.base, tspan, nt, phi, &seq, 0.5, err);
+    if (b == 0)
+        return p2_run(hj_ls_accuracy_order(o->acc), g, &normal.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
     const hj_ls_term *terms[2] = {&normal.base, &curv.base};
     hj_ls_sum sum;
     int rc = hj_ls_sum_init(&sum, g, terms, 2, err);
     if (rc) return rc;
-    rc = p2_run(o->order, g, &sum.base, tspan, nt, phi, &seq, 0.5, err);
+    rc = p2_run(hj_ls_accuracy_order(o->acc), g, &sum.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);
     hj_ls_sum_free(&sum);
     return rc;
 }
 
 int main(int argc, char **argv)
 {
-    p2_opts o = {prog, usage, "medium", 0, 0, 0, ".", 0};
-    p2_accuracy(o.accuracy, &o.scheme, &o.order);
+    p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
     double bs[3] = {0.1, 0.025, 0};
     int nb = 3;
     hj_error err;
@@ -140,7 +143,7 @@ int main(int argc, char **argv)
     if (o.N % 2) hj_cli_fail(prog, HJ_EXIT_USAGE, "--N must be even (x_1 = 1 must be a node)");
     p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[12];
-    for (int k = 0; k < 12; k++) tspan[k] = 0.5 * k / 11.0;
+    hj_ls_seq_times(0, 0.5, 12, tspan);
 
     /* Figure 12 (and the front heights of each b on the figure grid). */
     hj_ls_grid g;
@@ -155,8 +158,8 @@ int main(int argc, char **argv)
         snprintf(label, sizeof label, "tripleSine b = %g", bs[k]);
         hj_out out;
         p2_fail_if(prog, p2_open(&out, o.out_dir, name, &err), &err);
-        fprintf(out.fp, "# tripleSine(%g, %s) on %ld^2 nodes: phi at t = 0.5 k / 11, k = 0..11\n", bs[k], o.accuracy,
-                o.N);
+        fprintf(out.fp, "# tripleSine(%g, %s) on %ld^2 nodes: phi at t = 0.5 k / 11, k = 0..11\n", bs[k],
+                hj_ls_accuracy_name(o.acc), o.N);
         p2_commit_run(prog, &out, run_sine(&g, &o, bs[k], tspan, 12, phi, out.fp, label, &err), &err);
         hfig[k][0] = front_height(&g, phi, 0);
         hfig[k][1] = front_height(&g, phi, o.N / 2);
@@ -185,17 +188,13 @@ int main(int argc, char **argv)
     hj_out out;
     p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine.tsv", &err), &err);
     fprintf(out.fp, "# tripleSine check: b = 0, accuracy %s, front height at t = 0.5 on the column x_1 = 0.2 (flank) "
-                    "and x_1 = 1 (valley)\nN\tpoint\theight\texact\terror\n", o.accuracy);
-    for (int n = 0; n < ngrids; n++)
-        for (int p = 0; p < 2; p++)
-            fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\t%.3e\n", grids[n], point[p], h[n][p], exact[p],
-                    fabs(h[n][p] - exact[p]));
-    p2_fail_if(prog, hj_out_commit(&out, &err), &err);
-
-    p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine_notes.md", &err), &err);
+                    "and x_1 = 1 (valley)\nN\tpoint\theight\texact\terror\n", hj_ls_accuracy_name(o.acc));
+    const p2_check check = {grids, ngrids, 2, point, point, h[0], exact};
+    p2_check_rows(out.fp, &check);
+    p2_next_file(prog, &out, o.out_dir, "triple_sine_notes.md");
     fprintf(out.fp, "\nFront height at t = 0.5 for b = 0 (`%s` accuracy) against Huygens' principle (flank x_1 = 0.2: "
                     "1.710286, valley x_1 = 1: 1.630852):\n\n| nodes per side | flank | error | valley | error |\n|---|---|---|---|---|\n",
-            o.accuracy);
+            hj_ls_accuracy_name(o.acc));
     for (int n = 0; n < ngrids; n++)
         fprintf(out.fp, "| %ld | %.5f | %.2e | %.5f | %.2e |\n", grids[n], h[n][0], fabs(h[n][0] - exact[0]), h[n][1],
                 fabs(h[n][1] - exact[1]));

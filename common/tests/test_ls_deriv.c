@@ -333,6 +333,31 @@ static void bad_arguments(void **state)
     hj_ls_free(a);
 }
 
+/* |grad phi| of a linear function is exact at the nodes off the boundary. */
+static void gradient_norm(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    const long N[2] = {11, 11};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *phi = hj_ls_alloc(&g), *work = hj_ls_alloc(&g), *out = hj_ls_alloc(&g);
+    for (size_t r = 0; r < g.rows; r++) {
+        long i[2] = {0, 0};
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 0; j < 11; j++)
+            phi[k + (size_t)j] = 3 * (-1 + 0.2 * (double)j) - 4 * (-1 + 0.2 * (double)i[1]) + 10;
+    }
+    assert_int_equal(hj_ls_gradient_norm(&g, phi, work, out, NULL), HJ_OK);
+    for (size_t r = 0; r < g.rows; r++) {
+        long i[2] = {0, 0};
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 1; j < 10 && i[1] > 0 && i[1] < 10; j++) assert_close(out[k + (size_t)j], 5, 1e-12, 0);
+    }
+    hj_ls_free(phi), hj_ls_free(work), hj_ls_free(out);
+}
+
 int main(void)
 {
     hj_test_one_thread();
@@ -341,6 +366,7 @@ int main(void)
         cmocka_unit_test(six_dimensions),  cmocka_unit_test(forms_agree),
         cmocka_unit_test(select_equals_two_sided), cmocka_unit_test(centered_orders),
         cmocka_unit_test(curvature_order), cmocka_unit_test(bad_arguments),
+        cmocka_unit_test(gradient_norm),
     };
     return cmocka_run_group_tests_name("hj_ls_deriv", tests, NULL, NULL);
 }

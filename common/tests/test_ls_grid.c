@@ -169,11 +169,30 @@ static void norms(void **state)
     hj_ls_free(a);
 }
 
+/* Nodes where b > a, and nodes that differ in any bit (-0 from 0 too);
+ * ghost nodes do not count. */
+static void counts(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc = {HJ_LS_BC_PERIODIC, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, (const double[]){0}, (const double[]){1}, (const long[]){6}, &bc, NULL), 0);
+    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g);
+    b[g.offset + 1] = 1, b[g.offset + 3] = -1, b[g.offset + 5] = -0.0;
+    a[0] = 5;
+    assert_int_equal(hj_ls_count_increase(&g, a, b), 1);
+    assert_int_equal(hj_ls_count_increase(&g, b, a), 1);
+    assert_int_equal(hj_ls_count_differ(&g, a, b), 3);
+    assert_int_equal(hj_ls_count_differ(&g, a, a), 0);
+    hj_ls_free(a), hj_ls_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(coords_and_rows),
         cmocka_unit_test(errors),    cmocka_unit_test(norms),
+        cmocka_unit_test(counts),
     };
     return cmocka_run_group_tests_name("hj_ls_grid", tests, NULL, NULL);
 }

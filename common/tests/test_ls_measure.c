@@ -139,12 +139,56 @@ static void writers(void **state)
     hj_ls_free(a);
 }
 
+/* A periodic dimension adds the cells from the last node to the first
+ * node's image: a band across the seam, and a radius from the measure. */
+static void periodic_and_radius(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const double mn[2] = {0, 0}, mx[2] = {0.9, 1};
+    const long N[2] = {10, 11};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *phi = hj_ls_alloc(&g), m, mp;
+    /* {phi < 0}: x < 0.25 or x > 0.85 (the seam), all y */
+    for (size_t r = 0; r < g.rows; r++) {
+        long i[2] = {0, 0};
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 0; j < 10; j++) {
+            const double x = 0.1 * (double)j;
+            phi[k + (size_t)j] = x < 0.55 ? x - 0.25 : 0.85 - x;
+        }
+    }
+    assert_int_equal(hj_ls_measure(&g, phi, &m, NULL), HJ_OK);
+    assert_int_equal(hj_ls_measure_periodic(&g, phi, 0, &mp, NULL), HJ_OK);
+    assert_close(m, 0.25 + 0.05, 1e-12, 0);
+    assert_close(mp, 0.25 + 0.15, 1e-12, 0);
+    assert_int_equal(hj_ls_measure_periodic(&g, phi, -1, &mp, NULL), HJ_OK);
+    assert_true(mp == m);
+    assert_int_equal(hj_ls_measure_periodic(&g, phi, 2, &mp, NULL), HJ_EINVAL);
+    hj_ls_free(phi);
+    for (int dim = 2; dim <= 3; dim++) {
+        hj_ls_grid gs = grid(dim, 41);
+        double *s = hj_ls_alloc(&gs), r;
+        const double c[3] = {0, 0, 0};
+        assert_int_equal(hj_ls_shape_sphere(&gs, c, 0.6, s, NULL), HJ_OK);
+        assert_int_equal(hj_ls_measure_radius(&gs, s, &r, NULL), HJ_OK);
+        assert_close(r, 0.6, 2e-3, 0);
+        hj_ls_free(s);
+    }
+    hj_ls_grid g1 = grid(1, 5);
+    double *s1 = hj_ls_alloc(&g1), r1;
+    assert_int_equal(hj_ls_measure_radius(&g1, s1, &r1, NULL), HJ_EINVAL);
+    hj_ls_free(s1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(simplex_fractions),
         cmocka_unit_test(measures),
         cmocka_unit_test_setup_teardown(writers, hj_test_mkdir, hj_test_rmdir),
+        cmocka_unit_test(periodic_and_radius),
     };
     return cmocka_run_group_tests_name("hj_ls_measure", tests, NULL, NULL);
 }

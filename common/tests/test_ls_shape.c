@@ -138,6 +138,35 @@ static void errors(void **state)
     hj_ls_free(a);
 }
 
+/* The star (13): its value at chosen points, its area against the measure
+ * of its grid function, its boundary samples. */
+static void star(void **state)
+{
+    (void)state;
+    const hj_ls_star s = {0.25, 2, 7};
+    const double tip[2] = {0.75, 0}, valley[2] = {-0.25, 0}, centre[2] = {0, 0};
+    assert_close(hj_ls_star_fn(tip, (void *)&s), 0, 1e-15, 0);
+    assert_close(hj_ls_star_fn(valley, (void *)&s), 0, 1e-15, 0); /* theta = pi: cos(7 pi) = -1 */
+    assert_close(hj_ls_star_fn(centre, (void *)&s), -0.75, 1e-15, 0);
+    assert_close(hj_ls_star_area(&s), 3.14159265358979323846 * 0.0625 * 4.5, 1e-15, 0);
+    hj_ls_grid g = grid(2);
+    double *phi = hj_ls_alloc(&g), *pts;
+    assert_int_equal(hj_ls_shape_star(&g, &s, phi, NULL), HJ_OK);
+    const double x[2] = {0.3, -0.4};
+    assert_close(at(&g, phi, x), hj_ls_star_fn(x, (void *)&s), 1e-15, 0);
+    assert_int_equal(hj_ls_shape_curve(&s, NULL, 0, 700, &pts, NULL), HJ_OK);
+    for (long k = 0; k < 700; k += 37) assert_close(hj_ls_star_fn(pts + 2 * k, (void *)&s), 0, 1e-15, 0);
+    free(pts);
+    const double c[2] = {1, 2};
+    assert_int_equal(hj_ls_shape_curve(NULL, c, 0.5, 4, &pts, NULL), HJ_OK);
+    assert_close(pts[2], 1, 1e-15, 0);
+    assert_close(pts[3], 2.5, 1e-15, 0);
+    free(pts);
+    hj_ls_grid g1 = grid(1);
+    assert_int_equal(hj_ls_shape_star(&g1, &s, phi, NULL), HJ_EINVAL);
+    hj_ls_free(phi);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -145,6 +174,7 @@ int main(void)
         cmocka_unit_test(shapes_2d),
         cmocka_unit_test(shapes_3d),
         cmocka_unit_test(errors),
+        cmocka_unit_test(star),
     };
     return cmocka_run_group_tests_name("hj_ls_shape", tests, NULL, NULL);
 }

@@ -365,6 +365,24 @@ static void restrict_and_sum(void **state)
     hj_ls_free(y), hj_ls_free(f);
 }
 
+/* The toolbox's dissipation names both ways. */
+static void dissipation_names(void **state)
+{
+    (void)state;
+    const int v[3] = {HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF};
+    for (int k = 0; k < 3; k++) {
+        int d = -1;
+        assert_int_equal(hj_ls_dissipation_parse(hj_ls_dissipation_name(v[k]), &d, NULL), HJ_OK);
+        assert_int_equal(d, v[k]);
+    }
+    assert_string_equal(hj_ls_dissipation_name(HJ_LS_LLLF), "locallocal");
+    assert_string_equal(hj_ls_dissipation_name(7), "?");
+    hj_error err;
+    int d = 5;
+    assert_int_equal(hj_ls_dissipation_parse("Global", &d, &err), HJ_EINVAL);
+    assert_int_equal(d, 5);
+}
+
 int main(void)
 {
     hj_test_one_thread();
@@ -378,6 +396,7 @@ int main(void)
         cmocka_unit_test(curvature_shrinking_circle),
         cmocka_unit_test(hessian_heat),
         cmocka_unit_test(restrict_and_sum),
+        cmocka_unit_test(dissipation_names),
     };
     return cmocka_run_group_tests_name("hj_ls_term", tests, NULL, NULL);
 }

@@ -1,4 +1,4 @@
-# airMode (section 2.6.3, Figure 20): session h3.
-$(eval $(call p2_demo,air_mode,reach,air_mode.tsv air_mode_2d.dat air_mode_notes.md,air_mode.tsv))
+# airMode (section 2.6.3, Figure 20).
+$(eval $(call p2_demo,air_mode,reach cli,air_mode.tsv air_mode_2d.dat air_mode_notes.md,air_mode.tsv))
 $(eval $(call p2_figure,fig20,air_mode_2d.dat))
 P2_RESULTS += $(P2_OUT)/fig20.png $(P2_OUT)/air_mode_notes.md

@@ -1,4 +1,4 @@
-# burgersLF (section 2.5.1, Figure 14): session h3.
-$(eval $(call p2_demo,burgers_lf,reach oshershu,burgers.tsv burgers_fit.tsv burgers_1d.dat burgers_2d.dat burgers_notes.md,burgers.tsv burgers_fit.tsv))
+# burgersLF (section 2.5.1, Figure 14).
+$(eval $(call p2_demo,burgers_lf,oshershu cli,burgers.tsv burgers_fit.tsv burgers_1d.dat burgers_2d.dat burgers_notes.md,burgers.tsv burgers_fit.tsv))
 $(eval $(call p2_figure,fig14,burgers_1d.dat burgers_2d.dat))
 P2_RESULTS += $(P2_OUT)/fig14.png $(P2_OUT)/burgers_notes.md

@@ -1,7 +1,7 @@
-# convectionDemo (section 2.1, Figures 1-3); shares p2_basic with the other
-# section 2.1-2.2 demos and with bench_convection.
-$(eval $(call p2_demo,convection_demo,basic,convection.tsv convection_notes.md convection_2d_linear_medium.dat convection_2d_linearRev_low.dat convection_1d_constantRev_veryHigh.dat,convection.tsv,OMP_WAIT_POLICY=passive))
-$(P2_BIN)/bench_convection: $(BUILD)/obj/$(P2)/p2_basic.o
+# convectionDemo (section 2.1, Figures 1-3); its flows (p2_convection) serve
+# laxFriedrichsDemo, maskDemo and bench_convection too.
+$(eval $(call p2_demo,convection_demo,convection cli,convection.tsv convection_notes.md convection_2d_linear_medium.dat convection_2d_linearRev_low.dat convection_1d_constantRev_veryHigh.dat,convection.tsv,OMP_WAIT_POLICY=passive))
+$(P2_BIN)/bench_convection: $(BUILD)/obj/$(P2)/p2_convection.o
 $(eval $(call p2_figure,fig01,convection_2d_linear_medium.dat))
 $(eval $(call p2_figure,fig02,convection_2d_linearRev_low.dat))
 # fig03 needs the 3-D run's convection_3d_linear_medium.dat, written with convection.tsv (full run only)

@@ -1,4 +1,4 @@
-# nonconvexLF (section 2.5.2, Figure 15): session h3.
-$(eval $(call p2_demo,nonconvex_lf,reach oshershu,nonconvex.tsv nonconvex_1d.dat nonconvex_2d.dat nonconvex_notes.md,nonconvex.tsv))
+# nonconvexLF (section 2.5.2, Figure 15).
+$(eval $(call p2_demo,nonconvex_lf,oshershu cli,nonconvex.tsv nonconvex_1d.dat nonconvex_2d.dat nonconvex_notes.md,nonconvex.tsv))
 $(eval $(call p2_figure,fig15,nonconvex_1d.dat nonconvex_2d.dat))
 P2_RESULTS += $(P2_OUT)/fig15.png $(P2_OUT)/nonconvex_notes.md

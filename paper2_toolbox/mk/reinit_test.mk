@@ -1,3 +1,3 @@
 # reinitTest (section 2.7.3): signedDistanceIterative on reinitDemo's cases.
-$(eval $(call p2_demo,reinit_test,basic,reinit_test.tsv reinit_test_notes.md,reinit_test.tsv,OMP_WAIT_POLICY=passive))
+$(eval $(call p2_demo,reinit_test,reinit cli,reinit_test.tsv reinit_test_notes.md,reinit_test.tsv,OMP_WAIT_POLICY=passive))
 P2_RESULTS += $(P2_OUT)/reinit_test_notes.md

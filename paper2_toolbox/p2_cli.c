@@ -1,0 +1,147 @@
+/* p2_cli.c -- see p2_cli.h. */
+#include "p2_cli.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_cli.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_io.h"
+
+int p2_parse_choice(const char *s, const char *what, const char *const *names, int n, int *out, hj_error *err)
+{
+    char list[512] = "";
+    for (int k = 0; k < n; k++) {
+        if (!strcmp(s, names[k])) {
+            *out = k;
+            return HJ_OK;
+        }
+        size_t len = strlen(list);
+        snprintf(list + len, sizeof list - len, "%s%s", k ? ", " : "", names[k]);
+    }
+    return hj_error_set(err, HJ_EINVAL, "unknown %s '%s' (one of: %s)", what, s, list);
+}
+
+int p2_next_option(int argc, char **argv, int *i, const char *const *valued, int nvalued, int *opt, const char **value,
+                   hj_error *err)
+{
+    const char *a = argv[*i];
+    *value = NULL;
+    if (!strcmp(a, "--help")) { *opt = P2_OPT_HELP; return HJ_OK; }
+    if (!strcmp(a, "--quick")) { *opt = P2_OPT_QUICK; return HJ_OK; }
+    for (int k = 0; k < nvalued; k++)
+        if (!strcmp(a, valued[k])) {
+            if (*i + 1 >= argc) return hj_error_set(err, HJ_EINVAL, "option %s needs a value (see --help)", a);
+            *opt = k;
+            *value = argv[++*i];
+            return HJ_OK;
+        }
+    return hj_error_set(err, HJ_EINVAL, "unknown option '%s' (see --help)", a);
+}
+
+int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int *i, const char *const *valued,
+              int nvalued, int *quick, const char **value)
+{
+    int opt;
+    hj_error err;
+    if (p2_next_option(argc, argv, i, valued, nvalued, &opt, value, &err))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    if (opt == P2_OPT_HELP) {
+        usage();
+        exit(0);
+    }
+    if (opt == P2_OPT_QUICK) {
+        *quick = 1;
+        return -1;
+    }
+    return opt;
+}
+
+int p2_common_option(p2_opts *o, int argc, char **argv, int *i)
+{
+    const char *a = argv[*i];
+    hj_error err;
+    if (!strcmp(a, "--help")) {
+        printf("%s", o->usage);
+        exit(0);
+    }
+    if (!strcmp(a, "--quick")) {
+        o->quick = 1;
+        return 1;
+    }
+    if (strcmp(a, "--accuracy") && strcmp(a, "--N") && strcmp(a, "--out-dir")) return 0;
+    if (*i + 1 >= argc) hj_cli_fail(o->prog, HJ_EXIT_USAGE, "option %s needs a value", a);
+    const char *v = argv[++*i];
+    int rc = HJ_OK;
+    if (!strcmp(a, "--out-dir")) o->out_dir = v;
+    else if (!strcmp(a, "--accuracy")) rc = hj_ls_accuracy_parse(v, &o->acc, &err);
+    else rc = hj_parse_long(v, "--N", 11, 801, &o->N, &err);
+    if (rc) hj_cli_fail(o->prog, HJ_EXIT_USAGE, "%s", err.msg);
+    return 1;
+}
+
+void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value)
+{
+    for (int i = 1; i < argc; i++) {
+        if (p2_common_option(o, argc, argv, &i)) continue;
+        if (flag && p2_binary_option(o->prog, flag, argc, argv, &i, value)) continue;
+        hj_cli_fail(o->prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
+    }
+    hj_error err;
+    p2_fail_if(o->prog, hj_mkdirs(o->out_dir, &err), &err);
+}
+
+int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value)
+{
+    if (strcmp(argv[*i], name)) return 0;
+    if (*i + 1 >= argc || (strcmp(argv[*i + 1], "0") && strcmp(argv[*i + 1], "1")))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s needs 0 or 1", name);
+    *value = argv[++*i][0] - '0';
+    return 1;
+}
+
+void p2_fail_if(const char *prog, int rc, const hj_error *err)
+{
+    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err->msg);
+}
+
+void p2_commit_run(const char *prog, hj_out *out, int rc, const hj_error *err)
+{
+    if (rc) {
+        hj_out_abort(out); /* no half-written figure file is left behind */
+        p2_fail_if(prog, 1, err);
+    }
+    hj_error cerr;
+    p2_fail_if(prog, hj_out_commit(out, &cerr), &cerr);
+}
+
+void p2_next_file(const char *prog, hj_out *out, const char *dir, const char *name)
+{
+    hj_error err;
+    p2_fail_if(prog, hj_out_commit(out, &err), &err);
+    p2_fail_if(prog, p2_open(out, dir, name, &err), &err);
+}
+
+/* path = dir/name. */
+static int join(char *path, size_t cap, const char *dir, const char *name, hj_error *err)
+{
+    if ((size_t)snprintf(path, cap, "%s/%s", dir, name) >= cap)
+        return hj_error_set(err, HJ_EINVAL, "path too long: %s/%s", dir, name);
+    return HJ_OK;
+}
+
+int p2_open(hj_out *out, const char *dir, const char *name, hj_error *err)
+{
+    char path[4096];
+    int rc = join(path, sizeof path, dir, name, err);
+    return rc ? rc : hj_out_open(out, path, err);
+}
+
+int p2_write_dat(const char *dir, const char *name, const hj_ls_grid *g, int nfields, const char *const *names,
+                 const double *const *fields, hj_error *err)
+{
+    char path[4096];
+    int rc = join(path, sizeof path, dir, name, err);
+    return rc ? rc : hj_ls_write_dat(path, g, nfields, names, fields, err);
+}

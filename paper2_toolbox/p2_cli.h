@@ -1,0 +1,77 @@
+/* p2_cli.h -- the command lines of the paper 2 demos and the helpers of
+ * their main(): the options most of them share (--accuracy, --N,
+ * --out-dir, --quick, --help), 0|1 switches, named choices, and ending the
+ * program on an error.
+ *
+ * p2_parse_choice and p2_next_option return hj_error codes; the others
+ * print through hj_cli_fail (or, for --help, the usage) and exit, so they
+ * are for main() only.
+ */
+#ifndef P2_CLI_H
+#define P2_CLI_H
+
+#include "hj_error.h"
+#include "hj_io.h"
+#include "hj_ls_grid.h"
+
+/* *out = index of s in names[0..n-1]; HJ_EINVAL naming `what` and the
+ * choices otherwise. */
+int p2_parse_choice(const char *s, const char *what, const char *const *names, int n, int *out, hj_error *err);
+
+/* Classify argv[*i] as --help (*opt = P2_OPT_HELP), --quick (P2_OPT_QUICK)
+ * or the option valued[k] taking a value (*opt = k, *value = the next
+ * argument, *i advanced).  HJ_EINVAL with a message for an unknown option
+ * or a missing value. */
+enum { P2_OPT_HELP = -2, P2_OPT_QUICK = -3 };
+int p2_next_option(int argc, char **argv, int *i, const char *const *valued, int nvalued, int *opt, const char **value,
+                   hj_error *err);
+
+/* p2_next_option for main(): --help calls usage() and ends the program,
+ * --quick sets *quick and returns -1, a valued option returns its index
+ * (*value its value); anything else ends the program (bad usage). */
+int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int *i, const char *const *valued,
+              int nvalued, int *quick, const char **value);
+
+/* Options of the section 2.3-2.4 demos: --accuracy, --N, --out-dir,
+ * --quick, --help.  p2_common_option consumes argv[*i] (and its value)
+ * when it is one of them and returns 1; 0 when it is another option.
+ * --help prints usage and ends the program; bad values end it through
+ * hj_cli_fail. */
+typedef struct {
+    const char *prog, *usage;
+    int acc;        /* HJ_LS_ACC_* */
+    long N;         /* nodes per unit dimension of the figure grid */
+    const char *out_dir;
+    int quick;
+} p2_opts;
+int p2_common_option(p2_opts *o, int argc, char **argv, int *i);
+
+/* The whole command line of a demo that takes the options above and at
+ * most one 0|1 switch (p2_binary_option; flag NULL: none; *value is left
+ * as it is unless the switch is given); anything else ends the program.
+ * Then the output directory is created. */
+void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value);
+
+/* A demo's 0|1 switch (--reverse-flow, --rigid, --split-flow): when
+ * argv[*i] is name, *value = its 0 or 1 (anything else ends the program)
+ * and 1 is returned; 0 when argv[*i] is another option. */
+int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value);
+
+/* End the program with the error's message when rc != 0. */
+void p2_fail_if(const char *prog, int rc, const hj_error *err);
+
+/* Finish a file after the run that wrote it returned rc: commit it, or,
+ * when the run failed, remove it and end the program. */
+void p2_commit_run(const char *prog, hj_out *out, int rc, const hj_error *err);
+
+/* Commit *out, then open dir/name in it (ends the program on failure). */
+void p2_next_file(const char *prog, hj_out *out, const char *dir, const char *name);
+
+/* path = dir/name, then hj_out_open. */
+int p2_open(hj_out *out, const char *dir, const char *name, hj_error *err);
+
+/* dir/name holding one block of nfields arrays on g (hj_ls_write_dat). */
+int p2_write_dat(const char *dir, const char *name, const hj_ls_grid *g, int nfields, const char *const *names,
+                 const double *const *fields, hj_error *err);
+
+#endif
