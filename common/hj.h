@@ -35,6 +35,9 @@
 #include "hj_ls_helper.h"
 #include "hj_ls_measure.h"
 #include "hj_ls_io.h"
+#include "hj_ls_accuracy.h"
+#include "hj_ls_seq.h"
+#include "hj_ls_front.h"
 
 /* Ultra-Bee on sparse narrow bands (paper 3): the band stores, the UB-HJB
  * scheme, front errors, the minimal time function */
