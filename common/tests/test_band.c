@@ -167,13 +167,6 @@ static void find_run_equals_find(void **state)
         }
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(random_sequence_all_kinds),
-        cmocka_unit_test(find_run_equals_find),
-        cmocka_unit_test(full_storage_holds_every_node),
-        cmocka_unit_test(out_of_memory_and_bad_args),
-    };
-    return cmocka_run_group_tests_name("hj_band", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(random_sequence_all_kinds),
+             cmocka_unit_test(find_run_equals_find), cmocka_unit_test(full_storage_holds_every_node),
+             cmocka_unit_test(out_of_memory_and_bad_args))

@@ -109,12 +109,5 @@ static void help_lists_every_option(void **state)
     assert_non_null(strstr(text, "Tables: see the source."));
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(values_and_defaults),
-        cmocka_unit_test(bad_values),
-        cmocka_unit_test(help_lists_every_option),
-    };
-    return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
+             cmocka_unit_test(help_lists_every_option))

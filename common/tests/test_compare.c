@@ -57,11 +57,6 @@ static void names_round_trip(void **state)
     assert_int_equal(hj_kind_from_name("speed"), HJ_KIND_UNKNOWN);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(error_rules),      cmocka_unit_test(roundoff_rule), cmocka_unit_test(order_count_ratio_rules),
-        cmocka_unit_test(nonfinite_differs), cmocka_unit_test(names_round_trip),
-    };
-    return cmocka_run_group_tests_name("hj_compare", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_compare", NULL, NULL, cmocka_unit_test(error_rules), cmocka_unit_test(roundoff_rule),
+             cmocka_unit_test(order_count_ratio_rules), cmocka_unit_test(nonfinite_differs),
+             cmocka_unit_test(names_round_trip))

@@ -40,11 +40,4 @@ static void line_both_sides(void **state)
     assert_true(L.n[1] == -1);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(circle_both_sides),
-        cmocka_unit_test(line_both_sides),
-    };
-    return cmocka_run_group_tests_name("hj_curve", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_curve", NULL, NULL, cmocka_unit_test(circle_both_sides), cmocka_unit_test(line_both_sides))

@@ -73,11 +73,6 @@ static void bad_input(void **state)
     assert_int_equal(hj_fit_order(hs, es, 3, &f, &err), HJ_EFIT);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(pair_order), cmocka_unit_test(exact_power_law), cmocka_unit_test(robust_to_one_outlier),
-        cmocka_unit_test(two_points_no_error_bar), cmocka_unit_test(bad_input),
-    };
-    return cmocka_run_group_tests_name("hj_fit", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_fit", NULL, NULL, cmocka_unit_test(pair_order), cmocka_unit_test(exact_power_law),
+             cmocka_unit_test(robust_to_one_outlier), cmocka_unit_test(two_points_no_error_bar),
+             cmocka_unit_test(bad_input))

@@ -109,12 +109,5 @@ static void l1_counts_wrong_cells(void **state)
     assert_close(haus, sqrt(0.07 * 0.07 + 0.05 * 0.05), 1e-6 * DX[0], 0);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(hausdorff_of_point_sets),
-        cmocka_unit_test(grid_ls_and_band_agree),
-        cmocka_unit_test(l1_counts_wrong_cells),
-    };
-    return cmocka_run_group_tests_name("hj_front", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_front", NULL, NULL, cmocka_unit_test(hausdorff_of_point_sets),
+             cmocka_unit_test(grid_ls_and_band_agree), cmocka_unit_test(l1_counts_wrong_cells))

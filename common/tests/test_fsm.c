@@ -415,15 +415,8 @@ static void bad_input(void **state)
     }
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(lax_wendroff_circle_is_exact), cmocka_unit_test(lax_wendroff_curvature_sign),
-        cmocka_unit_test(lax_wendroff_third_order),
-        cmocka_unit_test(polynomial_case_to_roundoff),
-        cmocka_unit_test(richardson_node_boxes_third_order), cmocka_unit_test(initial_guess_from_boundary),
-        cmocka_unit_test(point_source_orders),
-        cmocka_unit_test(guess_noise), cmocka_unit_test(deterministic), cmocka_unit_test(bad_input),
-    };
-    return cmocka_run_group_tests_name("hj_fsm", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_fsm", NULL, NULL, cmocka_unit_test(lax_wendroff_circle_is_exact),
+             cmocka_unit_test(lax_wendroff_curvature_sign), cmocka_unit_test(lax_wendroff_third_order),
+             cmocka_unit_test(polynomial_case_to_roundoff), cmocka_unit_test(richardson_node_boxes_third_order),
+             cmocka_unit_test(initial_guess_from_boundary), cmocka_unit_test(point_source_orders),
+             cmocka_unit_test(guess_noise), cmocka_unit_test(deterministic), cmocka_unit_test(bad_input))

@@ -262,18 +262,7 @@ static void origins_named(void **state)
     assert_int_equal(run_check(""), 2);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(all_match),
-        cmocka_unit_test(regression_fails),
-        cmocka_unit_test(missing_and_quick),
-        cmocka_unit_test(ratios_not_gated),
-        cmocka_unit_test(malformed_published),
-        cmocka_unit_test(accept_blesses),
-        cmocka_unit_test(quick_only_exceptions),
-        cmocka_unit_test(bad_inputs),
-        cmocka_unit_test(origins_named),
-    };
-    return cmocka_run_group_tests_name("hjcheck", tests, make_tree, hj_test_rmdir);
-}
+HJ_TEST_MAIN("hjcheck", make_tree, hj_test_rmdir, cmocka_unit_test(all_match), cmocka_unit_test(regression_fails),
+             cmocka_unit_test(missing_and_quick), cmocka_unit_test(ratios_not_gated),
+             cmocka_unit_test(malformed_published), cmocka_unit_test(accept_blesses),
+             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(bad_inputs), cmocka_unit_test(origins_named))

@@ -68,12 +68,5 @@ static void bad_usage(void **state)
     assert_non_null(strstr(out_text, "usage"));
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(success_writes_row),
-        cmocka_unit_test(failure_leaves_no_table),
-        cmocka_unit_test(bad_usage),
-    };
-    return cmocka_run_group_tests_name("hjtime", tests, hj_test_mkdir, hj_test_rmdir);
-}
+HJ_TEST_MAIN("hjtime", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(success_writes_row),
+             cmocka_unit_test(failure_leaves_no_table), cmocka_unit_test(bad_usage))

@@ -212,13 +212,8 @@ static void cli_parsing(void **state)
     assert_int_equal(hj_parse_long_list("8,8,8,8,8", "sizes", 8, 20000, list, 4, &n, &err), HJ_EINVAL);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(atomic_write_and_read_back), cmocka_unit_test(abort_leaves_nothing),
-        cmocka_unit_test(malformed_tables), cmocka_unit_test(unwritable_output), cmocka_unit_test(cli_parsing),
-        cmocka_unit_test(only_regular_files_replaced), cmocka_unit_test(temporaries_removed),
-        cmocka_unit_test(mkdirs_edges),
-    };
-    return cmocka_run_group_tests_name("hj_io", tests, hj_test_mkdir, hj_test_rmdir);
-}
+HJ_TEST_MAIN("hj_io", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(atomic_write_and_read_back),
+             cmocka_unit_test(abort_leaves_nothing), cmocka_unit_test(malformed_tables),
+             cmocka_unit_test(unwritable_output), cmocka_unit_test(cli_parsing),
+             cmocka_unit_test(only_regular_files_replaced), cmocka_unit_test(temporaries_removed),
+             cmocka_unit_test(mkdirs_edges))

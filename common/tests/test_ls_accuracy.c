@@ -34,11 +34,4 @@ static void unknown(void **state)
     assert_non_null(strstr(err.msg, "veryHigh"));
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(levels),
-        cmocka_unit_test(unknown),
-    };
-    return cmocka_run_group_tests_name("hj_ls_accuracy", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_ls_accuracy", NULL, NULL, cmocka_unit_test(levels), cmocka_unit_test(unknown))

@@ -88,10 +88,5 @@ static void crossings(void **state)
     assert_int_equal(hj_ls_front_crossings(&g1, NULL, &pts, &n, &err), HJ_EINVAL);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(error_in_band), cmocka_unit_test(grad_deviation), cmocka_unit_test(crossings),
-    };
-    return cmocka_run_group_tests_name("hj_ls_front", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_ls_front", NULL, NULL, cmocka_unit_test(error_in_band), cmocka_unit_test(grad_deviation),
+             cmocka_unit_test(crossings))

@@ -187,12 +187,6 @@ static void counts(void **state)
     hj_ls_free(a), hj_ls_free(b);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(coords_and_rows),
-        cmocka_unit_test(errors),    cmocka_unit_test(norms),
-        cmocka_unit_test(counts),
-    };
-    return cmocka_run_group_tests_name("hj_ls_grid", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
+             cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms),
+             cmocka_unit_test(counts))

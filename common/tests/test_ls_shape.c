@@ -167,14 +167,5 @@ static void star(void **state)
     hj_ls_free(phi);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(shapes_1d),
-        cmocka_unit_test(shapes_2d),
-        cmocka_unit_test(shapes_3d),
-        cmocka_unit_test(errors),
-        cmocka_unit_test(star),
-    };
-    return cmocka_run_group_tests_name("hj_ls_shape", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_ls_shape", NULL, NULL, cmocka_unit_test(shapes_1d), cmocka_unit_test(shapes_2d),
+             cmocka_unit_test(shapes_3d), cmocka_unit_test(errors), cmocka_unit_test(star))

@@ -86,13 +86,5 @@ static void bilinear_and_clamped(void **state)
     assert_true(hj_map_eval(3, 4, &c) == 0.7);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(text_map_rows_flipped),
-        cmocka_unit_test(pgm_maps),
-        cmocka_unit_test(malformed_maps),
-        cmocka_unit_test(bilinear_and_clamped),
-    };
-    return cmocka_run_group_tests_name("hj_map", tests, hj_test_mkdir, hj_test_rmdir);
-}
+HJ_TEST_MAIN("hj_map", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(text_map_rows_flipped),
+             cmocka_unit_test(pgm_maps), cmocka_unit_test(malformed_maps), cmocka_unit_test(bilinear_and_clamped))

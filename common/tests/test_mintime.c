@@ -110,12 +110,5 @@ static void target_problem(void **state)
     hj_ub_free(&sv);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(write_and_read_back),
-        cmocka_unit_test(malformed_streams),
-        cmocka_unit_test(target_problem),
-    };
-    return cmocka_run_group_tests_name("hj_mintime", tests, hj_test_mkdir, hj_test_rmdir);
-}
+HJ_TEST_MAIN("hj_mintime", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(write_and_read_back),
+             cmocka_unit_test(malformed_streams), cmocka_unit_test(target_problem))

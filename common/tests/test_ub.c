@@ -252,13 +252,6 @@ static void field_errors_equal_solver_errors(void **state)
     }
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
-        cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
-        cmocka_unit_test(averages),
-        cmocka_unit_test(field_errors_equal_solver_errors),
-    };
-    return cmocka_run_group_tests_name("hj_ub", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+             cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
+             cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors))

@@ -117,11 +117,4 @@ static void table6_paper_reading(void **state)
     }
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(table6_zero_on_no_grid),
-        cmocka_unit_test(table6_paper_reading),
-    };
-    return cmocka_run_group_tests_name("p3_table6", tests, NULL, NULL);
-}
+HJ_TEST_MAIN("p3_table6", NULL, NULL, cmocka_unit_test(table6_zero_on_no_grid), cmocka_unit_test(table6_paper_reading))
