@@ -56,24 +56,9 @@ int main(int argc, char **argv)
 {
     static const hj_inflow source[] = {{.type = HJ_INFLOW_POINT, .x = 0, .y = 0, .value = -2, .richardson = 1}};
     static const long sizes[] = {40, 80, 160, 320, 640};
-    const p1_case cases[] = {{
-        .name = "-",
-        .domain = {-1, 1, -1, 1},
-        .speed = {speed, speed_grad, NULL},
-        .exact = exact,
-        .inflow = source,
-        .ninflow = 1,
-        .eps = 1e-6,
-    }};
-    const p1_study study = {
-        .program = "example1",
-        .table = "table3.1",
-        .strategy = HJ_BC_RICHARDSON,
-        .cases = cases,
-        .ncases = 1,
-        .sizes = sizes,
-        .nsizes = 5,
-        .nquick = 3,
-    };
+    const p1_case cases[] = {{.name = "-", .domain = {-1, 1, -1, 1}, .speed = {speed, speed_grad, NULL}, .exact = exact,
+                              .inflow = source, .ninflow = 1, .eps = 1e-6}};
+    const p1_study study = {.program = "example1", .table = "table3.1", .strategy = HJ_BC_RICHARDSON, .cases = cases,
+                            .ncases = 1, .sizes = sizes, .nsizes = 5, .nquick = 3};
     return p1_main(argc, argv, &study, NULL);
 }

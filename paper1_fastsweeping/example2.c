@@ -137,17 +137,8 @@ int main(int argc, char **argv)
         {.name = "b", .domain = {-1, 1, -1, 1}, .speed = {speed_b, grad_b, NULL}, .exact = exact_b,
          .inflow = box_b, .ninflow = 5, .eps = 1e-6, .eps_times_h2 = 1},
     };
-    p1_study study = {
-        .program = "example2",
-        .table = "table3.2",
-        .strategy = HJ_BC_RICHARDSON,
-        .cases = cases,
-        .ncases = 2,
-        .sizes = sizes,
-        .nsizes = 4,
-        .nquick = 2,
-        .guess = HJ_GUESS_PHYSICAL,
-    };
+    p1_study study = {.program = "example2", .table = "table3.2", .strategy = HJ_BC_RICHARDSON, .cases = cases,
+                      .ncases = 2, .sizes = sizes, .nsizes = 4, .nquick = 2, .guess = HJ_GUESS_PHYSICAL};
     /* The table follows from the strategy: look for it before p1_main
      * parses the rest. */
     for (int i = 1; i + 1 < argc; i++)

@@ -47,26 +47,10 @@ int main(int argc, char **argv)
         {.type = HJ_INFLOW_CURVE, .level = hj_curve_circle_level, .local = hj_curve_circle_local, .ctx = &circle}};
     static const p1_box centre[] = {{-0.15, 0.15, -0.15, 0.15, .around_point = 1}};
     static const long sizes[] = {80, 160, 320, 640};
-    const p1_case cases[] = {{
-        .name = "-",
-        .domain = {-1, 1, -1, 1},
-        .speed = {p1_unit_speed, p1_unit_speed_grad, NULL},
-        .exact = exact,
-        .inflow = gamma,
-        .ninflow = 1,
-        .exclude = centre,
-        .nexclude = 1,
-        .eps = 1e-6,
-    }};
-    const p1_study study = {
-        .program = "example3",
-        .table = "table3.4",
-        .strategy = HJ_BC_LAX_WENDROFF,
-        .cases = cases,
-        .ncases = 1,
-        .sizes = sizes,
-        .nsizes = 4,
-        .nquick = 2,
-    };
+    const p1_case cases[] = {{.name = "-", .domain = {-1, 1, -1, 1}, .speed = {p1_unit_speed, p1_unit_speed_grad, NULL},
+                              .exact = exact, .inflow = gamma, .ninflow = 1, .exclude = centre, .nexclude = 1,
+                              .eps = 1e-6}};
+    const p1_study study = {.program = "example3", .table = "table3.4", .strategy = HJ_BC_LAX_WENDROFF,
+                            .cases = cases, .ncases = 1, .sizes = sizes, .nsizes = 4, .nquick = 2};
     return p1_main(argc, argv, &study, NULL);
 }

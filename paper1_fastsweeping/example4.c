@@ -48,26 +48,10 @@ int main(int argc, char **argv)
         {s15 - 0.15, s15 + 0.15, -0.15, 0.15, .around_point = 1},
         {s0375 - 0.65, s0375 - 0.35, -3, 3, .around_point = 0}};
     static const long sizes[] = {80, 160, 320, 640};
-    const p1_case cases[] = {{
-        .name = "-",
-        .domain = {-3, 3, -3, 3},
-        .speed = {p1_unit_speed, p1_unit_speed_grad, NULL},
-        .exact = exact,
-        .inflow = gamma,
-        .ninflow = 2,
-        .exclude = excl,
-        .nexclude = 3,
-        .eps = 1e-6,
-    }};
-    const p1_study study = {
-        .program = "example4",
-        .table = "table3.5",
-        .strategy = HJ_BC_LAX_WENDROFF,
-        .cases = cases,
-        .ncases = 1,
-        .sizes = sizes,
-        .nsizes = 4,
-        .nquick = 2,
-    };
+    const p1_case cases[] = {{.name = "-", .domain = {-3, 3, -3, 3}, .speed = {p1_unit_speed, p1_unit_speed_grad, NULL},
+                              .exact = exact, .inflow = gamma, .ninflow = 2, .exclude = excl, .nexclude = 3,
+                              .eps = 1e-6}};
+    const p1_study study = {.program = "example4", .table = "table3.5", .strategy = HJ_BC_LAX_WENDROFF,
+                            .cases = cases, .ncases = 1, .sizes = sizes, .nsizes = 4, .nquick = 2};
     return p1_main(argc, argv, &study, NULL);
 }

@@ -49,29 +49,11 @@ static inline int hj_test_rmdir(void **state)
  * where they matter, e.g. test_ls_ode's threads_bitwise). */
 #ifdef _OPENMP
 #include <omp.h>
-/* main() of a test program: the cmocka group `name` of the tests given as
- * cmocka_unit_test(fn), ..., with a group setup and teardown (NULL: none). */
-#define HJ_TEST_MAIN(name, setup, teardown, ...)                                                          \
-    int main(void)                                                                                        \
-    {                                                                                                     \
-        const struct CMUnitTest tests[] = {__VA_ARGS__};                                                  \
-        return cmocka_run_group_tests_name(name, tests, setup, teardown);                                 \
-    }
-
 #endif
 static inline void hj_test_one_thread(void)
 {
 #ifdef _OPENMP
     omp_set_num_threads(1);
-/* main() of a test program: the cmocka group `name` of the tests given as
- * cmocka_unit_test(fn), ..., with a group setup and teardown (NULL: none). */
-#define HJ_TEST_MAIN(name, setup, teardown, ...)                                                          \
-    int main(void)                                                                                        \
-    {                                                                                                     \
-        const struct CMUnitTest tests[] = {__VA_ARGS__};                                                  \
-        return cmocka_run_group_tests_name(name, tests, setup, teardown);                                 \
-    }
-
 #endif
 }
 
