@@ -84,4 +84,14 @@ static inline int hj_test_shell(const char *cmd, int both, char *text, size_t ca
         return cmocka_run_group_tests_name(name, tests, setup, teardown);                                 \
     }
 
+/* The same for the kernel's tests, which run on one OpenMP thread unless
+ * they set the count themselves (hj_test_one_thread). */
+#define HJ_TEST_MAIN_ONE_THREAD(name, setup, teardown, ...)                                               \
+    int main(void)                                                                                        \
+    {                                                                                                     \
+        hj_test_one_thread();                                                                             \
+        const struct CMUnitTest tests[] = {__VA_ARGS__};                                                  \
+        return cmocka_run_group_tests_name(name, tests, setup, teardown);                                 \
+    }
+
 #endif

@@ -358,15 +358,8 @@ static void gradient_norm(void **state)
     hj_ls_free(phi), hj_ls_free(work), hj_ls_free(out);
 }
 
-int main(void)
-{
-    hj_test_one_thread();
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(smooth_orders),   cmocka_unit_test(strided_equals_contiguous),
-        cmocka_unit_test(six_dimensions),  cmocka_unit_test(forms_agree),
-        cmocka_unit_test(select_equals_two_sided), cmocka_unit_test(centered_orders),
-        cmocka_unit_test(curvature_order), cmocka_unit_test(bad_arguments),
-        cmocka_unit_test(gradient_norm),
-    };
-    return cmocka_run_group_tests_name("hj_ls_deriv", tests, NULL, NULL);
-}
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_orders),
+                        cmocka_unit_test(strided_equals_contiguous), cmocka_unit_test(six_dimensions),
+                        cmocka_unit_test(forms_agree), cmocka_unit_test(select_equals_two_sided),
+                        cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
+                        cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))

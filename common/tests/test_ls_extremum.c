@@ -106,13 +106,5 @@ static void bad_count(void **state)
     hj_ls_extremum_free(&e);
 }
 
-int main(void)
-{
-    hj_test_one_thread();
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(pointwise),
-        cmocka_unit_test(hjb_converges),
-        cmocka_unit_test(bad_count),
-    };
-    return cmocka_run_group_tests_name("hj_ls_extremum", tests, NULL, NULL);
-}
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_extremum", NULL, NULL, cmocka_unit_test(pointwise), cmocka_unit_test(hjb_converges),
+                        cmocka_unit_test(bad_count))

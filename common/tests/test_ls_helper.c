@@ -2,6 +2,7 @@
  * distance by iterated reinitialization, and the k-d tree unsigned distance
  * against brute force. */
 #include "hj_test.h"
+#include "hj_test_ls.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -12,15 +13,8 @@
 #include "hj_ls_helper.h"
 #include "hj_ls_ode.h"
 
-static hj_ls_grid grid(int dim, long n)
-{
-    hj_ls_grid g;
-    double mn[3] = {-1, -1, -1}, mx[3] = {1, 1, 1};
-    long N[3] = {n, n, n};
-    hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
-    return g;
-}
+/* dim dimensions of n nodes on [-1, 1], extrapolated away from zero. */
+static hj_ls_grid grid(int dim, long n) { return hj_test_grid(dim, n, -1, 1, HJ_LS_BC_EXTRAP_AWAY); }
 
 /* Normal motion outward with a mask phi >= psi (the circle may not grow
  * into the half plane x > 0.2). */
@@ -136,13 +130,6 @@ static void unsigned_distance_matches_brute_force(void **state)
     hj_ls_free(a);
 }
 
-int main(void)
-{
-    hj_test_one_thread();
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(mask_constrains),
-        cmocka_unit_test(signed_distance_iterative),
-        cmocka_unit_test(unsigned_distance_matches_brute_force),
-    };
-    return cmocka_run_group_tests_name("hj_ls_helper", tests, NULL, NULL);
-}
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_helper", NULL, NULL, cmocka_unit_test(mask_constrains),
+                        cmocka_unit_test(signed_distance_iterative),
+                        cmocka_unit_test(unsigned_distance_matches_brute_force))

@@ -1,6 +1,7 @@
 /* Unit tests of common/hj_ls_measure (measure of {phi < 0}) and
  * common/hj_ls_io (gnuplot blocks, legacy VTK). */
 #include "hj_test.h"
+#include "hj_test_ls.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -11,15 +12,8 @@
 #include "hj_math.h"
 
 
-static hj_ls_grid grid(int dim, long n)
-{
-    hj_ls_grid g;
-    const double mn[3] = {-1, -1, -1}, mx[3] = {1, 1, 1};
-    const long N[3] = {n, n, n};
-    const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
-    return g;
-}
+/* dim dimensions of n nodes on [-1, 1], extrapolated away from zero. */
+static hj_ls_grid grid(int dim, long n) { return hj_test_grid(dim, n, -1, 1, HJ_LS_BC_EXTRAP_AWAY); }
 
 /* Corner fractions and the complement identity f(v) + f(-v) = 1 (zeros
  * excluded), including the 2-2 split of a tetrahedron and its near-tie

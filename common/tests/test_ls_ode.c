@@ -249,14 +249,6 @@ static void threads_bitwise(void **state)
 #endif
 }
 
-int main(void)
-{
-    hj_test_one_thread();
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(integrator_orders),
-        cmocka_unit_test(outputs_and_options),
-        cmocka_unit_test(error_reports),
-        cmocka_unit_test(threads_bitwise),
-    };
-    return cmocka_run_group_tests_name("hj_ls_ode", tests, NULL, NULL);
-}
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
+                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(error_reports),
+                        cmocka_unit_test(threads_bitwise))

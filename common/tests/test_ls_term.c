@@ -2,6 +2,7 @@
  * an exact identity, orders of convection with each accuracy level, the
  * combined CFL bound of a sum, and the error reports of callbacks. */
 #include "hj_test.h"
+#include "hj_test_ls.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -14,15 +15,6 @@
 #include "hj_math.h"
 
 
-static hj_ls_grid grid(int dim, long n, double lo, double hi, int bc)
-{
-    hj_ls_grid g;
-    double mn[3] = {lo, lo, lo}, mx[3] = {hi, hi, hi};
-    long N[3] = {n, n, n};
-    hj_ls_bc b[3] = {{bc, 0, 0}, {bc, 0, 0}, {bc, 0, 0}};
-    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, b, NULL), HJ_OK);
-    return g;
-}
 
 static double wave(const double *x, void *ctx)
 {
@@ -34,7 +26,7 @@ static double wave(const double *x, void *ctx)
  * error at n nodes. */
 static double translation_error(int scheme, int order, long n)
 {
-    hj_ls_grid g = grid(1, n, 0, 1 - 1.0 / (double)n, HJ_LS_BC_PERIODIC);
+    hj_ls_grid g = hj_test_grid(1, n, 0, 1 - 1.0 / (double)n, HJ_LS_BC_PERIODIC);
     double *y = hj_ls_alloc(&g), *ex = hj_ls_alloc(&g);
     hj_ls_fill(&g, y, wave, NULL);
     for (long j = 0; j < n; j++) {
@@ -125,7 +117,7 @@ static void convection_equals_upwind_sum(void **state)
 static void convection_arrays_equal_callback(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    hj_ls_grid g = hj_test_grid(2, 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double *v0 = hj_ls_alloc(&g), *v1 = hj_ls_alloc(&g), *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g);
     long idx[2];
     double x[2];
@@ -167,7 +159,7 @@ static double partial_linear(double t, const double *x, const double *pmin, cons
 static void lax_friedrichs_linear_is_upwind(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 31, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    hj_ls_grid g = hj_test_grid(2, 31, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double *y = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), *f2 = hj_ls_alloc(&g);
     hj_ls_fill(&g, y, disc, NULL);
     hj_ls_convection c;
@@ -231,7 +223,7 @@ static void normal_and_lf_expanding_circle(void **state)
     for (int m = 0; m < 4; m++) {
         double e[2];
         for (int q = 0; q < 2; q++) {
-            hj_ls_grid g = grid(2, q ? 81 : 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+            hj_ls_grid g = hj_test_grid(2, q ? 81 : 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
             if (m == 3) {
                 hj_ls_normal nm;
                 hj_ls_normal_init(&nm, &g, HJ_LS_ENO2);
@@ -256,7 +248,7 @@ static double ham_nan(double t, const double *x, double phi, const double *p, vo
 static void callback_errors(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    hj_ls_grid g = hj_test_grid(2, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), b;
     hj_error err;
     hj_ls_lax_friedrichs lf;
@@ -277,7 +269,7 @@ static void callback_errors(void **state)
 static void curvature_shrinking_circle(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 81, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    hj_ls_grid g = hj_test_grid(2, 81, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double r0 = 0.5, t1 = 0.05, r1 = sqrt(r0 * r0 - 2 * t1);
     double *y = hj_ls_alloc(&g);
     hj_ls_fill(&g, y, circle, &r0);
@@ -312,7 +304,7 @@ static double sines(const double *x, void *ctx)
 static void hessian_heat(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 64, 0, 1 - 1.0 / 64, HJ_LS_BC_PERIODIC);
+    hj_ls_grid g = hj_test_grid(2, 64, 0, 1 - 1.0 / 64, HJ_LS_BC_PERIODIC);
     double L[4] = {1, 0, 0, 1}, R[4] = {-1, 0, 0, -1};
     hj_ls_hessian_term h;
     hj_ls_hessian_term_init(&h, &g, L, R);
@@ -334,7 +326,7 @@ static void hessian_heat(void **state)
 static void restrict_and_sum(void **state)
 {
     (void)state;
-    hj_ls_grid g = grid(2, 21, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    hj_ls_grid g = hj_test_grid(2, 21, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double r0 = 0.4, *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), b1, b2, bs;
     hj_ls_fill(&g, y, circle, &r0);
     hj_ls_convection c;
@@ -383,20 +375,10 @@ static void dissipation_names(void **state)
     assert_int_equal(d, 5);
 }
 
-int main(void)
-{
-    hj_test_one_thread();
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(convection_orders),
-        cmocka_unit_test(convection_equals_upwind_sum),
-        cmocka_unit_test(convection_arrays_equal_callback),
-        cmocka_unit_test(lax_friedrichs_linear_is_upwind),
-        cmocka_unit_test(normal_and_lf_expanding_circle),
-        cmocka_unit_test(callback_errors),
-        cmocka_unit_test(curvature_shrinking_circle),
-        cmocka_unit_test(hessian_heat),
-        cmocka_unit_test(restrict_and_sum),
-        cmocka_unit_test(dissipation_names),
-    };
-    return cmocka_run_group_tests_name("hj_ls_term", tests, NULL, NULL);
-}
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_orders),
+                        cmocka_unit_test(convection_equals_upwind_sum),
+                        cmocka_unit_test(convection_arrays_equal_callback),
+                        cmocka_unit_test(lax_friedrichs_linear_is_upwind),
+                        cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
+                        cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
+                        cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
