@@ -30,27 +30,29 @@ static void defaults(void)
     N = 101, cfl = 0.5, out = "phi.tsv", nsizes = 2, sizes[0] = 10, sizes[1] = 20, quick = 0, scheme = 1;
 }
 
-/* argv from a space-separated string (at most 16 words). */
-static int parse(const char *line, int *help, hj_error *err)
+static hj_error err;
+static int help;
+
+/* Parse line, a space-separated string of at most 16 words, from the
+ * defaults into the variables, help and err. */
+static int parse(const char *line)
 {
     static char buf[512];
     char *argv[17] = {"prog"};
     int argc = 1;
     snprintf(buf, sizeof buf, "%s", line);
     for (char *w = strtok(buf, " "); w && argc < 16; w = strtok(NULL, " ")) argv[argc++] = w;
-    return hj_cli_parse(&spec, argc, argv, help, err);
+    defaults();
+    return hj_cli_parse(&spec, argc, argv, &help, &err);
 }
 
 static void values_and_defaults(void **state)
 {
     (void)state;
-    hj_error err;
-    int help;
-    defaults();
-    assert_int_equal(parse("", &help, &err), HJ_OK);
+    assert_int_equal(parse(""), HJ_OK);
     assert_int_equal(N, 101);
     assert_int_equal(help, 0);
-    assert_int_equal(parse("--N 40 --cfl 0.9 --out x.tsv --sizes 8,16,32 --quick --scheme eno2", &help, &err), HJ_OK);
+    assert_int_equal(parse("--N 40 --cfl 0.9 --out x.tsv --sizes 8,16,32 --quick --scheme eno2"), HJ_OK);
     assert_int_equal(N, 40);
     assert_close(cfl, 0.9, 0, 1e-15);
     assert_string_equal(out, "x.tsv");
@@ -64,34 +66,28 @@ static void values_and_defaults(void **state)
 static void bad_values(void **state)
 {
     (void)state;
-    hj_error err;
-    int help;
     const char *bad[] = {"--N 1", "--N 1001", "--N 12abc", "--N ''", "--cfl nan", "--cfl inf", "--cfl 0",
                          "--sizes 8,,16", "--sizes 8,16,32,64,100", "--sizes 4", "--scheme weno7", "--N"};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
-        defaults();
-        assert_int_not_equal(parse(bad[k], &help, &err), HJ_OK);
+        assert_int_not_equal(parse(bad[k]), HJ_OK);
         assert_true(strlen(err.msg) > 0);
     }
-    assert_int_equal(parse("--frob 3", &help, &err), HJ_EINVAL);
+    assert_int_equal(parse("--frob 3"), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "unknown option '--frob'"));
-    assert_int_equal(parse("stray", &help, &err), HJ_EINVAL);
+    assert_int_equal(parse("stray"), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "unexpected argument"));
-    assert_int_equal(parse("--N 5 --N 6", &help, &err), HJ_EINVAL);
+    assert_int_equal(parse("--N 5 --N 6"), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "given twice"));
-    assert_int_equal(parse("--scheme weno7", &help, &err), HJ_EINVAL);
+    assert_int_equal(parse("--scheme weno7"), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "eno2, weno5"));
-    assert_int_equal(parse("--out", &help, &err), HJ_EINVAL);
+    assert_int_equal(parse("--out"), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "--out needs a value"));
 }
 
 static void help_lists_every_option(void **state)
 {
     (void)state;
-    hj_error err;
-    int help;
-    defaults();
-    assert_int_equal(parse("--N 7 --help --frob", &help, &err), HJ_OK);
+    assert_int_equal(parse("--N 7 --help --frob"), HJ_OK);
     assert_int_equal(help, 1);
     char text[4096] = "";
     FILE *f = fmemopen(text, sizeof text - 1, "w");

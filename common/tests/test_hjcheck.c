@@ -33,6 +33,13 @@ static int run_check(const char *flags)
     return hj_test_shell(cmd, 1, out_text, sizeof out_text);
 }
 
+/* hjcheck with flags exits with status and prints text. */
+static void expect(const char *flags, int status, const char *text)
+{
+    assert_int_equal(run_check(flags), status);
+    if (!strstr(out_text, text)) fail_msg("hjcheck %s: no '%s' in:\n%s", flags, text, out_text);
+}
+
 static const char *published =
     "# source: synthetic\n# key: N\n# kind: L1=error L1_order=order iter=count\n"
     "N\tL1\tL1_order\titer\n"
@@ -59,8 +66,7 @@ static void all_match(void **state)
     (void)state;
     write_file("paper/published/t.tsv", published);
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\textra\n40\t1.02e-3\t-\t10\t7\n80\t1.26e-4\t2.97\t12\t7\n");
-    assert_int_equal(run_check(""), 0);
-    assert_non_null(strstr(out_text, "p t: 4 match, 0 close, 0 differ, 1 ambiguous"));
+    expect("", 0, "p t: 4 match, 0 close, 0 differ, 1 ambiguous");
     assert_non_null(strstr(out_text, "check: 4 passed, 0 failed"));
 }
 
@@ -70,8 +76,7 @@ static void regression_fails(void **state)
     write_file("paper/published/t.tsv", published);
     /* L1 at N=80 off by a factor 3: differs, and not accepted */
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t3.75e-4\t1.42\t12\n");
-    assert_int_equal(run_check(""), 1);
-    assert_non_null(strstr(out_text, "check: 2 passed, 2 failed"));
+    expect("", 1, "check: 2 passed, 2 failed");
     /* --no-fail reports the same but exits 0 (the report uses it) */
     assert_int_equal(run_check("--no-fail"), 0);
     /* accepting the cells with a reason makes the gate pass */
@@ -93,11 +98,9 @@ static void missing_and_quick(void **state)
     write_file("paper/published/t.tsv", published);
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n");
     /* full mode: the N=80 row is missing and fails */
-    assert_int_equal(run_check(""), 1);
-    assert_non_null(strstr(out_text, "2 missing"));
+    expect("", 1, "2 missing");
     /* quick mode: the uncomputed row is skipped */
-    assert_int_equal(run_check("--quick"), 0);
-    assert_non_null(strstr(out_text, "skipped (quick)"));
+    expect("--quick", 0, "skipped (quick)");
     /* a non-finite computed value is never a match */
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\tnan\t-\t10\n80\t1.25e-4\t3.0\t10\n");
     assert_int_equal(run_check(""), 1);
@@ -109,13 +112,11 @@ static void ratios_not_gated(void **state)
     (void)state;
     write_file("paper/published/t.tsv", "# key: N\n# kind: cpu_ratio=ratio\nN\tcpu_ratio\n80\t8.0\n");
     write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t30\n");
-    assert_int_equal(run_check(""), 0);
-    assert_non_null(strstr(out_text, "0 match, 0 close, 1 differ"));
+    expect("", 0, "0 match, 0 close, 1 differ");
     assert_non_null(strstr(out_text, "check: 1 passed, 0 failed"));
     /* ... but a ratio that was not computed fails, unless accepted missing. */
     write_file("res/p/t.tsv", "N\tcpu_ratio\n80\t-\n");
-    assert_int_equal(run_check(""), 1);
-    assert_non_null(strstr(out_text, "check: 0 passed, 1 failed"));
+    expect("", 1, "check: 0 passed, 1 failed");
     write_file("paper/reasons.tsv", "id\ttext\nslow\ttoo slow here\n");
     write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tmissing\tslow\n");
     assert_int_equal(run_check(""), 0);
@@ -126,8 +127,7 @@ static void malformed_published(void **state)
 {
     (void)state;
     write_file("paper/published/t.tsv", "# source: x\nN\tL1\n40\t1e-3\n");
-    assert_int_equal(run_check(""), 2);
-    assert_non_null(strstr(out_text, "needs '# key:' and '# kind:'"));
+    expect("", 2, "needs '# key:' and '# kind:'");
     write_file("paper/published/t.tsv", "# key: N\n# kind: L1=speed\nN\tL1\n40\t1e-3\n");
     assert_int_equal(run_check(""), 2);
     write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\nN\tL1\n40\t1e-3x\n");
@@ -164,10 +164,8 @@ static void accept_blesses(void **state)
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t3.75e-4\t1.42\t12\n");
     remove_rel("paper/reasons.tsv");
     assert_int_equal(run_check(""), 1);
-    assert_int_equal(run_check("--accept t --reason coarse"), 2);
-    assert_non_null(strstr(out_text, "--reason-text"));
-    assert_int_equal(run_check("--accept t --reason coarse --reason-text 'too coarse a grid'"), 0);
-    assert_non_null(strstr(out_text, "2 cells accepted with reason 'coarse'"));
+    expect("--accept t --reason coarse", 2, "--reason-text");
+    expect("--accept t --reason coarse --reason-text 'too coarse a grid'", 0, "2 cells accepted with reason 'coarse'");
     assert_non_null(strstr(read_back("paper/accepted.tsv"), "t\tN=80\tL1\tdiffers\tcoarse\n"));
     assert_non_null(strstr(read_back("paper/reasons.tsv"), "coarse\ttoo coarse a grid\n"));
     assert_int_equal(run_check(""), 0);
@@ -205,8 +203,7 @@ static void bad_inputs(void **state)
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
     /* a reason id that reasons.tsv does not define */
     write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tL1\tclose\tnowhere\n");
-    assert_int_equal(run_check(""), 2);
-    assert_non_null(strstr(out_text, "not an id of reasons.tsv"));
+    expect("", 2, "not an id of reasons.tsv");
     remove_rel("paper/accepted.tsv");
     /* an accepted list that exists but cannot be read is not "absent" */
     char path[256];
@@ -252,12 +249,10 @@ static void origins_named(void **state)
     assert_non_null(strstr(c, "iter\tcount\t10\t10\t1\tmatch\tmatch\t\tpaper\n"));
     write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=regression iter=paper\n"
                                         "N\tL1\titer\n40\t1.0e-3\t10\n");
-    assert_int_equal(run_check(""), 2);
-    assert_non_null(strstr(out_text, "need '# commit:'"));
+    expect("", 2, "need '# commit:'");
     write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=exact\n"
                                         "N\tL1\titer\n40\t1.0e-3\t10\n");
-    assert_int_equal(run_check(""), 2);
-    assert_non_null(strstr(out_text, "does not name this column"));
+    expect("", 2, "does not name this column");
     write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\n# origin: L1=guess\nN\tL1\n40\t1.0e-3\n");
     assert_int_equal(run_check(""), 2);
 }

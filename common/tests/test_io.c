@@ -132,6 +132,9 @@ static void only_regular_files_replaced(void **state)
     assert_string_equal(line, "new\n");
 }
 
+/* path = the test directory / name. */
+static void test_path(char *path, size_t n, const char *name) { snprintf(path, n, "%s/%s", hj_test_dir(), name); }
+
 /* A killed run's "<path>.tmp.<pid>" is removed by the next open of path;
  * a signal removes the temporary files of the process it stops. */
 static void temporaries_removed(void **state)
@@ -140,7 +143,7 @@ static void temporaries_removed(void **state)
     hj_out out;
     hj_error err;
     char path[256], stale[300];
-    snprintf(path, sizeof path, "%s/interrupted.tsv", hj_test_dir());
+    test_path(path, sizeof path, "interrupted.tsv");
     pid_t child = fork();
     assert_true(child >= 0);
     if (child == 0) _exit(0);
