@@ -295,11 +295,7 @@ static void curvature_shrinking_circle(void **state)
 
 /* Trace of the Hessian with L = I, R = -I: G = Laplacian (heat equation):
  * sin(2 pi x) sin(2 pi y) decays as exp(-8 pi^2 t). */
-static double sines(const double *x, void *ctx)
-{
-    (void)ctx;
-    return sin(2 * HJ_PI * x[0]) * sin(2 * HJ_PI * x[1]);
-}
+static double sines(const double *x, void *ctx) { return (void)ctx, sin(2 * HJ_PI * x[0]) * sin(2 * HJ_PI * x[1]); }
 
 static void hessian_heat(void **state)
 {
