@@ -80,6 +80,16 @@ HJTIME := $(BUILD)/bin/common/tools/hjtime
 # report beside the example; never compared or tested).
 hj_timed = $(HJTIME) $(1)/time/$(2).tsv $(2) --
 
+# $(eval $(call hj_figure,PAPERDIR,OUTDIR,FIG,INPUTS)): OUTDIR/FIG.png drawn
+# by PAPERDIR/plot/FIG.gp from INPUTS (names in OUTDIR); the script gets
+# dir = OUTDIR and out, a temporary name renamed when the figure is done.
+# The one figure rule of every paper.
+define hj_figure
+$(2)/$(3).png: $(4:%=$(2)/%) $(1)/plot/$(3).gp
+	gnuplot -e "dir='$(2)'; out='$$(@D)/.tmp-$$(@F)'" $(1)/plot/$(3).gp && mv $$(@D)/.tmp-$$(@F) $$@
+REPORT_INPUTS += $(1)/plot/$(3).gp $(2)/$(3).png
+endef
+
 # Filled in by the papers' rules.mk fragments.
 PROGRAMS := $(HJCHECK) $(HJTIME)
 UNIT_TESTS := $(patsubst %.c,$(BUILD)/test/%,$(wildcard common/tests/test_*.c))

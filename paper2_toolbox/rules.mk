@@ -51,11 +51,7 @@ REPORT_INPUTS += $(P2)/$(1).c
 endef
 # $(eval $(call p2_figure,FIG,INPUTS)): FIG.png drawn by plot/FIG.gp from
 # INPUTS (names in P2_OUT); the script gets dir = P2_OUT and out.
-define p2_figure
-$(P2_OUT)/$(1).png: $(2:%=$(P2_OUT)/%) $(P2)/plot/$(1).gp
-	gnuplot -e "dir='$(P2_OUT)'; out='$$(@D)/.tmp-$$(@F)'" $(P2)/plot/$(1).gp && mv $$(@D)/.tmp-$$(@F) $$@
-REPORT_INPUTS += $(P2)/plot/$(1).gp
-endef
+p2_figure = $(call hj_figure,$(P2),$(P2_OUT),$(1),$(2))
 include $(sort $(wildcard $(P2)/mk/*.mk))
 
 PROGRAMS += $(P2_PROGS:%=$(P2_BIN)/%)
