@@ -57,8 +57,9 @@ $(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep | $(HJTIME)
 # Figures 5-9 (gnuplot, plot/figNN.gp): drawn from the data the programs
 # write during their table runs (storage: fig05_fronts.dat; examples2d:
 # fig06-08 at N = 101, 100, 50; examples34d: fig09 at N = 50), after the
-# lanes of `make paper3`.  $(eval $(call p3_figure,FIG,INPUTS)) is the top Makefile's hj_figure for paper 3, as paper 2's
-# p2_figure: FIG.png from plot/FIG.gp with dir = P3_OUT and out.
+# lanes of `make paper3`.  $(eval $(call p3_figure,FIG,INPUTS)): the top
+# Makefile's hj_figure for paper 3 (FIG.png from plot/FIG.gp with
+# dir = P3_OUT and out).
 p3_figure = $(call hj_figure,$(P3),$(P3_OUT),$(1),$(2))
 $(eval $(call p3_figure,fig05,fig05_fronts.dat))
 $(eval $(call p3_figure,fig06,fig06_rendezvous.dat))
