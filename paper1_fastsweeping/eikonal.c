@@ -2,12 +2,15 @@
 # eikonal: solve your own Eikonal problem from the command line
 
 **Problem.** |grad phi| = f(x, y) on a rectangle, with phi given at point
-sources.  f comes from a grid file (common/hj_map.h): plain text (one row
-of numbers per line, whitespace separated) or a PGM image (P2 or P5; a
-pixel value v maps to f = fmin + (fmax - fmin) v / maxval, see
-`--pgm-range`).  In both the
-first row is the top of the domain (largest y), as in an image.  Between
-the map's nodes f is interpolated bilinearly.
+sources: phi is the travel time when f = 1 / speed is the slowness.  The
+map comes from a grid file (common/hj_map.h): plain text (one row of
+numbers per line, whitespace separated) or a PGM image (P2 or P5; a pixel
+value v maps to a + (b - a) v / maxval, see `--pgm-range`).  `--speed FILE`
+reads the values as speeds (f = 1 / value, so every value must be
+positive), `--slowness FILE` as f itself; `--speed-const V` and
+`--slowness-const F` give a uniform medium.  In both formats the first row
+is the top of the domain (largest y), as in an image.  Between the map's
+nodes f is interpolated bilinearly.
 
 **Method.** The library solver of paper 1 (common/hj_fsm.h): third order
 WENO fast sweeping, sources treated by Richardson extrapolation of first
@@ -21,6 +24,7 @@ each row), to `--out FILE` (written atomically) or stdout with `--out -`.
 Example:
 
     eikonal --speed-const 1 --domain -1,1,-1,1 --N 200 --source 0,0 --out dist.tsv
+    eikonal --speed map.pgm --pgm-range 0.5,2 --source 10,20 --out time.tsv
 */
 #include <math.h>
 #include <stdio.h>
@@ -53,7 +57,7 @@ static int parse_doubles(const char *s, double *out, int n)
 /* The options that take a value (all others but --help, --quick are unknown). */
 static int takes_value(const char *a)
 {
-    static const char *const opts[] = {"--speed", "--out", "--speed-const", "--N", "--delta", "--eps", "--max-iter", "--pgm-range", "--domain", "--source", "--strategy"};
+    static const char *const opts[] = {"--speed", "--slowness", "--slowness-const", "--out", "--speed-const", "--N", "--delta", "--eps", "--max-iter", "--pgm-range", "--domain", "--source", "--strategy"};
     for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
         if (!strcmp(a, opts[k])) return 1;
     return 0;
@@ -61,11 +65,15 @@ static int takes_value(const char *a)
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: %s (--speed FILE | --speed-const F) --source X,Y[,VALUE] ... [options]\n"
-               "Solves |grad phi| = f with phi = VALUE (default 0) at each source; see the top of eikonal.c.\n"
-               "  --speed FILE        speed map: plain text grid or PGM (first row = top)\n"
-               "  --pgm-range A,B     a PGM pixel v maps to f = A + (B - A) v / maxval (default 0,1)\n"
-               "  --speed-const F     uniform speed F > 0\n"
+    fprintf(f, "usage: %s (--speed FILE | --slowness FILE | --speed-const V | --slowness-const F) --source X,Y[,VALUE] ... "
+               "[options]\n"
+               "Solves |grad phi| = f, f = 1 / speed, with phi = VALUE (default 0) at each source: the travel time; see\n"
+               "the top of eikonal.c.\n"
+               "  --speed FILE        speed map (f = 1 / value; every value > 0): plain text grid or PGM (first row = top)\n"
+               "  --slowness FILE     slowness map (f = value >= 0), same formats\n"
+               "  --pgm-range A,B     a PGM pixel v maps to the value A + (B - A) v / maxval (default 0,1; with --speed A > 0)\n"
+               "  --speed-const V     uniform speed V > 0 (f = 1 / V)\n"
+               "  --slowness-const F  uniform slowness F > 0\n"
                "  --domain X0,X1,Y0,Y1  the rectangle (default: [0, columns-1] x [0, rows-1] of the map)\n"
                "  --N N               intervals in x (default: the map's columns - 1, or 100)\n"
                "  --source X,Y[,V]    a point source (a grid node); repeat for more (at most 64)\n"
@@ -77,8 +85,8 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    const char *speed_file = NULL, *out_path = "phi.tsv";
-    double pgm[2] = {0, 1}, dom[4] = {0, 0, 0, 0}, cst = -1;
+    const char *speed_file = NULL, *slow_file = NULL, *out_path = "phi.tsv";
+    double pgm[2] = {0, 1}, dom[4] = {0, 0, 0, 0}, cst = -1, slow_cst = -1;
     int have_dom = 0, nsrc = 0;
     long N = -1;
     hj_inflow src[64];
@@ -94,6 +102,9 @@ int main(int argc, char **argv)
         i++;
         int rc = HJ_OK;
         if (!strcmp(a, "--speed")) speed_file = v;
+        else if (!strcmp(a, "--slowness")) slow_file = v;
+        else if (!strcmp(a, "--slowness-const"))
+            rc = hj_parse_double(v, "--slowness-const", 1e-300, 1e300, &slow_cst, &err);
         else if (!strcmp(a, "--out")) out_path = v;
         else if (!strcmp(a, "--speed-const")) rc = hj_parse_double(v, "--speed-const", 1e-300, 1e300, &cst, &err);
         else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 10000, &N, &err);
@@ -125,21 +136,38 @@ int main(int argc, char **argv)
         }
         if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
     }
-    if (!speed_file && cst < 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give --speed FILE or --speed-const F (see --help)");
-    if (speed_file && cst >= 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give only one of --speed and --speed-const");
+    const int nmedia = (speed_file != NULL) + (slow_file != NULL) + (cst >= 0) + (slow_cst >= 0);
+    if (nmedia == 0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "give --speed FILE, --slowness FILE, --speed-const V or --slowness-const F (see --help)");
+    if (nmedia > 1)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "give only one of --speed, --slowness, --speed-const and --slowness-const");
+    if (speed_file && !(pgm[0] > 0) && strstr(speed_file, ".pgm"))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "with --speed, --pgm-range A,B needs A > 0: a zero speed is never reached");
     if (nsrc == 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give at least one --source X,Y");
     /* A bad output location fails now, not after the solve. */
     if (strcmp(out_path, "-") && hj_out_check(out_path, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
 
     hj_map m = {0};
-    if (speed_file) {
-        if (hj_map_read(&m, speed_file, pgm[0], pgm[1], &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    const char *map_file = speed_file ? speed_file : slow_file;
+    if (map_file) {
+        if (hj_map_read(&m, map_file, pgm[0], pgm[1], &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+        /* Speeds become slownesses, f = 1 / v. */
+        for (long k = 0; speed_file && k < (long)m.mx * m.my; k++) {
+            if (!(m.v[k] > 0)) {
+                const long row = m.my - 1 - k / m.mx, col = k % m.mx; /* as in the file: row 0 at the top */
+                const double bad = m.v[k];
+                hj_map_free(&m);
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at row %ld, column %ld: every speed must be > 0 "
+                            "(use --slowness for a map of f)", speed_file, bad, row + 1, col + 1);
+            }
+            m.v[k] = 1 / m.v[k];
+        }
         if (!have_dom) {
             dom[0] = 0; dom[1] = m.mx - 1; dom[2] = 0; dom[3] = m.my - 1;
         }
         if (N < 0) N = m.mx - 1;
     } else {
-        m.constant = cst;
+        m.constant = cst >= 0 ? 1 / cst : slow_cst;
         if (!have_dom) { dom[0] = 0; dom[1] = 1; dom[2] = 0; dom[3] = 1; }
         if (N < 0) N = 100;
     }

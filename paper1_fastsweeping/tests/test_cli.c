@@ -169,11 +169,59 @@ static void eikonal_bad_files(void **state)
     f = fopen(path, "w");
     fprintf(f, "P2\n3 3\n255\n1 2 3\n4 5\n");
     fclose(f);
-    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --slowness %s --source 0,0 --N 8", path);
     expect_failure(cmd, 1, "truncated or malformed");
+    /* a speed image needs a positive lower end of its range */
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
+    expect_failure(cmd, 2, "--pgm-range A,B needs A > 0");
     expect_failure(P1 "eikonal --speed-const 1 --source 0.013,0 --N 10", 2, "not a grid node");
     expect_failure(P1 "eikonal --speed-const 1 --N 10", 2, "at least one --source");
     expect_failure(P1 "eikonal --speed-const 0 --source 0,0", 2, "--speed-const must be between");
+    snprintf(path, sizeof path, "%s/zero.txt", dir);
+    f = fopen(path, "w");
+    fprintf(f, "1 1 1\n1 0 1\n1 1 1\n");
+    fclose(f);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
+    expect_failure(cmd, 1, "speed 0 at row 2, column 2: every speed must be > 0");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --speed-const 1 --source 0,0", path);
+    expect_failure(cmd, 2, "give only one of");
+}
+
+/* phi at (1, 0) of a run on [-1, 1]^2 (N = 40) from a source at the origin
+ * with the medium given by `medium`. */
+static double time_at_edge(const char *medium)
+{
+    char cmd[512], path[256];
+    snprintf(path, sizeof path, "%s/t.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal %s --domain -1,1,-1,1 --N 40 --source 0,0 --out %s", medium, path);
+    assert_int_equal(run(cmd), 0);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[256];
+    double x, y, p, at = NAN;
+    while (fgets(line, sizeof line, f))
+        if (sscanf(line, "%lf %lf %lf", &x, &y, &p) == 3 && fabs(x - 1) < 1e-12 && fabs(y) < 1e-12) at = p;
+    fclose(f);
+    return at;
+}
+
+/* A speed map means speed: a medium of speed 2 takes time 0.5 to the edge
+ * at distance 1, of slowness 2 time 2 (once read as a slowness, the speed
+ * file gave 2). */
+static void speed_means_speed(void **state)
+{
+    (void)state;
+    char path[256], medium[300];
+    snprintf(path, sizeof path, "%s/two.txt", dir);
+    FILE *f = fopen(path, "w");
+    fprintf(f, "2 2 2\n2 2 2\n2 2 2\n");
+    fclose(f);
+    snprintf(medium, sizeof medium, "--speed %s", path);
+    assert_close(time_at_edge(medium), 0.5, 0.01, 0);
+    snprintf(medium, sizeof medium, "--slowness %s", path);
+    assert_close(time_at_edge(medium), 2.0, 0.04, 0);
+    assert_close(time_at_edge("--speed-const 2"), 0.5, 0.01, 0);
+    assert_close(time_at_edge("--slowness-const 2"), 2.0, 0.04, 0);
 }
 
 /* Max |phi - r| for r > 0.3 of an eikonal run with f = 1 and a source at
@@ -225,7 +273,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bad_options),      cmocka_unit_test(help_works),        cmocka_unit_test(unwritable_output_leaves_nothing),
-        cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance),
+        cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance), cmocka_unit_test(speed_means_speed),
         cmocka_unit_test(exclusion_distance_measures_more),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
