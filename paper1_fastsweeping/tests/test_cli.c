@@ -146,29 +146,29 @@ static void exclusion_distance_measures_more(void **state)
     assert_true(linf[0] >= linf[1]); /* a superset of the nodes */
 }
 
+/* path = the test directory / name, holding text. */
+static void write_text(char *path, size_t n, const char *name, const char *text)
+{
+    snprintf(path, n, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
 static void eikonal_bad_files(void **state)
 {
     (void)state;
     char cmd[512], path[256];
     expect_failure(P1 "eikonal --speed /nonexistent.txt --source 0,0", 1, "cannot read /nonexistent.txt");
-    snprintf(path, sizeof path, "%s/ragged.txt", dir);
-    FILE *f = fopen(path, "w");
-    fprintf(f, "1 1 1\n1 1\n1 1 1\n");
-    fclose(f);
+    write_text(path, sizeof path, "ragged.txt", "1 1 1\n1 1\n1 1 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
     expect_failure(cmd, 1, "2 values, previous rows have 3");
-    f = fopen(path, "w");
-    fprintf(f, "1 1 1\n1 nan 1\n1 1 1\n");
-    fclose(f);
+    write_text(path, sizeof path, "ragged.txt", "1 1 1\n1 nan 1\n1 1 1\n");
     expect_failure(cmd, 1, "must be finite");
-    f = fopen(path, "w");
-    fprintf(f, "1 1 x\n1 1 1\n");
-    fclose(f);
+    write_text(path, sizeof path, "ragged.txt", "1 1 x\n1 1 1\n");
     expect_failure(cmd, 1, "not a number");
-    snprintf(path, sizeof path, "%s/bad.pgm", dir);
-    f = fopen(path, "w");
-    fprintf(f, "P2\n3 3\n255\n1 2 3\n4 5\n");
-    fclose(f);
+    write_text(path, sizeof path, "bad.pgm", "P2\n3 3\n255\n1 2 3\n4 5\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --slowness %s --source 0,0 --N 8", path);
     expect_failure(cmd, 1, "truncated or malformed");
     /* a speed image needs a positive lower end of its range */
@@ -177,26 +177,30 @@ static void eikonal_bad_files(void **state)
     expect_failure(P1 "eikonal --speed-const 1 --source 0.013,0 --N 10", 2, "not a grid node");
     expect_failure(P1 "eikonal --speed-const 1 --N 10", 2, "at least one --source");
     expect_failure(P1 "eikonal --speed-const 0 --source 0,0", 2, "--speed-const must be between");
-    snprintf(path, sizeof path, "%s/zero.txt", dir);
-    f = fopen(path, "w");
-    fprintf(f, "1 1 1\n1 0 1\n1 1 1\n");
-    fclose(f);
+    write_text(path, sizeof path, "zero.txt", "1 1 1\n1 0 1\n1 1 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
     expect_failure(cmd, 1, "speed 0 at row 2, column 2: every speed must be > 0");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --speed-const 1 --source 0,0", path);
     expect_failure(cmd, 2, "give only one of");
 }
 
-/* phi at (1, 0) of a run on [-1, 1]^2 (N = 40) from a source at the origin
- * with the medium given by `medium`. */
-static double time_at_edge(const char *medium)
+/* The output (x y phi per line) of eikonal with the medium given by
+ * `medium` on [-1, 1]^2, N intervals, from a source at the origin. */
+static FILE *run_eikonal(const char *medium, int N)
 {
     char cmd[512], path[256];
-    snprintf(path, sizeof path, "%s/t.tsv", dir);
-    snprintf(cmd, sizeof cmd, P1 "eikonal %s --domain -1,1,-1,1 --N 40 --source 0,0 --out %s", medium, path);
+    snprintf(path, sizeof path, "%s/phi.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal %s --domain -1,1,-1,1 --N %d --source 0,0 --out %s", medium, N, path);
     assert_int_equal(run(cmd), 0);
     FILE *f = fopen(path, "r");
     assert_non_null(f);
+    return f;
+}
+
+/* phi at (1, 0) of a run with N = 40. */
+static double time_at_edge(const char *medium)
+{
+    FILE *f = run_eikonal(medium, 40);
     char line[256];
     double x, y, p, at = NAN;
     while (fgets(line, sizeof line, f))
@@ -212,10 +216,7 @@ static void speed_means_speed(void **state)
 {
     (void)state;
     char path[256], medium[300];
-    snprintf(path, sizeof path, "%s/two.txt", dir);
-    FILE *f = fopen(path, "w");
-    fprintf(f, "2 2 2\n2 2 2\n2 2 2\n");
-    fclose(f);
+    write_text(path, sizeof path, "two.txt", "2 2 2\n2 2 2\n2 2 2\n");
     snprintf(medium, sizeof medium, "--speed %s", path);
     assert_close(time_at_edge(medium), 0.5, 0.01, 0);
     snprintf(medium, sizeof medium, "--slowness %s", path);
@@ -228,12 +229,7 @@ static void speed_means_speed(void **state)
  * the origin on N intervals. */
 static double distance_error(int N)
 {
-    char cmd[512], path[256];
-    snprintf(path, sizeof path, "%s/d.tsv", dir);
-    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --domain -1,1,-1,1 --N %d --source 0,0 --out %s", N, path);
-    assert_int_equal(run(cmd), 0);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
+    FILE *f = run_eikonal("--speed-const 1", N);
     char line[256];
     double x, y, p, emax = 0;
     int n = 0;
