@@ -1,4 +1,4 @@
-/* hj_map.c -- speed maps from grid files and their bilinear interpolation
+/* hj_map.c -- slowness maps from grid files and their bilinear interpolation
  * (see hj_map.h). */
 #include "hj_map.h"
 
@@ -24,6 +24,13 @@ double hj_map_eval(double x, double y, void *ctx)
     const double a = u - i, b = w - j;
     const double *r0 = m->v + (long)j * m->mx, *r1 = r0 + m->mx;
     return (1 - b) * ((1 - a) * r0[i] + a * r0[i + 1]) + b * ((1 - a) * r1[i] + a * r1[i + 1]);
+}
+
+/* Pixel units when the caller gave no rectangle. */
+static void default_rectangle(hj_map *m)
+{
+    if (!(m->xmax > m->xmin)) m->xmin = 0, m->xmax = m->mx - 1;
+    if (!(m->ymax > m->ymin)) m->ymin = 0, m->ymax = m->my - 1;
 }
 
 /* Files list the top row first; row 0 in memory is the bottom. */
@@ -56,7 +63,7 @@ int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
                 char *end;
                 double x = strtod(tok, &end);
                 if (*end) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: '%s' is not a number", path, lineno + 1, tok); break; }
-                if (!isfinite(x) || x < 0) { rc = hj_error_set(err, HJ_ENONFINITE, "%s:%d: speed %s must be finite and >= 0", path, lineno + 1, tok); break; }
+                if (!isfinite(x) || x < 0) { rc = hj_error_set(err, HJ_ENONFINITE, "%s:%d: value %s must be finite and >= 0", path, lineno + 1, tok); break; }
                 if (n == cap) {
                     double *nv = realloc(v, 2 * cap * sizeof *v);
                     if (!nv) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
@@ -89,6 +96,7 @@ int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
     m->my = rows;
     m->v = v;
     flip_rows(m);
+    default_rectangle(m);
     return HJ_OK;
 }
 
@@ -143,6 +151,7 @@ int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_er
     m->my = (int)h;
     m->v = v;
     flip_rows(m);
+    default_rectangle(m);
     return HJ_OK;
 }
 
@@ -151,6 +160,17 @@ int hj_map_read(hj_map *m, const char *path, double fmin, double fmax, hj_error 
     size_t len = strlen(path);
     int is_pgm = len > 4 && !strcmp(path + len - 4, ".pgm");
     return is_pgm ? hj_map_read_pgm(m, path, fmin, fmax, err) : hj_map_read_text(m, path, err);
+}
+
+int hj_map_invert(hj_map *m, hj_error *err)
+{
+    const long n = (long)m->mx * m->my;
+    for (long k = 0; k < n; k++)
+        if (!(m->v[k] > 0))
+            return hj_error_set(err, HJ_EINVAL, "speed %g at row %ld, column %ld: every speed must be > 0", m->v[k],
+                                (long)m->my - k / m->mx, k % m->mx + 1);
+    for (long k = 0; k < n; k++) m->v[k] = 1 / m->v[k];
+    return HJ_OK;
 }
 
 void hj_map_free(hj_map *m)

@@ -1,6 +1,8 @@
-/* hj_map.h -- a speed map f(x, y) for the Eikonal solver of paper 1
- * (hj_fsm.h: |grad phi| = f of Huang, Shu & Zhang 2008, section 2) read
- * from a grid file, and its bilinear interpolation.
+/* hj_map.h -- the right-hand side f(x, y) of the Eikonal equation for the
+ * solver of paper 1 (hj_fsm.h: |grad phi| = f of Huang, Shu & Zhang 2008,
+ * section 2) read from a grid file, and its bilinear interpolation.  f is
+ * the slowness, 1 / speed, so that phi is a travel time: a file of speeds
+ * is read and then turned into slownesses with hj_map_invert.
  *
  * Files: plain text (one row of numbers per line, whitespace separated,
  * every value finite and >= 0) or a PGM image (P2 or P5, 8 or 16 bits; a
@@ -8,9 +10,11 @@
  * first row of the file is the top of the domain (largest y), as in an
  * image; in memory row 0 is the bottom.  At least 2 x 2 values.
  *
- * The map covers the rectangle [xmin, xmax] x [ymin, ymax] (set by the
- * caller after reading): node (i, j) sits at xmin + i (xmax - xmin) /
- * (mx - 1), ymin + j (ymax - ymin) / (my - 1).  Between nodes f is
+ * The map covers the rectangle [xmin, xmax] x [ymin, ymax] (the caller may
+ * set it before or after reading; a reader given none, xmax <= xmin or
+ * ymax <= ymin, sets pixel units, [0, mx - 1] x [0, my - 1]: one unit per
+ * pixel, the bottom-left pixel at the origin): node (i, j) sits at
+ * xmin + i (xmax - xmin) / (mx - 1), ymin + j (ymax - ymin) / (my - 1).  Between nodes f is
  * bilinear; outside the rectangle it is clamped to the nearest edge.
  *
  * Library code: returns HJ_* codes with a message naming the file and
@@ -39,6 +43,11 @@ int hj_map_read_text(hj_map *m, const char *path, hj_error *err);
 int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
 /* hj_map_read_pgm for a name ending in ".pgm", else hj_map_read_text. */
 int hj_map_read(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
+
+/* Speeds to slownesses: every value v becomes 1 / v.  HJ_EINVAL naming
+ * the row (counted from the top, as in the file) and column of the first
+ * value that is not positive; m is then unchanged. */
+int hj_map_invert(hj_map *m, hj_error *err);
 
 /* Free m->v (m itself is the caller's). */
 void hj_map_free(hj_map *m);

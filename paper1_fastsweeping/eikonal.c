@@ -63,6 +63,15 @@ static int takes_value(const char *a)
     return 0;
 }
 
+/* Exit status of a run that did not converge (its last iterate is written). */
+enum { EXIT_NOCONV = 3 };
+
+static void show_progress(int iter, double change, void *ctx)
+{
+    (void)ctx;
+    hj_progress("\reikonal: iteration %d, mean change %.3g   ", iter, change);
+}
+
 static void usage(FILE *f)
 {
     fprintf(f, "usage: %s (--speed FILE | --slowness FILE | --speed-const V | --slowness-const F) --source X,Y[,VALUE] ... "
@@ -78,9 +87,13 @@ static void usage(FILE *f)
                "  --N N               intervals in x (default: the map's columns - 1, or 100)\n"
                "  --source X,Y[,V]    a point source (a grid node); repeat for more (at most 64)\n"
                "  --strategy S        richardson (default) | first-order\n"
-               "  --delta X --eps X --max-iter N   as in the paper 1 examples\n"
+               "  --delta X           stop when an iteration's mean |change| is below X times the travel-time scale\n"
+               "                      (the domain's diagonal times the largest slowness; default 1e-12)\n"
+               "  --eps X --max-iter N   as in the paper 1 examples\n"
                "  --out FILE          output grid x y phi (default phi.tsv; - for stdout)\n"
-               "  --help\n", prog);
+               "  --help\n"
+               "Exit status: 0 converged, 1 a failed run, 2 bad usage, 3 not converged (the last iterate is written).\n"
+               "Progress on stderr when it is a terminal.\n", prog);
 }
 
 int main(int argc, char **argv)
@@ -92,6 +105,7 @@ int main(int argc, char **argv)
     hj_inflow src[64];
     hj_fsm_options opt = hj_fsm_default_options();
     opt.strategy = HJ_BC_RICHARDSON;
+    double delta_rel = 1e-12;
     hj_error err;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -108,7 +122,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--out")) out_path = v;
         else if (!strcmp(a, "--speed-const")) rc = hj_parse_double(v, "--speed-const", 1e-300, 1e300, &cst, &err);
         else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 10000, &N, &err);
-        else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 0, 1, &opt.delta, &err);
+        else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 1e-300, 1, &delta_rel, &err);
         else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &opt.eps, &err);
         else if (!strcmp(a, "--max-iter")) {
             long m;
@@ -152,15 +166,9 @@ int main(int argc, char **argv)
     if (map_file) {
         if (hj_map_read(&m, map_file, pgm[0], pgm[1], &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
         /* Speeds become slownesses, f = 1 / v. */
-        for (long k = 0; speed_file && k < (long)m.mx * m.my; k++) {
-            if (!(m.v[k] > 0)) {
-                const long row = m.my - 1 - k / m.mx, col = k % m.mx; /* as in the file: row 0 at the top */
-                const double bad = m.v[k];
-                hj_map_free(&m);
-                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at row %ld, column %ld: every speed must be > 0 "
-                            "(use --slowness for a map of f)", speed_file, bad, row + 1, col + 1);
-            }
-            m.v[k] = 1 / m.v[k];
+        if (speed_file && hj_map_invert(&m, &err)) {
+            hj_map_free(&m);
+            hj_cli_fail(prog, HJ_EXIT_RUN, "%s: %s (use --slowness for a map of f)", speed_file, err.msg);
         }
         if (!have_dom) {
             dom[0] = 0; dom[1] = m.mx - 1; dom[2] = 0; dom[3] = m.my - 1;
@@ -196,16 +204,30 @@ int main(int argc, char **argv)
     double *phi = malloc(sizeof(double) * (size_t)(g.nx + 1) * (size_t)(g.ny + 1));
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for the %dx%d grid", g.nx, g.ny);
     hj_speed sp = {hj_map_eval, NULL, &m};
+    /* The stopping rule in the problem's own scale: an iteration's mean
+     * |change| below delta times the largest travel time the domain allows,
+     * its diagonal times the largest slowness, whatever the units. */
+    double fmax = m.constant;
+    for (long k = 0; m.v && k < (long)m.mx * m.my; k++) fmax = m.v[k] > fmax ? m.v[k] : fmax;
+    const double scale = hypot(dom[1] - dom[0], dom[3] - dom[2]) * (fmax > 0 ? fmax : 1);
+    opt.stop_norm = HJ_STOP_L1_MEAN;
+    opt.delta = delta_rel * scale;
+    opt.progress = show_progress;
     hj_fsm_stats st;
     int rc = hj_fsm_solve(&g, &sp, src, nsrc, &opt, phi, &st, &err);
-    if (rc) { free(phi); hj_map_free(&m); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
+    hj_progress("\n");
+    const int converged = rc == HJ_OK;
+    if (rc && rc != HJ_ENOCONV) { free(phi); hj_map_free(&m); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
+    if (!converged)
+        fprintf(stderr, "%s: warning: %s; the last iterate is written, exit status %d\n", prog, err.msg, EXIT_NOCONV);
     hj_out out = {0};
     FILE *fp = stdout;
     if (strcmp(out_path, "-")) {
         if (hj_out_open(&out, out_path, &err)) { free(phi); hj_map_free(&m); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
         fp = out.fp;
     }
-    fprintf(fp, "# eikonal: %dx%d intervals, h = %g, %d WENO iterations\n# x\ty\tphi\n", g.nx, g.ny, g.h, st.iterations);
+    fprintf(fp, "# eikonal: %dx%d intervals, h = %g, %d WENO iterations%s\n# x\ty\tphi\n", g.nx, g.ny, g.h,
+            st.iterations, converged ? "" : " (not converged: the last iterate)");
     for (int j = 0; j <= g.ny; j++) {
         for (int i = 0; i <= g.nx; i++)
             fprintf(fp, "%.10g\t%.10g\t%.12g\n", g.x0 + i * g.h, g.y0 + j * g.h, phi[(long)j * (g.nx + 1) + i]);
@@ -215,5 +237,5 @@ int main(int argc, char **argv)
     hj_map_free(&m);
     if (fp != stdout && hj_out_commit(&out, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     if (fp == stdout && fflush(stdout)) hj_cli_fail(prog, HJ_EXIT_RUN, "error writing stdout");
-    return 0;
+    return converged ? 0 : EXIT_NOCONV;
 }

@@ -86,5 +86,27 @@ static void bilinear_and_clamped(void **state)
     assert_true(hj_map_eval(3, 4, &c) == 0.7);
 }
 
-HJ_TEST_MAIN("hj_map", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(text_map_rows_flipped),
+/* A map read without a rectangle is in pixel units; speeds invert to
+ * slownesses, and a zero speed is named by its row and column in the file. */
+static void pixel_units_and_speeds(void **state)
+{
+    (void)state;
+    const char txt[] = "1 2 4\n2 0 1\n";
+    hj_map m = {0};
+    hj_error err;
+    assert_int_equal(hj_map_read(&m, write_file("s.txt", txt, strlen(txt)), 0, 1, &err), HJ_OK);
+    assert_close(m.xmax, 2, 0, 0);
+    assert_close(m.ymax, 1, 0, 0);
+    assert_close(hj_map_eval(2, 1, &m), 4, 0, 0); /* top right pixel */
+    assert_int_equal(hj_map_invert(&m, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "speed 0 at row 2, column 2"));
+    assert_close(hj_map_eval(2, 1, &m), 4, 0, 0); /* unchanged */
+    m.v[1] = 8;                                   /* the zero (bottom row in memory) */
+    assert_int_equal(hj_map_invert(&m, &err), HJ_OK);
+    assert_close(hj_map_eval(2, 1, &m), 0.25, 0, 1e-15);
+    assert_close(hj_map_eval(1, 0, &m), 0.125, 0, 1e-15);
+    hj_map_free(&m);
+}
+
+HJ_TEST_MAIN("hj_map", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(text_map_rows_flipped), cmocka_unit_test(pixel_units_and_speeds),
              cmocka_unit_test(pgm_maps), cmocka_unit_test(malformed_maps), cmocka_unit_test(bilinear_and_clamped))

@@ -225,6 +225,38 @@ static void speed_means_speed(void **state)
     assert_close(time_at_edge("--slowness-const 2"), 2.0, 0.04, 0);
 }
 
+/* A map in pixel units (121 x 81 pixels, speed 2 everywhere) converges with
+ * the default stopping rule, which scales with the problem; a run stopped
+ * early writes its last iterate, says so, and exits 3. */
+static void pixel_units_and_no_convergence(void **state)
+{
+    (void)state;
+    char path[256], out[300], cmd[1024];
+    static char text[121 * 81 * 4 + 64];
+    int n = snprintf(text, sizeof text, "P2\n121 81\n255\n");
+    for (int k = 0; k < 121 * 81; k++) n += snprintf(text + n, sizeof text - (size_t)n, "255%c", k % 121 == 120 ? '\n' : ' ');
+    write_text(path, sizeof path, "px.pgm", text);
+    snprintf(out, sizeof out, "%s/px.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --pgm-range 1,2 --source 10,20 --out %s", path, out);
+    assert_int_equal(run(cmd), 0);
+    FILE *f = fopen(out, "r");
+    assert_non_null(f);
+    char line[256];
+    double x, y, p, at = NAN;
+    while (fgets(line, sizeof line, f))
+        if (sscanf(line, "%lf %lf %lf", &x, &y, &p) == 3 && x == 100 && y == 20) at = p;
+    fclose(f);
+    assert_close(at, 45, 1e-6, 0); /* distance 90 at speed 2 */
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --pgm-range 1,2 --source 10,20 --max-iter 2 --out %s", path, out);
+    assert_int_equal(run(cmd), 3);
+    assert_non_null(strstr(err_text, "the last iterate is written"));
+    f = fopen(out, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(line, sizeof line, f));
+    fclose(f);
+    assert_non_null(strstr(line, "not converged"));
+}
+
 /* Max |phi - r| for r > 0.3 of an eikonal run with f = 1 and a source at
  * the origin on N intervals. */
 static double distance_error(int N)
@@ -270,6 +302,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bad_options),      cmocka_unit_test(help_works),        cmocka_unit_test(unwritable_output_leaves_nothing),
         cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance), cmocka_unit_test(speed_means_speed),
+        cmocka_unit_test(pixel_units_and_no_convergence),
         cmocka_unit_test(exclusion_distance_measures_more),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
