@@ -80,7 +80,7 @@ static void usage(FILE *f)
                "the top of eikonal.c.\n"
                "  --speed FILE        speed map (f = 1 / value; every value > 0): plain text grid or PGM (first row = top)\n"
                "  --slowness FILE     slowness map (f = value >= 0), same formats\n"
-               "  --pgm-range A,B     a PGM pixel v maps to the value A + (B - A) v / maxval (default 0,1; with --speed A > 0)\n"
+               "  --pgm-range A,B     a PGM pixel v maps to the value A + (B - A) v / maxval (default 0,1; a speed image needs A > 0)\n"
                "  --speed-const V     uniform speed V > 0 (f = 1 / V)\n"
                "  --slowness-const F  uniform slowness F > 0\n"
                "  --domain X0,X1,Y0,Y1  the rectangle (default: [0, columns-1] x [0, rows-1] of the map)\n"
@@ -156,7 +156,7 @@ int main(int argc, char **argv)
     if (nmedia > 1)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "give only one of --speed, --slowness, --speed-const and --slowness-const");
     if (speed_file && !(pgm[0] > 0) && strstr(speed_file, ".pgm"))
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "with --speed, --pgm-range A,B needs A > 0: a zero speed is never reached");
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "a speed image needs --pgm-range A,B with A > 0 (the default 0,1 makes pixel 0 a speed of 0)");
     if (nsrc == 0) hj_cli_fail(prog, HJ_EXIT_USAGE, "give at least one --source X,Y");
     /* A bad output location fails now, not after the solve. */
     if (strcmp(out_path, "-") && hj_out_check(out_path, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);

@@ -173,7 +173,7 @@ static void eikonal_bad_files(void **state)
     expect_failure(cmd, 1, "truncated or malformed");
     /* a speed image needs a positive lower end of its range */
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
-    expect_failure(cmd, 2, "--pgm-range A,B needs A > 0");
+    expect_failure(cmd, 2, "a speed image needs --pgm-range A,B with A > 0");
     expect_failure(P1 "eikonal --speed-const 1 --source 0.013,0 --N 10", 2, "not a grid node");
     expect_failure(P1 "eikonal --speed-const 1 --N 10", 2, "at least one --source");
     expect_failure(P1 "eikonal --speed-const 0 --source 0,0", 2, "--speed-const must be between");
