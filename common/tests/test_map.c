@@ -21,13 +21,19 @@ static const char *write_file(const char *name, const void *data, size_t len)
     return path;
 }
 
+/* The text map txt, written to name and read (which must succeed). */
+static hj_map read_text_map(const char *name, const char *txt)
+{
+    hj_map m = {0};
+    hj_error err;
+    assert_int_equal(hj_map_read(&m, write_file(name, txt, strlen(txt)), 0, 1, &err), HJ_OK);
+    return m;
+}
+
 static void text_map_rows_flipped(void **state)
 {
     (void)state;
-    const char txt[] = "1 2 3\n\n4 5 6\n";
-    hj_map m = {0};
-    hj_error err;
-    assert_int_equal(hj_map_read(&m, write_file("m.txt", txt, strlen(txt)), 0, 1, &err), HJ_OK);
+    hj_map m = read_text_map("m.txt", "1 2 3\n\n4 5 6\n");
     assert_int_equal(m.mx, 3);
     assert_int_equal(m.my, 2);
     const double bottom_first[6] = {4, 5, 6, 1, 2, 3};
@@ -91,10 +97,8 @@ static void bilinear_and_clamped(void **state)
 static void pixel_units_and_speeds(void **state)
 {
     (void)state;
-    const char txt[] = "1 2 4\n2 0 1\n";
-    hj_map m = {0};
+    hj_map m = read_text_map("s.txt", "1 2 4\n2 0 1\n");
     hj_error err;
-    assert_int_equal(hj_map_read(&m, write_file("s.txt", txt, strlen(txt)), 0, 1, &err), HJ_OK);
     assert_close(m.xmax, 2, 0, 0);
     assert_close(m.ymax, 1, 0, 0);
     assert_close(hj_map_eval(2, 1, &m), 4, 0, 0); /* top right pixel */
