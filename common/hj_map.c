@@ -114,8 +114,22 @@ static int pgm_int(FILE *f, long *out)
         if (v > 100000000) return -1;
         c = fgetc(f);
     }
+    /* The whole token is a number: "100.200" is not two pixels. */
+    if (c != EOF && !isspace(c)) return -1;
     *out = v;
     return 0;
+}
+
+/* After the last pixel only white space and comments (P2) or nothing
+ * (P5) may follow. */
+static int pgm_at_end(FILE *f, int plain)
+{
+    int c = fgetc(f);
+    while (plain && c != EOF && (isspace(c) || c == '#')) {
+        if (c == '#') while (c != '\n' && c != EOF) c = fgetc(f);
+        c = fgetc(f);
+    }
+    return c == EOF;
 }
 
 int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err)
@@ -145,8 +159,13 @@ int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_er
         if (rc == HJ_OK && p > maxval) rc = HJ_EFORMAT;
         if (rc == HJ_OK) v[k] = fmin + (fmax - fmin) * (double)p / (double)maxval;
     }
+    const int extra = rc == HJ_OK && !pgm_at_end(f, magic[1] == '2');
     fclose(f);
     if (rc) { free(v); return hj_error_set(err, HJ_EFORMAT, "%s: truncated or malformed pixel data", path); }
+    if (extra) {
+        free(v);
+        return hj_error_set(err, HJ_EFORMAT, "%s: more data than the %ld x %ld pixels of its header", path, w, h);
+    }
     m->mx = (int)w;
     m->my = (int)h;
     m->v = v;

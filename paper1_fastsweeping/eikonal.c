@@ -42,6 +42,7 @@ static const char *prog = "eikonal";
 static int parse_doubles(const char *s, double *out, int n)
 {
     char buf[256];
+    if (strlen(s) >= sizeof buf) return -1; /* never cut a list short */
     snprintf(buf, sizeof buf, "%s", s);
     char *p = buf;
     for (int k = 0; k < n; k++) {
@@ -185,6 +186,9 @@ int main(int argc, char **argv)
     g.h = (dom[1] - dom[0]) / N;
     g.x0 = dom[0];
     g.y0 = dom[2];
+    /* A cell must be resolvable in the coordinates (and squared in the sweeps). */
+    if (!(g.h > 1e-100) || g.x0 + g.h == g.x0 || g.y0 + g.h == g.y0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "the domain is too small for %ld cells (h = %g): give a larger --domain", N, g.h);
     double ny = (dom[3] - dom[2]) / g.h;
     if (fabs(ny - round(ny)) > 1e-6 * ny || round(ny) < 8)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "the domain height %g is not a whole number (>= 8) of cells of size h = %g", dom[3] - dom[2], g.h);
@@ -194,6 +198,11 @@ int main(int argc, char **argv)
     if (have > 0 && hj_fsm_memory(&g) > 0.8 * have)
         hj_cli_fail(prog, HJ_EXIT_RUN, "a %dx%d grid needs %.3g GB, more than this machine has", g.nx, g.ny, hj_fsm_memory(&g) / 1e9);
     for (int s = 0; s < nsrc; s++) {
+        for (int t = 0; t < s; t++)
+            if (fabs(src[t].x - src[s].x) < 1e-9 * g.h && fabs(src[t].y - src[s].y) < 1e-9 * g.h &&
+                src[t].value != src[s].value)
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "sources %d and %d are at the same node (%g, %g) with different values",
+                            t + 1, s + 1, src[s].x, src[s].y);
         double fi = (src[s].x - g.x0) / g.h, fj = (src[s].y - g.y0) / g.h;
         if (fi < 0 || fj < 0 || fi > g.nx || fj > g.ny)
             hj_cli_fail(prog, HJ_EXIT_USAGE, "source (%g, %g) is outside the domain", src[s].x, src[s].y);

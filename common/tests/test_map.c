@@ -76,6 +76,15 @@ static void malformed_maps(void **state)
     const char cut[] = "P2\n2 2\n4\n0 4\n2\n";
     assert_int_equal(hj_map_read(&m, write_file("c.pgm", cut, strlen(cut)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, "truncated"));
+    /* a token is a number as a whole, and nothing follows the last pixel */
+    const char dotted[] = "P2\n2 2\n255\n100.200 4\n2 3\n", extra[] = "P2\n2 2\n4\n0 4\n2 3 # ok\n1\n";
+    assert_int_equal(hj_map_read(&m, write_file("d.pgm", dotted, strlen(dotted)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, write_file("e.pgm", extra, strlen(extra)), 0, 1, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, "more data than the 2 x 2 pixels"));
+    const unsigned char raw[] = {'P', '5', '\n', '2', ' ', '2', '\n', '9', '\n', 1, 2, 3, 4, 5};
+    assert_int_equal(hj_map_read(&m, write_file("e5.pgm", raw, sizeof raw), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, write_file("ok5.pgm", raw, sizeof raw - 1), 0, 1, &err), HJ_OK);
+    hj_map_free(&m);
     assert_null(m.v);
 }
 

@@ -182,6 +182,14 @@ static void eikonal_bad_files(void **state)
     expect_failure(cmd, 1, "speed 0 at row 2, column 2: every speed must be > 0");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --speed-const 1 --source 0,0", path);
     expect_failure(cmd, 2, "give only one of");
+    expect_failure(P1 "eikonal --speed-const 1 --source 0,0 --source 0,0,1 --N 10", 2,
+                   "sources 1 and 2 are at the same node");
+    expect_failure(P1 "eikonal --speed-const 1 --domain 0,1e-200,0,1e-200 --N 10 --source 0,0", 2,
+                   "the domain is too small");
+    /* a list longer than the reader's buffer is refused, not cut */
+    char longsrc[400] = P1 "eikonal --speed-const 1 --N 10 --source 0,0,";
+    for (size_t k = strlen(longsrc); k < 330; k++) longsrc[k] = '0';
+    expect_failure(longsrc, 2, "--source wants X,Y or X,Y,VALUE");
 }
 
 /* The output (x y phi per line) of eikonal with the medium given by
