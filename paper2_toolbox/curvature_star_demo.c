@@ -69,8 +69,6 @@ published/curvature_star.tsv); curvature_star_notes.md.
 
 static const char *prog = "curvature_star_demo";
 static const char *usage =
-    "usage: curvature_star_demo [--accuracy low|medium|high|veryHigh] [--split-flow 0|1] [--N NODES]\n"
-    "                           [--out-dir DIR] [--quick]\n"
     "Without --split-flow both cases of Figure 9 are run; --N is the figure grid (default 101).\n"
     "See the comment at the top of curvature_star_demo.c.\n";
 

@@ -86,7 +86,6 @@ published/dumbbell.tsv), dumbbell_notes.md (the convergence table).
 
 static const char *prog = "dumbbell1";
 static const char *usage =
-    "usage: dumbbell1 [--accuracy low|medium|high|veryHigh] [--N NODES] [--out-dir DIR] [--quick]\n"
     "--N: nodes along x_1 of the figure grid (4 k + 1; default 101, 61 with --quick).\n"
     "See the comment at the top of dumbbell1.c.\n";
 

@@ -65,8 +65,6 @@ radii in published/normal_circle.tsv), normal_star_notes.md.
 
 static const char *prog = "normal_star_demo";
 static const char *usage =
-    "usage: normal_star_demo [--accuracy low|medium|high|veryHigh] [--reverse-flow 0|1] [--N NODES]\n"
-    "                        [--out-dir DIR] [--quick]\n"
     "Without --reverse-flow both cases of Figure 10 are run; --N is the figure grid (default 101).\n"
     "See the comment at the top of normal_star_demo.c.\n";
 

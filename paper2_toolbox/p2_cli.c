@@ -83,22 +83,27 @@ int p2_common_option(p2_opts *o, int argc, char **argv, int *i)
 
 void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value)
 {
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(o, argc, argv, &i)) continue;
-        if (flag && p2_binary_option(o->prog, flag, argc, argv, &i, value)) continue;
-        hj_cli_fail(o->prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    static const char *levels[HJ_LS_NACC + 1];
+    for (int k = 0; k < HJ_LS_NACC; k++) levels[k] = hj_ls_accuracy_name(k);
+    static const char *const binary[] = {"0", "1", NULL};
+    int choice = 0;
+    hj_cli_opt opts[] = {
+        {.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = &o->acc, .choices = levels, .metavar = "A",
+         .help = "scheme and RK order (section 2.1)"},
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &o->N, .min = 11, .max = 801, .metavar = "NODES",
+         .help = "nodes of the figure grid", .dflt = o->N ? NULL : "see below"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &o->out_dir, .metavar = "DIR",
+         .help = "where to write the tables and figure data"},
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &o->quick, .help = "the reduced runs of CI"},
+        {.name = flag, .type = HJ_OPT_CHOICE, .value = &choice, .choices = binary, .metavar = "0|1",
+         .help = "run only this case", .dflt = "both cases"},
+    };
+    hj_cli_spec spec = {o->prog, "A demo of Mitchell's Toolbox of Level Set Methods (2004), section 2.", opts,
+                        flag ? 5 : 4, o->usage};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    if (flag && opts[4].seen) *value = choice;
     hj_error err;
     p2_fail_if(o->prog, hj_mkdirs(o->out_dir, &err), &err);
-}
-
-int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value)
-{
-    if (strcmp(argv[*i], name)) return 0;
-    if (*i + 1 >= argc || (strcmp(argv[*i + 1], "0") && strcmp(argv[*i + 1], "1")))
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s needs 0 or 1", name);
-    *value = argv[++*i][0] - '0';
-    return 1;
 }
 
 void p2_fail_if(const char *prog, int rc, const hj_error *err)

@@ -47,15 +47,11 @@ typedef struct {
 int p2_common_option(p2_opts *o, int argc, char **argv, int *i);
 
 /* The whole command line of a demo that takes the options above and at
- * most one 0|1 switch (p2_binary_option; flag NULL: none; *value is left
- * as it is unless the switch is given); anything else ends the program.
- * Then the output directory is created. */
+ * most one 0|1 switch (flag, e.g. --reverse-flow; NULL: none; *value is
+ * left as it is unless the switch is given), read through hj_cli's option
+ * table (usage is the text printed after the options by --help); anything
+ * else ends the program.  Then the output directory is created. */
 void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value);
-
-/* A demo's 0|1 switch (--reverse-flow, --rigid, --split-flow): when
- * argv[*i] is name, *value = its 0 or 1 (anything else ends the program)
- * and 1 is returned; 0 when argv[*i] is another option. */
-int p2_binary_option(const char *prog, const char *name, int argc, char **argv, int *i, int *value);
 
 /* End the program with the error's message when rc != 0. */
 void p2_fail_if(const char *prog, int rc, const hj_error *err);

@@ -60,7 +60,6 @@ spin_star_notes.md.
 
 static const char *prog = "spin_star_demo";
 static const char *usage =
-    "usage: spin_star_demo [--accuracy low|medium|high|veryHigh] [--rigid 0|1] [--N NODES] [--out-dir DIR] [--quick]\n"
     "Without --rigid both cases of Figure 11 are run; --N is the figure grid (default 201, 101 with --quick).\n"
     "See the comment at the top of spin_star_demo.c.\n";
 
