@@ -60,6 +60,22 @@ void hj_out_remove_on_signal(void)
     }
 }
 
+/* The directory part of path ("." for a bare name, "/" for the root) in a
+ * new string, or NULL; *base (may be NULL) points at path's last part. */
+static char *dir_of(const char *path, const char **base)
+{
+    size_t n = strlen(path);
+    char *dir = malloc(n + 2);
+    if (!dir) return NULL;
+    memcpy(dir, path, n + 1);
+    char *slash = strrchr(dir, '/');
+    if (base) *base = slash ? path + (slash - dir) + 1 : path;
+    if (!slash) strcpy(dir, ".");
+    else if (slash == dir) dir[1] = '\0';
+    else *slash = '\0';
+    return dir;
+}
+
 int hj_out_check(const char *path, hj_error *err)
 {
     struct stat st;
@@ -70,14 +86,8 @@ int hj_out_check(const char *path, hj_error *err)
         return hj_error_set(err, HJ_EIO, "%s: %s", path, strerror(errno));
     }
     /* The directory must exist and take a new file. */
-    size_t n = strlen(path);
-    char *dir = malloc(n + 2);
+    char *dir = dir_of(path, NULL);
     if (!dir) return hj_error_set(err, HJ_ENOMEM, "out of memory");
-    memcpy(dir, path, n + 1);
-    char *slash = strrchr(dir, '/');
-    if (!slash) strcpy(dir, ".");
-    else if (slash == dir) dir[1] = '\0';
-    else *slash = '\0';
     int ok = stat(dir, &st) == 0 && S_ISDIR(st.st_mode) && access(dir, W_OK | X_OK) == 0;
     int e = errno;
     int rc = ok ? HJ_OK
@@ -91,15 +101,9 @@ int hj_out_check(const char *path, hj_error *err)
  * a killed run left behind. */
 static void out_remove_stale(const char *path)
 {
-    size_t n = strlen(path);
-    char *dir = malloc(n + 2);
+    const char *base;
+    char *dir = dir_of(path, &base);
     if (!dir) return;
-    memcpy(dir, path, n + 1);
-    char *slash = strrchr(dir, '/');
-    const char *base = slash ? slash + 1 : path;
-    if (!slash) strcpy(dir, ".");
-    else if (slash == dir) dir[1] = '\0';
-    else *slash = '\0';
     size_t nb = strlen(base);
     DIR *d = opendir(dir);
     if (d) {
