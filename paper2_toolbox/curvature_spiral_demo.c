@@ -91,8 +91,6 @@ curvature_spiral_notes.md.
 
 static const char *prog = "curvature_spiral_demo";
 static const char *usage =
-    "usage: curvature_spiral_demo [--accuracy low|medium|high|veryHigh] [--initial ellipse|points] [--samples P]\n"
-    "                             [--N NODES] [--out-dir DIR] [--quick]\n"
     "--N is the figure grid (default 101); --samples the size of the point cloud (default 4000).\n"
     "See the comment at the top of curvature_spiral_demo.c.\n";
 
@@ -206,23 +204,14 @@ int main(int argc, char **argv)
     int initial = 0; /* 0 ellipse, 1 points */
     long samples = 4000;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (!strcmp(argv[i], "--initial")) {
-            if (i + 1 >= argc || (strcmp(argv[i + 1], "ellipse") && strcmp(argv[i + 1], "points")))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--initial needs ellipse or points");
-            initial = !strcmp(argv[++i], "points");
-            continue;
-        }
-        if (!strcmp(argv[i], "--samples")) {
-            if (i + 1 >= argc) hj_cli_fail(prog, HJ_EXIT_USAGE, "option --samples needs a value");
-            if (hj_parse_long(argv[++i], "--samples", 3, 10000000, &samples, &err))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-            continue;
-        }
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
+    static const char *const initials[] = {"ellipse", "points", NULL};
+    hj_cli_opt extra[] = {
+        {.name = "--initial", .type = HJ_OPT_CHOICE, .value = &initial, .choices = initials, .metavar = "I",
+         .help = "initial spiral: from the ellipse construction, or the distance to sampled points"},
+        {.name = "--samples", .type = HJ_OPT_LONG, .value = &samples, .min = 3, .max = 10000000, .metavar = "P",
+         .help = "size of the point cloud"},
+    };
+    p2_parse_demo(&o, argc, argv, NULL, NULL, extra, 2);
     double tspan[9], area[9];
     hj_ls_seq_times(0, 1, 9, tspan);
     const double b = 0.075;

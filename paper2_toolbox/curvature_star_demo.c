@@ -92,7 +92,7 @@ int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
-    p2_parse_demo(&o, argc, argv, "--split-flow", &only);
+    p2_parse_demo(&o, argc, argv, "--split-flow", &only, NULL, 0);
     hj_error err;
     const double b0 = 0.02;
     const double tspan[4] = {0, 0.25, 0.5, 1.0};

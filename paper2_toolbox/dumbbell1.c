@@ -296,7 +296,7 @@ static double run_sphere(long n, int order)
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
-    p2_parse_demo(&o, argc, argv, NULL, NULL);
+    p2_parse_demo(&o, argc, argv, NULL, NULL, NULL, 0);
     if (!o.N) o.N = o.quick ? 61 : 101;
     if (o.N % 4 != 1) hj_cli_fail(prog, HJ_EXIT_USAGE, "--N must be 1 more than a multiple of 4 (got %ld)", o.N);
     hj_error err;

@@ -93,7 +93,7 @@ int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
-    p2_parse_demo(&o, argc, argv, "--reverse-flow", &only);
+    p2_parse_demo(&o, argc, argv, "--reverse-flow", &only, NULL, 0);
     hj_error err;
     const double a0 = 0.25;
     double tspan[9];

@@ -58,30 +58,7 @@ int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int 
     return opt;
 }
 
-int p2_common_option(p2_opts *o, int argc, char **argv, int *i)
-{
-    const char *a = argv[*i];
-    hj_error err;
-    if (!strcmp(a, "--help")) {
-        printf("%s", o->usage);
-        exit(0);
-    }
-    if (!strcmp(a, "--quick")) {
-        o->quick = 1;
-        return 1;
-    }
-    if (strcmp(a, "--accuracy") && strcmp(a, "--N") && strcmp(a, "--out-dir")) return 0;
-    if (*i + 1 >= argc) hj_cli_fail(o->prog, HJ_EXIT_USAGE, "option %s needs a value", a);
-    const char *v = argv[++*i];
-    int rc = HJ_OK;
-    if (!strcmp(a, "--out-dir")) o->out_dir = v;
-    else if (!strcmp(a, "--accuracy")) rc = hj_ls_accuracy_parse(v, &o->acc, &err);
-    else rc = hj_parse_long(v, "--N", 11, 801, &o->N, &err);
-    if (rc) hj_cli_fail(o->prog, HJ_EXIT_USAGE, "%s", err.msg);
-    return 1;
-}
-
-void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value)
+void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value, hj_cli_opt *extra, int nextra)
 {
     static const char *levels[HJ_LS_NACC + 1];
     for (int k = 0; k < HJ_LS_NACC; k++) levels[k] = hj_ls_accuracy_name(k);
@@ -98,10 +75,17 @@ void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *val
         {.name = flag, .type = HJ_OPT_CHOICE, .value = &choice, .choices = binary, .metavar = "0|1",
          .help = "run only this case", .dflt = "both cases"},
     };
-    hj_cli_spec spec = {o->prog, "A demo of Mitchell's Toolbox of Level Set Methods (2004), section 2.", opts,
-                        flag ? 5 : 4, o->usage};
+    enum { NCOMMON = 5, MAXOPTS = 16 };
+    hj_cli_opt all[MAXOPTS];
+    const int ncommon = flag ? NCOMMON : NCOMMON - 1;
+    if (ncommon + nextra > MAXOPTS) hj_cli_fail(o->prog, HJ_EXIT_RUN, "too many options for p2_parse_demo");
+    memcpy(all, opts, sizeof opts[0] * (size_t)ncommon);
+    if (nextra) memcpy(all + ncommon, extra, sizeof extra[0] * (size_t)nextra);
+    hj_cli_spec spec = {o->prog, "A demo of Mitchell's Toolbox of Level Set Methods (2004), section 2.", all,
+                        ncommon + nextra, o->usage};
     hj_cli_parse_or_exit(&spec, argc, argv);
-    if (flag && opts[4].seen) *value = choice;
+    if (flag && all[4].seen) *value = choice;
+    for (int k = 0; k < nextra; k++) extra[k].seen = all[ncommon + k].seen;
     hj_error err;
     p2_fail_if(o->prog, hj_mkdirs(o->out_dir, &err), &err);
 }

@@ -10,6 +10,7 @@
 #ifndef P2_CLI_H
 #define P2_CLI_H
 
+#include "hj_cli.h"
 #include "hj_error.h"
 #include "hj_io.h"
 #include "hj_ls_grid.h"
@@ -33,10 +34,7 @@ int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int 
               int nvalued, int *quick, const char **value);
 
 /* Options of the section 2.3-2.4 demos: --accuracy, --N, --out-dir,
- * --quick, --help.  p2_common_option consumes argv[*i] (and its value)
- * when it is one of them and returns 1; 0 when it is another option.
- * --help prints usage and ends the program; bad values end it through
- * hj_cli_fail. */
+ * --quick, --help. */
 typedef struct {
     const char *prog, *usage;
     int acc;        /* HJ_LS_ACC_* */
@@ -44,14 +42,14 @@ typedef struct {
     const char *out_dir;
     int quick;
 } p2_opts;
-int p2_common_option(p2_opts *o, int argc, char **argv, int *i);
 
-/* The whole command line of a demo that takes the options above and at
- * most one 0|1 switch (flag, e.g. --reverse-flow; NULL: none; *value is
- * left as it is unless the switch is given), read through hj_cli's option
- * table (usage is the text printed after the options by --help); anything
- * else ends the program.  Then the output directory is created. */
-void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value);
+/* The whole command line of a demo that takes the options above, at most
+ * one 0|1 switch (flag, e.g. --reverse-flow; NULL: none; *value is left as
+ * it is unless the switch is given) and the demo's own options extra[0 ..
+ * nextra - 1] (their `seen` is set), read through hj_cli's option table
+ * (usage is the text printed after the options by --help); anything else
+ * ends the program.  Then the output directory is created. */
+void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value, hj_cli_opt *extra, int nextra);
 
 /* End the program with the error's message when rc != 0. */
 void p2_fail_if(const char *prog, int rc, const hj_error *err);

@@ -114,7 +114,7 @@ int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
     int only = -1; /* -1: both cases */
-    p2_parse_demo(&o, argc, argv, "--rigid", &only);
+    p2_parse_demo(&o, argc, argv, "--rigid", &only, NULL, 0);
     if (!o.N) o.N = o.quick ? 101 : 201; /* the figure grid: 201^2 as in the text, 101^2 in quick mode */
     hj_error err;
     double tspan[9];

@@ -70,7 +70,6 @@ values in published/triple_sine.tsv), triple_sine_notes.md.
 
 static const char *prog = "triple_sine";
 static const char *usage =
-    "usage: triple_sine [--b VALUE] [--accuracy low|medium|high|veryHigh] [--N NODES] [--out-dir DIR] [--quick]\n"
     "Without --b the three cases b = 0.1, 0.025, 0 of Figure 12 are run; --N is the figure grid\n"
     "(default 200, 100 with --quick).  See the comment at the top of triple_sine.c.\n";
 
@@ -129,19 +128,12 @@ int main(int argc, char **argv)
     double bs[3] = {0.1, 0.025, 0};
     int nb = 3;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        if (p2_common_option(&o, argc, argv, &i)) continue;
-        if (!strcmp(argv[i], "--b")) {
-            if (i + 1 >= argc) hj_cli_fail(prog, HJ_EXIT_USAGE, "option --b needs a value");
-            if (hj_parse_double(argv[++i], "--b", 0, 10, &bs[0], &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-            nb = 1;
-            continue;
-        }
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-    }
+    hj_cli_opt extra[] = {{.name = "--b", .type = HJ_OPT_DOUBLE, .value = &bs[0], .min = 0, .max = 10, .metavar = "VALUE",
+                           .help = "run only this b", .dflt = "the three of Figure 12"}};
+    p2_parse_demo(&o, argc, argv, NULL, NULL, extra, 1);
+    if (extra[0].seen) nb = 1;
     if (!o.N) o.N = o.quick ? 100 : 200;
     if (o.N % 2) hj_cli_fail(prog, HJ_EXIT_USAGE, "--N must be even (x_1 = 1 must be a node)");
-    p2_fail_if(prog, hj_mkdirs(o.out_dir, &err), &err);
     double tspan[12];
     hj_ls_seq_times(0, 0.5, 12, tspan);
 
