@@ -90,9 +90,8 @@ curvature_spiral_notes.md.
 #include "hj_math.h"
 
 static const char *prog = "curvature_spiral_demo";
-static const char *usage =
-    "--N is the figure grid (default 101); --samples the size of the point cloud (default 4000).\n"
-    "See the comment at the top of curvature_spiral_demo.c.\n";
+/* After the options in --help (the source's comment says the rest). */
+static const char *usage = "--N is the figure grid; see the comment at the top of curvature_spiral_demo.c.\n";
 
 
 /* spiralFromEllipse: min over five theta copies of sqrt(y^T M y) - d. */
