@@ -19,7 +19,7 @@ P3_OUT := $(RESULTS)/paper3
 P3_2D := $(addprefix $(P3_OUT)/,table6.tsv table7.tsv table8.tsv table9.tsv table10.tsv \
            fig06_rendezvous.dat fig07_deformation.dat fig08_deformation.dat)
 P3_ND := $(addprefix $(P3_OUT)/,table11.tsv table12.tsv table13.tsv)
-P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv table4_limits.md fig05_fronts.dat)
+P3_STORE := $(addprefix $(P3_OUT)/,table1.tsv table2.tsv table3.tsv table4.tsv fig05_fronts.dat)
 P3_HJB := $(P3_OUT)/table5.tsv
 P3_RESULTS := $(P3_STORE) $(P3_HJB) $(P3_2D) $(P3_ND)
 

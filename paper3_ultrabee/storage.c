@@ -45,8 +45,8 @@ n = 800, 660 s) have no published value.
 Table 1.  Table 3: 50 ... 800.  Table 4: 100 ... 800.  `--quick`: the two
 smallest sizes of each group.
 
-**Output.** table1.tsv ... table4.tsv; table4_limits.md (the runs under
-the 4 GB limit, for the report); fig05_fronts.dat, the band F+ u F- of
+**Output.** table1.tsv ... table4.tsv (table4.tsv also holds the runs under the
+4 GB limit, which notes/table4_limits.md presents); fig05_fronts.dat, the band F+ u F- of
 both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 (fig05.png, plot/fig05.gp).
 */
@@ -399,10 +399,6 @@ static void memory_table(const p3_args *a, hj_error *err)
     fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
     double mb[NSK][4];
     const int ns = a->quick ? 2 : 4;
-    const char *lim[4][2];
-    long nbs[4];
-    double bpn[4]; /* SSD's bytes per band node */
-    int rows = 0;
     for (int i = 0; i < ns; i++) {
         if (a->max_n && sizes[i] > a->max_n) break;
         p3_front f = {1, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
@@ -423,27 +419,11 @@ static void memory_table(const p3_args *a, hj_error *err)
             char b1[32], b2[32];
             fprintf(out.fp, "\t%s\t%s", p3_num(b1, mb[k][i]), p3_num(b2, i ? mb[k][i] / mb[k][i - 1] : NAN));
         }
-        char bn[32];
-        lim[i][0] = under_4gb(HJ_BAND_FS, f.n);
-        lim[i][1] = under_4gb(HJ_BAND_FLS, f.n);
-        nbs[i] = (long)nb;
-        bpn[i] = mb[4][i] * 1e6 / (double)nb; /* SEARCH_KINDS[4] is SSD */
-        rows = i + 1;
-        fprintf(out.fp, "\t%s\t%s\t%s\n", p3_num(bn, bpn[i]), lim[i][0], lim[i][1]);
+        char bn[32]; /* SSD's bytes per band node (SEARCH_KINDS[4] is SSD) */
+        fprintf(out.fp, "\t%s\t%s\t%s\n", p3_num(bn, mb[4][i] * 1e6 / (double)nb), under_4gb(HJ_BAND_FS, f.n),
+                under_4gb(HJ_BAND_FLS, f.n));
         fflush(out.fp);
     }
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
-
-    /* The report's view of the runs under the 4 GB limit. */
-    if (p3_open(&out, a->out_dir, "table4_limits.md", err)) p3_die(a->prog, err);
-    fprintf(out.fp, "\nThe full structures built once more under a 4 GB address-space limit (setrlimit RLIMIT_AS = 4e9 "
-                    "bytes), as on the paper's 4 GB laptop, beside their size without the limit:\n\n"
-                    "| N | N_nb | FS (MB) | FS under 4 GB | FLS (MB) | FLS under 4 GB | SSD bytes per band node |\n"
-                    "|---|---|---|---|---|---|---|\n");
-    for (int i = 0; i < rows; i++)
-        fprintf(out.fp, "| %ld | %ld | %.0f | %s | %.0f | %s | %.1f |\n", sizes[i], nbs[i], mb[0][i], lim[i][0], mb[1][i],
-                lim[i][1], bpn[i]);
-    fputc('\n', out.fp);
     if (hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 

@@ -144,7 +144,11 @@ md=$tmp/report.md
             for f in $figs; do
                 case $f in
                 -) ;;
-                *.md) if [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'
+                *.md) if [ -f "$dir/notes/$f" ] && awk -v dir="$res/$name" -f report/note.awk "$dir/notes/$f" > "$tmp/note.md"; then
+                          cat "$tmp/note.md"; printf '\n'
+                      elif [ -f "$dir/notes/$f" ] && [ -z "$quick" ] && [[ $src != bench_* ]]; then
+                          cat "$tmp/note.md"; printf '\n'   # with its **missing: ...** marks
+                      elif [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'
                       elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
                       elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
                       else printf '\n*missing: %s*\n\n' "$f"; fi ;;
