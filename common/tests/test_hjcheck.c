@@ -1,7 +1,9 @@
 /* The accuracy-regression gate: hjcheck on small synthetic tables.  It must
  * fail when a cell becomes worse than its accepted verdict, skip rows a quick
- * run did not compute, never compare ambiguous cells, and reject malformed
- * published tables. */
+ * run did not compute, never compare ambiguous cells, reject malformed
+ * published tables, and merge a table's paper, exact and regression values
+ * (reference/) into one, refusing a cell defined twice and a row that is
+ * not the table's. */
 #include "hj_test.h"
 
 #include <sys/stat.h>
@@ -58,6 +60,13 @@ static int make_tree(void **state)
     mkdir(path, 0777);
     snprintf(path, sizeof path, "%s/res/p", dir);
     mkdir(path, 0777);
+    /* a second paper in the reference layout */
+    const char *ref_dirs[] = {"ref", "ref/reference", "ref/reference/paper", "ref/reference/exact",
+                              "ref/reference/regression"};
+    for (size_t i = 0; i < sizeof ref_dirs / sizeof *ref_dirs; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, ref_dirs[i]);
+        mkdir(path, 0777);
+    }
     return 0;
 }
 
@@ -234,30 +243,149 @@ static void bad_inputs(void **state)
     assert_non_null(strstr(out_text, "--results needs a value"));
 }
 
-/* Every reference cell says what it is; a regression value carries its
- * commit; a column that '# origin:' does not name is an error. */
-static void origins_named(void **state)
+/* published/ holds paper values only: the old per-cell '# origin:' and
+ * '# commit:' are refused, so no exact or regression value hides there. */
+static void published_is_paper(void **state)
 {
     (void)state;
     write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
-    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=exact L1[N=80]=regression iter=paper\n"
-                                        "# commit: abc1234\nN\tL1\titer\n40\t1.0e-3\t10\n80\t1.25e-4\t10\n");
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\nN\tL1\n40\t1.0e-3\n");
     assert_int_equal(run_check(""), 0);
-    const char *c = read_back("res/p/t.check.tsv");
-    assert_non_null(strstr(c, "N=40\tL1\terror\t1.0e-3\t0.001\t1\tmatch\tmatch\t\texact\n"));
-    assert_non_null(strstr(c, "N=80\tL1\terror\t1.25e-4\t0.000125\t1\tmatch\tmatch\t\tregression@abc1234\n"));
-    assert_non_null(strstr(c, "iter\tcount\t10\t10\t1\tmatch\tmatch\t\tpaper\n"));
-    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=regression iter=paper\n"
-                                        "N\tL1\titer\n40\t1.0e-3\t10\n");
-    expect("", 2, "need '# commit:'");
-    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error iter=count\n# origin: L1=exact\n"
-                                        "N\tL1\titer\n40\t1.0e-3\t10\n");
-    expect("", 2, "does not name this column");
-    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\n# origin: L1=guess\nN\tL1\n40\t1.0e-3\n");
-    assert_int_equal(run_check(""), 2);
+    assert_non_null(strstr(read_back("res/p/t.check.tsv"), "N=40\tL1\terror\t1.0e-3\t0.001\t1\tmatch\tmatch\t\tpaper\n"));
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\n# origin: L1=exact\nN\tL1\n40\t1.0e-3\n");
+    expect("", 2, "published/ holds paper values only");
+    write_file("paper/published/t.tsv", "# key: N\n# kind: L1=error\n# commit: abc1234\nN\tL1\n40\t1.0e-3\n");
+    expect("", 2, "published/ holds paper values only");
+}
+
+/* hjcheck on the reference-layout paper ref, as r. */
+static int run_ref(const char *flags)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "%s --results %s/res %s r=%s/ref", HJCHECK, dir, flags, dir);
+    return hj_test_shell(cmd, 1, out_text, sizeof out_text);
+}
+
+static void expect_ref(int status, const char *text)
+{
+    assert_int_equal(run_ref(""), status);
+    if (!strstr(out_text, text)) fail_msg("hjcheck: no '%s' in:\n%s", text, out_text);
+}
+
+/* A consistent reference/ tree: the definition (rows 40 and 80), the
+ * exact L1 (rows in another order), one paper and one regression count. */
+static void write_reference(void)
+{
+    write_file("ref/reference/t.tsv", "# key: N\n# kind: L1=error iter=count\nN\n40\n80\n");
+    write_file("ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\n80\t1.25e-4\n40\t1.0e-3\n");
+    write_file("ref/reference/paper/t.tsv", "# source: Table 1\nN\titer\n40\t10\n");
+    write_file("ref/reference/regression/t.tsv", "# source: our run\n# commit: abc1234\nN\tL1\titer\n80\t-\t10\n");
+    write_file("res/r/t.tsv", "N\tL1\titer\n40\t1.0e-3\t10\n80\t1.25e-4\t10\n");
+}
+
+/* Each cell's origin is its directory; rows come in the definition's order. */
+static void reference_merged(void **state)
+{
+    (void)state;
+    char path[256];
+    snprintf(path, sizeof path, "%s/res/r", dir);
+    mkdir(path, 0777);
+    write_reference();
+    expect_ref(0, "r t: 4 match, 0 close, 0 differ");
+    const char *c = read_back("res/r/t.check.tsv");
+    assert_non_null(strstr(c, "with "));
+    assert_non_null(strstr(c, "/ref/reference/{paper,exact,regression}/t.tsv\n"));
+    const char *l40 = strstr(c, "N=40\tL1\terror\t1.0e-3\t0.001\t1\tmatch\tmatch\t\texact\n");
+    const char *i40 = strstr(c, "N=40\titer\tcount\t10\t10\t1\tmatch\tmatch\t\tpaper\n");
+    const char *l80 = strstr(c, "N=80\tL1\terror\t1.25e-4\t0.000125\t1\tmatch\tmatch\t\texact\n");
+    const char *i80 = strstr(c, "N=80\titer\tcount\t10\t10\t1\tmatch\tmatch\t\tregression@abc1234\n");
+    assert_true(l40 && i40 && l80 && i80);
+    assert_true(l40 < i40 && i40 < l80 && l80 < i80);
+    /* blessing works on merged tables too */
+    write_file("res/r/t.tsv", "N\tL1\titer\n40\t3.0e-3\t10\n80\t1.25e-4\t10\n");
+    expect_ref(1, "check: 3 passed, 1 failed");
+    assert_int_equal(run_ref("--accept t --reason coarse --reason-text 'too coarse'"), 0);
+    assert_non_null(strstr(read_back("ref/accepted.tsv"), "t\tN=40\tL1\tdiffers\tcoarse\n"));
+    expect_ref(0, "check: 4 passed, 0 failed");
+    remove_rel("ref/accepted.tsv");
+    remove_rel("ref/reasons.tsv");
+}
+
+/* A broken reference/ tree: one message naming the file, exit 2. */
+static void reference_refused(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *file, *text, *message;
+    } cases[] = {
+        /* a cell with a value in two files */
+        {"ref/reference/paper/t.tsv", "# source: Table 1\nN\titer\n40\t10\n80\t12\n", "N=80): iter has a value in paper/ already"},
+        /* a row that is not one of the definition's */
+        {"ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\n40\t1.0e-3\n160\t3e-5\n", "row 2 (N=160) is not a row of"},
+        /* the same row twice in one file */
+        {"ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\n40\t1.0e-3\n40\t1.0e-3\n", "a cell is defined once"},
+        /* a row of the definition that no file gives a value */
+        {"ref/reference/t.tsv", "# key: N\n# kind: L1=error iter=count\nN\n40\n80\n160\n", "row 3 (N=160) has no value"},
+        /* a row written twice in the definition */
+        {"ref/reference/t.tsv", "# key: N\n# kind: L1=error iter=count\nN\n40\n80\n40\n", "row 3 (N=40) twice"},
+        /* values in the definition */
+        {"ref/reference/t.tsv", "# key: N\n# kind: L1=error\nN\tL1\n40\t1e-3\n", "are the '# key:' columns"},
+        /* a '# kind:' column that no file gives a value */
+        {"ref/reference/t.tsv", "# key: N\n# kind: L1=error iter=count L2=error\nN\n40\n80\n", "column 'L2' has no value"},
+        /* a row of a values file without a value */
+        {"ref/reference/paper/t.tsv", "# source: Table 1\nN\titer\n40\t10\n80\t-\n", "holds no value"},
+        /* a column that the definition does not name */
+        {"ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\tLinf\n80\t1.25e-4\t1\n40\t1.0e-3\t1\n", "neither a key"},
+        /* a values file without its key columns */
+        {"ref/reference/exact/t.tsv", "# source: by hand\nL1\n1.0e-3\n", "key column 'N' missing"},
+        /* no '# source:' */
+        {"ref/reference/exact/t.tsv", "N\tL1\n80\t1.25e-4\n40\t1.0e-3\n", "needs '# source:'"},
+        /* regression values without their commit, a commit elsewhere */
+        {"ref/reference/regression/t.tsv", "# source: our run\nN\titer\n80\t10\n", "need '# commit:'"},
+        {"ref/reference/exact/t.tsv", "# source: by hand\n# commit: abc1234\nN\tL1\n80\t1.25e-4\n40\t1.0e-3\n",
+         "stamps regression values only"},
+        /* header fields of the definition in a values file */
+        {"ref/reference/exact/t.tsv", "# source: by hand\n# kind: L1=error\nN\tL1\n80\t1.25e-4\n40\t1.0e-3\n",
+         "belong in"},
+        /* unreadable-in-the-source is for paper values; numbers elsewhere */
+        {"ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\n80\t?\n40\t1.0e-3\n", "is for paper values only"},
+        {"ref/reference/exact/t.tsv", "# source: by hand\nN\tL1\n80\t1.25e-4x\n40\t1.0e-3\n", "is not a number"},
+        /* values of a table that has no definition */
+        {"ref/reference/exact/u.tsv", "# source: by hand\nN\tL1\n40\t1.0e-3\n", "no table"},
+        /* a paper with both layouts */
+        {"ref/published/t.tsv", "# key: N\n# kind: L1=error\nN\tL1\n40\t1.0e-3\n", "has both"},
+    };
+    char path[256];
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        write_reference();
+        if (!strncmp(cases[i].file, "ref/published/", 14)) {
+            snprintf(path, sizeof path, "%s/ref/published", dir);
+            mkdir(path, 0777);
+        }
+        write_file(cases[i].file, cases[i].text);
+        assert_int_equal(run_ref(""), 2);
+        if (!strstr(out_text, cases[i].message)) fail_msg("case %zu: no '%s' in:\n%s", i, cases[i].message, out_text);
+        remove_rel("ref/reference/exact/u.tsv");
+        remove_rel("ref/published/t.tsv");
+        snprintf(path, sizeof path, "%s/ref/published", dir);
+        rmdir(path);
+    }
+    /* a table without any values, and a paper with neither layout */
+    write_reference();
+    remove_rel("ref/reference/exact/t.tsv");
+    remove_rel("ref/reference/paper/t.tsv");
+    remove_rel("ref/reference/regression/t.tsv");
+    expect_ref(2, "no values");
+    assert_int_equal(run_check("--results /nonexistent"), 2);
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "%s --results %s/res q=%s/res", HJCHECK, dir, dir);
+    assert_int_equal(hj_test_shell(cmd, 1, out_text, sizeof out_text), 2);
+    assert_non_null(strstr(out_text, "has neither"));
+    write_reference();
 }
 
 HJ_TEST_MAIN("hjcheck", make_tree, hj_test_rmdir, cmocka_unit_test(all_match), cmocka_unit_test(regression_fails),
              cmocka_unit_test(missing_and_quick), cmocka_unit_test(ratios_not_gated),
              cmocka_unit_test(malformed_published), cmocka_unit_test(accept_blesses),
-             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(bad_inputs), cmocka_unit_test(origins_named))
+             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
+             cmocka_unit_test(reference_merged), cmocka_unit_test(reference_refused))

@@ -1,10 +1,10 @@
-/* hjcheck -- compare every published cell with the computed one.
+/* hjcheck -- compare every reference cell with the computed one.
  *
  * Usage: hjcheck --results DIR [--quick] [--no-fail] [--rules] NAME=PAPERDIR ...
  *
- * For each NAME=PAPERDIR (e.g. paper1=paper1_fastsweeping) and each
- * published table PAPERDIR/published/<table>.tsv it reads the computed
- * table DIR/NAME/<table>.tsv, gives every published cell a verdict (rules in
+ * For each NAME=PAPERDIR (e.g. paper1=paper1_fastsweeping) and each of its
+ * reference tables (below) it reads the computed table
+ * DIR/NAME/<table>.tsv, gives every reference cell a verdict (rules in
  * common/hj_compare.h), writes DIR/NAME/<table>.check.tsv and prints
  *     NAME <table>: a match, b close, c differ[, ...]
  * then, last,
@@ -32,22 +32,42 @@
  * Exit status 1 if any cell failed (unless --no-fail), 2 on bad usage or
  * unreadable input.
  *
- * Published table format: TSV with header fields
- *     # source: <paper, table, page>
- *     # key: <key columns, space separated>
- *     # kind: <column>=<error|order|count|ratio|value> ...
- *     # origin: <column>[<keycolumn>=<value>]=<paper|exact|regression> ...
- *     # commit: <the commit whose run made the regression values>
- * A cell "-" or empty is not a published value; "?" is ambiguous.
+ * References say what they are, and where they live says it.  A reference
+ * value is transcribed from the paper ("paper"), an exact value from a
+ * formula or a hand computation that its file's '# source:' names
+ * ("exact"), or a regression value, the accepted result of one of our own
+ * runs ("regression", stamped with the run's '# commit:').  The check table
+ * gives each cell's reference: paper, exact or regression@<commit>.  A
+ * paper keeps its references in one of two layouts:
  *
- * References say what they are: each reference cell is a value transcribed
- * from the paper ("paper", the default for a table without '# origin:'),
- * an exact value (a formula or a hand computation that the '# source:' line
- * names: "exact"), or a regression value, the accepted result of one of our
- * own runs ("regression", stamped with '# commit:').  With '# origin:' every
- * compared column must be named; an entry qualified by a key column value
- * takes precedence for the rows it selects.  The check table gives each
- * cell's reference ("paper", "exact" or "regression@<commit>").
+ *   PAPERDIR/published/<table>.tsv   paper values only, one file a table:
+ *       # source: <paper, table, page>
+ *       # key: <key columns, space separated>
+ *       # kind: <column>=<error|order|count|ratio|value> ...
+ *     then the key and value columns.
+ *
+ *   PAPERDIR/reference/<table>.tsv   the table's definition: '# key:' and
+ *     '# kind:' as above, and its rows, key columns only, in the order
+ *     of the check table (the files of one kind each hold some rows and
+ *     cannot say how these interleave); every row has a value somewhere
+ *     below, every '# kind:' column too.
+ *   PAPERDIR/reference/paper/<table>.tsv       (each optional, at least one)
+ *   PAPERDIR/reference/exact/<table>.tsv
+ *   PAPERDIR/reference/regression/<table>.tsv
+ *     the values of that kind: '# source:' for them ('# commit:' too in
+ *     regression/), the key columns and the '# kind:' columns that have
+ *     values of this kind, and only the rows that have one.  The merge
+ *     refuses a row that is not one of the definition's, and a cell with
+ *     a value in two files (or twice in one).
+ *
+ * In both, a cell "-" or empty has no value (in reference/, the cells of
+ * a row that are of another kind); "?" is a paper value unreadable in the
+ * source (shown, never compared).  Papers 1 and 3 keep published/: every
+ * value they check is transcribed, so one self-contained file a table
+ * (the form their own scripts read) says all there is, and a definition
+ * beside a single paper/ file would only double the files.  Paper 2
+ * publishes almost no numbers and mixes all three kinds, hence reference/.
+ *
  * The computed table has the same key and quantity columns (more columns
  * are allowed and ignored).
  */
@@ -244,77 +264,292 @@ static int split_words(char *s, char **w, int max)
 
 enum { MAXCOLS = 64 };
 
+/* What a reference value is; in the reference layout, also the name of
+ * the directory that holds it. */
+enum { ORIGIN_PAPER, ORIGIN_EXACT, ORIGIN_REGRESSION, NORIGIN };
+static const char *const origin_names[NORIGIN] = {"paper", "exact", "regression"};
+
+/* The reference values of one table, merged from its files. */
 typedef struct {
-    char col[128], keycol[128], keyval[128];
-    int origin; /* 0 paper, 1 exact, 2 regression */
-} origin_entry;
+    hj_table t;          /* key columns, then the compared ones; the header fields of the table's definition */
+    signed char *origin; /* ORIGIN_* of cell (r, c) at r * t.ncols + c; -1 where there is no value */
+    char *commit;        /* the commit of the regression values, or NULL */
+    char path[4096];     /* the definition (or published table), for messages */
+    char files[4096];    /* the files the values come from */
+} reference;
 
-static const char *const origin_names[] = {"paper", "exact", "regression"};
-
-/* Parse '# origin:' into at most max entries; -1 with a message on error. */
-static int parse_origins(const char *meta, const char *path, origin_entry *o, int max)
+static void free_reference(reference *ref)
 {
-    char buf[4096];
-    char *w[MAXCOLS];
-    if (strlen(meta) >= sizeof buf) return fprintf(stderr, "%s: %s: '# origin:' is too long\n", prog, path), -1;
-    snprintf(buf, sizeof buf, "%s", meta);
-    int n = split_words(buf, w, max);
-    if (n < 0) return fprintf(stderr, "%s: %s: '# origin:' has more than %d entries\n", prog, path, max), -1;
-    for (int k = 0; k < n; k++) {
-        char *eq = strrchr(w[k], '=');
-        if (!eq) return fprintf(stderr, "%s: %s: malformed origin '%s'\n", prog, path, w[k]), -1;
-        *eq = '\0';
-        o[k].origin = -1;
-        for (int c = 0; c < 3; c++)
-            if (!strcmp(eq + 1, origin_names[c])) o[k].origin = c;
-        o[k].keycol[0] = o[k].keyval[0] = '\0';
-        char *br = strchr(w[k], '[');
-        if (br) {
-            char *inner = br + 1, *close = strchr(inner, ']'), *ieq = strchr(inner, '=');
-            if (!close || close[1] || !ieq || ieq > close) o[k].origin = -1;
-            else {
-                *close = '\0', *ieq = '\0', *br = '\0';
-                snprintf(o[k].keycol, sizeof o[k].keycol, "%s", inner);
-                snprintf(o[k].keyval, sizeof o[k].keyval, "%s", ieq + 1);
-            }
-        }
-        if (o[k].origin < 0 || strlen(w[k]) >= sizeof o[k].col)
-            return fprintf(stderr, "%s: %s: malformed origin entry (column[key=value]=paper|exact|regression)\n", prog, path), -1;
-        snprintf(o[k].col, sizeof o[k].col, "%s", w[k]);
-    }
-    return n;
+    hj_table_free(&ref->t);
+    free(ref->origin);
+    free(ref->commit);
+    ref->origin = NULL, ref->commit = NULL;
 }
 
-/* The origin of column q in row r of pub: a qualified entry first. */
-static int cell_origin(const hj_table *pub, int r, const char *q, const origin_entry *o, int n)
+/* Whether path is a directory. */
+static int is_dir(const char *path)
 {
-    for (int k = 0; k < n; k++) {
-        if (strcmp(o[k].col, q) || !o[k].keycol[0]) continue;
-        int c = hj_table_col(pub, o[k].keycol);
-        if (c >= 0 && !strcmp(pub->cells[r][c], o[k].keyval)) return o[k].origin;
-    }
-    for (int k = 0; k < n; k++)
-        if (!strcmp(o[k].col, q) && !o[k].keycol[0]) return o[k].origin;
+    DIR *d = opendir(path);
+    if (d) closedir(d);
+    return d != NULL;
+}
+
+/* The layout of a paper's references: 1 for PAPERDIR/reference/, 0 for
+ * PAPERDIR/published/, -1 (with err) for both or neither. */
+static int reference_layout(const char *paperdir, hj_error *err)
+{
+    char pub[4096], ref[4096];
+    snprintf(pub, sizeof pub, "%s/published", paperdir);
+    snprintf(ref, sizeof ref, "%s/reference", paperdir);
+    int p = is_dir(pub), r = is_dir(ref);
+    if (p != r) return r;
+    hj_error_set(err, HJ_EFORMAT, "%s: needs one of published/ and reference/, has %s", paperdir,
+                 p ? "both" : "neither");
     return -1;
+}
+
+/* Append column name to t, every cell "-" (no value).  On failure t stays
+ * consistent for hj_table_free. */
+static int add_column(hj_table *t, const char *name)
+{
+    char **cols = realloc(t->cols, ((size_t)t->ncols + 1) * sizeof *cols);
+    if (!cols) return -1;
+    t->cols = cols;
+    for (int r = 0; r < t->nrows; r++) {
+        char **row = realloc(t->cells[r], ((size_t)t->ncols + 1) * sizeof *row);
+        if (!row) return -1;
+        t->cells[r] = row;
+        row[t->ncols] = NULL;
+    }
+    int c = t->ncols++;
+    int ok = (cols[c] = strdup(name)) != NULL;
+    for (int r = 0; ok && r < t->nrows; r++) ok = (t->cells[r][c] = strdup("-")) != NULL;
+    return ok ? 0 : -1;
+}
+
+/* The row of ref whose key columns (the first nkey) equal those of row r
+ * of k, or -1. */
+static int find_row(const hj_table *ref, int nkey, const hj_table *k, int r)
+{
+    for (int i = 0; i < ref->nrows; i++) {
+        int same = 1;
+        for (int c = 0; c < nkey && same; c++)
+            same = !strcmp(ref->cells[i][c], k->cells[r][hj_table_col(k, ref->cols[c])]);
+        if (same) return i;
+    }
+    return -1;
+}
+
+/* The key of row r of t (its first nkey columns) as "a=1,b=2". */
+static const char *row_key(const hj_table *t, int nkey, int r, char *buf, size_t size)
+{
+    buf[0] = '\0';
+    for (int c = 0; c < nkey; c++) {
+        size_t len = strlen(buf);
+        snprintf(buf + len, size - len, "%s%s=%s", c ? "," : "", t->cols[c], t->cells[r][c]);
+    }
+    return buf;
+}
+
+/* Merge the values of one kind, PAPERDIR/reference/<kind>/<table>.tsv, into
+ * ref: each of its rows is a row of the definition and holds at least one
+ * value; no cell has a value in two files. */
+static int merge_values(reference *ref, int nkey, int origin, const char *path, hj_error *err)
+{
+    hj_table k;
+    int rc = hj_table_read(&k, path, err);
+    if (rc) return rc;
+    char key[1024];
+    const char *source = hj_table_meta(&k, "source"), *commit = hj_table_meta(&k, "commit");
+    if (!source || !source[0])
+        rc = hj_error_set(err, HJ_EFORMAT, "%s: needs '# source:' (where its values come from)", path);
+    else if (origin == ORIGIN_REGRESSION && (!commit || !commit[0]))
+        rc = hj_error_set(err, HJ_EFORMAT, "%s: regression values need '# commit:' (the run that made them)", path);
+    else if (origin != ORIGIN_REGRESSION && commit)
+        rc = hj_error_set(err, HJ_EFORMAT, "%s: '# commit:' stamps regression values only", path);
+    else if (hj_table_meta(&k, "key") || hj_table_meta(&k, "kind") || hj_table_meta(&k, "origin"))
+        rc = hj_error_set(err, HJ_EFORMAT, "%s: '# key:' and '# kind:' belong in %s, and the directory gives the kind "
+                                           "of value ('# origin:' is gone)", path, ref->path);
+    for (int c = 0; !rc && c < k.ncols; c++) {
+        int at = hj_table_col(&ref->t, k.cols[c]);
+        if (at < 0)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: column '%s' is neither a key nor a '# kind:' column of %s", path,
+                              k.cols[c], ref->path);
+        else if (hj_table_col(&k, k.cols[c]) != c)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: column '%s' twice", path, k.cols[c]);
+    }
+    for (int c = 0; !rc && c < nkey; c++)
+        if (hj_table_col(&k, ref->t.cols[c]) < 0)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: key column '%s' missing", path, ref->t.cols[c]);
+    for (int r = 0; !rc && r < k.nrows; r++) {
+        int row = find_row(&ref->t, nkey, &k, r), nvalues = 0;
+        if (row < 0) {
+            key[0] = '\0';
+            for (int c = 0; c < nkey; c++) {
+                size_t len = strlen(key);
+                snprintf(key + len, sizeof key - len, "%s%s=%s", c ? "," : "", ref->t.cols[c],
+                         k.cells[r][hj_table_col(&k, ref->t.cols[c])]);
+            }
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) is not a row of %s", path, r + 1, key, ref->path);
+            break;
+        }
+        for (int c = 0; !rc && c < k.ncols; c++) {
+            int at = hj_table_col(&ref->t, k.cols[c]);
+            const char *s = k.cells[r][c];
+            double v;
+            if (at < nkey || !s[0] || !strcmp(s, "-")) continue;
+            signed char *o = &ref->origin[(size_t)row * (size_t)ref->t.ncols + (size_t)at];
+            if (!strcmp(s, "?") && origin != ORIGIN_PAPER)
+                rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d, column %s: '?' (unreadable in the source) is for paper "
+                                                   "values only", path, r + 1, k.cols[c]);
+            else if (strcmp(s, "?") && parse_cell(s, &v) != 1)
+                rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d, column %s: '%s' is not a number", path, r + 1, k.cols[c], s);
+            else if (*o >= 0)
+                rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s): %s has a value in %s/ already: a cell is defined "
+                                                   "once", path, r + 1, row_key(&ref->t, nkey, row, key, sizeof key),
+                                  k.cols[c], origin_names[*o]);
+            else {
+                char *copy = strdup(s);
+                if (!copy) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory"); break; }
+                free(ref->t.cells[row][at]);
+                ref->t.cells[row][at] = copy;
+                *o = (signed char)origin;
+                nvalues++;
+            }
+        }
+        if (!rc && !nvalues)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) holds no value: leave it out", path, r + 1,
+                              row_key(&ref->t, nkey, row, key, sizeof key));
+    }
+    if (!rc && origin == ORIGIN_REGRESSION && !(ref->commit = strdup(commit))) rc = hj_error_set(err, HJ_ENOMEM, "out of memory");
+    hj_table_free(&k);
+    return rc;
+}
+
+/* Load PAPERDIR/reference/<table>.tsv, the table's definition ('# key:',
+ * '# kind:' and its rows, key columns only), and merge the values of
+ * reference/{paper,exact,regression}/<table>.tsv into it. */
+static int load_reference_dir(reference *ref, const char *paperdir, const char *table, hj_error *err)
+{
+    char path[4096], buf[4096], key[1024];
+    char *words[MAXCOLS];
+    snprintf(ref->path, sizeof ref->path, "%s/reference/%s.tsv", paperdir, table);
+    int rc = hj_table_read(&ref->t, ref->path, err);
+    if (rc) return rc;
+    const char *keymeta = hj_table_meta(&ref->t, "key"), *kindmeta = hj_table_meta(&ref->t, "kind");
+    if (!keymeta || !kindmeta || strlen(keymeta) >= sizeof buf || strlen(kindmeta) >= sizeof buf)
+        return hj_error_set(err, HJ_EFORMAT, "%s: needs '# key:' and '# kind:' header lines", ref->path);
+    if (hj_table_meta(&ref->t, "source") || hj_table_meta(&ref->t, "origin") || hj_table_meta(&ref->t, "commit"))
+        return hj_error_set(err, HJ_EFORMAT, "%s: '# source:' and '# commit:' go with the values (paper/, exact/, "
+                                             "regression/), and the directory gives the kind of value", ref->path);
+    snprintf(buf, sizeof buf, "%s", keymeta);
+    int nkey = split_words(buf, words, MAXCOLS);
+    if (nkey <= 0 || nkey != ref->t.ncols)
+        return hj_error_set(err, HJ_EFORMAT, "%s: its columns are the '# key:' columns, and only they", ref->path);
+    for (int c = 0; c < nkey; c++)
+        if (strcmp(words[c], ref->t.cols[c]))
+            return hj_error_set(err, HJ_EFORMAT, "%s: its columns are the '# key:' columns, and only they", ref->path);
+    for (int r = 0; r < ref->t.nrows; r++)
+        if (find_row(&ref->t, nkey, &ref->t, r) != r)
+            return hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) twice", ref->path, r + 1,
+                                row_key(&ref->t, nkey, r, key, sizeof key));
+    snprintf(buf, sizeof buf, "%s", kindmeta);
+    int nkind = split_words(buf, words, MAXCOLS);
+    if (nkind < 0) return hj_error_set(err, HJ_EFORMAT, "%s: more than %d '# kind:' columns", ref->path, MAXCOLS);
+    for (int q = 0; q < nkind; q++) {
+        char *eq = strchr(words[q], '=');
+        if (!eq || eq == words[q]) return hj_error_set(err, HJ_EFORMAT, "%s: malformed kind '%s'", ref->path, words[q]);
+        *eq = '\0';
+        if (hj_table_col(&ref->t, words[q]) >= 0)
+            return hj_error_set(err, HJ_EFORMAT, "%s: column '%s' twice in '# key:' and '# kind:'", ref->path, words[q]);
+        if (add_column(&ref->t, words[q])) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+    }
+    size_t ncells = (size_t)ref->t.nrows * (size_t)ref->t.ncols;
+    ref->origin = malloc(ncells + 1);
+    if (!ref->origin) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+    memset(ref->origin, -1, ncells + 1);
+    char kinds[64] = "";
+    int nfiles = 0;
+    for (int o = 0; o < NORIGIN; o++) {
+        snprintf(path, sizeof path, "%s/reference/%s/%s.tsv", paperdir, origin_names[o], table);
+        int p = probe(path, err);
+        if (p < 0) return err->code;
+        if (p == 0) continue;
+        if ((rc = merge_values(ref, nkey, o, path, err))) return rc;
+        size_t len = strlen(kinds);
+        snprintf(kinds + len, sizeof kinds - len, "%s%s", nfiles++ ? "," : "", origin_names[o]);
+    }
+    if (nfiles == 0)
+        return hj_error_set(err, HJ_EFORMAT, "%s: no values: none of reference/{paper,exact,regression}/%s.tsv exists",
+                            ref->path, table);
+    snprintf(ref->files, sizeof ref->files, nfiles > 1 ? "%s/reference/{%s}/%s.tsv" : "%s/reference/%s/%s.tsv",
+             paperdir, kinds, table);
+    /* Every row and every compared column holds a value: a row or column
+     * without one would be dead weight in the definition. */
+    for (int r = 0; r < ref->t.nrows; r++) {
+        int any = 0;
+        for (int c = nkey; c < ref->t.ncols && !any; c++) any = ref->origin[(size_t)r * (size_t)ref->t.ncols + (size_t)c] >= 0;
+        if (!any)
+            return hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) has no value in paper/, exact/ or regression/",
+                                ref->path, r + 1, row_key(&ref->t, nkey, r, key, sizeof key));
+    }
+    for (int c = nkey; c < ref->t.ncols; c++) {
+        int any = 0;
+        for (int r = 0; r < ref->t.nrows && !any; r++) any = ref->origin[(size_t)r * (size_t)ref->t.ncols + (size_t)c] >= 0;
+        if (!any)
+            return hj_error_set(err, HJ_EFORMAT, "%s: column '%s' has no value in paper/, exact/ or regression/",
+                                ref->path, ref->t.cols[c]);
+    }
+    return HJ_OK;
+}
+
+/* Load PAPERDIR/published/<table>.tsv: its header fields and values in one
+ * file, every value transcribed from the paper. */
+static int load_published(reference *ref, const char *paperdir, const char *table, hj_error *err)
+{
+    snprintf(ref->path, sizeof ref->path, "%s/published/%s.tsv", paperdir, table);
+    snprintf(ref->files, sizeof ref->files, "%s", ref->path);
+    int rc = hj_table_read(&ref->t, ref->path, err);
+    if (rc) return rc;
+    if (hj_table_meta(&ref->t, "origin") || hj_table_meta(&ref->t, "commit"))
+        return hj_error_set(err, HJ_EFORMAT, "%s: published/ holds paper values only; exact and regression values go "
+                                             "to reference/ ('# origin:' and '# commit:' are gone)", ref->path);
+    size_t ncells = (size_t)ref->t.nrows * (size_t)ref->t.ncols;
+    ref->origin = calloc(ncells + 1, 1); /* ORIGIN_PAPER everywhere */
+    if (!ref->origin) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+    return HJ_OK;
+}
+
+/* The reference values of table, by the paper's layout. */
+static int load_reference(reference *ref, const char *paperdir, const char *table, hj_error *err)
+{
+    memset(ref, 0, sizeof *ref);
+    int layout = reference_layout(paperdir, err);
+    int rc = layout < 0 ? err->code
+           : layout ? load_reference_dir(ref, paperdir, table, err) : load_published(ref, paperdir, table, err);
+    if (rc) free_reference(ref);
+    return rc;
 }
 
 static int check_table(const char *name, const char *paperdir, const char *table, const char *resdir, int quick,
                        accepted_list *acc, computed_list *collect, tally *total)
 {
-    char path[4096], cpath[4096], opath[4096];
+    char cpath[4096], opath[4096];
     hj_error err;
-    hj_table pub, com;
-    snprintf(path, sizeof path, "%s/published/%s.tsv", paperdir, table);
+    hj_table com;
+    reference ref;
     snprintf(cpath, sizeof cpath, "%s/%s/%s.tsv", resdir, name, table);
     snprintf(opath, sizeof opath, "%s/%s/%s.check.tsv", resdir, name, table);
-    if (hj_table_read(&pub, path, &err)) {
+    if (load_reference(&ref, paperdir, table, &err)) {
         fprintf(stderr, "%s: %s\n", prog, err.msg);
         return -1;
     }
-    const char *keymeta = hj_table_meta(&pub, "key"), *kindmeta = hj_table_meta(&pub, "kind");
+    const hj_table *pub = &ref.t;
+    const char *path = ref.path;
+    const char *keymeta = hj_table_meta(pub, "key"), *kindmeta = hj_table_meta(pub, "kind");
     if (!keymeta || !kindmeta) {
         fprintf(stderr, "%s: %s: needs '# key:' and '# kind:' header lines\n", prog, path);
-        hj_table_free(&pub);
+        free_reference(&ref);
         return -1;
     }
     char keybuf[1024], kindbuf[4096];
@@ -328,14 +563,7 @@ static int check_table(const char *name, const char *paperdir, const char *table
     if (nkey < 0 || nkind < 0) {
         fprintf(stderr, "%s: %s: '# key:' or '# kind:' is longer than %d columns or %zu characters\n", prog, path,
                 MAXCOLS, sizeof keybuf);
-        hj_table_free(&pub);
-        return -1;
-    }
-    const char *originmeta = hj_table_meta(&pub, "origin"), *commit = hj_table_meta(&pub, "commit");
-    origin_entry origins[MAXCOLS];
-    int norigin = originmeta ? parse_origins(originmeta, path, origins, MAXCOLS) : 0;
-    if (norigin < 0) {
-        hj_table_free(&pub);
+        free_reference(&ref);
         return -1;
     }
     int have_com = hj_table_read(&com, cpath, &err) == HJ_OK;
@@ -346,31 +574,31 @@ static int check_table(const char *name, const char *paperdir, const char *table
     snprintf(dir, sizeof dir, "%s/%s", resdir, name);
     if (hj_mkdirs(dir, &err) || hj_out_open(&out, opath, &err)) {
         fprintf(stderr, "%s: %s\n", prog, err.msg);
-        hj_table_free(&pub);
+        free_reference(&ref);
         if (have_com) hj_table_free(&com);
         return -1;
     }
-    fprintf(out.fp, "# comparison of %s/%s with %s\n", name, table, path);
+    fprintf(out.fp, "# comparison of %s/%s with %s\n", name, table, ref.files);
     fprintf(out.fp, "table\tkey\tquantity\tkind\tpublished\tcomputed\tdifference\tverdict\taccepted\treason\treference\n");
     tally t = {{0}, 0, 0, 0};
     int bad = 0;
-    for (int r = 0; r < pub.nrows && !bad; r++) {
+    for (int r = 0; r < pub->nrows && !bad; r++) {
         /* key string and matching computed row */
         char key[1024] = "";
         int crow = -1;
         for (int k = 0; k < nkey; k++) {
-            int c = hj_table_col(&pub, keys[k]);
+            int c = hj_table_col(pub, keys[k]);
             if (c < 0) { fprintf(stderr, "%s: %s: key column '%s' missing\n", prog, path, keys[k]); bad = 1; break; }
             size_t len = strlen(key);
-            snprintf(key + len, sizeof key - len, "%s%s=%s", k ? "," : "", keys[k], pub.cells[r][c]);
+            snprintf(key + len, sizeof key - len, "%s%s=%s", k ? "," : "", keys[k], pub->cells[r][c]);
         }
         if (bad) break;
         if (have_com) {
             for (int cr = 0; cr < com.nrows && crow < 0; cr++) {
                 int same = 1;
                 for (int k = 0; k < nkey && same; k++) {
-                    int pc = hj_table_col(&pub, keys[k]), cc = hj_table_col(&com, keys[k]);
-                    same = cc >= 0 && !strcmp(pub.cells[r][pc], com.cells[cr][cc]);
+                    int pc = hj_table_col(pub, keys[k]), cc = hj_table_col(&com, keys[k]);
+                    same = cc >= 0 && !strcmp(pub->cells[r][pc], com.cells[cr][cc]);
                 }
                 if (same) crow = cr;
             }
@@ -382,25 +610,19 @@ static int check_table(const char *name, const char *paperdir, const char *table
             if (!eq) { fprintf(stderr, "%s: %s: malformed kind '%s'\n", prog, path, kinds[q]); bad = 1; break; }
             *eq = '\0';
             hj_kind kind = hj_kind_from_name(eq + 1);
-            int pc = hj_table_col(&pub, qname);
+            int pc = hj_table_col(pub, qname);
             if (kind == HJ_KIND_UNKNOWN || pc < 0) {
                 fprintf(stderr, "%s: %s: unknown kind or column in '%s'\n", prog, path, kinds[q]);
                 bad = 1;
                 break;
             }
-            const char *ps = pub.cells[r][pc];
+            const char *ps = pub->cells[r][pc];
             double pv = NAN, cv = NAN;
             int ambiguous = !strcmp(ps, "?");
             int pok = ambiguous ? 0 : parse_cell(ps, &pv);
             if (pok < 0) { fprintf(stderr, "%s: %s: row %d: '%s' is not a number\n", prog, path, r + 1, ps); bad = 1; break; }
             if (!ambiguous && pok == 0) continue; /* no published cell here */
-            int origin = originmeta ? cell_origin(&pub, r, qname, origins, norigin) : 0;
-            if (origin < 0 || (origin == 2 && !commit)) {
-                fprintf(stderr, "%s: %s: row %d, column %s: %s\n", prog, path, r + 1, qname,
-                        origin < 0 ? "'# origin:' does not name this column" : "regression values need '# commit:'");
-                bad = 1;
-                break;
-            }
+            int origin = ref.origin[(size_t)r * (size_t)pub->ncols + (size_t)pc];
             if (quick && crow < 0) { t.skipped++; continue; }
             int cc = have_com ? hj_table_col(&com, qname) : -1;
             int cok = (crow >= 0 && cc >= 0) ? parse_cell(com.cells[crow][cc], &cv) : 0;
@@ -450,11 +672,11 @@ static int check_table(const char *name, const char *paperdir, const char *table
             if (cok == 1) fprintf(out.fp, "%.6g\t", cv); else fputs("-\t", out.fp);
             if (cok == 1 && !ambiguous) fprintf(out.fp, "%.4g\t", hj_difference(kind, pv, cv)); else fputs("-\t", out.fp);
             fprintf(out.fp, "%s%s\t%s\t%s\t%s%s%s\n", hj_verdict_name(v), roundoff ? " (round-off)" : "",
-                    hj_verdict_name((hj_verdict)accepted), reason, origin_names[origin], origin == 2 ? "@" : "",
-                    origin == 2 ? commit : "");
+                    hj_verdict_name((hj_verdict)accepted), reason, origin_names[origin],
+                    origin == ORIGIN_REGRESSION ? "@" : "", origin == ORIGIN_REGRESSION ? ref.commit : "");
         }
     }
-    hj_table_free(&pub);
+    free_reference(&ref);
     if (have_com) hj_table_free(&com);
     if (bad) {
         hj_out_abort(&out);
@@ -499,49 +721,81 @@ static int load_paper_accepted(const char *paperdir, int quick, reason_list *rea
     return rc;
 }
 
-static int check_paper(const char *name, const char *paperdir, const char *resdir, int quick, tally *total)
+enum { MAXTABLES = 512 };
+
+/* The names (without .tsv) of the tables in dir, sorted; *n of them.  A
+ * directory that does not exist holds none when optional. */
+static int list_tables(const char *dir, int optional, char **names, int *n, hj_error *err)
+{
+    *n = 0;
+    DIR *d = opendir(dir);
+    if (!d) return optional && errno == ENOENT ? HJ_OK : hj_error_set(err, HJ_EIO, "cannot open %s", dir);
+    int rc = HJ_OK;
+    struct dirent *e;
+    while (!rc && (e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len <= 4 || strcmp(e->d_name + len - 4, ".tsv")) continue;
+        if (*n == MAXTABLES) rc = hj_error_set(err, HJ_EFORMAT, "%s holds more than %d tables", dir, MAXTABLES);
+        else if (!(names[*n] = strdup(e->d_name))) rc = hj_error_set(err, HJ_ENOMEM, "out of memory");
+        else names[(*n)++][len - 4] = '\0';
+    }
+    closedir(d);
+    if (rc) {
+        while (*n) free(names[--*n]);
+        return rc;
+    }
+    qsort(names, (size_t)*n, sizeof *names, cmp_str);
+    return HJ_OK;
+}
+
+/* The tables of a paper, sorted: those of published/, or those defined in
+ * reference/, where every file of values must belong to a defined table. */
+static int paper_tables(const char *paperdir, char **names, int *n, hj_error *err)
 {
     char dir[4096];
+    int layout = reference_layout(paperdir, err);
+    if (layout < 0) return err->code;
+    snprintf(dir, sizeof dir, "%s/%s", paperdir, layout ? "reference" : "published");
+    int rc = list_tables(dir, 0, names, n, err);
+    for (int o = 0; layout && !rc && o < NORIGIN; o++) {
+        char *values[MAXTABLES];
+        int nv;
+        snprintf(dir, sizeof dir, "%s/reference/%s", paperdir, origin_names[o]);
+        rc = list_tables(dir, 1, values, &nv, err);
+        for (int i = 0; i < nv; i++) {
+            if (!rc && !bsearch(&values[i], names, (size_t)*n, sizeof *names, cmp_str))
+                rc = hj_error_set(err, HJ_EFORMAT, "%s/%s.tsv: no table %s/reference/%s.tsv defines its rows and kinds", dir,
+                                  values[i], paperdir, values[i]);
+            free(values[i]);
+        }
+    }
+    if (rc) while (*n) free(names[--*n]);
+    return rc;
+}
+
+static int check_paper(const char *name, const char *paperdir, const char *resdir, int quick, tally *total)
+{
     hj_error err;
-    snprintf(dir, sizeof dir, "%s/published", paperdir);
     accepted_list acc;
     reason_list reasons;
+    char *names[MAXTABLES];
+    int n = 0, rc = 0;
     if (load_paper_accepted(paperdir, quick, &reasons, &acc, &err)) {
         fprintf(stderr, "%s: %s\n", prog, err.msg);
         return -1;
     }
-    DIR *d = opendir(dir);
-    if (!d) {
-        fprintf(stderr, "%s: cannot open %s\n", prog, dir);
+    if (paper_tables(paperdir, names, &n, &err)) {
+        fprintf(stderr, "%s: %s\n", prog, err.msg);
         free_accepted(&acc), free_reasons(&reasons);
         return -1;
     }
-    enum { MAXTABLES = 512 };
-    char *names[MAXTABLES];
-    int n = 0, rc = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        size_t len = strlen(e->d_name);
-        if (len > 4 && !strcmp(e->d_name + len - 4, ".tsv")) {
-            if (n == MAXTABLES) {
-                fprintf(stderr, "%s: %s holds more than %d tables\n", prog, dir, MAXTABLES);
-                rc = -1;
-                break;
-            }
-            names[n] = strdup(e->d_name);
-            names[n][len - 4] = '\0';
-            n++;
-        }
-    }
-    closedir(d);
-    qsort(names, (size_t)n, sizeof *names, cmp_str);
     for (int i = 0; i < n; i++) {
         if (rc == 0 && check_table(name, paperdir, names[i], resdir, quick, &acc, NULL, total) < 0) rc = -1;
         free(names[i]);
     }
     for (int i = 0; i < acc.n && rc == 0; i++)
         if (!acc.cells[i].used && !quick)
-            fprintf(stderr, "%s: note: %s/accepted.tsv names %s %s %s, which no published table has\n", prog, paperdir,
+            fprintf(stderr, "%s: note: %s/accepted.tsv names %s %s %s, which no reference table has\n", prog, paperdir,
                     acc.cells[i].table, acc.cells[i].key, acc.cells[i].quantity);
     free_accepted(&acc), free_reasons(&reasons);
     return rc;
@@ -668,7 +922,7 @@ static void usage(FILE *f)
     fprintf(f, "usage: %s --results DIR [--quick] [--no-fail] NAME=PAPERDIR ...\n"
                "       %s --results DIR [--quick] --accept TABLE --reason ID [--reason-text TEXT] NAME=PAPERDIR\n"
                "       %s --rules   (print the comparison rules as Markdown)\n"
-               "Compares published with computed tables; see the header of common/tools/hjcheck.c.\n",
+               "Compares reference with computed tables; see the header of common/tools/hjcheck.c.\n",
             prog, prog, prog);
 }
 
