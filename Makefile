@@ -223,7 +223,8 @@ define build_report
 	report/build.sh $(RESULTS) $(REPORT_DIR) $(HJCHECK) $(if $(filter 1,$(QUICK)),quick)
 endef
 
-$(REPORT): $(HJCHECK) $(REPORT_INPUTS) report/build.sh report/intro.md $(wildcard */published/*.tsv */accepted.tsv)
+$(REPORT): $(HJCHECK) $(REPORT_INPUTS) report/build.sh report/intro.md \
+          $(wildcard */published/*.tsv */reference/*.tsv */reference/*/*.tsv */accepted.tsv)
 	$(build_report)
 
 .PHONY: report-now report-view

@@ -27,7 +27,7 @@ $(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig
 	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
 
 P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.md
-# Tables held by make check against paper2_toolbox/published/<table>.tsv.
+# Tables held by make check against paper2_toolbox/reference/ (README.md there).
 P2_CHECK := $(P2_OUT)/fig21.tsv
 REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
                  $(P2)/report.tsv $(P2)/overview.md
