@@ -42,16 +42,26 @@ embed_figure() {
 
 html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 
-# Published beside computed, from a .check.tsv.
+# check_table CHECK NAME LABEL FILE...: published beside computed, from a
+# .check.tsv, under the source line of each FILE of reference values that
+# exists (published/<table>.tsv, reference/{paper,exact,regression}/<table>.tsv).
 check_table() {
-    local f=$1 name=$2 label=${3:-published} src=${4:-}
+    local f=$1 name=$2 label=${3:-published} src what
+    shift $(($# < 3 ? $# : 3))
     if [ ! -f "$f" ]; then
         printf '\n**%s: not computed** (no %s)\n\n' "$name" "$f"
         return
     fi
-    if [ -n "$src" ] && [ -f "$src" ]; then
-        sed -n 's/^# source: *//p' "$src" | head -1 | html_escape | sed 's/^/\n<p class="tsrc"><i>Source of the '"$label"' values:<\/i> /; s/$/<\/p>/'
-    fi
+    for src in "$@"; do
+        [ -f "$src" ] || continue
+        case $src in
+        */reference/paper/*) what='values from the paper' ;;
+        */reference/exact/*) what='exact values' ;;
+        */reference/regression/*) what="regression values (our run at commit $(sed -n 's/^# commit: *//p' "$src" | head -1))" ;;
+        *) what="$label values" ;;
+        esac
+        sed -n 's/^# source: *//p' "$src" | head -1 | html_escape | sed 's/^/\n<p class="tsrc"><i>Source of the '"$what"':<\/i> /; s/$/<\/p>/'
+    done
     # Each distinct reason is written once, under the table, numbered; the
     # cells it covers point to it.
     awk -F'\t' -v name="$name" -v label="$label" '
@@ -136,9 +146,10 @@ md=$tmp/report.md
             for t in $tables; do
                 [ "$t" = - ] && continue
                 # Paper 2 publishes almost no numbers: its cells are checked
-                # against exact values and accepted runs (see the source line).
+                # against exact values and accepted runs (see the source lines).
                 label=published; [ "$name" = paper2 ] && label=reference
-                check_table "$res/$name/$t.check.tsv" "$name $t" "$label" "$dir/published/$t.tsv"
+                check_table "$res/$name/$t.check.tsv" "$name $t" "$label" "$dir/published/$t.tsv" \
+                    "$dir"/reference/{paper,exact,regression}/"$t".tsv
                 fit_table "$res/$name/$t.fit.tsv"
             done
             for f in $figs; do
