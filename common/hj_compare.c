@@ -3,12 +3,12 @@
 #include <math.h>
 #include <string.h>
 
-static const char *kind_names[] = {"error", "order", "count", "ratio", "value"};
+static const char *kind_names[] = {"error", "order", "count", "ratio", "value", "bound", "exact"};
 static const char *verdict_names[] = {"match", "close", "differs", "missing", "ambiguous"};
 
 hj_kind hj_kind_from_name(const char *name)
 {
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < HJ_KIND_UNKNOWN; k++)
         if (strcmp(name, kind_names[k]) == 0) return (hj_kind)k;
     return HJ_KIND_UNKNOWN;
 }
@@ -60,6 +60,8 @@ hj_verdict hj_compare(hj_kind kind, double p, double c, int *roundoff)
     case HJ_KIND_COUNT: return by_factor(p, c, 0.10, 1.5);
     case HJ_KIND_RATIO: return by_factor(p, c, 0.25, 2.0);
     case HJ_KIND_VALUE: return by_factor(p, c, 0.01, 1.1);
+    case HJ_KIND_BOUND: return c <= p ? HJ_MATCH : c <= 10 * p ? HJ_CLOSE : HJ_DIFFERS;
+    case HJ_KIND_EXACT: return c == p ? HJ_MATCH : p != 0 && fabs(c / p - 1) <= 0.01 + 1e-12 ? HJ_CLOSE : HJ_DIFFERS;
     default: return HJ_DIFFERS;
     }
 }
@@ -69,6 +71,7 @@ double hj_difference(hj_kind kind, double p, double c)
     switch (kind) {
     case HJ_KIND_ORDER:
     case HJ_KIND_VALUE: return c - p;
+    case HJ_KIND_BOUND: return p != 0 ? c / p : c - p;
     default: return p != 0 ? c / p : NAN;
     }
 }
@@ -85,6 +88,9 @@ void hj_compare_rules(FILE *out)
             "- **ratio** (CPU-time or memory ratios): *match* within 25 %%, *close* within a factor 2. "
             "Shown, but never a reason for `make check` to fail: they depend on the machine and its load.\n"
             "- **value** (other checked numbers): *match* within 1 %%, *close* within 10 %%.\n"
+            "- **bound** (differences from a reference that is exact up to its own rounding): the reference cell is the "
+            "largest difference allowed; *match* at or below it, *close* within 10 times it.\n"
+            "- **exact** (step counts that must agree): *match* when equal, *close* within 1 %%.\n"
             "- *ambiguous*: the published cell cannot be read unambiguously in the source; shown, never compared. "
             "*missing*: no computed value.\n",
             HJ_ROUNDOFF_FLOOR);

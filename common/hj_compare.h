@@ -13,6 +13,9 @@
  *          (CPU-time and memory ratios between runs).
  *   value  match: within 1 %;        close: within 10 % (checked numbers
  *          such as areas, radii, times).
+ *   bound  match: c <= p;            close: c <= 10 p (p is the largest
+ *          difference a reference allows, e.g. its own rounding).
+ *   exact  match: c == p;            close: within 1 % (step counts).
  *
  * Verdicts are ordered: match < close < differs < missing.  "ambiguous"
  * marks a published cell that could not be read in the source; it is shown
@@ -29,6 +32,8 @@ typedef enum {
     HJ_KIND_COUNT,
     HJ_KIND_RATIO,
     HJ_KIND_VALUE,
+    HJ_KIND_BOUND,
+    HJ_KIND_EXACT,
     HJ_KIND_UNKNOWN
 } hj_kind;
 
@@ -53,8 +58,9 @@ int hj_verdict_from_name(const char *name);
  * is set when the round-off rule decided. Non-finite c is "differs". */
 hj_verdict hj_compare(hj_kind kind, double published, double computed, int *roundoff);
 
-/* Signed difference shown in the report: ratio c/p for errors, counts and
- * ratios; c - p for orders and values. */
+/* Signed difference shown in the report: ratio c/p for errors, counts,
+ * ratios, exact counts and bounds (c itself for a zero bound); c - p for
+ * orders and values. */
 double hj_difference(hj_kind kind, double published, double computed);
 
 /* The rules above as a Markdown list, for the report. */

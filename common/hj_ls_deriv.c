@@ -63,7 +63,8 @@ void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx
 
 /* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
  * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
-static inline double weno5(double v1, double v2, double v3, double v4, double v5, double c1, double c2, double c3)
+static inline double weno5(double v1, double v2, double v3, double v4, double v5, double c1, double c2, double c3,
+                           double epsg)
 {
     const double t1 = v1 - 2 * v2 + v3, u1 = v1 - 4 * v2 + 3 * v3;
     const double t2 = v2 - 2 * v3 + v4, u2 = v2 - v4;
@@ -76,7 +77,9 @@ static inline double weno5(double v1, double v2, double v3, double v4, double v5
     m = v3 * v3 > m ? v3 * v3 : m;
     m = v4 * v4 > m ? v4 * v4 : m;
     m = v5 * v5 > m ? v5 * v5 : m;
-    const double eps = 1e-6 * m + 1e-99;
+    /* O&F (3.38): the largest v^2 of the five neighbours; or the caller's
+     * (the toolbox's 'maxOverGrid'), epsg >= 0 */
+    const double eps = epsg >= 0 ? epsg : 1e-6 * m + 1e-99;
     /* alpha_k = d_k / (s_k + eps)^2, multiplied through by the product of
      * the three (s_k + eps)^2 / eps^2 >= 1, which saves two divisions.
      * Since s_k <= 21 m and eps >= 1e-6 m, each factor is at most about
@@ -121,9 +124,14 @@ static inline double weno3(double v1, double v2, double v3)
 #define HJ_LS_CLONES
 #endif
 
+void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *dl, double *dr, double *w)
+{
+    hj_ls_upwind_row_eps(scheme, p, s, n, dx, -1, dl, dr, w);
+}
+
 HJ_LS_CLONES
-void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *restrict dl,
-                      double *restrict dr, double *w)
+void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *restrict dl,
+                          double *restrict dr, double *w)
 {
     const double *D[6];
     for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
@@ -181,16 +189,16 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
             TABLE
             const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3), ld = m1 + e20 - f30 / 3;
             const double r1 = z0 - e2p1 + 2 * (f3p1 / 3), r2 = z0 - e2p1 + 2 * (f30 / 3), r3 = z0 - e20 - f3m1 / 3;
-            dl[i] = weno5(m3, m2, m1, z0, p1, la, lb, ld);
-            dr[i] = weno5(p2, p1, z0, m1, m2, r1, r2, r3);
+            dl[i] = weno5(m3, m2, m1, z0, p1, la, lb, ld, eps);
+            dr[i] = weno5(p2, p1, z0, m1, m2, r1, r2, r3, eps);
         }
         break;
     case HJ_LS_WENO5B:
         first_differences(p, s, n, dx, w, -3, 2);
         for (long i = 0; i < n; i++) {
             const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
-            dl[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1));
-            dr[i] = weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2));
+            dl[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps);
+            dr[i] = weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps);
         }
         break;
     case HJ_LS_WENO3:
@@ -250,12 +258,12 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
             const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
             const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;
             out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),
-                           m1 + e20 - f30 / 3);
+                           m1 + e20 - f30 / 3, -1);
         }
     else if (scheme == HJ_LS_WENO5B)
         for (long i = 0; i < n; i++) {
             MIRROR
-            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1));
+            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), -1);
         }
     else
         for (long i = 0; i < n; i++) {
@@ -264,6 +272,28 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
             out[i] = weno3(m2, m1, z0);
         }
 #undef MIRROR
+}
+
+double hj_ls_weno_eps_grid(const hj_ls_grid *g, const double *data, int d)
+{
+    /* rows along d: every interior node of the other dimensions */
+    double m = 0;
+    const ptrdiff_t s = g->stride[d];
+    const double inv = 1.0 / g->dx[d];
+    long idx[HJ_LS_MAXDIM] = {0};
+    for (size_t q = 0; q < g->nodes / (size_t)g->N[d]; q++) {
+        const double *p = data + hj_ls_index(g, idx);
+        for (long i = -3; i < g->N[d] + 2; i++) {
+            const double v = (p[(i + 1) * s] - p[i * s]) * inv;
+            m = v * v > m ? v * v : m;
+        }
+        for (int e = 0; e < g->dim; e++) { /* next row: odometer over the dimensions other than d */
+            if (e == d) continue;
+            if (++idx[e] < g->N[e]) break;
+            idx[e] = 0;
+        }
+    }
+    return 1e-6 * m + 1e-99;
 }
 
 static int check_dim(const hj_ls_grid *g, int d, hj_error *err)

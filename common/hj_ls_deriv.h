@@ -67,6 +67,22 @@ int hj_ls_scheme_order(int scheme);
  * leaves dl and dr untouched (the array functions check schemes). */
 void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *dl, double *dr, double *w);
 
+/* The same with the WENO5 epsilon given: eps < 0 is O&F (3.38), 1e-6 times
+ * the largest squared first difference of the five a node's stencil uses
+ * (+1e-99), what hj_ls_upwind_row does; eps >= 0 is used at every node
+ * (ToolboxLS's upwindFirstWENO5a takes 1e-6 times the largest over the
+ * whole grid, its 'maxOverGrid': hj_ls_weno_eps_grid).  Other schemes
+ * ignore eps. */
+void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *dl,
+                          double *dr, double *w);
+
+/* ToolboxLS's WENO5 epsilon along dimension d ('maxOverGrid' in
+ * upwindFirstWENO5a): 1e-6 max (D1)^2 + 1e-99 over every first difference
+ * along d of the interior rows extended by three ghost nodes at each end
+ * (filled beforehand, hj_ls_fill_ghosts), as the toolbox's divided
+ * difference table holds them. */
+double hj_ls_weno_eps_grid(const hj_ls_grid *g, const double *data, int d);
+
 /* The upwind side only: out[i] = D-phi where v[i] > 0, else D+phi, with
  * the same values as hj_ls_upwind_row (bitwise).  For WENO only the needed
  * side is computed (half the work); w as above. */

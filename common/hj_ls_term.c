@@ -1,6 +1,7 @@
 /* hj_ls_term.c -- the HJ PDE terms, evaluated row by row. */
 #include "hj_ls_term.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,6 +21,8 @@ typedef struct {
     size_t r;       /* this row's number */
     size_t cache_r; /* row whose differences along dimension 1 the ring holds */
     int head;       /* ring slot of the difference k = -3 */
+    double dmax[HJ_LS_MAXDIM]; /* per dimension: running maximum of the
+                                * speed over dx_d (the toolbox's rule) */
 } row_ctx;
 
 /* A row evaluator: writes ydot on the row, *inv = the row's largest inverse
@@ -28,13 +31,16 @@ typedef struct {
 typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad_j);
 
 /* Run f on every row in parallel.  Returns the largest inverse CFL bound
- * in *maxinv; on failure the code of the first failing node in row order
- * (deterministic whatever the number of threads), with a message naming
- * `what` and the node. */
+ * in *maxinv and, when dmax is not NULL, the per-dimension maxima the rows
+ * left in rc->dmax (maxima: the result does not depend on the order); on
+ * failure the code of the first failing node in row order (deterministic
+ * whatever the number of threads), with a message naming `what` and the
+ * node. */
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                    double *ydot, double *maxinv, const char *what, hj_error *err)
+                    double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
 {
     double m = 0;
+    double dm[HJ_LS_MAXDIM] = {0};
     int nan_seen = 0, nomem = 0;
     size_t bad_row = (size_t)-1;
     long bad_j = -1;
@@ -52,6 +58,7 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             for (long j = 0; j < n; j++) rc.tmax[j] = 0;
             rc.cache_r = (size_t)-1;
             rc.head = 0;
+            for (int d = 0; d < HJ_LS_MAXDIM; d++) rc.dmax[d] = 0;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 32)
 #endif
@@ -75,6 +82,12 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
                 if (rc.tmax[j] != rc.tmax[j]) nan_seen = 1;
                 else m = rc.tmax[j] > m ? rc.tmax[j] : m;
             }
+            for (int d = 0; d < g->dim; d++)
+                if (rc.dmax[d] != rc.dmax[d]) nan_seen = 1;
+#ifdef _OPENMP
+#pragma omp critical(hj_ls_term_dmax)
+#endif
+            for (int d = 0; d < g->dim; d++) dm[d] = rc.dmax[d] > dm[d] ? rc.dmax[d] : dm[d];
         }
         free(rc.ws);
     }
@@ -94,6 +107,11 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
     if (nan_seen || m == INFINITY)
         return hj_error_set(err, HJ_ENONFINITE, "%s: non-finite CFL bound at t = %g", what, t);
     *maxinv = m;
+    if (dmax) {
+        for (int d = 0; d < g->dim; d++)
+            if (dm[d] == INFINITY) return hj_error_set(err, HJ_ENONFINITE, "%s: non-finite CFL bound at t = %g", what, t);
+        memcpy(dmax, dm, sizeof(double) * (size_t)g->dim);
+    }
     return HJ_OK;
 }
 
@@ -103,6 +121,18 @@ static inline double scalar_at(const hj_ls_scalar *s, double t, const double *x,
 }
 
 static double bound_of(double maxinv) { return maxinv > 0 ? 1 / maxinv : INFINITY; }
+
+/* The CFL bound by the term's rule: 1 / max_x sum_d s_d(x) / dx_d
+ * (HJ_LS_CFL_NODE, maxinv) or 1 / sum_d max_x s_d(x) / dx_d
+ * (HJ_LS_CFL_TOOLBOX, from the per-dimension maxima; summed in dimension
+ * order). */
+static double bound_by_rule(int rule, const hj_ls_grid *g, double maxinv, const double *dmax)
+{
+    if (rule != HJ_LS_CFL_TOOLBOX) return bound_of(maxinv);
+    double inv = 0;
+    for (int d = 0; d < g->dim; d++) inv += dmax[d];
+    return bound_of(inv);
+}
 
 /* ---- convection ------------------------------------------------------ */
 
@@ -180,7 +210,7 @@ static int convection_eval(const hj_ls_term *term, double t, double *y, double *
     hj_ls_fill_ghosts(g, y);
     double m;
     int rc = for_rows(g, (size_t)(5 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, c, t, y, ydot, &m,
-                      "convection velocity", err);
+                      NULL, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;
@@ -220,7 +250,60 @@ typedef struct {
     const hj_ls_scalar *speed; /* normal motion */
     const double *initial;     /* reinitialization */
     double smear2;             /* max dx^2 */
+    int cfl_rule;              /* HJ_LS_CFL_* */
+    int subcell_fix;           /* reinitialization: Russo & Smereka near the interface */
+    double eps[HJ_LS_MAXDIM];  /* WENO5 epsilon per dimension, < 0: O&F (3.38) */
 } godunov_term;
+
+/* The WENO5 epsilons of a term evaluation: the grid-wide ones of the
+ * toolbox (HJ_LS_WENO_EPS_GRID, WENO5 schemes only) or -1 (local). */
+static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y, double *eps)
+{
+    const int grid = mode == HJ_LS_WENO_EPS_GRID && (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B);
+    for (int d = 0; d < g->dim; d++) eps[d] = grid ? hj_ls_weno_eps_grid(g, y, d) : -1;
+}
+
+/* sign(v) as MATLAB's sign: -1, 0 or 1. */
+static inline double sign0(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }
+
+/* The subcell fix of Russo & Smereka (J. Comput. Phys. 163, 2000) as
+ * ToolboxLS 1.1's termReinit applies it (subcell_fix_order 1, its robust
+ * form (17)): at a node near the interface of phi_0 (on it, or with a
+ * neighbour along some dimension on the other side or on it, as
+ * isNearInterface), the update is
+ *     G = -(sign(phi_0) |phi| - D) / max_d dx_d,
+ *     D = phi_0 / sqrt(sum_d max(q_d^2, (1e6 eps)^2)),
+ * with q_d the largest in magnitude of the one-sided differences of phi_0
+ * along d that stay on the grid (the centred difference is their mean,
+ * never larger, so the toolbox's max over all three is this).  Neighbours
+ * are taken by index, never across a periodic seam, as the toolbox does.
+ * Returns 1 and *G for a node near the interface, 0 elsewhere. */
+static int subcell_update(const hj_ls_grid *g, const double *phi0, size_t k, const long *idx, double phi, double h,
+                          double *G)
+{
+    const double s0 = sign0(phi0[k]);
+    int near = s0 == 0;
+    double den = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const ptrdiff_t st = g->stride[d];
+        double q2 = 0;
+        if (idx[d] > 0) {
+            const double q = (phi0[k] - phi0[k - (size_t)st]) / g->dx[d];
+            q2 = q * q > q2 ? q * q : q2;
+            near |= sign0(phi0[k - (size_t)st]) != s0;
+        }
+        if (idx[d] < g->N[d] - 1) {
+            const double q = (phi0[k + (size_t)st] - phi0[k]) / g->dx[d];
+            q2 = q * q > q2 ? q * q : q2;
+            near |= sign0(phi0[k + (size_t)st]) != s0;
+        }
+        const double tiny = 1e6 * DBL_EPSILON;
+        den += q2 > tiny * tiny ? q2 : tiny * tiny;
+    }
+    if (!near) return 0;
+    *G = -(s0 * fabs(phi) - phi0[k] / sqrt(den)) / h;
+    return 1;
+}
 
 static int godunov_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
@@ -230,13 +313,17 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     const int dim = g->dim;
     double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
     for (int d = 0; d < dim; d++)
-        hj_ls_upwind_row(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl + d * n, dr + d * n, w);
+        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], c->eps[d], dl + d * n, dr + d * n, w);
     double m = 0, x[HJ_LS_MAXDIM];
+    long idx[HJ_LS_MAXDIM];
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    memcpy(idx, rc->idx, sizeof(long) * (size_t)dim);
+    const double h = sqrt(c->smear2);
     for (long j = 0; j < n; j++) {
         const size_t k = rc->k + (size_t)j;
         double a;
-        if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
+        if (c->initial && c->subcell_fix) a = sign0(c->initial[k]);
+        else if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
         else {
             x[0] = g->min[0] + (double)j * g->dx[0];
             a = scalar_at(c->speed, t, x, y[k], k);
@@ -245,6 +332,20 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
         double p[HJ_LS_MAXDIM];
         const double mag = godunov(dim, dl + j, dr + j, n, a, p);
         ydot[k] = c->initial ? -a * (mag - 1) : -a * mag;
+        if (c->subcell_fix) {
+            idx[0] = j;
+            double G;
+            if (subcell_update(g, c->initial, k, idx, y[k], h, &G)) ydot[k] = G;
+        }
+        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) {
+            /* the toolbox's effective velocity v_d = a p_d / max(|p|, eps) */
+            const double mg = mag > DBL_EPSILON ? mag : DBL_EPSILON;
+            for (int d = 0; d < dim; d++) {
+                const double v = fabs(a * p[d] / mg) / g->dx[d];
+                rc->dmax[d] = v > rc->dmax[d] || v != v ? v : rc->dmax[d];
+            }
+            continue;
+        }
         double s = 0;
         for (int d = 0; d < dim; d++) s += (mag > 0 ? fabs(p[d]) / mag : 1.0) / g->dx[d];
         s *= fabs(a);
@@ -254,24 +355,25 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     return HJ_OK;
 }
 
-static int godunov_eval(const hj_ls_grid *g, const godunov_term *gt, double t, double *y, double *ydot, double *bound,
-                        const char *what, hj_error *err)
+static int godunov_eval(const hj_ls_grid *g, godunov_term *gt, int eps_mode, double t, double *y, double *ydot,
+                        double *bound, const char *what, hj_error *err)
 {
     if (!hj_ls_scheme_name(gt->scheme)) return hj_error_set(err, HJ_EINVAL, "%s: unknown scheme %d", what, gt->scheme);
     hj_ls_fill_ghosts(g, y);
-    double m;
+    weno_eps(g, eps_mode, gt->scheme, y, gt->eps);
+    double m, dm[HJ_LS_MAXDIM];
     int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
-                      what, err);
+                      dm, what, err);
     if (rc) return rc;
-    *bound = bound_of(m);
+    *bound = bound_by_rule(gt->cfl_rule, g, m, dm);
     return HJ_OK;
 }
 
 static int normal_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
 {
     const hj_ls_normal *c = (const hj_ls_normal *)term;
-    godunov_term gt = {c->grid, c->scheme, &c->speed, NULL, 0};
-    return godunov_eval(c->grid, &gt, t, y, ydot, bound, "normal speed", err);
+    godunov_term gt = {c->grid, c->scheme, &c->speed, NULL, 0, c->cfl_rule, 0, {0}};
+    return godunov_eval(c->grid, &gt, c->weno_eps, t, y, ydot, bound, "normal speed", err);
 }
 
 void hj_ls_normal_init(hj_ls_normal *c, const hj_ls_grid *g, int scheme)
@@ -288,8 +390,8 @@ static int reinit_eval(const hj_ls_term *term, double t, double *y, double *ydot
     if (!c->initial) return hj_error_set(err, HJ_EINVAL, "reinitialization needs the initial data");
     double h = 0;
     for (int d = 0; d < c->grid->dim; d++) h = c->grid->dx[d] > h ? c->grid->dx[d] : h;
-    godunov_term gt = {c->grid, c->scheme, NULL, c->initial, h * h};
-    return godunov_eval(c->grid, &gt, t, y, ydot, bound, "reinitialization", err);
+    godunov_term gt = {c->grid, c->scheme, NULL, c->initial, h * h, c->cfl_rule, c->subcell_fix, {0}};
+    return godunov_eval(c->grid, &gt, c->weno_eps, t, y, ydot, bound, "reinitialization", err);
 }
 
 void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const double *initial)
@@ -306,6 +408,7 @@ void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const d
 typedef struct {
     const hj_ls_lax_friedrichs *lf;
     double gmin[HJ_LS_MAXDIM], gmax[HJ_LS_MAXDIM]; /* global gradient range */
+    double eps[HJ_LS_MAXDIM];                      /* WENO5 epsilons (weno_eps) */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -319,7 +422,7 @@ static int lf_range_row(const void *term, double t, double *y, double *ydot, row
     const long n = g->N[0];
     double *dl = rc->ws, *dr = dl + n, *w = dr + n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < g->dim; d++) {
-        hj_ls_upwind_row(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl, dr, w);
+        hj_ls_upwind_row_eps(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         double lo = range[2 * d], hi = range[2 * d + 1];
         for (long j = 0; j < n; j++) {
             const double a = dl[j] < dr[j] ? dl[j] : dr[j], b = dl[j] < dr[j] ? dr[j] : dl[j];
@@ -341,7 +444,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const int dim = g->dim;
     double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
     for (int d = 0; d < dim; d++)
-        hj_ls_upwind_row(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], dl + d * n, dr + d * n, w);
+        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl + d * n, dr + d * n, w);
     double m = 0, x[HJ_LS_MAXDIM];
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
     for (long j = 0; j < n; j++) {
@@ -372,6 +475,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             a = fabs(a);
             diss += a * 0.5 * (r - l);
             s += a / g->dx[d];
+            rc->dmax[d] = a / g->dx[d] > rc->dmax[d] ? a / g->dx[d] : rc->dmax[d];
         }
         ydot[k] = -(H - diss);
         m = s > m ? s : m;
@@ -391,6 +495,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     hj_ls_fill_ghosts(g, y);
     lf_pass ps;
     ps.lf = c;
+    weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
     if (c->dissipation != HJ_LS_LLLF) {
         /* Global range: each thread keeps its own in its workspace; min and
@@ -429,11 +534,11 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
         }
         if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the Lax-Friedrichs workspace");
     }
-    double m;
-    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
+    double m, dm[HJ_LS_MAXDIM];
+    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
                       "Hamiltonian or partial callback", err);
     if (rc) return rc;
-    *bound = bound_of(m);
+    *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
 }
 
@@ -510,7 +615,7 @@ static int point_eval(const point_term *pt, double t, double *y, double *ydot, d
     const hj_ls_grid *g = pt->grid;
     hj_ls_fill_ghosts(g, y);
     double m;
-    int rc = for_rows(g, 1, point_row, pt, t, y, ydot, &m, what, err);
+    int rc = for_rows(g, 1, point_row, pt, t, y, ydot, &m, NULL, what, err);
     if (rc) return rc;
     if (pt->kind == PT_HESS) {
         m = 0;

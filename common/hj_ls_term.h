@@ -30,6 +30,33 @@
 #include "hj_ls_grid.h"
 
 typedef struct hj_ls_term hj_ls_term;
+
+/* How a term turns its per-node speeds s_d(x) (|v_d| for convection, the
+ * effective velocity of normal motion and reinitialization, alpha_d for
+ * Lax-Friedrichs) into its CFL bound:
+ *   HJ_LS_CFL_NODE     1 / max_x sum_d s_d(x) / dx_d, the linear stability
+ *                      limit at the worst node (the default);
+ *   HJ_LS_CFL_TOOLBOX  1 / sum_d max_x s_d(x) / dx_d, as ToolboxLS's
+ *                      artificialDissipationGLF/LLF and termNormal/
+ *                      termReinit compute it: never larger, smaller where
+ *                      the maxima of the dimensions lie at different nodes
+ *                      (air3D: 392 steps instead of 368).
+ * Both are stable; the first takes the longest step the scheme allows, the
+ * second reproduces the toolbox's step sequence.  Convection has only the
+ * first: it equals the second when the maxima meet at one node (the
+ * rotations of the demos). */
+enum { HJ_LS_CFL_NODE, HJ_LS_CFL_TOOLBOX };
+
+/* The epsilon of the WENO5 weights (upwind schemes HJ_LS_WENO5A/B):
+ *   HJ_LS_WENO_EPS_LOCAL  O&F (3.38), 1e-6 times the largest squared first
+ *                         difference of the node's own stencil (default);
+ *   HJ_LS_WENO_EPS_GRID   1e-6 times the largest over the whole grid, per
+ *                         dimension, at every node: ToolboxLS 1.1's
+ *                         upwindFirstWENO5a ('maxOverGrid').
+ * Where the solution is steep somewhere, the second makes the weights
+ * smoother (closer to the linear ones) everywhere else.  Normal motion,
+ * reinitialization and Lax-Friedrichs offer both; convection the first. */
+enum { HJ_LS_WENO_EPS_LOCAL, HJ_LS_WENO_EPS_GRID };
 typedef int (*hj_ls_term_fn)(const hj_ls_term *term, double t, double *y, double *ydot, double *step_bound,
                              hj_error *err);
 struct hj_ls_term {
@@ -77,18 +104,31 @@ typedef struct {
     const hj_ls_grid *grid;
     int scheme;
     hj_ls_scalar speed;
+    int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_normal;
 void hj_ls_normal_init(hj_ls_normal *c, const hj_ls_grid *g, int scheme);
 
 /* ---- reinitialization (4): G = -S(phi_0)(|grad phi| - 1) with the
  * smeared sign S = phi_0 / sqrt(phi_0^2 + max dx^2) of the initial data
  * (Osher & Fedkiw (7.5)) and Godunov upwinding as for normal motion with
- * speed S.  initial is an array on the grid. */
+ * speed S.  initial is an array on the grid.
+ *
+ * subcell_fix = 1 applies the subcell fix of Russo & Smereka (2000) as
+ * ToolboxLS 1.1's termReinit does by default (subcell_fix_order 1): S is
+ * the plain sign of phi_0, and at the nodes next to the interface of phi_0
+ * the update is -(sign(phi_0)|phi| - D) / max dx with D phi_0's distance
+ * estimate from its one-sided differences, which keeps the interface where
+ * phi_0 puts it (the CFL bound is not changed).  The default (0) is the
+ * scheme of the toolbox's 2004 text, without the fix. */
 typedef struct {
     hj_ls_term base;
     const hj_ls_grid *grid;
     int scheme;
     const double *initial;
+    int subcell_fix;
+    int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_reinit;
 void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const double *initial);
 
@@ -119,6 +159,8 @@ typedef struct {
     hj_ls_ham_fn ham;
     hj_ls_partial_fn partial;
     void *ctx;
+    int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_lax_friedrichs;
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);

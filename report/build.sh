@@ -44,7 +44,7 @@ html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 
 # check_table CHECK NAME LABEL FILE...: published beside computed, from a
 # .check.tsv, under the source line of each FILE of reference values that
-# exists (published/<table>.tsv, reference/{paper,exact,regression}/<table>.tsv).
+# exists (published/<table>.tsv, reference/{paper,exact,regression,peer}/<table>.tsv).
 check_table() {
     local f=$1 name=$2 label=${3:-published} src what
     shift $(($# < 3 ? $# : 3))
@@ -58,6 +58,7 @@ check_table() {
         */reference/paper/*) what='values from the paper' ;;
         */reference/exact/*) what='exact values' ;;
         */reference/regression/*) what="regression values (our run at commit $(sed -n 's/^# commit: *//p' "$src" | head -1))" ;;
+        */reference/peer/*) what="values of the peer's own run" ;;
         *) what="$label values" ;;
         esac
         sed -n 's/^# source: *//p' "$src" | head -1 | html_escape | sed 's/^/\n<p class="tsrc"><i>Source of the '"$what"':<\/i> /; s/$/<\/p>/'
@@ -149,7 +150,7 @@ md=$tmp/report.md
                 # against exact values and accepted runs (see the source lines).
                 label=published; [ "$name" = paper2 ] && label=reference
                 check_table "$res/$name/$t.check.tsv" "$name $t" "$label" "$dir/published/$t.tsv" \
-                    "$dir"/reference/{paper,exact,regression}/"$t".tsv
+                    "$dir"/reference/{paper,exact,regression,peer}/"$t".tsv
                 fit_table "$res/$name/$t.fit.tsv"
             done
             for f in $figs; do

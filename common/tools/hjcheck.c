@@ -36,8 +36,10 @@
  * value is transcribed from the paper ("paper"), an exact value from a
  * formula or a hand computation that its file's '# source:' names
  * ("exact"), or a regression value, the accepted result of one of our own
- * runs ("regression", stamped with the run's '# commit:').  The check table
- * gives each cell's reference: paper, exact or regression@<commit>.  A
+ * runs ("regression", stamped with the run's '# commit:'), or a value of
+ * another implementation's run on the same problem ("peer": ToolboxLS's
+ * own outputs, its '# source:' naming the run).  The check table gives
+ * each cell's reference: paper, exact, regression@<commit> or peer.  A
  * paper keeps its references in one of two layouts:
  *
  *   PAPERDIR/published/<table>.tsv   paper values only, one file a table:
@@ -54,6 +56,7 @@
  *   PAPERDIR/reference/paper/<table>.tsv       (each optional, at least one)
  *   PAPERDIR/reference/exact/<table>.tsv
  *   PAPERDIR/reference/regression/<table>.tsv
+ *   PAPERDIR/reference/peer/<table>.tsv
  *     the values of that kind: '# source:' for them ('# commit:' too in
  *     regression/), the key columns and the '# kind:' columns that have
  *     values of this kind, and only the rows that have one.  The merge
@@ -266,8 +269,8 @@ enum { MAXCOLS = 64 };
 
 /* What a reference value is; in the reference layout, also the name of
  * the directory that holds it. */
-enum { ORIGIN_PAPER, ORIGIN_EXACT, ORIGIN_REGRESSION, NORIGIN };
-static const char *const origin_names[NORIGIN] = {"paper", "exact", "regression"};
+enum { ORIGIN_PAPER, ORIGIN_EXACT, ORIGIN_REGRESSION, ORIGIN_PEER, NORIGIN };
+static const char *const origin_names[NORIGIN] = {"paper", "exact", "regression", "peer"};
 
 /* The reference values of one table, merged from its files. */
 typedef struct {
@@ -490,14 +493,14 @@ static int load_reference_dir(reference *ref, const char *paperdir, const char *
         int any = 0;
         for (int c = nkey; c < ref->t.ncols && !any; c++) any = ref->origin[(size_t)r * (size_t)ref->t.ncols + (size_t)c] >= 0;
         if (!any)
-            return hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) has no value in paper/, exact/ or regression/",
+            return hj_error_set(err, HJ_EFORMAT, "%s: row %d (%s) has no value in paper/, exact/, regression/ or peer/",
                                 ref->path, r + 1, row_key(&ref->t, nkey, r, key, sizeof key));
     }
     for (int c = nkey; c < ref->t.ncols; c++) {
         int any = 0;
         for (int r = 0; r < ref->t.nrows && !any; r++) any = ref->origin[(size_t)r * (size_t)ref->t.ncols + (size_t)c] >= 0;
         if (!any)
-            return hj_error_set(err, HJ_EFORMAT, "%s: column '%s' has no value in paper/, exact/ or regression/",
+            return hj_error_set(err, HJ_EFORMAT, "%s: column '%s' has no value in paper/, exact/, regression/ or peer/",
                                 ref->path, ref->t.cols[c]);
     }
     return HJ_OK;
