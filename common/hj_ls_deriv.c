@@ -59,7 +59,15 @@ void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx
     for (long i = 0; i < n; i++) D[i] = (b[i] - a[i]) * inv;
 }
 
-#define AMIN(a, b) (fabs(a) <= fabs(b) ? (a) : (b))
+/* The smaller in magnitude of two neighbouring divided differences, the
+ * right one on a tie.  Ties (equal magnitudes) are where ENO stencil
+ * choices can differ between codes: O&F (section 3.3) take the left
+ * difference when |D_k| <= |D_k+1|, ToolboxLS's upwindFirstENO2/ENO3a
+ * take the left only when it is strictly smaller.  We follow the toolbox,
+ * whose kernel paper 2 describes: with O&F's choice the reinitDemo star
+ * at 'high' ends 1.5e-3 (relative) from the toolbox's own array, with the
+ * toolbox's 1e-11 (paper2_toolbox/toolboxls.c). */
+#define AMIN(a, b) (fabs(a) < fabs(b) ? (a) : (b))
 
 /* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
  * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
@@ -156,15 +164,16 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
         first_differences(p, s, n, dx, w, -3, 2);
         for (long i = 0; i < n; i++) {
             TABLE
-            /* all candidates, then branch-free selection (vectorises) */
+            /* all candidates, then branch-free selection (vectorises);
+             * ties go right, as AMIN */
             const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3);
             const double lc = m1 + e20 - f3m1 / 3, ld = m1 + e20 - f30 / 3;
             const double r3 = z0 - e20 - f3m1 / 3, r2 = z0 - e20 - f30 / 3;
             const double r2b = z0 - e2p1 + 2 * (f30 / 3), r1 = z0 - e2p1 + 2 * (f3p1 / 3);
-            const double l1 = sel(fabs(f3m2) <= fabs(f3m1), la, lb), l2 = sel(fabs(f3m1) <= fabs(f30), lc, ld);
-            const double q1 = sel(fabs(f3m1) <= fabs(f30), r3, r2), q2 = sel(fabs(f30) <= fabs(f3p1), r2b, r1);
-            dl[i] = sel(fabs(e2m1) <= fabs(e20), l1, l2);
-            dr[i] = sel(fabs(e20) <= fabs(e2p1), q1, q2);
+            const double l1 = sel(fabs(f3m2) < fabs(f3m1), la, lb), l2 = sel(fabs(f3m1) < fabs(f30), lc, ld);
+            const double q1 = sel(fabs(f3m1) < fabs(f30), r3, r2), q2 = sel(fabs(f30) < fabs(f3p1), r2b, r1);
+            dl[i] = sel(fabs(e2m1) < fabs(e20), l1, l2);
+            dr[i] = sel(fabs(e20) < fabs(e2p1), q1, q2);
         }
         break;
     case HJ_LS_ENO3B:
@@ -177,10 +186,10 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
             const double u30 = 0.5 * u2p1 - 0.5 * u20, u3p1 = 0.5 * (p2 - p1) - 0.5 * u2p1;
             const double c1 = PHI1(m3, m2, m1), c2 = PHI2(m2, m1, z0), c3 = PHI3(m1, z0, p1);
             const double d3 = PHI3(z0, m1, m2), d2 = PHI2(p1, z0, m1), d1 = PHI1(p2, p1, z0);
-            const double l1 = sel(fabs(u3m2) <= fabs(u3m1), c1, c2), l2 = sel(fabs(u3m1) <= fabs(u30), c2, c3);
-            const double q1 = sel(fabs(u3m1) <= fabs(u30), d3, d2), q2 = sel(fabs(u30) <= fabs(u3p1), d2, d1);
-            dl[i] = sel(fabs(u2m1) <= fabs(u20), l1, l2);
-            dr[i] = sel(fabs(u20) <= fabs(u2p1), q1, q2);
+            const double l1 = sel(fabs(u3m2) < fabs(u3m1), c1, c2), l2 = sel(fabs(u3m1) < fabs(u30), c2, c3);
+            const double q1 = sel(fabs(u3m1) < fabs(u30), d3, d2), q2 = sel(fabs(u30) < fabs(u3p1), d2, d1);
+            dl[i] = sel(fabs(u2m1) < fabs(u20), l1, l2);
+            dr[i] = sel(fabs(u20) < fabs(u2p1), q1, q2);
         }
         break;
     case HJ_LS_WENO5A:
