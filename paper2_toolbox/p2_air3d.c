@@ -12,6 +12,8 @@
 void p2_air3d_defaults(p2_air3d_par *p)
 {
     p->r = 5, p->va = 5, p->vb = 5, p->A = 1, p->B = 1;
+    p->cfl_rule = HJ_LS_CFL_NODE;
+    p->weno_eps = HJ_LS_WENO_EPS_LOCAL;
 }
 
 int p2_air3d_grid(long Nx, hj_ls_grid *g, hj_error *err)
@@ -102,6 +104,8 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     for (long j = 0; j < n2; j++) c.ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &c);
+    lf.cfl_rule = p->cfl_rule;
+    lf.weno_eps = p->weno_eps;
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, g, &lf.base, 0);
     hj_ls_ode_opts o;

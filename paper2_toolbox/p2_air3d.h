@@ -22,9 +22,12 @@
 
 typedef struct {
     double r, va, vb, A, B;
+    int cfl_rule; /* HJ_LS_CFL_NODE (ours) or HJ_LS_CFL_TOOLBOX */
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (ours) or HJ_LS_WENO_EPS_GRID */
 } p2_air3d_par;
 
-/* r = 5, va = vb = 5, A = B = 1 (section 2.6.1). */
+/* r = 5, va = vb = 5, A = B = 1 (section 2.6.1), our CFL rule and WENO5
+ * epsilon. */
 void p2_air3d_defaults(p2_air3d_par *p);
 
 /* The grid of air3D.m for Nx nodes in x: [-6, 20] x [-10, 10] x [0, 2 pi)

@@ -82,6 +82,12 @@ static double initial(const double *x, void *ctx)
 int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, double **phi, hj_ls_output_fn out,
                 void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
+    return p2_os_solve_rule(pb, r, HJ_LS_CFL_NODE, HJ_LS_WENO_EPS_LOCAL, g, phi, out, out_ctx, stats, err);
+}
+
+int p2_os_solve_rule(const p2_os_problem *pb, const p2_os_run *r, int cfl_rule, int weno_eps, hj_ls_grid *g,
+                     double **phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
+{
     *phi = NULL;
     int rc = p2_os_grid(r->dim, r->N, g, err);
     if (rc) return rc;
@@ -92,6 +98,8 @@ int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, doub
     p2_os_ctx c = {pb, r->dim, r->tight};
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(r->acc), r->diss, os_ham, os_partial, &c);
+    lf.cfl_rule = cfl_rule;
+    lf.weno_eps = weno_eps;
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
     o.factor_cfl = HJ_LS_FACTOR_CFL; /* burgersLF, nonconvexLF */

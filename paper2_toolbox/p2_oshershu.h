@@ -56,6 +56,12 @@ int p2_os_grid(int dim, long N, hj_ls_grid *g, hj_error *err);
 int p2_os_solve(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, double **phi, hj_ls_output_fn out,
                 void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
 
+/* The same with the CFL rule and WENO5 epsilon of the Lax-Friedrichs term
+ * (p2_os_solve: HJ_LS_CFL_NODE, HJ_LS_WENO_EPS_LOCAL; the toolbox's:
+ * HJ_LS_CFL_TOOLBOX, HJ_LS_WENO_EPS_GRID). */
+int p2_os_solve_rule(const p2_os_problem *pb, const p2_os_run *r, int cfl_rule, int weno_eps, hj_ls_grid *g,
+                     double **phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
+
 /* Exact G(s, t); *nroots (may be NULL) receives the number of feet. */
 double p2_os_exact(const p2_os_problem *pb, double s, double t, int *nroots);
 
