@@ -21,7 +21,9 @@ shallow horizontal rectangle near the origin") we follow `acoustic.m`: the
 target [-3.5, 3.5] x [-0.2, 0], the grid [-4, 4] x [-2, 3] with dx = 1/25
 (201 x 126 nodes), extrapolation boundaries, t = 4 with output every 0.5
 (the toolbox's 3 x 3 subplots), global dissipation, FactorCFL 0.75,
-default accuracy medium.
+default accuracy medium.  The set-up (parameters, grid, target,
+Hamiltonian, partial bounds, the solve) is shared in `p2_acoustic.c`; this
+program adds the checks.
 
 **Options.** `--accuracy`, `--diss`, `--dx`, `--Wp`, `--tmax`; any of them:
 one run (`acoustic_run.dat`, areas on stdout).
@@ -78,28 +80,13 @@ mirror| 3e-12).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_ode.h"
-#include "hj_ls_term.h"
 #include "hj_ls_accuracy.h"
 #include "hj_ls_seq.h"
+#include "p2_acoustic.h"
 #include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "acoustic";
-
-typedef struct {
-    double We, Wp, R, S;
-    const hj_ls_grid *g; /* for the mirror-exact x coordinate (xsym) */
-} par;
-
-/* x of the node nearest to x0 as (i - (N - 1)/2) dx: exactly antisymmetric
- * under i -> N - 1 - i on the toolbox grid (symmetric about x = 0), unlike
- * min + i dx; rounding of the coordinates then cannot break the game's
- * mirror symmetry. */
-static double xsym(const hj_ls_grid *g, double x0)
-{
-    const long i = lround((x0 - g->min[0]) / g->dx[0]);
-    return ((double)i - 0.5 * (double)(g->N[0] - 1)) * g->dx[0];
-}
 
 static void usage(void)
 {
@@ -109,31 +96,6 @@ static void usage(void)
            "acoustic_notes.md).  With any of them: one run (defaults: medium, global, dx = 1/25, Wp = 1.5,\n"
            "tmax = 4), its time sequence in acoustic_run.dat and its areas on stdout.\n"
            "See the comment at the top of acoustic.c.\n", prog);
-}
-
-static double speed_bound(const par *q, double x, double y)
-{
-    const double r = sqrt(x * x + y * y);
-    return 2 * q->We * (r < q->S ? r : q->S);
-}
-
-/* hamFunc: minus the Hamiltonian of section 2.6.2 (terminal to initial value). */
-static double ham(double t, const double *x, double phi, const double *p, void *ctx)
-{
-    (void)t, (void)phi;
-    const par *q = ctx;
-    const double xs = xsym(q->g, x[0]);
-    const double H = -p[1] * q->Wp - q->Wp / q->R * fabs(p[0] * x[1] - p[1] * xs) +
-                     sqrt(p[0] * p[0] + p[1] * p[1]) * speed_bound(q, xs, x[1]);
-    return -H;
-}
-
-static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
-{
-    (void)t, (void)pmin, (void)pmax;
-    const par *q = ctx;
-    const double xs = xsym(q->g, x[0]), e = speed_bound(q, xs, x[1]);
-    return d == 0 ? q->Wp / q->R * fabs(x[1]) + e : q->Wp + q->Wp / q->R * fabs(xs) + e;
 }
 
 /* Holes: connected components (4-neighbours) of {phi >= 0} that do not
@@ -189,23 +151,6 @@ static hole_stat holes(const hj_ls_grid *g, const double *phi, const double *phi
     return h;
 }
 
-/* max |phi(x, y) - phi(-x, y)| (the game is symmetric under x -> -x, a_x
- * -> -a_x, b -> -b); *flips: nodes whose membership of {phi < 0} differs
- * from their mirror node's. */
-static double asymmetry(const hj_ls_grid *g, const double *phi, long *flips)
-{
-    double m = 0;
-    *flips = 0;
-    for (long j = 0; j < g->N[1]; j++)
-        for (long i = 0; i < g->N[0]; i++) {
-            const double a = phi[hj_ls_index(g, (long[2]){i, j})], b = phi[hj_ls_index(g, (long[2]){g->N[0] - 1 - i, j})];
-            const double e = fabs(a - b);
-            m = e > m ? e : m;
-            *flips += (a < 0) != (b < 0);
-        }
-    return m;
-}
-
 typedef struct {
     const hj_ls_grid *g;
     const double *phi0;
@@ -220,7 +165,7 @@ static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *er
     snap *s = ctx;
     if (k < P2_MAXT) {
         s->hole[k] = holes(s->g, y, s->phi0);
-        s->asym[k] = asymmetry(s->g, y, &s->flips[k]);
+        s->asym[k] = p2_acoustic_asymmetry(s->g, y, &s->flips[k]);
     }
     return s->blocks ? hj_ls_seq_output(k, t, y, s->blocks, err) : HJ_OK;
 }
@@ -232,26 +177,14 @@ typedef struct {
     hj_ls_ode_stats st;
 } result;
 
-static void run(const par *q, int acc, int diss, double dx, double tmax, const char *path, result *r)
+static void run(const p2_acoustic_par *q, int acc, int diss, double dx, double tmax, const char *path, result *r)
 {
     hj_error err;
     hj_ls_grid g;
-    const double lo[2] = {-4, -2}, hi[2] = {4, 3}, dxs[2] = {dx, dx};
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    p2_fail_if(prog, hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
+    p2_fail_if(prog, p2_acoustic_grid(dx, &g, &err), &err);
     double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    /* the target [-3.5, 3.5] x [-0.2, 0]: max of the four half-plane
-     * distances (as hj_ls_shape_rectangle_corners) at mirror-exact x */
-    for (long j = 0; j < g.N[1]; j++)
-        for (long i = 0; i < g.N[0]; i++) {
-            const double x = ((double)i - 0.5 * (double)(g.N[0] - 1)) * g.dx[0], yy = g.min[1] + (double)j * g.dx[1];
-            const double a = fabs(x) - 3.5, b = fabs(yy + 0.1) - 0.1;
-            y[hj_ls_index(&g, (long[2]){i, j})] = a > b ? a : b;
-        }
-    par qq = *q;
-    qq.g = &g;
-    q = &qq;
+    p2_fail_if(prog, p2_acoustic_target(&g, y, &err), &err);
     hj_ls_copy(&g, y0, y);
     hj_out out;
     hj_ls_seq b;
@@ -263,19 +196,10 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     r->dx = dx;
     r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
     p2_fail_if(prog, p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
-    hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, &g, hj_ls_accuracy_scheme(acc), diss, ham, partial, (void *)q);
-    hj_ls_restrict rs;
-    hj_ls_restrict_init(&rs, &g, &lf.base, 0);
-    hj_ls_ode_opts o;
-    hj_ls_ode_defaults(&o);
-    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     double ts[9];
     hj_ls_seq_times(0, tmax, 9, ts);
     hj_progress("acoustic: accuracy %s, dx = %g ...\n", hj_ls_accuracy_name(acc), dx);
-    p2_fail_if(prog,
-               hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err),
-               &err);
+    p2_fail_if(prog, p2_acoustic_solve(&g, q, acc, diss, ts, 9, y, p2_reach_output, &r->log, &r->st, &err), &err);
     if (path) p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     p2_reach_log_free(&r->log);
     r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
@@ -288,7 +212,8 @@ int main(int argc, char **argv)
     const char *out_dir = ".";
     int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     double dx = 0.04, tmax = 4;
-    par q = {1.3, 1.5, 0.8, 0.5, NULL};
+    p2_acoustic_par q;
+    p2_acoustic_defaults(&q);
     hj_error err;
     static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
     for (int i = 1; i < argc; i++) {
