@@ -88,16 +88,6 @@ mirror| 3e-12).
 
 static const char *prog = "acoustic";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dx DX] [--Wp WP]\n"
-           "       [--tmax T] [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 18's data and the checks (acoustic.tsv, acoustic_2d.dat,\n"
-           "acoustic_notes.md).  With any of them: one run (defaults: medium, global, dx = 1/25, Wp = 1.5,\n"
-           "tmax = 4), its time sequence in acoustic_run.dat and its areas on stdout.\n"
-           "See the comment at the top of acoustic.c.\n", prog);
-}
-
 /* Holes: connected components (4-neighbours) of {phi >= 0} that do not
  * reach the grid's boundary.  A component with a node within 1.5 dx of the
  * target ({phi0 < 1.5 dx}) is a pocket against the target, not a hole in
@@ -210,28 +200,32 @@ static void run(const p2_acoustic_par *q, int acc, int diss, double dx, double t
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     double dx = 0.04, tmax = 4;
     p2_acoustic_par q;
     p2_acoustic_defaults(&q);
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 6, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        switch (v) {
-        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
-        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
-        case 2: rc = hj_parse_double(s, "--dx", 0.002, 0.5, &dx, &err); break;
-        case 3: rc = hj_parse_double(s, "--Wp", 0.01, 100, &q.Wp, &err); break;
-        case 4: rc = hj_parse_double(s, "--tmax", 1e-9, 100, &tmax, &err); break;
-        default: out_dir = s;
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 5) single = 1;
-    }
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        p2_opt_dissipation("--diss", &diss),
+        {.name = "--dx", .type = HJ_OPT_DOUBLE, .value = &dx, .min = 0.002, .max = 0.5, .metavar = "DX",
+         .help = "grid spacing (toolbox: 1/25)"},
+        {.name = "--Wp", .type = HJ_OPT_DOUBLE, .value = &q.Wp, .min = 0.01, .max = 100, .metavar = "WP",
+         .help = "pursuer speed W_p (the text's; acoustic.m: 1)"},
+        {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &tmax, .min = 1e-9, .max = 100, .metavar = "T",
+         .help = "final time, 8 output intervals"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on dx = 0.08, 0.04 only"),
+    };
+    enum { NRUN = 5 };
+    hj_cli_spec spec = {prog, "The acoustic capture game of Mitchell's toolbox (section 2.6.2, Figure 18).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With none of the run options (--accuracy .. --tmax): Figure 18's data and the checks\n"
+                        "(acoustic.tsv, acoustic_2d.dat, acoustic_notes.md).  With any of them: one run, its time\n"
+                        "sequence in acoustic_run.dat and its areas on stdout.  See the comment at the top of acoustic.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in

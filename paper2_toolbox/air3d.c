@@ -86,15 +86,6 @@ reachable set, medium, NX = 51; quick: 26), `air3d_vox.dat`; plotted by
 
 static const char *prog = "air3d";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--N NX] [--tmax T]\n"
-           "       [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 17's data and the checks (air3d.tsv, air3d.vtk, air3d_vox.dat,\n"
-           "air3d_notes.md).  With any of them: one run (defaults as air3D.m: medium, global, NX = 51, tmax = 2.8)\n"
-           "written to air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n", prog);
-}
-
 /* Asymmetry at every output time (snapshot callback of the reach log). */
 typedef struct {
     const hj_ls_grid *g;
@@ -146,26 +137,29 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     long Nx = 51;
     double tmax = 2.8;
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--diss", "--N", "--tmax", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 5, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        switch (v) {
-        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
-        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
-        case 2: rc = hj_parse_long(s, "--N", 8, 2000, &Nx, &err); break;
-        case 3: rc = hj_parse_double(s, "--tmax", 1e-9, 1000, &tmax, &err); break;
-        default: out_dir = s;
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 4) single = 1;
-    }
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        p2_opt_dissipation("--diss", &diss),
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &Nx, .min = 8, .max = 2000, .metavar = "NX",
+         .help = "nodes in x (air3D.m's grid)"},
+        {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &tmax, .min = 1e-9, .max = 1000, .metavar = "T",
+         .help = "final time, 8 output intervals"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on NX = 26 only"),
+    };
+    enum { NRUN = 4 };
+    hj_cli_spec spec = {prog, "The game of two identical vehicles of Mitchell's toolbox (section 2.6.1, Figure 17).",
+                        opts, (int)(sizeof opts / sizeof opts[0]),
+                        "With none of the run options (--accuracy .. --tmax): Figure 17's data and the checks\n"
+                        "(air3d.tsv, air3d.vtk, air3d_vox.dat, air3d_notes.md).  With any of them: one run written to\n"
+                        "air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
     p2_air3d_par par;
     p2_air3d_defaults(&par);

@@ -98,15 +98,6 @@ typedef struct {
     double c1, c2; /* f_s = (c1, c2) = (-va + vb cos psi, vb sin psi) */
 } par;
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--N N] [--out-dir DIR] [--quick]\n"
-           "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv, air_mode_2d.dat,\n"
-           "air_mode_notes.md).  With one of them: one run (defaults as airMode.m: medium, N = 101 on\n"
-           "[-25, 25]^2) written to air_mode_run.dat (x y reach avoid mode3 mode2 switch2).\n"
-           "See the comment at the top of air_mode.c.\n", prog);
-}
-
 /* The curved mode's PDE velocity -f_c(x) = -(c1 + omega y, c2 - omega x), one row at a time. */
 static void curved(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
 {
@@ -272,21 +263,26 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM;
     long N = 101;
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--N", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 3, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        if (v == 0) rc = hj_ls_accuracy_parse(s, &acc, &err);
-        else if (v == 1) rc = hj_parse_long(s, "--N", 11, 4001, &N, &err);
-        else out_dir = s;
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 2) single = 1;
-    }
+    /* the run options first: either makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 11, .max = 4001, .metavar = "N",
+         .help = "nodes per side of [-25, 25]^2 (airMode.m's grid)"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on N = 101, 201 only"),
+    };
+    enum { NRUN = 2 };
+    hj_cli_spec spec = {prog, "Three-mode collision avoidance of Mitchell's toolbox (section 2.6.3, Figure 20).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv,\n"
+                        "air_mode_2d.dat, air_mode_notes.md).  With one of them: one run written to air_mode_run.dat\n"
+                        "(x y reach avoid mode3 mode2 switch2), its areas on stdout.  See the comment at the top of\n"
+                        "air_mode.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     omp_set_num_threads(1); /* 2-D grids: see acoustic.c */
