@@ -197,22 +197,6 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
     hj_ls_free(y0), hj_ls_free(y);
 }
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--flow F] [--accuracy A] [--dim D] [--N N] [--periodic] [--quick] --out-dir DIR\n"
-            "convectionDemo of Mitchell's toolbox (section 2.1); see the comment at the top of convection_demo.c.\n"
-            "  --flow F       constant (default), linear, constantRev, linearRev\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --dim D        1 .. 4 (default 2)\n"
-            "  --N N          nodes per dimension on [-1, 1] (default 101, dx = 2 / (N - 1)); periodic: N - 1 nodes\n"
-            "  --periodic     periodic boundaries (default: extrapolation)\n"
-            "  --quick        the default set without the 3-D run (make check QUICK=1)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "With none of --flow, --accuracy, --dim, --N, --periodic: the figures and checked table.\n",
-            PROG);
-}
-
 static void table_header(FILE *fp)
 {
     fprintf(fp, "flow\tdim\tN\tbc\tacc\tmeasure\tfront_max\tfront_mean\texact_measure\tsteps\n");
@@ -228,25 +212,33 @@ static void table_row(FILE *fp, const cfg *c, const result *r)
 int main(int argc, char **argv)
 {
     cfg one = {P2_CONSTANT, HJ_LS_ACC_LOW, 2, 0, 101};
-    int single = 0, quick = 0;
+    int quick = 0;
+    long dim = one.dim;
     const char *dir = ".";
     hj_error err;
-    static const char *const valued[] = {"--flow", "--accuracy", "--dim", "--N", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--periodic")) { one.periodic = 1, single = 1; continue; }
-        const char *v;
-        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 5, &quick, &v);
-        int rc = 0;
-        long lv = 0;
-        if (k < 0) continue;
-        if (k == 4) { dir = v; continue; }
-        single = 1;
-        if (k == 0) rc = p2_parse_choice(v, "flow", p2_flow_name, P2_NFLOW, &one.flow, &err);
-        else if (k == 1) rc = hj_ls_accuracy_parse(v, &one.acc, &err);
-        else if (k == 2) rc = hj_parse_long(v, "--dim", 1, 4, &lv, &err), one.dim = (int)lv;
-        else rc = hj_parse_long(v, "--N", 5, 100000, &one.N, &err);
-        if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    const char *flows[P2_NFLOW + 1] = {NULL};
+    for (int k = 0; k < P2_NFLOW; k++) flows[k] = p2_flow_name[k];
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        {.name = "--flow", .type = HJ_OPT_CHOICE, .value = &one.flow, .choices = flows, .metavar = "F",
+         .help = "velocity field (section 2.1)"},
+        p2_opt_accuracy(&one.acc),
+        {.name = "--dim", .type = HJ_OPT_LONG, .value = &dim, .min = 1, .max = 4, .metavar = "D", .help = "dimension"},
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &one.N, .min = 5, .max = 100000, .metavar = "N",
+         .help = "nodes per dimension on [-1, 1], dx = 2 / (N - 1); periodic: N - 1 nodes"},
+        {.name = "--periodic", .type = HJ_OPT_FLAG, .value = &one.periodic,
+         .help = "periodic boundaries (default: extrapolation)"},
+        p2_opt_out_dir(&dir),
+        p2_opt_quick(&quick, "the default set without the 3-D run (make check QUICK=1)"),
+    };
+    enum { NRUN = 5 };
+    hj_cli_spec spec = {PROG, "convectionDemo of Mitchell's toolbox (section 2.1, Figures 1-3).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With none of --flow, --accuracy, --dim, --N, --periodic: the figures and checked table.\n"
+                        "See the comment at the top of convection_demo.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
+    one.dim = (int)dim;
     if (hj_mkdirs(dir, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     char path[4096], path2[4096], path3[4096];
     hj_out tab;

@@ -136,41 +136,33 @@ static double run(const lf_case *c, int flow, int acc, int diss, double *phi, co
     return secs;
 }
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--flow F] [--shape S] [--accuracy A] [--dissipation D] [--quick] --out-dir DIR\n"
-            "laxFriedrichsDemo of Mitchell's toolbox (section 2.2.2); see the comment at the top of "
-            "lax_friedrichs_demo.c.\n"
-            "  --flow F         constant or linear (default linear)\n"
-            "  --shape S        circle or cube (default cube)\n"
-            "  --accuracy A     low (default), medium, high, veryHigh\n"
-            "  --dissipation D  global (default), local, locallocal\n"
-            "  --quick          the default set for low and medium only\n"
-            "  --out-dir DIR    output directory (default .)\n"
-            "With none of --flow, --shape, --accuracy, --dissipation: the figure's data and lax_friedrichs.tsv.\n",
-            PROG);
-}
-
 int main(int argc, char **argv)
 {
-    int flow = P2_LINEAR, shape = 1, acc = HJ_LS_ACC_LOW, diss = 0, single = 0, quick = 0;
+    int flow = P2_LINEAR, shape = 1, acc = HJ_LS_ACC_LOW, diss = HJ_LS_GLF, quick = 0;
     const char *dir = ".";
     hj_error err;
-    static const char *const valued[] = {"--flow", "--shape", "--accuracy", "--dissipation", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 5, &quick, &v);
-        int rc = 0;
-        if (k < 0) continue;
-        if (k == 4) { dir = v; continue; }
-        single = 1;
-        if (k == 0) rc = p2_parse_choice(v, "flow (time-independent)", p2_flow_name, 2, &flow, &err);
-        else if (k == 1) rc = p2_parse_choice(v, "shape", SHAPE, 2, &shape, &err);
-        else if (k == 2) rc = hj_ls_accuracy_parse(v, &acc, &err);
-        else rc = hj_ls_dissipation_parse(v, &diss, &err);
-        if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    /* the time-independent flows of convectionDemo */
+    const char *flows[3] = {p2_flow_name[P2_CONSTANT], p2_flow_name[P2_LINEAR], NULL};
+    static const char *const shapes[3] = {"circle", "cube", NULL};
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        {.name = "--flow", .type = HJ_OPT_CHOICE, .value = &flow, .choices = flows, .metavar = "F",
+         .help = "velocity field (time-independent, section 2.1)"},
+        {.name = "--shape", .type = HJ_OPT_CHOICE, .value = &shape, .choices = shapes, .metavar = "S",
+         .help = "initial set"},
+        p2_opt_accuracy(&acc),
+        p2_opt_dissipation("--dissipation", &diss),
+        p2_opt_out_dir(&dir),
+        p2_opt_quick(&quick, "the default set for low and medium only"),
+    };
+    enum { NRUN = 4 };
+    hj_cli_spec spec = {PROG, "laxFriedrichsDemo of Mitchell's toolbox (section 2.2.2, Figure 6).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With none of --flow, --shape, --accuracy, --dissipation: the figure's data and\n"
+                        "lax_friedrichs.tsv; with any of them: one run, lax_friedrichs_run.tsv and lax_friedrichs_run.dat.\n"
+                        "See the comment at the top of lax_friedrichs_demo.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
     char path[4096];
     hj_out tab, notes;

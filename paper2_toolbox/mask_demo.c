@@ -210,31 +210,22 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
     hj_ls_free(y), hj_ls_free(psi), hj_ls_free(min), hj_ls_free(y2), hj_ls_free(min2);
 }
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--accuracy A] [--quick] --out-dir DIR\n"
-            "maskDemo of Mitchell's toolbox (section 2.2.3); see the comment at the top of mask_demo.c.\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --quick        the same set (it takes a second)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "Without --accuracy: every accuracy, the figure's data (low) and mask.tsv.\n",
-            PROG);
-}
-
 int main(int argc, char **argv)
 {
-    int acc = HJ_LS_ACC_LOW, single = 0, quick = 0; /* --quick: the same set */
+    int acc = HJ_LS_ACC_LOW, quick = 0; /* --quick: the same set */
     const char *dir = ".";
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const int k = p2_option(PROG, usage, argc, argv, &i, valued, 2, &quick, &v);
-        if (k == 1) dir = v;
-        else if (k == 0 && hj_ls_accuracy_parse(v, &acc, &err)) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-        single |= k == 0;
-    }
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        p2_opt_out_dir(&dir),
+        p2_opt_quick(&quick, "the same set (it takes a second)"),
+    };
+    hj_cli_spec spec = {PROG, "maskDemo of Mitchell's toolbox (section 2.2.3, Figure 7).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "Without --accuracy: every accuracy, the figure's data (low) and mask.tsv; with it: one run,\n"
+                        "mask_run.tsv, mask_run_seq.dat and mask_run_min.dat.  See the comment at the top of mask_demo.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = opts[0].seen;
     p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
     char path[4096], seq[4096], mn[4096];
     hj_out tab, notes;
