@@ -92,16 +92,12 @@ larger).
 
 static const char *prog = "burgers_lf";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dim D]\n"
-           "       [--N N] [--tmax T] [--out-dir DIR] [--quick]\n"
-           "With none of the first five options: Figure 14's data and the convergence study against the exact\n"
-           "solution (burgers.tsv, burgers_fit.tsv, burgers_1d.dat, burgers_2d.dat, burgers_notes.md).\n"
-           "With any of them: one run (defaults as the toolbox: low, global, dim 2, N = 80 / 2^(dim-1),\n"
-           "tmax = 1.5/pi^2), its time sequence in burgers_run.dat and its errors on stdout.\n"
-           "See the comment at the top of burgers_lf.c.\n", prog);
-}
+static const char *summary = "burgersLF of Mitchell's toolbox: Burgers' equation as a general Hamiltonian (section 2.5.1, Figure 14).";
+static const char *epilog =
+    "With none of the first five options: Figure 14's data and the convergence study against the exact\n"
+    "solution (burgers.tsv, burgers_fit.tsv, burgers_1d.dat, burgers_2d.dat, burgers_notes.md).\n"
+    "With any of them: one run, its time sequence in burgers_run.dat and its errors on stdout.\n"
+    "See the comment at the top of burgers_lf.c.\n";
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
@@ -120,12 +116,10 @@ int main(int argc, char **argv)
 {
     hj_error err;
     p2_os_cli cli;
-    if (p2_os_parse_cli(argc, argv, 0, &cli, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (cli.help) { usage(); return 0; }
+    p2_os_parse_cli(prog, summary, epilog, argc, argv, 0, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
     p2_os_run r = cli.run;
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* Grids of at most 1280 or 160^2 nodes: a second thread costs more in
      * synchronisation than it saves (results do not depend on it). */

@@ -76,15 +76,11 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 
 static const char *prog = "nonconvex_lf";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dim D]\n"
-           "       [--N N] [--tmax T] [--partial toolbox|tight] [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 15's data and the checks (nonconvex.tsv, nonconvex_1d.dat,\n"
-           "nonconvex_2d.dat, nonconvex_notes.md).  With any of them: one run (defaults as the toolbox: low,\n"
-           "global, dim 2, N = 80 / 2^(dim-1), tmax = 1.5/pi^2, the toolbox's partial bound 1), its time\n"
-           "sequence in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n", prog);
-}
+static const char *summary = "nonconvexLF of Mitchell's toolbox: a non-convex Hamiltonian (section 2.5.2, Figure 15).";
+static const char *epilog =
+    "With none of the run options (--accuracy .. --partial): Figure 15's data and the checks (nonconvex.tsv,\n"
+    "nonconvex_1d.dat, nonconvex_2d.dat, nonconvex_notes.md).  With any of them: one run, its time sequence\n"
+    "in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n";
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
@@ -124,11 +120,9 @@ int main(int argc, char **argv)
 {
     hj_error err;
     p2_os_cli cli;
-    if (p2_os_parse_cli(argc, argv, 1, &cli, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (cli.help) { usage(); return 0; }
+    p2_os_parse_cli(prog, summary, epilog, argc, argv, 1, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
     omp_set_num_threads(1);
