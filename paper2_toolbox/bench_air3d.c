@@ -48,21 +48,19 @@ int main(int argc, char **argv)
 {
     const char *out_dir = ".";
     long repeat = 3;
+    int quick = 0;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help")) {
-            printf("usage: %s [--repeat K] [--out-dir DIR]\nSee the comment at the top of bench_air3d.c.\n", prog);
-            return 0;
-        }
-        if (!strcmp(argv[i], "--quick")) continue;
-        if (i + 1 >= argc || (strcmp(argv[i], "--out-dir") && strcmp(argv[i], "--repeat")))
-            hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option or missing value: '%s' (see --help)", argv[i]);
-        if (!strcmp(argv[i], "--repeat")) {
-            if (hj_parse_long(argv[i + 1], "--repeat", 1, 100, &repeat, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        } else
-            out_dir = argv[i + 1];
-        i++;
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--repeat", .type = HJ_OPT_LONG, .value = &repeat, .min = 1, .max = 100, .metavar = "K",
+         .help = "runs of each configuration (the fastest is kept)"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
+         .help = "where to write the benchmark's table"},
+        /* the benchmark has one size: --quick is accepted as by every program, and changes nothing */
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "accepted; changes nothing"},
+    };
+    hj_cli_spec spec = {prog, "Benchmark: air3D (section 2.6.1) at accuracy low and medium, 1 and 2 threads.", opts,
+                        (int)(sizeof opts / sizeof opts[0]), "See the comment at the top of bench_air3d.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     if (hj_mkdirs(out_dir, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     p2_air3d_par par;
     p2_air3d_defaults(&par);

@@ -60,39 +60,25 @@ static const char *const PROG = "bench_convection";
 enum { NLEVEL = HJ_LS_NACC };
 static const double PUBLISHED[NLEVEL] = {140, 684, 2433, 2585};
 
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: %s [--n N] [--levels L1,L2,..] [--threads T1,T2,..] --out-dir DIR\n"
-            "Table 1 of Mitchell's toolbox: convectionDemo('linear') on an N^3 grid.\n"
-            "  --n N           nodes per dimension (default 101)\n"
-            "  --levels LIST   numbers 0..3 = low, medium, high, veryHigh (default all)\n"
-            "  --threads LIST  OpenMP thread counts to run (default 1,2)\n"
-            "  --out-dir DIR   where convection.md goes\n"
-            "  --help          this text\n",
-            PROG);
-}
-
 int main(int argc, char **argv)
 {
     long n = 101, levels[NLEVEL] = {0, 1, 2, 3}, threads[8] = {1, 2};
     int nlev = NLEVEL, nthr = 2;
     const char *dir = NULL;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (strcmp(a, "--n") && strcmp(a, "--levels") && strcmp(a, "--threads") && strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (!v) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        i++;
-        int rc = 0;
-        if (!strcmp(a, "--n")) rc = hj_parse_long(v, "--n", 8, 2000, &n, &err);
-        else if (!strcmp(a, "--levels")) rc = hj_parse_long_list(v, "--levels", 0, 3, levels, NLEVEL, &nlev, &err);
-        else if (!strcmp(a, "--threads")) rc = hj_parse_long_list(v, "--threads", 1, 256, threads, 8, &nthr, &err);
-        else dir = v;
-        if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--n", .type = HJ_OPT_LONG, .value = &n, .min = 8, .max = 2000, .metavar = "N",
+         .help = "nodes per dimension"},
+        {.name = "--levels", .type = HJ_OPT_LONG_LIST, .value = levels, .min = 0, .max = 3, .count = &nlev,
+         .maxn = NLEVEL, .metavar = "LIST", .help = "accuracy levels 0..3 = low, medium, high, veryHigh"},
+        {.name = "--threads", .type = HJ_OPT_LONG_LIST, .value = threads, .min = 1, .max = 256, .count = &nthr,
+         .maxn = 8, .metavar = "LIST", .help = "OpenMP thread counts to run"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
+         .help = "where the benchmark's table goes (required)"},
+    };
+    hj_cli_spec spec = {PROG, "Table 1 of Mitchell's toolbox: convectionDemo('linear') on an N^3 grid.", opts,
+                        (int)(sizeof opts / sizeof opts[0]), "See the comment at the top of bench_convection.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     if (!dir) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--out-dir is required (see --help)");
     if (hj_mkdirs(dir, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
 

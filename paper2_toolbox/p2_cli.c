@@ -2,7 +2,6 @@
 #include "p2_cli.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "hj_cli.h"
