@@ -37,8 +37,8 @@ which nowhere touches the target; by t = 1.5 the set has swallowed it.
 medium, on dx = 0.08, 0.04, 0.02 (quick: the first two), at every output
 time:
 - the area of the set (second order measure): no exact value; reference
-  our own run, and the sequence in `acoustic_notes.md` shows the
-  convergence;
+  our own run, and the note (`notes/acoustic_notes.md`, from
+  `acoustic_summary.tsv`) shows the convergence;
 - `increased` must be 0 (restricted update);
 - holes: the components of {phi >= 0} that are enclosed by the set (do
   not reach the box boundary) and lie more than 1.5 dx from the target
@@ -54,7 +54,7 @@ time:
   (N - 1)/2) dx, exactly antisymmetric; with the grid's min + i dx the
   rounding seeded an asymmetry that grew to 3e-8 by t = 4 on dx = 0.02.
 
-**Result** (full run, `acoustic_notes.md`): the area at t = 4 is 35.77,
+**Result** (full run, the note): the area at t = 4 is 35.77,
 35.63, 35.70 on dx = 0.08, 0.04, 0.02 (at t = 1: 21.70, 22.65, 23.11, still
 moving by 2 %: the fronts are not yet resolved there).  At t = 1 each grid
 has exactly one hole, 0.84 from the target (0.80 on dx = 0.08); its area
@@ -65,7 +65,9 @@ increased; no node changed membership under the mirror (largest |phi -
 mirror| 3e-12).
 
 **Outputs.** `acoustic.tsv`, `acoustic_2d.dat` (9 index blocks, dx =
-1/25), `acoustic_notes.md`; plotted by `plot/fig18.gp`.
+1/25), `acoustic_summary.tsv` (per output time: the areas and holes on
+every grid and the mirror check, which `notes/acoustic_notes.md`
+presents); plotted by `plot/fig18.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -222,7 +224,7 @@ int main(int argc, char **argv)
     hj_cli_spec spec = {prog, "The acoustic capture game of Mitchell's toolbox (section 2.6.2, Figure 18).", opts,
                         (int)(sizeof opts / sizeof opts[0]),
                         "With none of the run options (--accuracy .. --tmax): Figure 18's data and the checks\n"
-                        "(acoustic.tsv, acoustic_2d.dat, acoustic_notes.md).  With any of them: one run, its time\n"
+                        "(acoustic.tsv, acoustic_2d.dat, acoustic_summary.tsv).  With any of them: one run, its time\n"
                         "sequence in acoustic_run.dat and its areas on stdout.  See the comment at the top of acoustic.c.\n"};
     hj_cli_parse_or_exit(&spec, argc, argv);
     const int single = p2_seen_any(opts, NRUN);
@@ -268,31 +270,33 @@ int main(int argc, char **argv)
             if (h->n) fprintf(out.fp, "%.3g\t", h->gap); else fputs("-\t", out.fp);
             fprintf(out.fp, "%.3e\t%ld\n", R[k].sn.asym[m], R[k].sn.flips[m]);
         }
-    p2_next_file(prog, &out, out_dir, "acoustic_notes.md");
-    fprintf(out.fp, "\nArea of the reachable set and of its holes (components of the complement enclosed by the set "
-                    "and more than 1.5 dx from the target) on three grids, accuracy medium:\n\n"
-                    "| t | area, dx = 0.08 | dx = 0.04 | dx = 0.02 | hole area (0.08 / 0.04 / 0.02) | hole distance to "
-                    "target |\n|---|---|---|---|---|---|\n");
+    /* The numbers of the report's note (notes/acoustic_notes.md), one row per output time. */
+    p2_next_file(prog, &out, out_dir, "acoustic_summary.tsv");
+    fprintf(out.fp, "# acoustic capture, accuracy %s, per output time: area of the reachable set and of its holes on each grid\n"
+                    "# (- where the grid is not run: --quick); hole_gap = the holes' distance to the target on the finest grid\n"
+                    "# run (- without a hole); over all grids: nodes where phi increased since the previous output and nodes\n"
+                    "# whose membership of the set differs from their mirror node's (summed), the largest |phi(x,y) - phi(-x,y)|\n"
+                    "t", hj_ls_accuracy_name(acc));
+    for (int k = 0; k < 3; k++) fprintf(out.fp, "\tarea_%g", dxs[k]);
+    for (int k = 0; k < 3; k++) fprintf(out.fp, "\thole_area_%g", dxs[k]);
+    fputs("\thole_gap\tincreased\tflips\tasym\n", out.fp);
     for (int m = 0; m < R[0].log.n; m++) {
-        fprintf(out.fp, "| %.1f |", R[0].log.t[m]);
+        fprintf(out.fp, "%.17g", R[0].log.t[m]);
         for (int k = 0; k < 3; k++)
-            if (k < nd) fprintf(out.fp, " %.3f |", R[k].log.measure[m]); else fputs(" - |", out.fp);
+            if (k < nd) fprintf(out.fp, "\t%.17g", R[k].log.measure[m]); else fputs("\t-", out.fp);
         for (int k = 0; k < 3; k++)
-            if (k < nd) fprintf(out.fp, "%s%.3f", k ? " / " : " ", R[k].sn.hole[m].area); else fputs(" / -", out.fp);
+            if (k < nd) fprintf(out.fp, "\t%.17g", R[k].sn.hole[m].area); else fputs("\t-", out.fp);
         const hole_stat *h = &R[nd - 1].sn.hole[m];
-        if (h->n) fprintf(out.fp, " | %.2f |\n", h->gap); else fputs(" | - |\n", out.fp);
-    }
-    long inc = 0, flips = 0;
-    double asym = 0;
-    for (int k = 0; k < nd; k++)
-        for (int m = 0; m < R[k].log.n; m++) {
+        if (h->n) fprintf(out.fp, "\t%.17g", h->gap); else fputs("\t-", out.fp);
+        long inc = 0, flips = 0;
+        double asym = 0;
+        for (int k = 0; k < nd; k++) {
             inc += R[k].log.increased[m];
             flips += R[k].sn.flips[m];
             asym = R[k].sn.asym[m] > asym ? R[k].sn.asym[m] : asym;
         }
-    fprintf(out.fp, "\nphi increased at %ld nodes between output times in all runs (the set never shrinks).  Mirror "
-                    "x -> -x: %ld nodes in all changed membership of the set; largest |phi(x, y) - phi(-x, y)|: "
-                    "%.1e.\n\n", inc, flips, asym);
+        fprintf(out.fp, "\t%ld\t%ld\t%.17g\n", inc, flips, asym);
+    }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }
