@@ -52,10 +52,10 @@ its zero level set), recorded by the post-timestep function.
   the calling loop; reference 0 (kind error: bitwise or round-off).
 
 **Outputs.** mask.tsv, mask_summary.tsv (the same runs in full precision
-with the areas' changes, which notes/mask_notes.md presents), mask_seq.dat (x y phi psi at the nine
-output times, gnuplot index blocks; `low`, the default), mask_min.dat (x y
-psi min_t phi phi(0.6)).  With --accuracy: one run, mask_run.tsv,
-mask_run_seq.dat, mask_run_min.dat.
+with the areas' changes, which notes/mask_notes.md presents), mask_seq.dat
+(x y phi psi at the nine output times, gnuplot index blocks; `low`, the
+default), mask_min.dat (x y psi min_t phi phi(0.6)).  With --accuracy: one
+run, mask_run.tsv, mask_run_seq.dat, mask_run_min.dat.
 */
 #include <math.h>
 #include <stdio.h>
