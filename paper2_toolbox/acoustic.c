@@ -21,7 +21,9 @@ shallow horizontal rectangle near the origin") we follow `acoustic.m`: the
 target [-3.5, 3.5] x [-0.2, 0], the grid [-4, 4] x [-2, 3] with dx = 1/25
 (201 x 126 nodes), extrapolation boundaries, t = 4 with output every 0.5
 (the toolbox's 3 x 3 subplots), global dissipation, FactorCFL 0.75,
-default accuracy medium.
+default accuracy medium.  The set-up (parameters, grid, target,
+Hamiltonian, partial bounds, the solve) is shared in `p2_acoustic.c`; this
+program adds the checks.
 
 **Options.** `--accuracy`, `--diss`, `--dx`, `--Wp`, `--tmax`; any of them:
 one run (`acoustic_run.dat`, areas on stdout).
@@ -35,8 +37,8 @@ which nowhere touches the target; by t = 1.5 the set has swallowed it.
 medium, on dx = 0.08, 0.04, 0.02 (quick: the first two), at every output
 time:
 - the area of the set (second order measure): no exact value; reference
-  our own run, and the sequence in `acoustic_notes.md` shows the
-  convergence;
+  our own run, and the note (`notes/acoustic_notes.md`, from
+  `acoustic_summary.tsv`) shows the convergence;
 - `increased` must be 0 (restricted update);
 - holes: the components of {phi >= 0} that are enclosed by the set (do
   not reach the box boundary) and lie more than 1.5 dx from the target
@@ -52,7 +54,7 @@ time:
   (N - 1)/2) dx, exactly antisymmetric; with the grid's min + i dx the
   rounding seeded an asymmetry that grew to 3e-8 by t = 4 on dx = 0.02.
 
-**Result** (full run, `acoustic_notes.md`): the area at t = 4 is 35.77,
+**Result** (full run, the note): the area at t = 4 is 35.77,
 35.63, 35.70 on dx = 0.08, 0.04, 0.02 (at t = 1: 21.70, 22.65, 23.11, still
 moving by 2 %: the fronts are not yet resolved there).  At t = 1 each grid
 has exactly one hole, 0.84 from the target (0.80 on dx = 0.08); its area
@@ -63,7 +65,9 @@ increased; no node changed membership under the mirror (largest |phi -
 mirror| 3e-12).
 
 **Outputs.** `acoustic.tsv`, `acoustic_2d.dat` (9 index blocks, dx =
-1/25), `acoustic_notes.md`; plotted by `plot/fig18.gp`.
+1/25), `acoustic_summary.tsv` (per output time: the areas and holes on
+every grid and the mirror check, which `notes/acoustic_notes.md`
+presents); plotted by `plot/fig18.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -78,63 +82,13 @@ mirror| 3e-12).
 #include "hj_io.h"
 #include "hj_ls_io.h"
 #include "hj_ls_ode.h"
-#include "hj_ls_term.h"
 #include "hj_ls_accuracy.h"
 #include "hj_ls_seq.h"
+#include "p2_acoustic.h"
 #include "p2_cli.h"
 #include "p2_reach.h"
 
 static const char *prog = "acoustic";
-
-typedef struct {
-    double We, Wp, R, S;
-    const hj_ls_grid *g; /* for the mirror-exact x coordinate (xsym) */
-} par;
-
-/* x of the node nearest to x0 as (i - (N - 1)/2) dx: exactly antisymmetric
- * under i -> N - 1 - i on the toolbox grid (symmetric about x = 0), unlike
- * min + i dx; rounding of the coordinates then cannot break the game's
- * mirror symmetry. */
-static double xsym(const hj_ls_grid *g, double x0)
-{
-    const long i = lround((x0 - g->min[0]) / g->dx[0]);
-    return ((double)i - 0.5 * (double)(g->N[0] - 1)) * g->dx[0];
-}
-
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dx DX] [--Wp WP]\n"
-           "       [--tmax T] [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 18's data and the checks (acoustic.tsv, acoustic_2d.dat,\n"
-           "acoustic_notes.md).  With any of them: one run (defaults: medium, global, dx = 1/25, Wp = 1.5,\n"
-           "tmax = 4), its time sequence in acoustic_run.dat and its areas on stdout.\n"
-           "See the comment at the top of acoustic.c.\n", prog);
-}
-
-static double speed_bound(const par *q, double x, double y)
-{
-    const double r = sqrt(x * x + y * y);
-    return 2 * q->We * (r < q->S ? r : q->S);
-}
-
-/* hamFunc: minus the Hamiltonian of section 2.6.2 (terminal to initial value). */
-static double ham(double t, const double *x, double phi, const double *p, void *ctx)
-{
-    (void)t, (void)phi;
-    const par *q = ctx;
-    const double xs = xsym(q->g, x[0]);
-    const double H = -p[1] * q->Wp - q->Wp / q->R * fabs(p[0] * x[1] - p[1] * xs) +
-                     sqrt(p[0] * p[0] + p[1] * p[1]) * speed_bound(q, xs, x[1]);
-    return -H;
-}
-
-static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
-{
-    (void)t, (void)pmin, (void)pmax;
-    const par *q = ctx;
-    const double xs = xsym(q->g, x[0]), e = speed_bound(q, xs, x[1]);
-    return d == 0 ? q->Wp / q->R * fabs(x[1]) + e : q->Wp + q->Wp / q->R * fabs(xs) + e;
-}
 
 /* Holes: connected components (4-neighbours) of {phi >= 0} that do not
  * reach the grid's boundary.  A component with a node within 1.5 dx of the
@@ -189,23 +143,6 @@ static hole_stat holes(const hj_ls_grid *g, const double *phi, const double *phi
     return h;
 }
 
-/* max |phi(x, y) - phi(-x, y)| (the game is symmetric under x -> -x, a_x
- * -> -a_x, b -> -b); *flips: nodes whose membership of {phi < 0} differs
- * from their mirror node's. */
-static double asymmetry(const hj_ls_grid *g, const double *phi, long *flips)
-{
-    double m = 0;
-    *flips = 0;
-    for (long j = 0; j < g->N[1]; j++)
-        for (long i = 0; i < g->N[0]; i++) {
-            const double a = phi[hj_ls_index(g, (long[2]){i, j})], b = phi[hj_ls_index(g, (long[2]){g->N[0] - 1 - i, j})];
-            const double e = fabs(a - b);
-            m = e > m ? e : m;
-            *flips += (a < 0) != (b < 0);
-        }
-    return m;
-}
-
 typedef struct {
     const hj_ls_grid *g;
     const double *phi0;
@@ -220,7 +157,7 @@ static int on_snapshot(int k, double t, const double *y, void *ctx, hj_error *er
     snap *s = ctx;
     if (k < P2_MAXT) {
         s->hole[k] = holes(s->g, y, s->phi0);
-        s->asym[k] = asymmetry(s->g, y, &s->flips[k]);
+        s->asym[k] = p2_acoustic_asymmetry(s->g, y, &s->flips[k]);
     }
     return s->blocks ? hj_ls_seq_output(k, t, y, s->blocks, err) : HJ_OK;
 }
@@ -232,26 +169,14 @@ typedef struct {
     hj_ls_ode_stats st;
 } result;
 
-static void run(const par *q, int acc, int diss, double dx, double tmax, const char *path, result *r)
+static void run(const p2_acoustic_par *q, int acc, int diss, double dx, double tmax, const char *path, result *r)
 {
     hj_error err;
     hj_ls_grid g;
-    const double lo[2] = {-4, -2}, hi[2] = {4, 3}, dxs[2] = {dx, dx};
-    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    p2_fail_if(prog, hj_ls_grid_init_dx(&g, 2, lo, hi, dxs, bc, &err), &err);
+    p2_fail_if(prog, p2_acoustic_grid(dx, &g, &err), &err);
     double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g);
     if (!y || !y0) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    /* the target [-3.5, 3.5] x [-0.2, 0]: max of the four half-plane
-     * distances (as hj_ls_shape_rectangle_corners) at mirror-exact x */
-    for (long j = 0; j < g.N[1]; j++)
-        for (long i = 0; i < g.N[0]; i++) {
-            const double x = ((double)i - 0.5 * (double)(g.N[0] - 1)) * g.dx[0], yy = g.min[1] + (double)j * g.dx[1];
-            const double a = fabs(x) - 3.5, b = fabs(yy + 0.1) - 0.1;
-            y[hj_ls_index(&g, (long[2]){i, j})] = a > b ? a : b;
-        }
-    par qq = *q;
-    qq.g = &g;
-    q = &qq;
+    p2_fail_if(prog, p2_acoustic_target(&g, y, &err), &err);
     hj_ls_copy(&g, y0, y);
     hj_out out;
     hj_ls_seq b;
@@ -263,19 +188,10 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
     r->dx = dx;
     r->sn.g = &g, r->sn.phi0 = y0, r->sn.blocks = path ? &b : NULL;
     p2_fail_if(prog, p2_reach_log_init(&r->log, &g, -1, 0, y, on_snapshot, &r->sn, &err), &err);
-    hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, &g, hj_ls_accuracy_scheme(acc), diss, ham, partial, (void *)q);
-    hj_ls_restrict rs;
-    hj_ls_restrict_init(&rs, &g, &lf.base, 0);
-    hj_ls_ode_opts o;
-    hj_ls_ode_defaults(&o);
-    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
     double ts[9];
     hj_ls_seq_times(0, tmax, 9, ts);
     hj_progress("acoustic: accuracy %s, dx = %g ...\n", hj_ls_accuracy_name(acc), dx);
-    p2_fail_if(prog,
-               hj_ls_ode(hj_ls_accuracy_order(acc), &g, &rs.base, ts, 9, y, &o, p2_reach_output, &r->log, &r->st, &err),
-               &err);
+    p2_fail_if(prog, p2_acoustic_solve(&g, q, acc, diss, ts, 9, y, p2_reach_output, &r->log, &r->st, &err), &err);
     if (path) p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     p2_reach_log_free(&r->log);
     r->sn.g = NULL, r->sn.phi0 = NULL, r->sn.blocks = NULL;
@@ -286,27 +202,32 @@ static void run(const par *q, int acc, int diss, double dx, double tmax, const c
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     double dx = 0.04, tmax = 4;
-    par q = {1.3, 1.5, 0.8, 0.5, NULL};
+    p2_acoustic_par q;
+    p2_acoustic_defaults(&q);
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--diss", "--dx", "--Wp", "--tmax", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 6, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        switch (v) {
-        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
-        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
-        case 2: rc = hj_parse_double(s, "--dx", 0.002, 0.5, &dx, &err); break;
-        case 3: rc = hj_parse_double(s, "--Wp", 0.01, 100, &q.Wp, &err); break;
-        case 4: rc = hj_parse_double(s, "--tmax", 1e-9, 100, &tmax, &err); break;
-        default: out_dir = s;
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 5) single = 1;
-    }
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        p2_opt_dissipation("--diss", &diss),
+        {.name = "--dx", .type = HJ_OPT_DOUBLE, .value = &dx, .min = 0.002, .max = 0.5, .metavar = "DX",
+         .help = "grid spacing (toolbox: 1/25)"},
+        {.name = "--Wp", .type = HJ_OPT_DOUBLE, .value = &q.Wp, .min = 0.01, .max = 100, .metavar = "WP",
+         .help = "pursuer speed W_p (the text's; acoustic.m: 1)"},
+        {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &tmax, .min = 1e-9, .max = 100, .metavar = "T",
+         .help = "final time, 8 output intervals"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on dx = 0.08, 0.04 only"),
+    };
+    enum { NRUN = 5 };
+    hj_cli_spec spec = {prog, "The acoustic capture game of Mitchell's toolbox (section 2.6.2, Figure 18).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With none of the run options (--accuracy .. --tmax): Figure 18's data and the checks\n"
+                        "(acoustic.tsv, acoustic_2d.dat, acoustic_summary.tsv).  With any of them: one run, its time\n"
+                        "sequence in acoustic_run.dat and its areas on stdout.  See the comment at the top of acoustic.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in
@@ -349,31 +270,33 @@ int main(int argc, char **argv)
             if (h->n) fprintf(out.fp, "%.3g\t", h->gap); else fputs("-\t", out.fp);
             fprintf(out.fp, "%.3e\t%ld\n", R[k].sn.asym[m], R[k].sn.flips[m]);
         }
-    p2_next_file(prog, &out, out_dir, "acoustic_notes.md");
-    fprintf(out.fp, "\nArea of the reachable set and of its holes (components of the complement enclosed by the set "
-                    "and more than 1.5 dx from the target) on three grids, accuracy medium:\n\n"
-                    "| t | area, dx = 0.08 | dx = 0.04 | dx = 0.02 | hole area (0.08 / 0.04 / 0.02) | hole distance to "
-                    "target |\n|---|---|---|---|---|---|\n");
+    /* The numbers of the report's note (notes/acoustic_notes.md), one row per output time. */
+    p2_next_file(prog, &out, out_dir, "acoustic_summary.tsv");
+    fprintf(out.fp, "# acoustic capture, accuracy %s, per output time: area of the reachable set and of its holes on each grid\n"
+                    "# (- where the grid is not run: --quick); hole_gap = the holes' distance to the target on the finest grid\n"
+                    "# run (- without a hole); over all grids: nodes where phi increased since the previous output and nodes\n"
+                    "# whose membership of the set differs from their mirror node's (summed), the largest |phi(x,y) - phi(-x,y)|\n"
+                    "t", hj_ls_accuracy_name(acc));
+    for (int k = 0; k < 3; k++) fprintf(out.fp, "\tarea_%g", dxs[k]);
+    for (int k = 0; k < 3; k++) fprintf(out.fp, "\thole_area_%g", dxs[k]);
+    fputs("\thole_gap\tincreased\tflips\tasym\n", out.fp);
     for (int m = 0; m < R[0].log.n; m++) {
-        fprintf(out.fp, "| %.1f |", R[0].log.t[m]);
+        fprintf(out.fp, "%.17g", R[0].log.t[m]);
         for (int k = 0; k < 3; k++)
-            if (k < nd) fprintf(out.fp, " %.3f |", R[k].log.measure[m]); else fputs(" - |", out.fp);
+            if (k < nd) fprintf(out.fp, "\t%.17g", R[k].log.measure[m]); else fputs("\t-", out.fp);
         for (int k = 0; k < 3; k++)
-            if (k < nd) fprintf(out.fp, "%s%.3f", k ? " / " : " ", R[k].sn.hole[m].area); else fputs(" / -", out.fp);
+            if (k < nd) fprintf(out.fp, "\t%.17g", R[k].sn.hole[m].area); else fputs("\t-", out.fp);
         const hole_stat *h = &R[nd - 1].sn.hole[m];
-        if (h->n) fprintf(out.fp, " | %.2f |\n", h->gap); else fputs(" | - |\n", out.fp);
-    }
-    long inc = 0, flips = 0;
-    double asym = 0;
-    for (int k = 0; k < nd; k++)
-        for (int m = 0; m < R[k].log.n; m++) {
+        if (h->n) fprintf(out.fp, "\t%.17g", h->gap); else fputs("\t-", out.fp);
+        long inc = 0, flips = 0;
+        double asym = 0;
+        for (int k = 0; k < nd; k++) {
             inc += R[k].log.increased[m];
             flips += R[k].sn.flips[m];
             asym = R[k].sn.asym[m] > asym ? R[k].sn.asym[m] : asym;
         }
-    fprintf(out.fp, "\nphi increased at %ld nodes between output times in all runs (the set never shrinks).  Mirror "
-                    "x -> -x: %ld nodes in all changed membership of the set; largest |phi(x, y) - phi(-x, y)|: "
-                    "%.1e.\n\n", inc, flips, asym);
+        fprintf(out.fp, "\t%ld\t%ld\t%.17g\n", inc, flips, asym);
+    }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -45,7 +45,8 @@ medium and low on NX = 26, 38, 51, 76 (quick: 26), at the 9 output times:
 - the volume of {phi < 0} in the (x, y, psi) box (second order measure,
   `hj_ls_measure`, the periodic psi direction closed): it must converge
   under refinement; there is no exact value, so the reference is our own
-  run and `air3d_notes.md` shows the sequence and its differences;
+  run and the note (`notes/air3d_notes.md`, from `air3d_summary.tsv`)
+  shows the sequence and its differences;
 - `increased`: nodes where phi grew since the previous output time; the
   restricted update makes every RK stage non-increasing, so this must be
   0 (exact);
@@ -56,7 +57,7 @@ medium and low on NX = 26, 38, 51, 76 (quick: 26), at the 9 output times:
   first order scheme is mirror-exact), round-off growing to about 1e-10
   for medium (ENO2's stencil arithmetic is not mirror-exact).
 
-**Result** (full run, `air3d_notes.md`): at t = 2.8 the volume is 873.6,
+**Result** (full run, the note): at t = 2.8 the volume is 873.6,
 880.1, 882.5, 884.3 for medium on NX = 26, 38, 51, 76 (changes 6.5, 2.4,
 1.8) and 760.9, 805.3, 828.8, 850.0 for low (changes 44, 24, 21: first
 order and slow: the low scheme's larger dissipation gives a smaller set,
@@ -65,9 +66,10 @@ target's volume is 25 pi * 2 pi = 493.5.  No node increased; no node
 changed membership under the reflection (largest |phi - mirror| 1.3e-10
 medium, 0 low).
 
-**Outputs.** `air3d.tsv`, `air3d_notes.md`, `air3d.vtk` (target and
-reachable set, medium, NX = 51; quick: 26), `air3d_vox.dat`; plotted by
-`plot/fig17.gp`.
+**Outputs.** `air3d.tsv`, `air3d_summary.tsv` (per grid: the final
+volumes, their changes and the mirror check, which `notes/air3d_notes.md`
+presents), `air3d.vtk` (target and reachable set, medium, NX = 51; quick:
+26), `air3d_vox.dat`; plotted by `plot/fig17.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -83,17 +85,9 @@ reachable set, medium, NX = 51; quick: 26), `air3d_vox.dat`; plotted by
 #include "hj_ls_seq.h"
 #include "p2_cli.h"
 #include "p2_reach.h"
+#include "hj_math.h"
 
 static const char *prog = "air3d";
-
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--N NX] [--tmax T]\n"
-           "       [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 17's data and the checks (air3d.tsv, air3d.vtk, air3d_vox.dat,\n"
-           "air3d_notes.md).  With any of them: one run (defaults as air3D.m: medium, global, NX = 51, tmax = 2.8)\n"
-           "written to air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n", prog);
-}
 
 /* Asymmetry at every output time (snapshot callback of the reach log). */
 typedef struct {
@@ -146,26 +140,29 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM, diss = HJ_LS_GLF;
     long Nx = 51;
     double tmax = 2.8;
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--diss", "--N", "--tmax", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 5, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        switch (v) {
-        case 0: rc = hj_ls_accuracy_parse(s, &acc, &err); break;
-        case 1: rc = hj_ls_dissipation_parse(s, &diss, &err); break;
-        case 2: rc = hj_parse_long(s, "--N", 8, 2000, &Nx, &err); break;
-        case 3: rc = hj_parse_double(s, "--tmax", 1e-9, 1000, &tmax, &err); break;
-        default: out_dir = s;
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 4) single = 1;
-    }
+    /* the run options first: any of them makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        p2_opt_dissipation("--diss", &diss),
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &Nx, .min = 8, .max = 2000, .metavar = "NX",
+         .help = "nodes in x (air3D.m's grid)"},
+        {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &tmax, .min = 1e-9, .max = 1000, .metavar = "T",
+         .help = "final time, 8 output intervals"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on NX = 26 only"),
+    };
+    enum { NRUN = 4 };
+    hj_cli_spec spec = {prog, "The game of two identical vehicles of Mitchell's toolbox (section 2.6.1, Figure 17).",
+                        opts, (int)(sizeof opts / sizeof opts[0]),
+                        "With none of the run options (--accuracy .. --tmax): Figure 17's data and the checks\n"
+                        "(air3d.tsv, air3d.vtk, air3d_vox.dat, air3d_summary.tsv).  With any of them: one run written to\n"
+                        "air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
     p2_air3d_par par;
     p2_air3d_defaults(&par);
@@ -227,36 +224,29 @@ int main(int argc, char **argv)
                 fprintf(out.fp, "%s\t%ld\t%.2f\t%.6g\t%ld\t%.3e\t%ld\t%ld\n", hj_ls_accuracy_name(r->acc), r->Nx,
                         r->log.t[q], r->log.measure[q], r->log.increased[q], r->sn.asym[q], r->sn.flips[q], r->st.steps);
         }
-    p2_next_file(prog, &out, out_dir, "air3d_notes.md");
-    fprintf(out.fp, "\nVolume of the reachable set at t = 2.8 on the grid sequence (the target cylinder's volume "
-                    "in the box is 25 pi * 2 pi = %.3f), with the change from the previous grid:\n\n"
-                    "| NX | grid | medium | change | low | change |\n|---|---|---|---|---|---|\n",
-            25 * 3.14159265358979323846 * 2 * 3.14159265358979323846);
+    /* The numbers of the report's note (notes/air3d_notes.md), one row per grid. */
+    p2_next_file(prog, &out, out_dir, "air3d_summary.tsv");
+    fprintf(out.fp, "# air3D: volume of the reachable set at t = 2.8 on each grid of the sequence for medium and low, its change\n"
+                    "# from the previous grid (- on the first), the largest |phi(x,y,psi) - phi(x,-y,-psi)| over the output times\n"
+                    "# of each run, and target = the target cylinder's volume in the box, pi r^2 * 2 pi\n"
+                    "NX\tgrid\tmedium\tmedium_change\tlow\tlow_change\tasym_medium\tasym_low\ttarget\n");
     for (int k = 0; k < nseq; k++) {
         hj_ls_grid gs;
         p2_fail_if(prog, p2_air3d_grid(seq[k], &gs, &err), &err);
-        fprintf(out.fp, "| %ld | %ldx%ldx%ld |", seq[k], gs.N[0], gs.N[1], gs.N[2]);
+        fprintf(out.fp, "%ld\t%ldx%ldx%ld", seq[k], gs.N[0], gs.N[1], gs.N[2]);
         for (int a = 0; a < 2; a++) {
             const double v = R[a][k].log.measure[R[a][k].log.n - 1];
-            fprintf(out.fp, " %.2f |", v);
-            if (k) fprintf(out.fp, " %+.2f |", v - R[a][k - 1].log.measure[R[a][k - 1].log.n - 1]);
-            else fputs(" - |", out.fp);
+            fprintf(out.fp, "\t%.17g", v);
+            if (k) fprintf(out.fp, "\t%.17g", v - R[a][k - 1].log.measure[R[a][k - 1].log.n - 1]);
+            else fputs("\t-", out.fp);
         }
-        fputc('\n', out.fp);
+        for (int a = 0; a < 2; a++) {
+            double asym = 0;
+            for (int q = 0; q < R[a][k].log.n; q++) asym = R[a][k].sn.asym[q] > asym ? R[a][k].sn.asym[q] : asym;
+            fprintf(out.fp, "\t%.17g", asym);
+        }
+        fprintf(out.fp, "\t%.17g\n", HJ_PI * par.r * par.r * 2 * HJ_PI);
     }
-    long inc = 0, flips = 0;
-    double asym[2] = {0, 0};
-    for (int a = 0; a < 2; a++)
-        for (int k = 0; k < nseq; k++)
-            for (int q = 0; q < R[a][k].log.n; q++) {
-                inc += R[a][k].log.increased[q];
-                flips += R[a][k].sn.flips[q];
-                asym[a] = R[a][k].sn.asym[q] > asym[a] ? R[a][k].sn.asym[q] : asym[a];
-            }
-    fprintf(out.fp, "\nAt the 8 output times of every run phi increased at %ld nodes in all (termRestrictUpdate: "
-                    "the set never shrinks).  Reflection y -> -y, psi -> -psi: %ld nodes in all changed membership "
-                    "of the set; the largest |phi(x, y, psi) - phi(x, -y, -psi)| was %.1e for medium and %.1e for "
-                    "low.\n\n", inc, flips, asym[0], asym[1]);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

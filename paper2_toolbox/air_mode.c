@@ -53,12 +53,13 @@ medium, on N = 101, 201, 401 (quick: 101, 201):
   (both sets leave it) by the midpoint rule on 4000^2 points (2000^2
   agrees to 0.01), kind value (1 %);
 - the areas of (3), (4) and avoid: no exact value; reference our own run,
-  with the grid sequence in `air_mode_notes.md`;
+  with the grid sequence in the note (`notes/air_mode_notes.md`, from
+  `air_mode_summary.tsv`);
 - `increased` = 0 for the restricted computations (1), (2), (4);
 - `violations`: nodes in the final reach set that lie in the escape set
   (reach < 0 < avoid), 0 if the mask acts after every step.
 
-**Result** (full run, `air_mode_notes.md`): mode 3's set has area 341.84,
+**Result** (full run, the note): mode 3's set has area 341.84,
 342.09, 342.27 on N = 101, 201, 401 against the exact 342.32 (error 0.14 %,
 0.07 %, 0.016 %), mode 2's 268.92, 269.50, 269.62 against 269.63; the
 reach-avoid set 197.4, 193.2, 191.5 (changes -4.3, -1.7: ratio 2.5 per
@@ -68,7 +69,9 @@ restricted computations and no node of the reach-avoid set lies in the
 escape set.
 
 **Outputs.** `air_mode.tsv`, `air_mode_2d.dat` (x y reach avoid mode3 mode2
-switch2, N = 201), `air_mode_notes.md`; plotted by `plot/fig20.gp`.
+switch2, N = 201), `air_mode_summary.tsv` (per set: the exact area and
+the areas on every grid, which `notes/air_mode_notes.md` presents);
+plotted by `plot/fig20.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -97,15 +100,6 @@ typedef struct {
     double r, va, vb, psi, omega;
     double c1, c2; /* f_s = (c1, c2) = (-va + vb cos psi, vb sin psi) */
 } par;
-
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--N N] [--out-dir DIR] [--quick]\n"
-           "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv, air_mode_2d.dat,\n"
-           "air_mode_notes.md).  With one of them: one run (defaults as airMode.m: medium, N = 101 on\n"
-           "[-25, 25]^2) written to air_mode_run.dat (x y reach avoid mode3 mode2 switch2).\n"
-           "See the comment at the top of air_mode.c.\n", prog);
-}
 
 /* The curved mode's PDE velocity -f_c(x) = -(c1 + omega y, c2 - omega x), one row at a time. */
 static void curved(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
@@ -272,21 +266,26 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    int quick = 0, single = 0, acc = HJ_LS_ACC_MEDIUM;
+    int quick = 0, acc = HJ_LS_ACC_MEDIUM;
     long N = 101;
     hj_error err;
-    static const char *const valued[] = {"--accuracy", "--N", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        const char *s;
-        const int v = p2_option(prog, usage, argc, argv, &i, valued, 3, &quick, &s);
-        if (v < 0) continue;
-        int rc = 0;
-        if (v == 0) rc = hj_ls_accuracy_parse(s, &acc, &err);
-        else if (v == 1) rc = hj_parse_long(s, "--N", 11, 4001, &N, &err);
-        else out_dir = s;
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-        if (v < 2) single = 1;
-    }
+    /* the run options first: either makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&acc),
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 11, .max = 4001, .metavar = "N",
+         .help = "nodes per side of [-25, 25]^2 (airMode.m's grid)"},
+        p2_opt_out_dir(&out_dir),
+        p2_opt_quick(&quick, "the checks on N = 101, 201 only"),
+    };
+    enum { NRUN = 2 };
+    hj_cli_spec spec = {prog, "Three-mode collision avoidance of Mitchell's toolbox (section 2.6.3, Figure 20).", opts,
+                        (int)(sizeof opts / sizeof opts[0]),
+                        "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv,\n"
+                        "air_mode_2d.dat, air_mode_summary.tsv).  With one of them: one run written to air_mode_run.dat\n"
+                        "(x y reach avoid mode3 mode2 switch2), its areas on stdout.  See the comment at the top of\n"
+                        "air_mode.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, NRUN);
     p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     omp_set_num_threads(1); /* 2-D grids: see acoustic.c */
@@ -338,27 +337,23 @@ int main(int argc, char **argv)
             if (s == S_REACH) fprintf(out.fp, "%ld\t", R[k].violations); else fputs("-\t", out.fp);
             fprintf(out.fp, "%ld\n", R[k].steps);
         }
-    p2_next_file(prog, &out, out_dir, "air_mode_notes.md");
-    fprintf(out.fp, "\nArea (in the box [-25, 25]^2) of the four computed sets and of the escape set's complement "
-                    "(avoid), accuracy %s, on N x N grids:\n\n| set | exact |", hj_ls_accuracy_name(acc));
-    for (int k = 0; k < nn; k++) fprintf(out.fp, " N = %ld |", ns[k]);
-    fputs("\n|---|---|", out.fp);
-    for (int k = 0; k < nn; k++) fputs("---|", out.fp);
+    /* The numbers of the report's note (notes/air_mode_notes.md), one row per set. */
+    p2_next_file(prog, &out, out_dir, "air_mode_summary.tsv");
+    fprintf(out.fp, "# airMode, accuracy %s: area in [-25, 25]^2 of each set at the end of its computation on the N x N grids\n"
+                    "# (- where the grid is not run: --quick); exact (mode3, mode2): the exact set's area by the midpoint rule\n"
+                    "# on 4000^2 points, exact_2000 on 2000^2\nset\texact\texact_2000", hj_ls_accuracy_name(acc));
+    for (int k = 0; k < 3; k++) fprintf(out.fp, "\tarea_N%ld", ns[k]);
     fputc('\n', out.fp);
     for (int s = 0; s < NSETS; s++) {
-        fprintf(out.fp, "| %s |", set_name[s]);
-        if (s == S_MODE3 || s == S_MODE2) fprintf(out.fp, " %.3f |", s == S_MODE3 ? e3 : e2); else fputs(" - |", out.fp);
-        for (int k = 0; k < nn; k++) fprintf(out.fp, " %.3f |", R[k].area[s]);
+        fprintf(out.fp, "%s", set_name[s]);
+        if (s == S_MODE3 || s == S_MODE2)
+            fprintf(out.fp, "\t%.17g\t%.17g", s == S_MODE3 ? e3 : e2, s == S_MODE3 ? e3c : e2c);
+        else
+            fputs("\t-\t-", out.fp);
+        for (int k = 0; k < 3; k++)
+            if (k < nn) fprintf(out.fp, "\t%.17g", R[k].area[s]); else fputs("\t-", out.fp);
         fputc('\n', out.fp);
     }
-    long inc = 0, viol = 0;
-    for (int k = 0; k < nn; k++) {
-        viol += R[k].violations;
-        for (int s = 0; s < NSETS; s++) inc += R[k].increased[s] > 0 ? R[k].increased[s] : 0;
-    }
-    fprintf(out.fp, "\nExact areas by the midpoint rule on 4000^2 points (on 2000^2: %.3f and %.3f).  The restricted "
-                    "computations (mode3, mode2, reach) increased phi at %ld nodes in all between output times; the "
-                    "reach-avoid set met the escape set at %ld nodes in all.\n\n", e3c, e2c, inc, viol);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -28,13 +28,14 @@ the final states are compared bit for bit.
 Table 1 caption; the text's "g.dx = 0.01" would give 201^3 on [-1, 1]^3 and
 contradicts the caption, so we follow the caption), threads 1 and 2.
 
-**Output.** `convection.md`: wall-clock seconds per level and thread count
-next to the published MATLAB seconds (Pentium 4, MATLAB 6.5: compare
-ratios, not seconds), steps, whether the states agree bitwise across
-thread counts, the error after the full turn (maximum of |phi - phi_0| on
-nodes within 2 dx of the initial sphere, and the relative change of the
-enclosed volume, counted in grid cells), and the peak resident memory
-(getrusage).  Run by `make bench`, never by the tests.
+**Output.** `convection_bench.tsv`, which `notes/convection.md` presents:
+wall-clock seconds per level and thread count next to the published MATLAB
+seconds (Pentium 4, MATLAB 6.5: compare ratios, not seconds), steps,
+whether the states agree bitwise across thread counts, the error after the
+full turn (maximum of |phi - phi_0| on nodes within 2 dx of the initial
+sphere, and the relative change of the enclosed volume, counted in grid
+cells), the machine's load and the peak resident memory (getrusage).  Run
+by `make bench`, never by the tests.
 */
 #define _DEFAULT_SOURCE /* getloadavg */
 #include <math.h>
@@ -60,39 +61,25 @@ static const char *const PROG = "bench_convection";
 enum { NLEVEL = HJ_LS_NACC };
 static const double PUBLISHED[NLEVEL] = {140, 684, 2433, 2585};
 
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: %s [--n N] [--levels L1,L2,..] [--threads T1,T2,..] --out-dir DIR\n"
-            "Table 1 of Mitchell's toolbox: convectionDemo('linear') on an N^3 grid.\n"
-            "  --n N           nodes per dimension (default 101)\n"
-            "  --levels LIST   numbers 0..3 = low, medium, high, veryHigh (default all)\n"
-            "  --threads LIST  OpenMP thread counts to run (default 1,2)\n"
-            "  --out-dir DIR   where convection.md goes\n"
-            "  --help          this text\n",
-            PROG);
-}
-
 int main(int argc, char **argv)
 {
     long n = 101, levels[NLEVEL] = {0, 1, 2, 3}, threads[8] = {1, 2};
     int nlev = NLEVEL, nthr = 2;
     const char *dir = NULL;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (strcmp(a, "--n") && strcmp(a, "--levels") && strcmp(a, "--threads") && strcmp(a, "--out-dir"))
-            hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (!v) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        i++;
-        int rc = 0;
-        if (!strcmp(a, "--n")) rc = hj_parse_long(v, "--n", 8, 2000, &n, &err);
-        else if (!strcmp(a, "--levels")) rc = hj_parse_long_list(v, "--levels", 0, 3, levels, NLEVEL, &nlev, &err);
-        else if (!strcmp(a, "--threads")) rc = hj_parse_long_list(v, "--threads", 1, 256, threads, 8, &nthr, &err);
-        else dir = v;
-        if (rc) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--n", .type = HJ_OPT_LONG, .value = &n, .min = 8, .max = 2000, .metavar = "N",
+         .help = "nodes per dimension"},
+        {.name = "--levels", .type = HJ_OPT_LONG_LIST, .value = levels, .min = 0, .max = 3, .count = &nlev,
+         .maxn = NLEVEL, .metavar = "LIST", .help = "accuracy levels 0..3 = low, medium, high, veryHigh"},
+        {.name = "--threads", .type = HJ_OPT_LONG_LIST, .value = threads, .min = 1, .max = 256, .count = &nthr,
+         .maxn = 8, .metavar = "LIST", .help = "OpenMP thread counts to run"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
+         .help = "where the benchmark's table goes (required)"},
+    };
+    hj_cli_spec spec = {PROG, "Table 1 of Mitchell's toolbox: convectionDemo('linear') on an N^3 grid.", opts,
+                        (int)(sizeof opts / sizeof opts[0]), "See the comment at the top of bench_convection.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     if (!dir) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--out-dir is required (see --help)");
     if (hj_mkdirs(dir, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
 
@@ -109,20 +96,11 @@ int main(int argc, char **argv)
     double tspan[9];
     hj_ls_seq_times(0, 1, 9, tspan);
 
-    char path[4096];
-    snprintf(path, sizeof path, "%s/convection.md", dir);
-    hj_out o;
-    if (hj_out_open(&o, path, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
-    fprintf(o.fp, "**Table 1, measured** by `bench_convection` (`make bench`): convectionDemo('linear') on a "
-                  "%ld^3 grid, wall-clock seconds of the integration.\n\n",
-            n);
-    fprintf(o.fp, "| level | published s (relative) |");
-    for (int q = 0; q < nthr; q++)
-        fprintf(o.fp, " %ld thread%s wall s (relative) | CPU s |", threads[q], threads[q] > 1 ? "s" : "");
-    fprintf(o.fp, " steps | bitwise equal across threads | max error near front | volume change |\n|---|---|");
-    for (int q = 0; q < nthr; q++) fprintf(o.fp, "---|---|");
-    fprintf(o.fp, "---|---|---|---|\n");
-    double base[8] = {0}, load0[3] = {0, 0, 0}, load1[3] = {0, 0, 0};
+    /* Timings and checks per level and thread count, written once all are run. */
+    double secs[NLEVEL][8], cpu[NLEVEL][8], base[8] = {0}, emax[NLEVEL], vchange[NLEVEL];
+    double load0[3] = {0, 0, 0}, load1[3] = {0, 0, 0};
+    long steps[NLEVEL];
+    int same[NLEVEL];
     getloadavg(load0, 3);
     for (int li = 0; li < nlev; li++) {
         const int L = (int)levels[li];
@@ -132,8 +110,7 @@ int main(int argc, char **argv)
         c.velocity_fn = p2_flow_velocity;
         c.ctx = &flow;
         hj_ls_ode_stats st;
-        double secs[8], cpu[8];
-        int same = 1;
+        same[li] = 1;
         for (int q = 0; q < nthr; q++) {
 #ifdef _OPENMP
             omp_set_num_threads((int)threads[q]);
@@ -143,47 +120,60 @@ int main(int argc, char **argv)
             const double c0 = hj_sys_cpu_seconds();
             if (hj_ls_ode(hj_ls_accuracy_order(L), &g, &c.base, tspan, 9, y, NULL, NULL, NULL, &st, &err))
                 hj_cli_fail(PROG, HJ_EXIT_RUN, "%s: %s", hj_ls_accuracy_name(L), err.msg);
-            secs[q] = st.seconds;
-            cpu[q] = hj_sys_cpu_seconds() - c0;
+            secs[li][q] = st.seconds;
+            cpu[li][q] = hj_sys_cpu_seconds() - c0;
             if (li == 0) base[q] = st.seconds;
             if (q == 0) memcpy(first, y, sizeof(double) * g.total);
-            else same &= !memcmp(first, y, sizeof(double) * g.total);
+            else same[li] &= !memcmp(first, y, sizeof(double) * g.total);
         }
+        steps[li] = st.steps;
         /* error after the full turn, near the front, and volume change */
-        double emax = 0;
+        double e = 0;
         long vol0 = 0, vol = 0;
         for (size_t r = 0; r < g.rows; r++) {
             long idx[3];
             const size_t k = hj_ls_row(&g, r, idx);
             for (long j = 0; j < n; j++) {
                 const double a = y0[k + (size_t)j], b = y[k + (size_t)j];
-                if (fabs(a) < 2 * g.dx[0]) emax = fabs(a - b) > emax ? fabs(a - b) : emax;
+                if (fabs(a) < 2 * g.dx[0]) e = fabs(a - b) > e ? fabs(a - b) : e;
                 vol0 += a < 0;
                 vol += b < 0;
             }
         }
-        fprintf(o.fp, "| %s | %g (%.1f) |", hj_ls_accuracy_name(L), PUBLISHED[L], PUBLISHED[L] / PUBLISHED[0]);
-        for (int q = 0; q < nthr; q++) fprintf(o.fp, " %.2f (%.1f) | %.2f |", secs[q], secs[q] / base[q], cpu[q]);
-        fprintf(o.fp, " %ld | %s | %.3e | %+.2f %% |\n", st.steps, nthr > 1 ? (same ? "yes" : "**no**") : "-", emax,
-                100.0 * (double)(vol - vol0) / (double)vol0);
+        emax[li] = e;
+        vchange[li] = 100.0 * (double)(vol - vol0) / (double)vol0;
         printf("%-9s steps %ld", hj_ls_accuracy_name(L), st.steps);
-        for (int q = 0; q < nthr; q++) printf("  %ld thr %.2f s (cpu %.2f s)", threads[q], secs[q], cpu[q]);
-        printf("  bitwise %s  err %.3e\n", same ? "same" : "DIFFERENT", emax);
+        for (int q = 0; q < nthr; q++) printf("  %ld thr %.2f s (cpu %.2f s)", threads[q], secs[li][q], cpu[li][q]);
+        printf("  bitwise %s  err %.3e\n", same[li] ? "same" : "DIFFERENT", e);
         fflush(stdout);
     }
     hj_progress("\n");
     const double peak_mb = hj_sys_peak_rss_mb();
     getloadavg(load1, 3);
-    fprintf(o.fp, "\nMachine load (1-minute load average) %.2f at the start and %.2f at the end of the runs on "
-                  "this %g-core machine: when it exceeds the thread count, other processes shared the cores and "
-                  "wall-clock times are inflated (the CPU seconds are less affected).\n",
-            load0[0], load1[0], (double)sysconf(_SC_NPROCESSORS_ONLN));
     const double arr = (double)g.total * sizeof(double) / 1048576.0;
-    fprintf(o.fp, "\nPeak resident memory (getrusage ru_maxrss): %.1f MB; one array with ghosts is %.1f MB. "
-                  "The integrator holds the state and two more arrays (stage, derivative); the benchmark keeps "
-                  "two more (the initial state, and the first thread count's result for the bitwise "
-                  "comparison).\n",
-            peak_mb, arr);
+
+    /* The numbers of the report's note (notes/convection.md), one row per level and thread count. */
+    char path[4096];
+    snprintf(path, sizeof path, "%s/convection_bench.tsv", dir);
+    hj_out o;
+    if (hj_out_open(&o, path, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
+    fprintf(o.fp, "# bench_convection: convectionDemo('linear') on an n^3 grid; published_s = the document's MATLAB seconds\n"
+                  "# (published_rel: relative to low); wall seconds of the integration (wall_rel: relative to the first level\n"
+                  "# run with the same thread count) and CPU seconds; bitwise = final states equal across the thread counts\n"
+                  "# (- for one thread count); front_err = max |phi - phi_0| within 2 dx of the initial sphere; volume change\n"
+                  "# in cells, per cent; 1-minute load average at the start and end, cores online, peak resident memory\n"
+                  "# (getrusage) and the size of one array with ghosts\n"
+                  "level\tthreads\tn\tpublished_s\tpublished_rel\twall_s\twall_rel\tcpu_s\tsteps\tbitwise\tfront_err\t"
+                  "volume_change_pct\tload_start\tload_end\tcores\tpeak_rss_mb\tarray_mb\n");
+    for (int li = 0; li < nlev; li++) {
+        const int L = (int)levels[li];
+        for (int q = 0; q < nthr; q++)
+            fprintf(o.fp, "%s\t%ld\t%ld\t%g\t%.17g\t%.17g\t%.17g\t%.17g\t%ld\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%g\t"
+                          "%.17g\t%.17g\n",
+                    hj_ls_accuracy_name(L), threads[q], n, PUBLISHED[L], PUBLISHED[L] / PUBLISHED[0], secs[li][q],
+                    secs[li][q] / base[q], cpu[li][q], steps[li], nthr > 1 ? (same[li] ? "yes" : "no") : "-", emax[li],
+                    vchange[li], load0[0], load1[0], (double)sysconf(_SC_NPROCESSORS_ONLN), peak_mb, arr);
+    }
     if (hj_out_commit(&o, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     printf("peak memory %.1f MB (array %.1f MB)\n", peak_mb, arr);
     hj_ls_free(y0), hj_ls_free(y), hj_ls_free(first);

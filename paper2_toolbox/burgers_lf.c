@@ -60,7 +60,7 @@ kink there is no theory for the order: L1 comes out near 1 (low) and 2
 these fitted orders and all error values are regression values of our own
 run.  In 1-D LLF and LLLF are the same scheme (the local range is taken in
 the only dimension): every 1-D run gives bitwise identical states
-(`burgers_notes.md`).  With GLF and LLLF the 2-D errors equal the 1-D
+(the note).  With GLF and LLLF the 2-D errors equal the 1-D
 ones at the same N (the data depend on (x + y)/2 only and the 2-D scheme
 reduces to the 1-D one); LLF, which takes the global gradient range in the
 other dimension, is more dissipative in 2-D (errors up to 1.4 times
@@ -69,7 +69,10 @@ larger).
 **Outputs.** `burgers.tsv`, `burgers_fit.tsv` (checked against
 `published/burgers*.tsv`), `burgers_1d.dat` (gnuplot index 0: exact,
 1: N = 10, 2: N = 40), `burgers_2d.dat` (11 index blocks, t = 0 ...
-1.5/pi^2), `burgers_notes.md`; plotted by `plot/fig14.gp`.
+1.5/pi^2), `burgers_summary.tsv` (per case and dimension: the orders
+fitted over all grids with global dissipation, the characteristic feet and
+the LLF-LLLF comparison, which `notes/burgers_notes.md` presents); plotted
+by `plot/fig14.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -92,16 +95,12 @@ larger).
 
 static const char *prog = "burgers_lf";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dim D]\n"
-           "       [--N N] [--tmax T] [--out-dir DIR] [--quick]\n"
-           "With none of the first five options: Figure 14's data and the convergence study against the exact\n"
-           "solution (burgers.tsv, burgers_fit.tsv, burgers_1d.dat, burgers_2d.dat, burgers_notes.md).\n"
-           "With any of them: one run (defaults as the toolbox: low, global, dim 2, N = 80 / 2^(dim-1),\n"
-           "tmax = 1.5/pi^2), its time sequence in burgers_run.dat and its errors on stdout.\n"
-           "See the comment at the top of burgers_lf.c.\n", prog);
-}
+static const char *summary = "burgersLF of Mitchell's toolbox: Burgers' equation as a general Hamiltonian (section 2.5.1, Figure 14).";
+static const char *epilog =
+    "With none of the first five options: Figure 14's data and the convergence study against the exact\n"
+    "solution (burgers.tsv, burgers_fit.tsv, burgers_1d.dat, burgers_2d.dat, burgers_summary.tsv).\n"
+    "With any of them: one run, its time sequence in burgers_run.dat and its errors on stdout.\n"
+    "See the comment at the top of burgers_lf.c.\n";
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
@@ -120,12 +119,10 @@ int main(int argc, char **argv)
 {
     hj_error err;
     p2_os_cli cli;
-    if (p2_os_parse_cli(argc, argv, 0, &cli, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (cli.help) { usage(); return 0; }
+    p2_os_parse_cli(prog, summary, epilog, argc, argv, 0, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
     p2_os_run r = cli.run;
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* Grids of at most 1280 or 160^2 nodes: a second thread costs more in
      * synchronisation than it saves (results do not depend on it). */
@@ -182,8 +179,8 @@ int main(int argc, char **argv)
     const int nn1 = quick ? 4 : 7, nn2 = quick ? 3 : 4;
     typedef struct { double h, l1, linf; } res;
     static res R[NCASE][2][HJ_LS_NACC][3][MAXN];
-    int maxroots[NCASE] = {0, 0};
-    long identical_llf = 0, compared_llf = 0;
+    int feet[NCASE][2] = {{0, 0}, {0, 0}}; /* most characteristic feet at a node, per case and dimension */
+    long identical_llf[NCASE] = {0, 0}, compared_llf[NCASE] = {0, 0};
     for (int dim = 1; dim <= 2; dim++) {
         const long *ns = dim == 1 ? n1 : n2;
         const int nn = dim == 1 ? nn1 : nn2;
@@ -194,7 +191,7 @@ int main(int argc, char **argv)
                 double *ex = hj_ls_alloc(&ge);
                 if (!ex) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
                 const int mr = p2_os_exact_grid(&p2_os_burgers, &ge, case_t[ci] / (HJ_PI * HJ_PI), ex);
-                maxroots[ci] = mr > maxroots[ci] ? mr : maxroots[ci];
+                feet[ci][dim - 1] = mr > feet[ci][dim - 1] ? mr : feet[ci][dim - 1];
                 hj_progress("burgers_lf: %s dim %d N %ld\n", case_name[ci], dim, ns[k]);
                 for (int acc = 0; acc < HJ_LS_NACC; acc++) {
                     double *prev = NULL;
@@ -205,8 +202,8 @@ int main(int argc, char **argv)
                         o->h = g.dx[0];
                         p2_os_errors(&g, phi, ex, &o->l1, &o->linf);
                         if (dim == 1 && diss == HJ_LS_LLLF) {
-                            compared_llf++;
-                            identical_llf += hj_ls_count_differ(&g, prev, phi) == 0;
+                            compared_llf[ci]++;
+                            identical_llf[ci] += hj_ls_count_differ(&g, prev, phi) == 0;
                         }
                         hj_ls_free(prev);
                         prev = phi;
@@ -240,19 +237,23 @@ int main(int argc, char **argv)
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
 
     /* burgers_fit.tsv: orders fitted over the quick range and (full run) all grids. */
-    hj_out fit, notes;
+    hj_out fit, sum;
     p2_fail_if(prog, p2_open(&fit, out_dir, "burgers_fit.tsv", &err), &err);
-    p2_fail_if(prog, p2_open(&notes, out_dir, "burgers_notes.md", &err), &err);
     fprintf(fit.fp, "# burgersLF: orders p of e = C h^p fitted by Ceres (common/hj_fit.h) over the grids N in range\n"
                     "case\tdim\tacc\tdiss\trange\tnorm\tp\tp_se\tp_lsq\n");
-    fprintf(notes.fp, "\nFitted orders (e = C h^p, Huber loss, over all grids of the run; L1 / Linf), dissipation "
-                      "global (local and locallocal in burgers_fit.tsv):\n\n"
-                      "| case | dim | grids | low | medium | high | veryHigh |\n|---|---|---|---|---|---|---|\n");
+    /* The numbers of the report's note (notes/burgers_notes.md), one row per case and dimension. */
+    p2_fail_if(prog, p2_open(&sum, out_dir, "burgers_summary.tsv", &err), &err);
+    fprintf(sum.fp, "# burgersLF: orders p of e = C h^p (L1, Linf) fitted over all grids of the run, global dissipation, per\n"
+                    "# accuracy; feet = the most characteristic feet of the exact solution at a node; in 1-D, llf_identical of\n"
+                    "# llf_compared runs gave bitwise identical states with LLF and LLLF (- in 2-D)\ncase\tdim\tgrids");
+    for (int acc = 0; acc < HJ_LS_NACC; acc++)
+        fprintf(sum.fp, "\tp_L1_%s\tp_Linf_%s", hj_ls_accuracy_name(acc), hj_ls_accuracy_name(acc));
+    fputs("\tfeet\tllf_identical\tllf_compared\n", sum.fp);
     for (int ci = 0; ci < NCASE; ci++)
         for (int dim = 1; dim <= 2; dim++) {
             const long *ns = dim == 1 ? n1 : n2;
             const int nn = dim == 1 ? nn1 : nn2, nq = dim == 1 ? 4 : 3;
-            char cell[HJ_LS_NACC][64];
+            double pglf[HJ_LS_NACC][2];
             for (int acc = 0; acc < HJ_LS_NACC; acc++)
                 for (int diss = 0; diss < 3; diss++)
                     for (int span = 0; span < 2; span++) {
@@ -279,16 +280,15 @@ int main(int argc, char **argv)
                                 pl[q] = NAN;
                             }
                         }
-                        if (diss == HJ_LS_GLF && m == nn) snprintf(cell[acc], sizeof cell[acc], "%.2f / %.2f", pl[0], pl[1]);
+                        if (diss == HJ_LS_GLF && m == nn) pglf[acc][0] = pl[0], pglf[acc][1] = pl[1];
                     }
-            fprintf(notes.fp, "| %s | %d | %ld-%ld | %s | %s | %s | %s |\n", case_name[ci], dim, ns[0], ns[nn - 1], cell[0],
-                    cell[1], cell[2], cell[3]);
+            fprintf(sum.fp, "%s\t%d\t%ld-%ld", case_name[ci], dim, ns[0], ns[nn - 1]);
+            for (int acc = 0; acc < HJ_LS_NACC; acc++) fprintf(sum.fp, "\t%.17g\t%.17g", pglf[acc][0], pglf[acc][1]);
+            fprintf(sum.fp, "\t%d", feet[ci][dim - 1]);
+            if (dim == 1) fprintf(sum.fp, "\t%ld\t%ld\n", identical_llf[ci], compared_llf[ci]);
+            else fputs("\t-\t-\n", sum.fp);
         }
-    fprintf(notes.fp, "\nIn one dimension LLF and LLLF are the same scheme (the local range in the only dimension): "
-                      "%ld of %ld runs gave bitwise identical states.  The exact solution had at most %d "
-                      "characteristic foot at t = 0.5/pi^2 and %d at t = 1.5/pi^2 (the minimum is taken).\n\n",
-            identical_llf, compared_llf, maxroots[0], maxroots[1]);
     p2_fail_if(prog, hj_out_commit(&fit, &err), &err);
-    p2_fail_if(prog, hj_out_commit(&notes, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&sum, &err), &err);
     return 0;
 }

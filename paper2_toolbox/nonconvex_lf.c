@@ -38,7 +38,7 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
    exactly one foot; the program stops otherwise), so the exact solution
    is G0(s0) + t (u0 sin(1 + u0) + cos(1 + u0)): errors in 1-D on N = 20
    ... 1280 for every accuracy; fitted orders 1.00, 1.98, 2.87, 3.28 (L1,
-   `nonconvex_notes.md`).  Values: regression.
+   the note).  Values: regression.
 2. After the kink, t = 1.5/pi^2, 1-D (N = 20 ... 640) and 2-D (20 ...
    160), accuracies low and high: with the toolbox bound the three
    dissipations must give the same state, as the text says: `differ`
@@ -54,7 +54,9 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 
 **Outputs.** `nonconvex.tsv`, `nonconvex_1d.dat` (index 0: reference,
 1: N = 10, 2: N = 40), `nonconvex_2d.dat` (11 index blocks),
-`nonconvex_notes.md`; plotted by `plot/fig15.gp`.
+`nonconvex_summary.tsv` (the fitted orders before the kink and the
+tight-bound differences after it, which `notes/nonconvex_notes.md`
+presents); plotted by `plot/fig15.gp`.
 */
 #include <math.h>
 #include <stdio.h>
@@ -76,15 +78,11 @@ ENO3-LF (accuracy high, global) on 10 (circles) and 40 nodes (crosses).
 
 static const char *prog = "nonconvex_lf";
 
-static void usage(void)
-{
-    printf("usage: %s [--accuracy low|medium|high|veryHigh] [--diss global|local|locallocal] [--dim D]\n"
-           "       [--N N] [--tmax T] [--partial toolbox|tight] [--out-dir DIR] [--quick]\n"
-           "With none of the run options: Figure 15's data and the checks (nonconvex.tsv, nonconvex_1d.dat,\n"
-           "nonconvex_2d.dat, nonconvex_notes.md).  With any of them: one run (defaults as the toolbox: low,\n"
-           "global, dim 2, N = 80 / 2^(dim-1), tmax = 1.5/pi^2, the toolbox's partial bound 1), its time\n"
-           "sequence in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n", prog);
-}
+static const char *summary = "nonconvexLF of Mitchell's toolbox: a non-convex Hamiltonian (section 2.5.2, Figure 15).";
+static const char *epilog =
+    "With none of the run options (--accuracy .. --partial): Figure 15's data and the checks (nonconvex.tsv,\n"
+    "nonconvex_1d.dat, nonconvex_2d.dat, nonconvex_summary.tsv).  With any of them: one run, its time sequence\n"
+    "in nonconvex_run.dat.  See the comment at the top of nonconvex_lf.c.\n";
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
@@ -124,11 +122,9 @@ int main(int argc, char **argv)
 {
     hj_error err;
     p2_os_cli cli;
-    if (p2_os_parse_cli(argc, argv, 1, &cli, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (cli.help) { usage(); return 0; }
+    p2_os_parse_cli(prog, summary, epilog, argc, argv, 1, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
 #ifdef _OPENMP
     /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
     omp_set_num_threads(1);
@@ -165,9 +161,15 @@ int main(int argc, char **argv)
         hj_ls_free(run(&f, &g, path));
     }
 
-    hj_out tab, notes;
+    hj_out tab, sum;
     p2_fail_if(prog, p2_open(&tab, out_dir, "nonconvex.tsv", &err), &err);
-    p2_fail_if(prog, p2_open(&notes, out_dir, "nonconvex_notes.md", &err), &err);
+    /* The numbers of the report's note (notes/nonconvex_notes.md). */
+    p2_fail_if(prog, p2_open(&sum, out_dir, "nonconvex_summary.tsv", &err), &err);
+    fprintf(sum.fp, "# nonconvexLF.  smooth rows (t = 0.5/pi^2, 1-D, global): L1 error on the finest grid N and the orders of\n"
+                    "# e = C h^p fitted over all grids (L1, Linf; nan: not determined).  kink rows (t = 1.5/pi^2, accuracy high,\n"
+                    "# tight partial bound): max |phi_LLF - phi_GLF|, max |phi_LLLF - phi_GLF| and cauchy = max |phi_N - phi_2N|\n"
+                    "# of GLF on the N grid's nodes\n"
+                    "case\tdim\tacc\tN\tL1\tp_L1\tp_Linf\tllf_glf\tlllf_glf\tcauchy\n");
     fprintf(tab.fp, "# nonconvexLF checks: smooth = errors against the exact solution (characteristics) at t = 0.5/pi^2;\n"
                     "# kink (t = 1.5/pi^2): cauchy = max |phi_N - phi_2N| on the N grid's nodes (global),\n"
                     "# spread = max |phi_diss - phi_global|, differ = nodes where phi_diss != phi_global bitwise;\n"
@@ -177,9 +179,6 @@ int main(int argc, char **argv)
     /* 1. Smooth: errors against the exact solution, 1-D, every accuracy. */
     static const long n1[] = {20, 40, 80, 160, 320, 640, 1280};
     const int nn1 = quick ? 4 : 7;
-    fprintf(notes.fp, "\nBefore the kink (t = 0.5/pi^2), against the exact solution, 1-D, global, orders fitted "
-                      "over N = 20-%ld (L1 / Linf):\n\n| accuracy | L1 at N = %ld | fitted orders |\n|---|---|---|\n",
-            n1[nn1 - 1], n1[nn1 - 1]);
     for (int acc = 0; acc < HJ_LS_NACC; acc++) {
         double h[MAXN], e1[MAXN], ei[MAXN];
         for (int k = 0; k < nn1; k++) {
@@ -202,20 +201,12 @@ int main(int argc, char **argv)
         hj_order_fit f1, fi;
         hj_error ferr;
         const int ok1 = !hj_fit_order(h, e1, nn1, &f1, &ferr), oki = !hj_fit_order(h, ei, nn1, &fi, &ferr);
-        fprintf(notes.fp, "| %s | %.3e | %.2f / %.2f |\n", hj_ls_accuracy_name(acc), e1[nn1 - 1], ok1 ? f1.p : NAN,
-                oki ? fi.p : NAN);
+        fprintf(sum.fp, "smooth\t1\t%s\t%ld\t%.17g\t%.17g\t%.17g\t-\t-\t-\n", hj_ls_accuracy_name(acc), n1[nn1 - 1],
+                e1[nn1 - 1], ok1 ? f1.p : NAN, oki ? fi.p : NAN);
     }
-
-    fprintf(notes.fp, "\n(nan: the fit is not determined, every point lies off the line by more than the Huber scale, "
-                      "common/hj_fit.h; see the pairwise orders in nonconvex.tsv.)\n");
 
     /* 2. Kink: the three dissipations, toolbox and tight partial bounds. */
     static const long nk1[] = {20, 40, 80, 160, 320, 640}, nk2[] = {20, 40, 80, 160};
-    fprintf(notes.fp, "\nAfter the kink (t = 1.5/pi^2), accuracy high, tight partial bound: largest difference "
-                      "between the dissipations, max |phi_LLF - phi_GLF| and max |phi_LLLF - phi_GLF|, and the "
-                      "Cauchy difference max |phi_N - phi_2N| of GLF:\n\n"
-                      "| dim | N | LLF - GLF | LLLF - GLF | Cauchy |\n|---|---|---|---|---|\n");
-    long toolbox_differ = 0;
     for (int dim = 1; dim <= 2; dim++) {
         const long *ns = dim == 1 ? nk1 : nk2;
         const int nn = dim == 1 ? (quick ? 4 : 6) : (quick ? 3 : 4);
@@ -243,18 +234,17 @@ int main(int argc, char **argv)
                     for (int diss = 0; diss < 3; diss++) {
                         sp[diss] = max_diff(&g, phi[diss], phi[0]);
                         dif[diss] = hj_ls_count_differ(&g, phi[0], phi[diss]);
-                        if (!tight) toolbox_differ += dif[diss];
                         fprintf(tab.fp, "kink\t%d\t%s\t%s\t%s\t%ld\t-\t-\t-\t-\t", dim, hj_ls_accuracy_name(acc),
                                 hj_ls_dissipation_name(diss), tight ? "tight" : "toolbox", ns[k]);
                         if (!tight && diss == 0) fprintf(tab.fp, "%.4e\t", cy); else fputs("-\t", tab.fp);
                         fprintf(tab.fp, "%.4e\t%ld\n", sp[diss], dif[diss]);
                     }
                     if (tight && acc == HJ_LS_ACC_HIGH) {
-                        /* the Cauchy column of the same N from the toolbox-partial run above */
+                        /* the Cauchy difference of GLF with the tight bound: the next finer grid */
                         p2_os_run f = {dim, 2 * ns[k], acc, HJ_LS_GLF, 1, tk, 1};
                         double *fine = run(&f, &g2, NULL);
-                        fprintf(notes.fp, "| %d | %ld | %.3e | %.3e | %.3e |\n", dim, ns[k], sp[1], sp[2],
-                                cauchy(&g, phi[0], &g2, fine));
+                        fprintf(sum.fp, "kink\t%d\t%s\t%ld\t-\t-\t-\t%.17g\t%.17g\t%.17g\n", dim, hj_ls_accuracy_name(acc),
+                                ns[k], sp[1], sp[2], cauchy(&g, phi[0], &g2, fine));
                         hj_ls_free(fine);
                     }
                     for (int diss = 0; diss < 3; diss++) hj_ls_free(phi[diss]);
@@ -279,11 +269,7 @@ int main(int argc, char **argv)
         hj_ls_free(one);
         hj_ls_free(two);
     }
-    fprintf(notes.fp, "\nWith the toolbox's partial bound (1, independent of the gradient range) the three "
-                      "dissipations gave bitwise identical states at every grid (%ld differing nodes in all), as "
-                      "section 2.5.2 says.  One and two OpenMP threads: %ld differing nodes (2-D, 80^2, high).\n\n",
-            toolbox_differ, tdiff);
     p2_fail_if(prog, hj_out_commit(&tab, &err), &err);
-    p2_fail_if(prog, hj_out_commit(&notes, &err), &err);
+    p2_fail_if(prog, hj_out_commit(&sum, &err), &err);
     return 0;
 }

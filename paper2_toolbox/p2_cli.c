@@ -2,12 +2,12 @@
 #include "p2_cli.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "hj_cli.h"
 #include "hj_ls_accuracy.h"
 #include "hj_ls_io.h"
+#include "hj_ls_term.h"
 
 int p2_parse_choice(const char *s, const char *what, const char *const *names, int n, int *out, hj_error *err)
 {
@@ -40,38 +40,51 @@ int p2_next_option(int argc, char **argv, int *i, const char *const *valued, int
     return hj_error_set(err, HJ_EINVAL, "unknown option '%s' (see --help)", a);
 }
 
-int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int *i, const char *const *valued,
-              int nvalued, int *quick, const char **value)
+hj_cli_opt p2_opt_accuracy(int *acc)
 {
-    int opt;
-    hj_error err;
-    if (p2_next_option(argc, argv, i, valued, nvalued, &opt, value, &err))
-        hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (opt == P2_OPT_HELP) {
-        usage();
-        exit(0);
-    }
-    if (opt == P2_OPT_QUICK) {
-        *quick = 1;
-        return -1;
-    }
-    return opt;
+    static const char *levels[HJ_LS_NACC + 1];
+    for (int k = 0; k < HJ_LS_NACC; k++) levels[k] = hj_ls_accuracy_name(k);
+    return (hj_cli_opt){.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = acc, .choices = levels, .metavar = "A",
+                        .help = "scheme and RK order (section 2.1)"};
+}
+
+hj_cli_opt p2_opt_dissipation(const char *name, int *diss)
+{
+    /* HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF are 0, 1, 2: the index is the value */
+    static const char *kinds[4];
+    for (int k = 0; k < 3; k++) kinds[k] = hj_ls_dissipation_name(k);
+    return (hj_cli_opt){.name = name, .type = HJ_OPT_CHOICE, .value = diss, .choices = kinds, .metavar = "D",
+                        .help = "Lax-Friedrichs dissipation (section 2.2.2)"};
+}
+
+hj_cli_opt p2_opt_out_dir(const char **dir)
+{
+    return (hj_cli_opt){.name = "--out-dir", .type = HJ_OPT_STRING, .value = dir, .metavar = "DIR",
+                        .help = "where to write the tables and figure data"};
+}
+
+hj_cli_opt p2_opt_quick(int *quick, const char *help)
+{
+    return (hj_cli_opt){.name = "--quick", .type = HJ_OPT_FLAG, .value = quick, .help = help};
+}
+
+int p2_seen_any(const hj_cli_opt *opts, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (opts[k].seen) return 1;
+    return 0;
 }
 
 void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value, hj_cli_opt *extra, int nextra)
 {
-    static const char *levels[HJ_LS_NACC + 1];
-    for (int k = 0; k < HJ_LS_NACC; k++) levels[k] = hj_ls_accuracy_name(k);
     static const char *const binary[] = {"0", "1", NULL};
     int choice = 0;
     hj_cli_opt opts[] = {
-        {.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = &o->acc, .choices = levels, .metavar = "A",
-         .help = "scheme and RK order (section 2.1)"},
+        p2_opt_accuracy(&o->acc),
         {.name = "--N", .type = HJ_OPT_LONG, .value = &o->N, .min = 11, .max = 801, .metavar = "NODES",
          .help = "nodes of the figure grid", .dflt = o->N ? NULL : "see below"},
-        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &o->out_dir, .metavar = "DIR",
-         .help = "where to write the tables and figure data"},
-        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &o->quick, .help = "the reduced runs of CI"},
+        p2_opt_out_dir(&o->out_dir),
+        p2_opt_quick(&o->quick, "the reduced runs of CI"),
         {.name = flag, .type = HJ_OPT_CHOICE, .value = &choice, .choices = binary, .metavar = "0|1",
          .help = "run only this case", .dflt = "both cases"},
     };

@@ -3,9 +3,10 @@
  * --out-dir, --quick, --help), 0|1 switches, named choices, and ending the
  * program on an error.
  *
- * p2_parse_choice and p2_next_option return hj_error codes; the others
- * print through hj_cli_fail (or, for --help, the usage) and exit, so they
- * are for main() only.
+ * p2_parse_choice and p2_next_option return hj_error codes and the p2_opt_*
+ * functions build option table entries; the others print through
+ * hj_cli_fail (or, for --help, the usage) and exit, so they are for main()
+ * only.
  */
 #ifndef P2_CLI_H
 #define P2_CLI_H
@@ -27,11 +28,18 @@ enum { P2_OPT_HELP = -2, P2_OPT_QUICK = -3 };
 int p2_next_option(int argc, char **argv, int *i, const char *const *valued, int nvalued, int *opt, const char **value,
                    hj_error *err);
 
-/* p2_next_option for main(): --help calls usage() and ends the program,
- * --quick sets *quick and returns -1, a valued option returns its index
- * (*value its value); anything else ends the program (bad usage). */
-int p2_option(const char *prog, void (*usage)(void), int argc, char **argv, int *i, const char *const *valued,
-              int nvalued, int *quick, const char **value);
+/* Entries of the option tables (hj_cli_opt) that the paper 2 programs
+ * share: --accuracy (HJ_LS_ACC_*), the Lax-Friedrichs dissipation under
+ * the program's own name ("--diss" or "--dissipation"; HJ_LS_GLF ...),
+ * --out-dir and --quick (help: what --quick runs).  Each writes to the
+ * variable given, which holds the default. */
+hj_cli_opt p2_opt_accuracy(int *acc);
+hj_cli_opt p2_opt_dissipation(const char *name, int *diss);
+hj_cli_opt p2_opt_out_dir(const char **dir);
+hj_cli_opt p2_opt_quick(int *quick, const char *help);
+
+/* 1 if any of opts[0 .. n - 1] was given (after hj_cli_parse). */
+int p2_seen_any(const hj_cli_opt *opts, int n);
 
 /* Options of the section 2.3-2.4 demos: --accuracy, --N, --out-dir,
  * --quick, --help. */

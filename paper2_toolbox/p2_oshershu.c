@@ -210,38 +210,38 @@ double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_g
     return phi;
 }
 
-int p2_os_parse_cli(int argc, char **argv, int allow_partial, p2_os_cli *c, hj_error *err)
+void p2_os_parse_cli(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
+                     int allow_partial, p2_os_cli *c)
 {
-    static const double pi2 = HJ_PI * HJ_PI;
     memset(c, 0, sizeof *c);
-    c->run = (p2_os_run){2, 0, HJ_LS_ACC_LOW, HJ_LS_GLF, 0, 1.5 / pi2, 10};
+    c->run = (p2_os_run){2, 0, HJ_LS_ACC_LOW, HJ_LS_GLF, 0, 1.5 / (HJ_PI * HJ_PI), 10};
     c->out_dir = ".";
-    static const char *const valued[] = {"--accuracy", "--diss", "--dim", "--N", "--tmax", "--partial", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        int v;
-        const char *s;
-        const int rc0 = p2_next_option(argc, argv, &i, valued, 7, &v, &s, err);
-        if (rc0) return rc0;
-        if (v == P2_OPT_HELP) { c->help = 1; return HJ_OK; }
-        if (v == P2_OPT_QUICK) { c->quick = 1; continue; }
-        if (v == 5 && !allow_partial) return hj_error_set(err, HJ_EINVAL, "unknown option '--partial' (see --help)");
-        long l = 0;
-        int rc = HJ_OK;
-        switch (v) {
-        case 0: rc = hj_ls_accuracy_parse(s, &c->run.acc, err); break;
-        case 1: rc = hj_ls_dissipation_parse(s, &c->run.diss, err); break;
-        case 2: rc = hj_parse_long(s, "--dim", 1, 3, &l, err); c->run.dim = (int)l; break;
-        case 3: rc = hj_parse_long(s, "--N", 4, 100000, &c->run.N, err); break;
-        case 4: rc = hj_parse_double(s, "--tmax", 1e-12, 100, &c->run.tmax, err); break;
-        case 5:
-            if (!strcmp(s, "tight")) c->run.tight = 1;
-            else if (strcmp(s, "toolbox")) rc = hj_error_set(err, HJ_EINVAL, "unknown --partial '%s' (toolbox, tight)", s);
-            break;
-        default: c->out_dir = s;
-        }
-        if (rc) return rc;
-        if (v < 6) c->single = 1;
-    }
+    long dim = c->run.dim;
+    static const char *const bounds[] = {"toolbox", "tight", NULL};
+    /* the run options first (--partial last of them): any makes one run */
+    hj_cli_opt opts[] = {
+        p2_opt_accuracy(&c->run.acc),
+        p2_opt_dissipation("--diss", &c->run.diss),
+        {.name = "--dim", .type = HJ_OPT_LONG, .value = &dim, .min = 1, .max = 3, .metavar = "D", .help = "dimension"},
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &c->run.N, .min = 4, .max = 100000, .metavar = "N",
+         .help = "nodes per dimension", .dflt = "80 / 2^(dim - 1)"},
+        {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &c->run.tmax, .min = 1e-12, .max = 100, .metavar = "T",
+         .help = "final time", .dflt = "1.5/pi^2"},
+        {.name = "--partial", .type = HJ_OPT_CHOICE, .value = &c->run.tight, .choices = bounds, .metavar = "P",
+         .help = "partial bound of the dissipation: the toolbox's or the exact one"},
+        p2_opt_out_dir(&c->out_dir),
+        p2_opt_quick(&c->quick, "the reduced grid sequences of CI"),
+    };
+    enum { NOPT = sizeof opts / sizeof opts[0], PARTIAL = 5 };
+    hj_cli_opt all[NOPT];
+    int n = 0;
+    for (int k = 0; k < (int)NOPT; k++)
+        if (k != PARTIAL || allow_partial) all[n++] = opts[k];
+    hj_cli_spec spec = {prog, summary, all, n, epilog};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    c->single = p2_seen_any(all, allow_partial ? PARTIAL + 1 : PARTIAL);
+    c->run.dim = (int)dim;
     if (!c->run.N) c->run.N = 80 >> (c->run.dim - 1);
-    return HJ_OK;
+    hj_error err;
+    p2_fail_if(prog, hj_mkdirs(c->out_dir, &err), &err);
 }

@@ -77,17 +77,20 @@ void p2_os_errors(const hj_ls_grid *g, const double *phi, const double *exact, d
 double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, const char *path,
                             hj_error *err);
 
-/* The command line of burgersLF and nonconvexLF: --accuracy, --diss,
- * --dim (1-3), --N (>= 4), --tmax, and with allow_partial --partial
- * toolbox|tight; --out-dir, --quick, --help.  Defaults as the toolbox: low,
- * global, dim 2, N = 80 / 2^(dim - 1), tmax = 1.5/pi^2, toolbox partial.
- * single is set when any run option is given.  HJ_EINVAL with a message
- * on bad usage. */
+/* The command line of burgersLF and nonconvexLF through hj_cli's option
+ * table: --accuracy, --diss, --dim (1-3), --N (4-100000), --tmax, and with
+ * allow_partial --partial toolbox|tight; --out-dir, --quick, --help.
+ * Defaults as the toolbox: low, global, dim 2, N = 80 / 2^(dim - 1),
+ * tmax = 1.5/pi^2, toolbox partial.  single is set when any run option
+ * (all but --out-dir and --quick) is given.  For main() only: --help
+ * prints the table (summary first, epilog last) and ends the program, as
+ * does bad usage, with one message; then out_dir is created. */
 typedef struct {
     p2_os_run run;
     const char *out_dir;
-    int quick, single, help;
+    int quick, single;
 } p2_os_cli;
-int p2_os_parse_cli(int argc, char **argv, int allow_partial, p2_os_cli *c, hj_error *err);
+void p2_os_parse_cli(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
+                     int allow_partial, p2_os_cli *c);
 
 #endif
