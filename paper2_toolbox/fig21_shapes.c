@@ -30,7 +30,6 @@ both 3-D fields), fig21_checks.md; plotted by paper2_toolbox/plot/fig21.gp.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -79,16 +78,17 @@ static void box_from_hyperplanes(const hj_ls_grid *g, const double *lo, const do
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help")) {
-            printf("usage: %s [--out-dir DIR]\nSee the comment at the top of fig21_shapes.c.\n", prog);
-            return 0;
-        }
-        if (!strcmp(argv[i], "--quick")) continue; /* the run is small already */
-        if (strcmp(argv[i], "--out-dir")) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-        if (i + 1 >= argc) hj_cli_fail(prog, HJ_EXIT_USAGE, "option --out-dir needs a value");
-        out_dir = argv[++i];
-    }
+    int quick = 0;
+    hj_cli_opt opts[] = {
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
+         .help = "where the tables, figure data and VTK file go"},
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "accepted: the run is small already"},
+    };
+    hj_cli_spec spec = {prog,
+                        "Figure 21 of Mitchell's toolbox: shapes and constructive solid geometry in 1, 2 and 3 "
+                        "dimensions.",
+                        opts, 2, "See the comment at the top of fig21_shapes.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     hj_error err;
     if (hj_mkdirs(out_dir, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};

@@ -38,7 +38,6 @@ The relative costs of the schemes (Table 2) are measured by
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_fit.h"
@@ -104,19 +103,6 @@ static int run(int scheme, long n, int smooth, double *e, hj_error *err)
     free(ex);
     hj_ls_free(a), hj_ls_free(l), hj_ls_free(r);
     return rc;
-}
-
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: %s [--quick] [--sizes N1,N2,...] --out-dir DIR\n"
-            "Figure 22 of Mitchell's toolbox: convergence of the upwind first\n"
-            "derivatives on the kinked test function of firstDerivSpatialTest1.\n"
-            "  --quick          N = 20, 40, 80, 160 (default up to 1280)\n"
-            "  --sizes LIST     grid sizes, multiples of 4, at least two\n"
-            "  --out-dir DIR    where fig22.tsv, fig22.dat, fig22_orders.md go\n"
-            "  --help           this text\n",
-            PROG);
 }
 
 static int write_outputs(const char *dir, const long *sizes, int ns, double e[NSCH][MAXN][NMEAS],
@@ -199,23 +185,22 @@ static int write_outputs(const char *dir, const long *sizes, int ns, double e[NS
 int main(int argc, char **argv)
 {
     long sizes[MAXN] = {20, 40, 80, 160, 320, 640, 1280};
-    int ns = 7;
+    int ns = 7, quick = 0;
     const char *dir = NULL;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) { ns = 4; continue; }
-        if (!strcmp(a, "--out-dir") || !strcmp(a, "--sizes")) {
-            if (!v) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-            i++;
-            if (!strcmp(a, "--out-dir")) dir = v;
-            else if (hj_parse_long_list(v, "--sizes", 4, 100000, sizes, MAXN, &ns, &err))
-                hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-            continue;
-        }
-        hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "N = 20, 40, 80, 160"},
+        {.name = "--sizes", .type = HJ_OPT_LONG_LIST, .value = sizes, .min = 4, .max = 100000, .count = &ns,
+         .maxn = MAXN, .metavar = "N1,N2,...", .help = "grid sizes, multiples of 4, at least two; overrides --quick"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
+         .help = "where fig22.tsv, fig22.dat, fig22_orders.md go", .dflt = "none: required"},
+    };
+    hj_cli_spec spec = {PROG,
+                        "Figure 22 of Mitchell's toolbox: convergence of the upwind first\n"
+                        "derivatives on the kinked test function of firstDerivSpatialTest1.",
+                        opts, 3, NULL};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    if (quick && !opts[1].seen) ns = 4;
     if (!dir) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--out-dir is required (see --help)");
     if (ns < 2) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--sizes needs at least two sizes");
     for (int k = 0; k < ns; k++)

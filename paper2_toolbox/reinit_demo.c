@@ -92,24 +92,16 @@ static long run(const p2_reinit_case *c, int acc, double *phi, const char *seq_p
     return st.steps;
 }
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
-            "reinitDemo of Mitchell's toolbox (section 2.2.1); see the comment at the top of reinit_demo.c.\n"
-            "  --shape S      circle or star (default star)\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --quick        the same set (it takes about a second)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "With neither --shape nor --accuracy: both shapes at every accuracy, the figures' data and reinit.tsv.\n",
-            PROG);
-}
+static const char *const SUMMARY =
+    "reinitDemo of Mitchell's toolbox (section 2.2.1); see the comment at the top of reinit_demo.c.";
+static const char *const EPILOG =
+    "With neither --shape nor --accuracy: both shapes at every accuracy, the figures' data and reinit.tsv.\n";
 
 int main(int argc, char **argv)
 {
     p2_reinit_opts opt;
     hj_out tab, notes;
-    p2_reinit_begin(PROG, usage, argc, argv, "reinit",
+    p2_reinit_begin(PROG, SUMMARY, EPILOG, argc, argv, "reinit",
                     "# reinitDemo: near the front (within 5 dx of the exact initial curve) before and after t = 1\n",
                     &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;

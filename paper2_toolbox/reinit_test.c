@@ -52,24 +52,16 @@ phi, gnuplot grid).
 
 static const char *const PROG = "reinit_test";
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
-            "reinitTest of Mitchell's toolbox (section 2.7.3); see the comment at the top of reinit_test.c.\n"
-            "  --shape S      circle or star (default star)\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --quick        the same set (it takes a few seconds)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "With neither --shape nor --accuracy: both shapes at every accuracy and reinit_test.tsv.\n",
-            PROG);
-}
+static const char *const SUMMARY =
+    "reinitTest of Mitchell's toolbox (section 2.7.3); see the comment at the top of reinit_test.c.";
+static const char *const EPILOG =
+    "With neither --shape nor --accuracy: both shapes at every accuracy and reinit_test.tsv.\n";
 
 int main(int argc, char **argv)
 {
     p2_reinit_opts opt;
     hj_out tab, notes;
-    p2_reinit_begin(PROG, usage, argc, argv, "reinit_test",
+    p2_reinit_begin(PROG, SUMMARY, EPILOG, argc, argv, "reinit_test",
                     "# reinitTest (signedDistanceIterative, default t_max and errorMax): near the front (within 5 dx "
                     "of the exact initial curve) before and after\n", &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
