@@ -31,6 +31,8 @@ P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg 
 P2_CHECK := $(P2_OUT)/fig21.tsv
 REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
                  $(P2)/report.tsv $(P2)/overview.md
+# The notes' templates, rendered by the report from the results' tables.
+REPORT_INPUTS += $(wildcard $(P2)/notes/*.md)
 
 # The demos of section 2: one fragment each, mk/<demo>.mk, which adds its
 # program to P2_PROGS, its outputs to P2_RESULTS, its checked tables to
