@@ -284,7 +284,8 @@ int main(int argc, char **argv)
             samples);
     const char *acc = hj_ls_accuracy_name(o.acc);
     for (int ini = 0; ini < 2; ini++)
-        for (int n = 0; n < ngrids; n++) loss_rows(out.fp, acc, "check", init_name[ini], grids[n], b, tspan, areas[n][ini], 3);
+        for (int n = 0; n < ngrids; n++)
+            loss_rows(out.fp, acc, "check", init_name[ini], grids[n], b, tspan, areas[n][ini], 3);
     loss_rows(out.fp, acc, "figure", init_name[initial], o.N, b, tspan, area, 9);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
