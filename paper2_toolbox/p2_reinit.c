@@ -97,12 +97,21 @@ void p2_reinit_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_m
             a->sd_err, b->shift_max, a->shift_max, a->shift_mean, b->area, a->area, c->exact_area, steps);
 }
 
-void p2_reinit_note_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *b, const p2_reinit_meas *a,
-                        long steps)
+void p2_reinit_run_header(FILE *fp)
 {
-    fprintf(fp, "| %s | %s | %.3f -> %.4f | %.3f -> %.4f | %.4f (%.4f) -> %.4f (%.4f) | %+.3f %% | %ld |",
-            p2_shape_name[c->shape], hj_ls_accuracy_name(acc), b->grad_mean, a->grad_mean, b->sd_err, a->sd_err,
-            b->shift_max, b->shift_mean, a->shift_max, a->shift_mean, 100 * (a->area / b->area - 1), steps);
+    fprintf(fp, "shape\taccuracy\tgrad_before\tgrad_after\tgrad_max_after\tsd_err_before\tsd_err_after\t"
+                "shift_max_before\tshift_mean_before\tshift_max_after\tshift_mean_after\tarea_before\tarea_after\t"
+                "exact_area\tarea_change_percent\tsteps");
+}
+
+void p2_reinit_run_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *b, const p2_reinit_meas *a,
+                       long steps)
+{
+    const double v[13] = {b->grad_mean, a->grad_mean, a->grad_max, b->sd_err, a->sd_err, b->shift_max, b->shift_mean,
+                          a->shift_max, a->shift_mean, b->area, a->area, c->exact_area, 100 * (a->area / b->area - 1)};
+    fprintf(fp, "%s\t%s", p2_shape_name[c->shape], hj_ls_accuracy_name(acc));
+    for (int k = 0; k < 13; k++) fprintf(fp, "\t%.17g", v[k]);
+    fprintf(fp, "\t%ld", steps);
 }
 
 void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, int argc, char **argv,

@@ -51,10 +51,13 @@ int p2_reinit_measure(const p2_reinit_case *c, double *phi, p2_reinit_meas *m, h
 void p2_reinit_header(FILE *fp);
 void p2_reinit_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
                    const p2_reinit_meas *after, long steps);
-/* One row of reinit_notes.md / reinit_test_notes.md, before -> after,
- * without its line end (reinitTest adds a column). */
-void p2_reinit_note_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
-                        const p2_reinit_meas *after, long steps);
+/* The columns of reinit_runs.tsv / reinit_test_runs.tsv, the data of
+ * their notes, and one row, to full precision, before and after, with the
+ * change of area in percent; both without the line end (reinitTest adds
+ * a column). */
+void p2_reinit_run_header(FILE *fp);
+void p2_reinit_run_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
+                       const p2_reinit_meas *after, long steps);
 
 /* The options reinitDemo and reinitTest share: --shape, --accuracy (either
  * sets single: one run), --out-dir, --quick (accepted: the default set is
