@@ -20,13 +20,14 @@ $(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
 	gnuplot -e "dat='$<'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig22.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Figure 21: CSG shapes in 1-3 dimensions (section 2.7.1).
-$(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk $(P2_OUT)/fig21_checks.md &: $(P2_BIN)/fig21_shapes
+$(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk \
+  $(P2_OUT)/fig21_checks.tsv &: $(P2_BIN)/fig21_shapes
 	@mkdir -p $(P2_OUT)
 	$< --out-dir $(P2_OUT)
 $(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_1d.tsv $(P2)/plot/fig21.gp
 	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
 
-P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.md
+P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.tsv
 # Tables held by make check against paper2_toolbox/published/<table>.tsv.
 P2_CHECK := $(P2_OUT)/fig21.tsv
 REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
