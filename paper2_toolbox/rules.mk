@@ -13,7 +13,7 @@ P2_BIN := $(BUILD)/bin/$(P2)
 P2_PROGS := fig21_shapes fig22_derivatives bench_table2 bench_convection
 
 # Figure 22: errors and fitted orders, then the four-panel figure.
-$(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.md &: $(P2_BIN)/fig22_derivatives
+$(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.tsv &: $(P2_BIN)/fig22_derivatives
 	@mkdir -p $(P2_OUT)
 	$< $(QUICKFLAG) --out-dir $(P2_OUT)
 $(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
@@ -27,7 +27,7 @@ $(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig2
 $(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_1d.tsv $(P2)/plot/fig21.gp
 	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
 
-P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.tsv
+P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.tsv $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.tsv
 # Tables held by make check against paper2_toolbox/published/<table>.tsv.
 P2_CHECK := $(P2_OUT)/fig21.tsv
 REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
