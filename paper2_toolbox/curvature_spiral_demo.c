@@ -71,7 +71,8 @@ its tips, close to the front; we did not investigate further.
 blocks; `ellipse`, or the `--initial` given), curvature_spiral_points.dat
 (the same for the point cloud), curvature_spiral.tsv (the
 check, against the exact loss in published/curvature_spiral.tsv),
-curvature_spiral_notes.md.
+curvature_spiral_runs.tsv (every run's area loss at its output times to
+full precision, which notes/curvature_spiral_notes.md presents).
 */
 #include <math.h>
 #include <stdio.h>
@@ -197,6 +198,20 @@ static int run_spiral(const hj_ls_grid *g, int order, int points, long samples, 
     return rc;
 }
 
+/* Rows of curvature_spiral_runs.tsv: the run's area loss at the output
+ * times tspan[1 .. nt - 1] against 2 pi b t. */
+static void loss_rows(FILE *fp, const char *accuracy, const char *run, const char *initial, long n, double b,
+                      const double *tspan, const double *area, int nt)
+{
+    for (int k = 1; k < nt; k++) {
+        const double exact = 2 * HJ_PI * b * tspan[k];
+        fprintf(fp, "%s\t%s\t%s\t%ld", accuracy, run, initial, n);
+        const double cells[6] = {tspan[k], area[0], area[k], area[0] - area[k], exact, (area[0] - area[k]) / exact};
+        for (int q = 0; q < 6; q++) p2_cell(fp, cells[q]);
+        fputc('\n', fp);
+    }
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
@@ -260,24 +275,18 @@ int main(int argc, char **argv)
         for (int ini = 0; ini < 2; ini++)
             fprintf(out.fp, "%ld\t%s\t%.6f\t%.6f\n", grids[n], init_name[ini], areas[n][ini][0] - areas[n][ini][2],
                     areas[n][ini][0]);
-    p2_next_file(prog, &out, o.out_dir, "curvature_spiral_notes.md");
-    fprintf(out.fp, "\nArea lost since t = 0 divided by the exact 2 pi b t (b = 0.075), `%s` accuracy.  The law "
-                    "holds for any simple closed curve until it vanishes.\n\n"
-                    "| initial | nodes per side | A(0) | t = 0.125 | t = 0.25 |\n|---|---|---|---|---|\n",
-            hj_ls_accuracy_name(o.acc));
+    /* Every run's area loss at its output times, against 2 pi b t: the
+     * check's (t = 0.125, 0.25), then the figure's (every output time). */
+    p2_next_file(prog, &out, o.out_dir, "curvature_spiral_runs.tsv");
+    fprintf(out.fp, "# curvatureSpiralDemo: every run, area loss A(0) - A(t) under curvature motion, b = 0.075, "
+                    "against the exact 2 pi b t; %ld points for the point cloud\n"
+                    "accuracy\trun\tinitial\tN\tt\tarea0\tarea\tarea_loss\tarea_loss_exact\tloss_ratio\n",
+            samples);
+    const char *acc = hj_ls_accuracy_name(o.acc);
     for (int ini = 0; ini < 2; ini++)
         for (int n = 0; n < ngrids; n++)
-            fprintf(out.fp, "| %s | %ld | %.4f | %.4f | %.4f |\n", init_name[ini], grids[n], areas[n][ini][0],
-                    (areas[n][ini][0] - areas[n][ini][1]) / (2 * HJ_PI * b * tspan[1]),
-                    (areas[n][ini][0] - areas[n][ini][2]) / (2 * HJ_PI * b * tspan[2]));
-    fprintf(out.fp, "\nThe figure's run (`%s`, %ld^2 nodes) over the whole time span:\n\n| t |", initial ? "points" : "ellipse",
-            o.N);
-    for (int k = 1; k < 9; k++) fprintf(out.fp, " %.3g |", tspan[k]);
-    fprintf(out.fp, "\n|---|");
-    for (int k = 1; k < 9; k++) fprintf(out.fp, "---|");
-    fprintf(out.fp, "\n| area loss / 2 pi b t |");
-    for (int k = 1; k < 9; k++) fprintf(out.fp, " %.4f |", (area[0] - area[k]) / (2 * HJ_PI * b * tspan[k]));
-    fprintf(out.fp, "\n\n");
+            loss_rows(out.fp, acc, "check", init_name[ini], grids[n], b, tspan, areas[n][ini], 3);
+    loss_rows(out.fp, acc, "figure", init_name[initial], o.N, b, tspan, area, 9);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -50,7 +50,8 @@ the grids 51 and 101.
 **Output.** curvature_star_a.dat (constant b), curvature_star_b.dat
 (splitFlow): phi at the output times as gnuplot index blocks;
 curvature_star.tsv (the check, against the exact values in
-published/curvature_star.tsv); curvature_star_notes.md.
+published/curvature_star.tsv); curvature_star_runs.tsv (every check run to
+full precision, which notes/curvature_star_notes.md presents).
 */
 #include <math.h>
 #include <stdio.h>
@@ -154,17 +155,22 @@ int main(int argc, char **argv)
             if (s == 0) fprintf(out.fp, "%.6f\t%.6f\n", rc[n], loss_exact);
             else fprintf(out.fp, "-\t%s\n", s == 1 ? "0.125664" : "-");
         }
-    p2_next_file(prog, &out, o.out_dir, "curvature_star_notes.md");
-    fprintf(out.fp, "\nArea lost by t = 1 under curvature motion with b0 = 0.02 (`%s` accuracy), exact 2 pi b0 t = "
-                    "%.6f for the circle and the star; radius of the circle (r0 = 0.4) at t = 1, exact %.6f.  The "
-                    "splitFlow star has no closed form (shown only).\n\n"
-                    "| nodes per side | circle: loss | circle: r(1) | star: loss | star: loss / exact | splitFlow star: "
-                    "loss |\n|---|---|---|---|---|---|\n",
-            hj_ls_accuracy_name(o.acc), loss_exact, r_exact);
+    /* Every check run; the splitFlow star has no exact loss. */
+    p2_next_file(prog, &out, o.out_dir, "curvature_star_runs.tsv");
+    fprintf(out.fp, "# curvatureStarDemo: every check run, area loss A(0) - A(1) under curvature motion with b0 = 0.02 "
+                    "(exact 2 pi b0 t for constant b) and r(1) of the circle r0 = 0.4 (exact sqrt(r0^2 - 2 b0 t))\n"
+                    "accuracy\tN\tshape\tarea_loss\tarea_loss_exact\tloss_ratio\tr\tr_exact\n");
     for (int n = 0; n < ngrids; n++)
-        fprintf(out.fp, "| %ld | %.6f | %.6f | %.6f | %.4f | %.6f |\n", grids[n], loss[n][0], rc[n], loss[n][1],
-                loss[n][1] / loss_exact, loss[n][2]);
-    fputc('\n', out.fp);
+        for (int s = 0; s < 3; s++) {
+            const double exact = s < 2 ? loss_exact : NAN;
+            fprintf(out.fp, "%s\t%ld\t%s", hj_ls_accuracy_name(o.acc), grids[n], shape[s]);
+            p2_cell(out.fp, loss[n][s]);
+            p2_cell(out.fp, exact);
+            p2_cell(out.fp, loss[n][s] / exact);
+            p2_cell(out.fp, s == 0 ? rc[n] : NAN);
+            p2_cell(out.fp, s == 0 ? r_exact : NAN);
+            fputc('\n', out.fp);
+        }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -65,7 +65,9 @@ index block per output time), dumbbell_slice.dat (phi on x_3 = 0, one
 block per time), dumbbell.vtk (legacy VTK: phi at t = 0 and t = tMax on
 the figure grid), dumbbell.tsv (the check: sphere radius against the
 exact value, pinch-off time against our accepted run,
-published/dumbbell.tsv), dumbbell_notes.md (the convergence table).
+published/dumbbell.tsv), dumbbell_runs.tsv and dumbbell_orders.tsv (the
+convergence of t_p to full precision, which notes/dumbbell_notes.md
+presents).
 */
 #include <math.h>
 #include <stdio.h>
@@ -326,25 +328,28 @@ int main(int argc, char **argv)
         fprintf(out.fp, "%ld\tsphere\t%.6f\t-\n", grids[n], rs[n]);
         fprintf(out.fp, "%ld\tdumbbell\t-\t%.7f\n", grids[n], tp[n]);
     }
-    p2_next_file(prog, &out, o.out_dir, "dumbbell_notes.md");
-    fprintf(out.fp, "\nPinch-off time t_p (phi at the origin crosses 0; phi^2 extrapolated linearly from the last two steps "
-                    "before) and the "
-                    "sphere check (radius at t = 0.0125, exact 0.2), `%s` accuracy.  An infinite cylinder of the "
-                    "handle's radius would collapse at 0.02.\n\n"
-                    "| nodes | dx | t_p | t_p - t_p(previous grid) | sphere r(0.0125) | error |\n"
-                    "|---|---|---|---|---|---|\n", hj_ls_accuracy_name(o.acc));
+    /* The runs on each grid: the pinch-off time and its change from the
+     * previous grid, the sphere's radius against 0.2. */
+    const char *acc = hj_ls_accuracy_name(o.acc);
+    p2_next_file(prog, &out, o.out_dir, "dumbbell_runs.tsv");
+    fprintf(out.fp, "# dumbbell1: the runs on each grid of N x N_yz x N_yz nodes (dx = 1 / dx_inv): the pinch-off "
+                    "time t_pinch (phi at the origin crosses 0; phi^2 extrapolated linearly from the last two steps "
+                    "before) and the radius r at t = 0.0125 of a sphere r0 = 0.3 under b = 1\n"
+                    "accuracy\tN\tN_yz\tdx_inv\tt_pinch\tt_pinch_change\tr\tr_exact\tr_error\n");
     for (int n = 0; n < ngrids; n++) {
-        fprintf(out.fp, "| %ld x %ld x %ld | 1/%ld | %.6f | ", grids[n], (grids[n] + 1) / 2, (grids[n] + 1) / 2,
-                (grids[n] - 1) / 2, tp[n]);
-        if (n) fprintf(out.fp, "%+.2e", tp[n] - tp[n - 1]);
-        else fprintf(out.fp, "-");
-        fprintf(out.fp, " | %.5f | %.1e |\n", rs[n], fabs(rs[n] - 0.2));
+        fprintf(out.fp, "%s\t%ld\t%ld\t%ld", acc, grids[n], (grids[n] + 1) / 2, (grids[n] - 1) / 2);
+        const double cells[5] = {tp[n], n ? tp[n] - tp[n - 1] : NAN, rs[n], 0.2, fabs(rs[n] - 0.2)};
+        for (int q = 0; q < 5; q++) p2_cell(out.fp, cells[q]);
+        fputc('\n', out.fp);
     }
     /* Observed order from each three successive grids (dx_k = 2 / (N_k -
      * 1)): solve (t3 - t2) / (t2 - t1) = (h3^p - h2^p) / (h2^p - h1^p) for
      * p by bisection, then the extrapolated limit t3 + (t3 - t2) h3^p /
-     * (h2^p - h3^p). */
-    if (ngrids >= 3) fprintf(out.fp, "\n| grids (nodes along x_1) | observed order of t_p | extrapolated t_p |\n|---|---|---|\n");
+     * (h2^p - h3^p); "-" where the differences do not shrink. */
+    p2_next_file(prog, &out, o.out_dir, "dumbbell_orders.tsv");
+    fprintf(out.fp, "# dumbbell1: observed order of the pinch-off time and its extrapolated limit from each three "
+                    "successive grids (nodes along x_1; - where the differences do not shrink)\n"
+                    "accuracy\tN_coarse\tN_middle\tN_fine\torder\tt_pinch_limit\n");
     for (int n = 2; n < ngrids; n++) {
         const double h1 = 2.0 / (grids[n - 2] - 1), h2 = 2.0 / (grids[n - 1] - 1), h3 = 2.0 / (grids[n] - 1);
         const double t1 = tp[n - 2], t2 = tp[n - 1], t3 = tp[n];
@@ -359,13 +364,12 @@ int main(int argc, char **argv)
             }
             p = 0.5 * (lo + hi);
         }
-        fprintf(out.fp, "| %ld, %ld, %ld | ", grids[n - 2], grids[n - 1], grids[n]);
-        if (isfinite(p) && p > 0.15 && p < 5.9)
-            fprintf(out.fp, "%.2f | %.6f |\n", p, t3 + (t3 - t2) * pow(h3, p) / (pow(h2, p) - pow(h3, p)));
-        else
-            fprintf(out.fp, "- (the differences do not shrink) | - |\n");
+        if (!(isfinite(p) && p > 0.15 && p < 5.9)) p = NAN;
+        fprintf(out.fp, "%s\t%ld\t%ld\t%ld", acc, grids[n - 2], grids[n - 1], grids[n]);
+        p2_cell(out.fp, p);
+        p2_cell(out.fp, isnan(p) ? NAN : t3 + (t3 - t2) * pow(h3, p) / (pow(h2, p) - pow(h3, p)));
+        fputc('\n', out.fp);
     }
-    fputc('\n', out.fp);
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }

@@ -20,17 +20,16 @@ constructive solid geometry (section 3.3), built with `common/hj_ls_shape.h`.
 function is negative, a node on the boundary counting one half, times the
 domain's measure) against the exact length, area or volume, on 201, 201^2
 and 81^3 nodes: it should agree to about a cell's width times the
-boundary's measure (fig21_checks.md).
+boundary's measure (fig21_checks.tsv, presented by notes/fig21_checks.md).
 
 **Output.** fig21.tsv (the measures, held by `make check` against the
 exact ones in published/fig21.tsv), fig21_1d.tsv, fig21_2d.tsv (gnuplot grid), fig21_3d.dat
 (x y z c d, for gnuplot's voxel isosurfaces) and fig21_3d.vtk (legacy VTK,
-both 3-D fields), fig21_checks.md; plotted by paper2_toolbox/plot/fig21.gp.
+both 3-D fields), fig21_checks.tsv; plotted by paper2_toolbox/plot/fig21.gp.
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -79,16 +78,17 @@ static void box_from_hyperplanes(const hj_ls_grid *g, const double *lo, const do
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help")) {
-            printf("usage: %s [--out-dir DIR]\nSee the comment at the top of fig21_shapes.c.\n", prog);
-            return 0;
-        }
-        if (!strcmp(argv[i], "--quick")) continue; /* the run is small already */
-        if (strcmp(argv[i], "--out-dir")) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", argv[i]);
-        if (i + 1 >= argc) hj_cli_fail(prog, HJ_EXIT_USAGE, "option --out-dir needs a value");
-        out_dir = argv[++i];
-    }
+    int quick = 0;
+    hj_cli_opt opts[] = {
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
+         .help = "where the tables, figure data and VTK file go"},
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "accepted: the run is small already"},
+    };
+    hj_cli_spec spec = {prog,
+                        "Figure 21 of Mitchell's toolbox: shapes and constructive solid geometry in 1, 2 and 3 "
+                        "dimensions.",
+                        opts, 2, "See the comment at the top of fig21_shapes.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
     hj_error err;
     if (hj_mkdirs(out_dir, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
@@ -96,7 +96,7 @@ int main(int argc, char **argv)
     char path[4096];
     hj_out out;
     double m[8], exact[8];
-    const char *label[8], *id[8];
+    const char *id[8];
     int nm = 0;
 
     /* 1-D */
@@ -113,10 +113,8 @@ int main(int argc, char **argv)
     hj_ls_shape_difference(&g1, f[0], tmp, f[2]);                                    /* (0, 0.6] */
     hj_ls_shape_complement(&g1, f[0], f[3]);                                         /* outside */
     const double ex1[4] = {1.0, 1.3, 0.6, 1.0};
-    const char *l1[4] = {"1-D interval [-0.4, 0.6]", "1-D half-line (-inf, 0.3] in [-1, 1]", "1-D difference (0, 0.6]",
-                         "1-D complement of [-0.4, 0.6]"};
     const char *i1[4] = {"interval_1d", "half_line_1d", "difference_1d", "complement_1d"};
-    for (int k = 0; k < 4; k++) { m[nm] = measure(&g1, f[k]); exact[nm] = ex1[k]; id[nm] = i1[k]; label[nm++] = l1[k]; }
+    for (int k = 0; k < 4; k++) { m[nm] = measure(&g1, f[k]); exact[nm] = ex1[k]; id[nm++] = i1[k]; }
     snprintf(path, sizeof path, "%s/fig21_1d.tsv", out_dir);
     if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(out.fp, "# x\tinterval\thalf_line\tdifference\tcomplement\n");
@@ -144,8 +142,8 @@ int main(int argc, char **argv)
     box_from_hyperplanes(&g2, r1lo, r1hi, b2, t2, &err);
     box_from_hyperplanes(&g2, r2lo, r2hi, u2, t2, &err);
     hj_ls_shape_union(&g2, b2, u2, b2);
-    m[nm] = measure(&g2, a2); exact[nm] = 0.75 * HJ_PI * 0.36; id[nm] = "disc_minus_square_2d"; label[nm++] = "2-D (a) disc minus square";
-    m[nm] = measure(&g2, b2); exact[nm] = 1.2 * 0.5 + 0.5 * 0.7; id[nm] = "L_polygon_2d"; label[nm++] = "2-D (b) L-shaped polygon";
+    m[nm] = measure(&g2, a2); exact[nm] = 0.75 * HJ_PI * 0.36; id[nm++] = "disc_minus_square_2d";
+    m[nm] = measure(&g2, b2); exact[nm] = 1.2 * 0.5 + 0.5 * 0.7; id[nm++] = "L_polygon_2d";
     snprintf(path, sizeof path, "%s/fig21_2d.tsv", out_dir);
     if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(out.fp, "# x\ty\ta\tb (gnuplot grid format)\n");
@@ -179,8 +177,8 @@ int main(int argc, char **argv)
         die_if(hj_ls_shape_hyperplane(&g3, n, p, s ? t3 : d3, &err), &err);
         if (s) hj_ls_shape_intersection(&g3, d3, t3, d3);
     }
-    m[nm] = measure(&g3, c3); exact[nm] = NAN; id[nm] = "sphere_union_cube_3d"; label[nm++] = "3-D (c) sphere union cube";
-    m[nm] = measure(&g3, d3); exact[nm] = 4.0 / 3.0 * a * a * a; id[nm] = "octahedron_3d"; label[nm++] = "3-D (d) octahedron";
+    m[nm] = measure(&g3, c3); exact[nm] = NAN; id[nm++] = "sphere_union_cube_3d";
+    m[nm] = measure(&g3, d3); exact[nm] = 4.0 / 3.0 * a * a * a; id[nm++] = "octahedron_3d";
     snprintf(path, sizeof path, "%s/fig21_3d.dat", out_dir);
     if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(out.fp, "# x y z c d\n");
@@ -217,17 +215,18 @@ int main(int argc, char **argv)
     for (int k = 0; k < nm; k++) fprintf(out.fp, "%s\t%.6f\n", id[k], m[k]);
     if (hj_out_commit(&out, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
 
-    snprintf(path, sizeof path, "%s/fig21_checks.md", out_dir);
+    /* The measures to full precision against the exact ones ("-" where
+     * none is known), for the report's note (notes/fig21_checks.md). */
+    snprintf(path, sizeof path, "%s/fig21_checks.tsv", out_dir);
     if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    fprintf(out.fp, "\nMeasure of each set (node fraction times the box measure) against the exact one:\n\n"
-                    "| set | computed | exact | relative difference |\n|---|---|---|---|\n");
+    fprintf(out.fp, "# fig21: measure of {phi < 0} (node fraction times the box measure) against the exact one\n"
+                    "set\tmeasure\texact\trel_diff_percent\n");
     for (int k = 0; k < nm; k++) {
         if (isfinite(exact[k]))
-            fprintf(out.fp, "| %s | %.4f | %.4f | %+.2f %% |\n", label[k], m[k], exact[k], 100 * (m[k] / exact[k] - 1));
+            fprintf(out.fp, "%s\t%.17g\t%.17g\t%.17g\n", id[k], m[k], exact[k], 100 * (m[k] / exact[k] - 1));
         else
-            fprintf(out.fp, "| %s | %.4f | - | - |\n", label[k], m[k]);
+            fprintf(out.fp, "%s\t%.17g\t-\t-\n", id[k], m[k]);
     }
-    fputc('\n', out.fp);
     if (hj_out_commit(&out, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     return 0;
 }

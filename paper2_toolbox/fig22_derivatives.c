@@ -31,14 +31,15 @@ sizes; N must be a multiple of 4 so that the kinks are nodes).  `--quick`
 runs N = 20 ... 160.
 
 **Output.** `fig22.svg` (four panels like Figure 22, with reference slopes
-1, 2, 3 and 5), `fig22.tsv` (all errors), `fig22_orders.md` (fitted orders).
+1, 2, 3 and 5), `fig22.tsv` (all errors), `fig22_orders.tsv` (fitted orders
+and the differences between the two forms of ENO3 and WENO5, which
+notes/fig22_orders.md presents).
 The relative costs of the schemes (Table 2) are measured by
 `bench_table2` in `make bench`.
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "hj_cli.h"
 #include "hj_fit.h"
@@ -106,31 +107,25 @@ static int run(int scheme, long n, int smooth, double *e, hj_error *err)
     return rc;
 }
 
-static void usage(FILE *f)
+/* One cell of fig22_orders.tsv: v to full precision, or "-" (NaN). */
+static void cell(FILE *fp, double v)
 {
-    fprintf(f,
-            "usage: %s [--quick] [--sizes N1,N2,...] --out-dir DIR\n"
-            "Figure 22 of Mitchell's toolbox: convergence of the upwind first\n"
-            "derivatives on the kinked test function of firstDerivSpatialTest1.\n"
-            "  --quick          N = 20, 40, 80, 160 (default up to 1280)\n"
-            "  --sizes LIST     grid sizes, multiples of 4, at least two\n"
-            "  --out-dir DIR    where fig22.tsv, fig22.dat, fig22_orders.md go\n"
-            "  --help           this text\n",
-            PROG);
+    if (isnan(v)) fputs("\t-", fp);
+    else fprintf(fp, "\t%.17g", v);
 }
 
 static int write_outputs(const char *dir, const long *sizes, int ns, double e[NSCH][MAXN][NMEAS],
                          double es[NSCH][MAXN], hj_error *err)
 {
     char path[4096];
-    hj_out tsv, dat, md;
+    hj_out tsv, dat, ord;
     int rc;
     snprintf(path, sizeof path, "%s/fig22.tsv", dir);
     if ((rc = hj_out_open(&tsv, path, err))) return rc;
     snprintf(path, sizeof path, "%s/fig22.dat", dir);
     if ((rc = hj_out_open(&dat, path, err))) { hj_out_abort(&tsv); return rc; }
-    snprintf(path, sizeof path, "%s/fig22_orders.md", dir);
-    if ((rc = hj_out_open(&md, path, err))) { hj_out_abort(&tsv); hj_out_abort(&dat); return rc; }
+    snprintf(path, sizeof path, "%s/fig22_orders.tsv", dir);
+    if ((rc = hj_out_open(&ord, path, err))) { hj_out_abort(&tsv); hj_out_abort(&dat); return rc; }
 
     fprintf(tsv.fp, "# source: fig22_derivatives (left approximation, 2-D, derivative in x_1)\n");
     fprintf(tsv.fp, "scheme\tN\th\tmaximum\taverage\trms\tjumps\tsmooth_maximum\n");
@@ -150,30 +145,8 @@ static int write_outputs(const char *dir, const long *sizes, int ns, double e[NS
         fprintf(dat.fp, "\n\n");
     }
 
-    fprintf(md.fp, "**Fitted orders** (Ceres fit e = C h^p over N = %ld ... %ld, +- standard error), "
-                   "kinked test function, left approximation; last column the smooth control.\n\n",
-            sizes[0], sizes[ns - 1]);
-    fprintf(md.fp, "| scheme | maximum | average | rms | jumps | smooth maximum |\n|---|---|---|---|---|---|\n");
-    double h[MAXN], v[MAXN];
-    for (int k = 0; k < ns; k++) h[k] = 1.0 / (double)sizes[k];
-    for (int s = 0; s < NSCH; s++) {
-        fprintf(md.fp, "| `%s`%s |", hj_ls_scheme_name(s), s == HJ_LS_WENO3 ? " (section 4 extra)" : "");
-        for (int m = 0; m <= NMEAS; m++) {
-            int npos = 0;
-            for (int k = 0; k < ns; k++) {
-                v[npos] = m < NMEAS ? e[s][k][m] : es[s][k];
-                if (v[npos] > 0) h[npos] = 1.0 / (double)sizes[k], npos++;
-            }
-            hj_order_fit f;
-            hj_error ferr;
-            if (npos >= 2 && hj_fit_order(h, v, npos, &f, &ferr) == HJ_OK) {
-                if (isnan(f.p_se)) fprintf(md.fp, " %.2f |", f.p);
-                else fprintf(md.fp, " %.2f +- %.2f |", f.p, f.p_se);
-            } else
-                fprintf(md.fp, " - |");
-        }
-        fprintf(md.fp, "\n");
-    }
+    /* The two forms of ENO3 and of WENO5 (a, b): their largest relative
+     * and absolute differences over all sizes and measures. */
     double rel[2] = {0, 0}, ab[2] = {0, 0};
     for (int q = 0; q < 2; q++) {
         const int a = q ? HJ_LS_WENO5A : HJ_LS_ENO3A, b = q ? HJ_LS_WENO5B : HJ_LS_ENO3B;
@@ -184,38 +157,60 @@ static int write_outputs(const char *dir, const long *sizes, int ns, double e[NS
                 ab[q] = d > ab[q] ? d : ab[q];
             }
     }
-    fprintf(md.fp, "\nThe published figure shows ENO3a/ENO3b and WENO5a/WENO5b indistinguishable; here the two "
-                   "forms give the same errors to round-off: largest relative difference over all sizes and "
-                   "measures %.1e (ENO3) and %.1e (WENO5), largest absolute difference %.1e and %.1e (the "
-                   "derivatives are of size 2 pi).  WENO5 is not fifth order on the kinked function "
-                   "(the kinks limit it, as the paper reports: it beats ENO3 in average error but not at the "
-                   "jumps); on the smooth control it is.\n",
-            rel[0], rel[1], ab[0], ab[1]);
-    if ((rc = hj_out_commit(&tsv, err))) { hj_out_abort(&dat); hj_out_abort(&md); return rc; }
-    if ((rc = hj_out_commit(&dat, err))) { hj_out_abort(&md); return rc; }
-    return hj_out_commit(&md, err);
+    fprintf(ord.fp, "# fig22: fitted orders p of e = C h^p (Ceres fit over all sizes, p_*_se its standard error; - "
+                    "where there is none), kinked test function, left approximation; p_smooth_maximum: the smooth "
+                    "control; pair_*: the largest difference between the two forms (a, b) of ENO3 and of WENO5\n"
+                    "scheme\tp_maximum\tp_maximum_se\tp_average\tp_average_se\tp_rms\tp_rms_se\tp_jumps\t"
+                    "p_jumps_se\tp_smooth_maximum\tp_smooth_maximum_se\tpair_max_rel_diff\tpair_max_abs_diff\n");
+    double h[MAXN], v[MAXN];
+    for (int k = 0; k < ns; k++) h[k] = 1.0 / (double)sizes[k];
+    for (int s = 0; s < NSCH; s++) {
+        fprintf(ord.fp, "%s", hj_ls_scheme_name(s));
+        for (int m = 0; m <= NMEAS; m++) {
+            int npos = 0;
+            for (int k = 0; k < ns; k++) {
+                v[npos] = m < NMEAS ? e[s][k][m] : es[s][k];
+                if (v[npos] > 0) h[npos] = 1.0 / (double)sizes[k], npos++;
+            }
+            hj_order_fit f;
+            hj_error ferr;
+            if (npos >= 2 && hj_fit_order(h, v, npos, &f, &ferr) == HJ_OK) {
+                cell(ord.fp, f.p);
+                cell(ord.fp, f.p_se);
+            } else {
+                cell(ord.fp, NAN);
+                cell(ord.fp, NAN);
+            }
+        }
+        const int q = s == HJ_LS_ENO3A || s == HJ_LS_ENO3B ? 0 : s == HJ_LS_WENO5A || s == HJ_LS_WENO5B ? 1 : -1;
+        cell(ord.fp, q < 0 ? NAN : rel[q]);
+        cell(ord.fp, q < 0 ? NAN : ab[q]);
+        fputc('\n', ord.fp);
+    }
+    if ((rc = hj_out_commit(&tsv, err))) { hj_out_abort(&dat); hj_out_abort(&ord); return rc; }
+    if ((rc = hj_out_commit(&dat, err))) { hj_out_abort(&ord); return rc; }
+    return hj_out_commit(&ord, err);
 }
 
 int main(int argc, char **argv)
 {
     long sizes[MAXN] = {20, 40, 80, 160, 320, 640, 1280};
-    int ns = 7;
+    int ns = 7, quick = 0;
     const char *dir = NULL;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (!strcmp(a, "--quick")) { ns = 4; continue; }
-        if (!strcmp(a, "--out-dir") || !strcmp(a, "--sizes")) {
-            if (!v) hj_cli_fail(PROG, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-            i++;
-            if (!strcmp(a, "--out-dir")) dir = v;
-            else if (hj_parse_long_list(v, "--sizes", 4, 100000, sizes, MAXN, &ns, &err))
-                hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", err.msg);
-            continue;
-        }
-        hj_cli_fail(PROG, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "N = 20, 40, 80, 160"},
+        {.name = "--sizes", .type = HJ_OPT_LONG_LIST, .value = sizes, .min = 4, .max = 100000, .count = &ns,
+         .maxn = MAXN, .metavar = "N1,N2,...", .help = "grid sizes, multiples of 4, at least two; overrides --quick"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
+         .help = "where fig22.tsv, fig22.dat, fig22_orders.tsv go", .dflt = "none: required"},
+    };
+    hj_cli_spec spec = {PROG,
+                        "Figure 22 of Mitchell's toolbox: convergence of the upwind first\n"
+                        "derivatives on the kinked test function of firstDerivSpatialTest1.",
+                        opts, 3, NULL};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    if (quick && !opts[1].seen) ns = 4;
     if (!dir) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--out-dir is required (see --help)");
     if (ns < 2) hj_cli_fail(PROG, HJ_EXIT_USAGE, "--sizes needs at least two sizes");
     for (int k = 0; k < ns; k++)

@@ -74,17 +74,32 @@ void p2_check_rows(FILE *fp, const p2_check *c)
         }
 }
 
-void p2_check_notes(FILE *fp, const p2_check *c)
+void p2_cell(FILE *fp, double v)
 {
+    if (isnan(v)) fputs("\t-", fp);
+    else fprintf(fp, "\t%.17g", v);
+}
+
+void p2_check_runs(FILE *fp, const char *accuracy, const p2_check *c)
+{
+    fprintf(fp, "accuracy\tN\tdx\tcase%s%s\t%s\t%s_exact\terror\terror_dx\n", c->param_name ? "\t" : "",
+            c->param_name ? c->param_name : "", c->value_name, c->value_name);
     for (int n = 0; n < c->ngrids; n++)
         for (int k = 0; k < c->ncase; k++) {
-            const double v = c->value[n * c->ncase + k], e = c->exact[k];
-            fprintf(fp, "| %ld | %s | %.5f | %.2f | %.2e | %.3f |\n", c->grids[n], c->case_label[k], v, e, fabs(v - e),
-                    fabs(v - e) * (c->grids[n] - 1) / 2.0);
+            const double v = c->value[n * c->ncase + k], e = c->exact[k], dx = 2.0 / (double)(c->grids[n] - 1);
+            fprintf(fp, "%s\t%ld", accuracy, c->grids[n]);
+            p2_cell(fp, dx);
+            fprintf(fp, "\t%s", c->case_name[k]);
+            if (c->param_name) p2_cell(fp, c->param[k]);
+            p2_cell(fp, v);
+            p2_cell(fp, e);
+            p2_cell(fp, fabs(v - e));
+            p2_cell(fp, fabs(v - e) / dx);
+            fputc('\n', fp);
         }
 }
 
-void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *md, const char *md_head,
+void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *runs, const char *runs_head,
                     const p2_check *c)
 {
     hj_error err;
@@ -93,15 +108,14 @@ void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, con
     p2_fail_if(o->prog, p2_open(&out, o->out_dir, tsv, &err), &err);
     fprintf(out.fp, tsv_head, acc);
     p2_check_rows(out.fp, c);
-    p2_next_file(o->prog, &out, o->out_dir, md);
-    fprintf(out.fp, md_head, acc);
-    p2_check_notes(out.fp, c);
-    fputc('\n', out.fp);
+    p2_next_file(o->prog, &out, o->out_dir, runs);
+    fputs(runs_head, out.fp);
+    p2_check_runs(out.fp, acc, c);
     p2_fail_if(o->prog, hj_out_commit(&out, &err), &err);
 }
 
 void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
-                     const char *tsv_head, const char *md, const char *md_head)
+                     const char *tsv_head, const char *runs, const char *runs_head)
 {
     static const long grids[3] = {51, 101, 201};
     double r[3 * 4];
@@ -122,6 +136,6 @@ void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, vo
         }
         hj_ls_free(phi);
     }
-    p2_check_files(o, tsv, tsv_head, md, md_head, c);
+    p2_check_files(o, tsv, tsv_head, runs, runs_head, c);
     c->value = NULL;
 }

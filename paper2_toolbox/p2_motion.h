@@ -2,8 +2,8 @@
  * normal motion, spin, tripleSine, dumbbell): the square grid, the
  * circle, a switching scalar (the toolbox's switchValue), the run through
  * the output times with the states written as gnuplot index blocks, the
- * area of {phi < 0} at every output time, and the check tables against
- * exact radii and heights.
+ * area of {phi < 0} at every output time, the check tables against
+ * exact radii and heights, and the data of their notes.
  *
  * For programs only: p2_run prints a progress line on a terminal
  * (hj_progress), and p2_check_files and p2_circle_check end the program
@@ -71,28 +71,38 @@ typedef struct {
 } p2_areas;
 int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err);
 
+/* The data of the demos' notes, one layout for all: a TSV file
+ * <table>_runs.tsv with a comment line, a header row and one row per run
+ * (its accuracy, its parameters, what it measured), numbers to full
+ * precision and "-" where a quantity does not apply; the note templates
+ * (notes/<demo>_notes.md) present them.  p2_cell writes one number: a tab,
+ * then v as %.17g, or "-" when v is NaN. */
+void p2_cell(FILE *fp, double v);
+
 /* A check table: value[n * ncase + c] of case c on the grid of grids[n]
- * nodes per side against exact[c]; case_name in the TSV table, case_label
- * in the notes. */
+ * nodes per side against exact[c]; case_name in both tables; value_name
+ * names the value's column in the runs table, where param_name (may be
+ * NULL) adds a column with the cases' parameter param[c]. */
 typedef struct {
     const long *grids;
     int ngrids, ncase;
-    const char *const *case_name, *const *case_label;
-    const double *value, *exact;
+    const char *const *case_name;
+    const char *value_name, *param_name;
+    const double *param, *value, *exact;
 } p2_check;
 
 /* Rows "N case value exact error" (tab-separated; %ld %s %.6f %.6f %.3e). */
 void p2_check_rows(FILE *fp, const p2_check *c);
 
-/* Markdown rows "| N | case | value | exact | error | error / dx |" (%.5f
- * %.2f %.2e %.3f; dx = 2 / (N - 1) of the square grid). */
-void p2_check_notes(FILE *fp, const p2_check *c);
+/* The runs table: the header "accuracy N dx case [param_name] value_name
+ * value_name_exact error error_dx", then a row per grid and case (dx = 2 /
+ * (N - 1) of the square grid, error_dx = error / dx). */
+void p2_check_runs(FILE *fp, const char *accuracy, const p2_check *c);
 
-/* Both as files of o->out_dir: tsv (tsv_head, then the rows) and md
- * (md_head, the markdown rows and a blank line); the heads are printf
- * formats of the accuracy's name.  For main(): ends the program on a
- * failure. */
-void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *md, const char *md_head,
+/* Both as files of o->out_dir: tsv (tsv_head, a printf format of the
+ * accuracy's name, then the rows) and runs (runs_head, a comment line,
+ * then the runs table).  For main(): ends the program on a failure. */
+void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *runs, const char *runs_head,
                     const p2_check *c);
 
 /* The circle checks of normalStarDemo and spinStarDemo, for main(): on
@@ -104,6 +114,6 @@ void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, con
  * here, then p2_check_files writes the tables. */
 typedef int (*p2_case_fn)(const hj_ls_grid *g, int k, double *phi, const char *label, void *ctx, hj_error *err);
 void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
-                     const char *tsv_head, const char *md, const char *md_head);
+                     const char *tsv_head, const char *runs, const char *runs_head);
 
 #endif

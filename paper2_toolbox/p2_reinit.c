@@ -97,46 +97,43 @@ void p2_reinit_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_m
             a->sd_err, b->shift_max, a->shift_max, a->shift_mean, b->area, a->area, c->exact_area, steps);
 }
 
-void p2_reinit_note_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *b, const p2_reinit_meas *a,
-                        long steps)
+void p2_reinit_run_header(FILE *fp)
 {
-    fprintf(fp, "| %s | %s | %.3f -> %.4f | %.3f -> %.4f | %.4f (%.4f) -> %.4f (%.4f) | %+.3f %% | %ld |",
-            p2_shape_name[c->shape], hj_ls_accuracy_name(acc), b->grad_mean, a->grad_mean, b->sd_err, a->sd_err,
-            b->shift_max, b->shift_mean, a->shift_max, a->shift_mean, 100 * (a->area / b->area - 1), steps);
+    fprintf(fp, "shape\taccuracy\tgrad_before\tgrad_after\tgrad_max_after\tsd_err_before\tsd_err_after\t"
+                "shift_max_before\tshift_mean_before\tshift_max_after\tshift_mean_after\tarea_before\tarea_after\t"
+                "exact_area\tarea_change_percent\tsteps");
 }
 
-int p2_reinit_options(int argc, char **argv, p2_reinit_opts *o, hj_error *err)
+void p2_reinit_run_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *b, const p2_reinit_meas *a,
+                       long steps)
 {
+    const double v[13] = {b->grad_mean, a->grad_mean, a->grad_max, b->sd_err, a->sd_err, b->shift_max, b->shift_mean,
+                          a->shift_max, a->shift_mean, b->area, a->area, c->exact_area, 100 * (a->area / b->area - 1)};
+    fprintf(fp, "%s\t%s", p2_shape_name[c->shape], hj_ls_accuracy_name(acc));
+    for (int k = 0; k < 13; k++) fprintf(fp, "\t%.17g", v[k]);
+    fprintf(fp, "\t%ld", steps);
+}
+
+void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
+                     const char *base, const char *comment, p2_reinit_opts *o, hj_out *tab)
+{
+    static const char *levels[HJ_LS_NACC + 1], *shapes[P2_NSHAPE + 1];
+    for (int k = 0; k < HJ_LS_NACC; k++) levels[k] = hj_ls_accuracy_name(k);
+    for (int k = 0; k < P2_NSHAPE; k++) shapes[k] = p2_shape_name[k];
     *o = (p2_reinit_opts){P2_STAR, HJ_LS_ACC_LOW, 0, 0, "."};
-    static const char *const valued[] = {"--shape", "--accuracy", "--out-dir"};
-    for (int i = 1; i < argc; i++) {
-        int v;
-        const char *s;
-        int rc = p2_next_option(argc, argv, &i, valued, 3, &v, &s, err);
-        if (rc) return rc;
-        if (v == P2_OPT_HELP) {
-            o->help = 1;
-            return HJ_OK;
-        }
-        if (v == P2_OPT_QUICK) continue;
-        if (v == 0) rc = p2_parse_choice(s, "shape", p2_shape_name, P2_NSHAPE, &o->shape, err);
-        else if (v == 1) rc = hj_ls_accuracy_parse(s, &o->acc, err);
-        else o->dir = s;
-        if (rc) return rc;
-        o->single |= v < 2;
-    }
-    return HJ_OK;
-}
-
-void p2_reinit_begin(const char *prog, void (*usage)(void), int argc, char **argv, const char *base,
-                     const char *comment, p2_reinit_opts *o, hj_out *tab)
-{
+    hj_cli_opt opts[] = {
+        {.name = "--shape", .type = HJ_OPT_CHOICE, .value = &o->shape, .choices = shapes, .metavar = "S",
+         .help = "the shape of one run (the toolbox's initialType)"},
+        {.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = &o->acc, .choices = levels, .metavar = "A",
+         .help = "the accuracy of one run (section 2.1)"},
+        {.name = "--quick", .type = HJ_OPT_FLAG, .value = &o->quick,
+         .help = "accepted: the default set is already quick"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &o->dir, .metavar = "DIR", .help = "output directory"},
+    };
+    hj_cli_spec spec = {prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), epilog};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    o->single = opts[0].seen || opts[1].seen;
     hj_error err;
-    if (p2_reinit_options(argc, argv, o, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    if (o->help) {
-        usage();
-        exit(0);
-    }
     p2_fail_if(prog, hj_mkdirs(o->dir, &err), &err);
     char name[256];
     snprintf(name, sizeof name, "%s%s.tsv", base, o->single ? "_run" : "");

@@ -9,7 +9,7 @@
  * P2_CURVE_SAMPLES samples of the exact curve, hj_ls_unsigned_distance,
  * signed by phi0), accurate to about 1e-4 near the curve.
  *
- * p2_reinit_setup, _measure and _options return hj_error codes.
+ * p2_reinit_setup and _measure return hj_error codes.
  */
 #ifndef P2_REINIT_H
 #define P2_REINIT_H
@@ -51,27 +51,28 @@ int p2_reinit_measure(const p2_reinit_case *c, double *phi, p2_reinit_meas *m, h
 void p2_reinit_header(FILE *fp);
 void p2_reinit_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
                    const p2_reinit_meas *after, long steps);
-/* One row of reinit_notes.md / reinit_test_notes.md, before -> after,
- * without its line end (reinitTest adds a column). */
-void p2_reinit_note_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
-                        const p2_reinit_meas *after, long steps);
+/* The columns of reinit_runs.tsv / reinit_test_runs.tsv, the data of
+ * their notes, and one row, to full precision, before and after, with the
+ * change of area in percent; both without the line end (reinitTest adds
+ * a column). */
+void p2_reinit_run_header(FILE *fp);
+void p2_reinit_run_row(FILE *fp, const p2_reinit_case *c, int acc, const p2_reinit_meas *before,
+                       const p2_reinit_meas *after, long steps);
 
 /* The options reinitDemo and reinitTest share: --shape, --accuracy (either
  * sets single: one run), --out-dir, --quick (accepted: the default set is
- * already quick) and --help, which ends the scan with help set so that
- * the program prints its usage as soon as it is seen.  HJ_EINVAL with the
- * message for an unknown option or a missing or bad value. */
+ * already quick). */
 typedef struct {
-    int shape, acc, single, help;
+    int shape, acc, single, quick;
     const char *dir;
 } p2_reinit_opts;
-int p2_reinit_options(int argc, char **argv, p2_reinit_opts *o, hj_error *err);
 
-/* For main() (ends the program on bad usage or a failure): the options
- * (--help prints usage() and exits), the output directory, and the table
- * o->dir/<base>.tsv (one run: <base>_run.tsv) opened in *tab with the
- * comment line(s) and the columns. */
-void p2_reinit_begin(const char *prog, void (*usage)(void), int argc, char **argv, const char *base,
-                     const char *comment, p2_reinit_opts *o, hj_out *tab);
+/* For main() (ends the program on bad usage or a failure): the options,
+ * read through hj_cli's option table (--help prints summary, the options
+ * and epilog), the output directory, and the table o->dir/<base>.tsv (one
+ * run: <base>_run.tsv) opened in *tab with the comment line(s) and the
+ * columns. */
+void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
+                     const char *base, const char *comment, p2_reinit_opts *o, hj_out *tab);
 
 #endif

@@ -59,7 +59,8 @@ held against our own run (regression gate, kind error).  A reinitialization
 that moved the front, did not converge toward |grad phi| = 1, or used the
 wrong sign would change them by far more than the tolerances.
 
-**Outputs.** reinit.tsv, reinit_notes.md, reinit_star_medium.dat (x y phi_0
+**Outputs.** reinit.tsv, reinit_runs.tsv (every run to full precision,
+which notes/reinit_notes.md presents), reinit_star_medium.dat (x y phi_0
 phi(1) |grad phi_0| |grad phi(1)|, gnuplot grid).  With --shape or
 --accuracy: one run, reinit_run.tsv and reinit_run.dat (the nine output
 times as gnuplot index blocks).
@@ -92,36 +93,28 @@ static long run(const p2_reinit_case *c, int acc, double *phi, const char *seq_p
     return st.steps;
 }
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
-            "reinitDemo of Mitchell's toolbox (section 2.2.1); see the comment at the top of reinit_demo.c.\n"
-            "  --shape S      circle or star (default star)\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --quick        the same set (it takes about a second)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "With neither --shape nor --accuracy: both shapes at every accuracy, the figures' data and reinit.tsv.\n",
-            PROG);
-}
+static const char *const SUMMARY =
+    "reinitDemo of Mitchell's toolbox (section 2.2.1); see the comment at the top of reinit_demo.c.";
+static const char *const EPILOG =
+    "With neither --shape nor --accuracy: both shapes at every accuracy, the figures' data and reinit.tsv.\n";
 
 int main(int argc, char **argv)
 {
     p2_reinit_opts opt;
-    hj_out tab, notes;
-    p2_reinit_begin(PROG, usage, argc, argv, "reinit",
+    hj_out tab, runs;
+    p2_reinit_begin(PROG, SUMMARY, EPILOG, argc, argv, "reinit",
                     "# reinitDemo: near the front (within 5 dx of the exact initial curve) before and after t = 1\n",
                     &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
     const char *dir = opt.dir;
     hj_error err;
     char path[4096];
-    if (!single) {
-        p2_fail_if(PROG, p2_open(&notes, dir, "reinit_notes.md", &err), &err);
-        fprintf(notes.fp, "\nNear the front (nodes within 5 dx of the exact initial curve), before -> after "
-                          "reinitialization to t = 1:\n\n| shape | accuracy | mean abs(abs(grad phi) - 1) | "
-                          "max abs(phi - d) | zero crossings from the exact curve: max (mean) | area change | "
-                          "steps |\n|---|---|---|---|---|---|---|\n");
+    if (!single) { /* every run to full precision, for the notes */
+        p2_fail_if(PROG, p2_open(&runs, dir, "reinit_runs.tsv", &err), &err);
+        fprintf(runs.fp, "# reinitDemo: every run, near the front (nodes within 5 dx of the exact initial curve) "
+                         "before and after reinitialization to t = 1\n");
+        p2_reinit_run_header(runs.fp);
+        fputc('\n', runs.fp);
     }
     for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
@@ -138,8 +131,8 @@ int main(int argc, char **argv)
             p2_fail_if(PROG, p2_reinit_measure(&c, phi, &after, &err), &err);
             p2_reinit_row(tab.fp, &c, a, &before, &after, steps);
             if (single) continue;
-            p2_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
-            fputc('\n', notes.fp);
+            p2_reinit_run_row(runs.fp, &c, a, &before, &after, steps);
+            fputc('\n', runs.fp);
             if (s == P2_STAR && a == HJ_LS_ACC_MEDIUM) { /* Figures 4 and 5 */
                 p2_fail_if(PROG, hj_ls_gradient_norm(&c.g, c.phi0, c.work, g0, &err), &err);
                 p2_fail_if(PROG, hj_ls_gradient_norm(&c.g, phi, c.work, g1, &err), &err);
@@ -152,11 +145,6 @@ int main(int argc, char **argv)
         p2_reinit_free(&c);
     }
     p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
-    if (!single) {
-        fprintf(notes.fp, "\nThe circle's phi_0 is already a signed distance function near the front, so its "
-                          "numbers show what reinitialization costs there: the front moves by the scheme's "
-                          "dissipation (no subcell fix).\n");
-        p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
-    }
+    if (!single) p2_fail_if(PROG, hj_out_commit(&runs, &err), &err);
     return 0;
 }

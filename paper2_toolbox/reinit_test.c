@@ -30,13 +30,14 @@ curve before and after, max |phi - d| there (d the exact signed distance),
 the distance of the final zero crossings from the exact initial curve, and
 the area of {phi < 0} against the exact area (kind value); plus the number
 of steps and whether the update criterion stopped the iteration
-(reinit_test_notes.md).  The gradient, distance and shift numbers are held
+(reinit_test_runs.tsv).  The gradient, distance and shift numbers are held
 against our own run (regression gate); the areas against the exact ones.
 Compared with reinitDemo at t = 1, the longer run (t_max = 2.8 unless the
 criterion stops it) should not move the front further by more than the
-scheme's dissipation allows; reinit_test_notes.md puts both side by side.
+scheme's dissipation allows; notes/reinit_test_notes.md puts both side by side.
 
-**Outputs.** reinit_test.tsv, reinit_test_notes.md.  With --shape or
+**Outputs.** reinit_test.tsv, reinit_test_runs.tsv (every run to full
+precision, which notes/reinit_test_notes.md presents).  With --shape or
 --accuracy: one run, reinit_test_run.tsv and reinit_test_run.dat (x y phi_0
 phi, gnuplot grid).
 */
@@ -52,36 +53,28 @@ phi, gnuplot grid).
 
 static const char *const PROG = "reinit_test";
 
-static void usage(void)
-{
-    printf(
-            "usage: %s [--shape circle|star] [--accuracy A] [--quick] --out-dir DIR\n"
-            "reinitTest of Mitchell's toolbox (section 2.7.3); see the comment at the top of reinit_test.c.\n"
-            "  --shape S      circle or star (default star)\n"
-            "  --accuracy A   low (default), medium, high, veryHigh\n"
-            "  --quick        the same set (it takes a few seconds)\n"
-            "  --out-dir DIR  output directory (default .)\n"
-            "With neither --shape nor --accuracy: both shapes at every accuracy and reinit_test.tsv.\n",
-            PROG);
-}
+static const char *const SUMMARY =
+    "reinitTest of Mitchell's toolbox (section 2.7.3); see the comment at the top of reinit_test.c.";
+static const char *const EPILOG =
+    "With neither --shape nor --accuracy: both shapes at every accuracy and reinit_test.tsv.\n";
 
 int main(int argc, char **argv)
 {
     p2_reinit_opts opt;
-    hj_out tab, notes;
-    p2_reinit_begin(PROG, usage, argc, argv, "reinit_test",
+    hj_out tab, runs;
+    p2_reinit_begin(PROG, SUMMARY, EPILOG, argc, argv, "reinit_test",
                     "# reinitTest (signedDistanceIterative, default t_max and errorMax): near the front (within 5 dx "
                     "of the exact initial curve) before and after\n", &opt, &tab);
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
     const char *dir = opt.dir;
     hj_error err;
-    if (!single) {
-        p2_fail_if(PROG, p2_open(&notes, dir, "reinit_test_notes.md", &err), &err);
-        fprintf(notes.fp, "\nsignedDistanceIterative with its default t_max (the diagonal of [-1, 0.98]^2, 2.80) and errorMax "
-                          "(1e-3); near the front (nodes within 5 dx of the exact initial curve), before -> after:"
-                          "\n\n| shape | accuracy | mean abs(abs(grad phi) - 1) | max abs(phi - d) | zero crossings "
-                          "from the exact curve: max (mean) | area change | steps | stopped by errorMax |\n"
-                          "|---|---|---|---|---|---|---|---|\n");
+    if (!single) { /* every run to full precision, for the notes */
+        p2_fail_if(PROG, p2_open(&runs, dir, "reinit_test_runs.tsv", &err), &err);
+        fprintf(runs.fp, "# reinitTest (signedDistanceIterative, default t_max and errorMax): every run, near the "
+                         "front (nodes within 5 dx of the exact initial curve) before and after; "
+                         "stopped_by_error_max: whether the update criterion stopped the iteration\n");
+        p2_reinit_run_header(runs.fp);
+        fputs("\tstopped_by_error_max\n", runs.fp);
     }
     for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
@@ -108,18 +101,14 @@ int main(int argc, char **argv)
                 p2_fail_if(PROG, p2_write_dat(dir, "reinit_test_run.dat", &c.g, 2, names, f, &err), &err);
                 continue;
             }
-            p2_reinit_note_row(notes.fp, &c, a, &before, &after, steps);
-            fprintf(notes.fp, " %s |\n", converged ? "yes" : "no");
+            p2_reinit_run_row(runs.fp, &c, a, &before, &after, steps);
+            fprintf(runs.fp, "\t%s\n", converged ? "yes" : "no");
         }
         hj_ls_free(phi);
         p2_reinit_free(&c);
     }
     hj_progress("\n");
     p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
-    if (!single) {
-        fprintf(notes.fp, "\nCompare reinitDemo's table (t = 1): a longer reinitialization improves the gradient "
-                          "far from the front but keeps moving the front by the scheme's dissipation.\n");
-        p2_fail_if(PROG, hj_out_commit(&notes, &err), &err);
-    }
+    if (!single) p2_fail_if(PROG, hj_out_commit(&runs, &err), &err);
     return 0;
 }

@@ -13,26 +13,27 @@ P2_BIN := $(BUILD)/bin/$(P2)
 P2_PROGS := fig21_shapes fig22_derivatives bench_table2 bench_convection
 
 # Figure 22: errors and fitted orders, then the four-panel figure.
-$(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.md &: $(P2_BIN)/fig22_derivatives
+$(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.tsv &: $(P2_BIN)/fig22_derivatives
 	@mkdir -p $(P2_OUT)
 	$< $(QUICKFLAG) --out-dir $(P2_OUT)
 $(P2_OUT)/fig22.svg: $(P2_OUT)/fig22.dat $(P2)/plot/fig22.gp
 	gnuplot -e "dat='$<'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig22.gp && mv $(@D)/.tmp-$(@F) $@
 
 # Figure 21: CSG shapes in 1-3 dimensions (section 2.7.1).
-$(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk $(P2_OUT)/fig21_checks.md &: $(P2_BIN)/fig21_shapes
+$(P2_OUT)/fig21.tsv $(P2_OUT)/fig21_1d.tsv $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_3d.vtk \
+  $(P2_OUT)/fig21_checks.tsv &: $(P2_BIN)/fig21_shapes
 	@mkdir -p $(P2_OUT)
 	$< --out-dir $(P2_OUT)
 $(P2_OUT)/fig21.png: $(P2_OUT)/fig21_3d.dat $(P2_OUT)/fig21_2d.tsv $(P2_OUT)/fig21_1d.tsv $(P2)/plot/fig21.gp
 	gnuplot -e "dir='$(P2_OUT)'; out='$(@D)/.tmp-$(@F)'" $(P2)/plot/fig21.gp && mv $(@D)/.tmp-$(@F) $@
 
-P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.md $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.md
+P2_RESULTS := $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22_orders.tsv $(P2_OUT)/fig22.svg $(P2_OUT)/fig21.png $(P2_OUT)/fig21_checks.tsv
 # Tables held by make check against paper2_toolbox/reference/ (README.md there).
 P2_CHECK := $(P2_OUT)/fig21.tsv
 REPORT_INPUTS += $(P2)/fig21_shapes.c $(P2)/fig22_derivatives.c $(P2)/bench_table2.c $(P2)/bench_convection.c \
                  $(P2)/report.tsv $(P2)/overview.md
-# notes/convection.md presents bench_convection's convection_bench.tsv.
-REPORT_INPUTS += $(P2)/notes/convection.md
+# The notes' templates, rendered by the report from the results' tables.
+REPORT_INPUTS += $(wildcard $(P2)/notes/*.md)
 
 # The demos of section 2: one fragment each, mk/<demo>.mk, which adds its
 # program to P2_PROGS, its outputs to P2_RESULTS, its checked tables to

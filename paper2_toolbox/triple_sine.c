@@ -51,7 +51,9 @@ notes (no closed form).
 **Output.** triple_sine_b0.1.dat, triple_sine_b0.025.dat,
 triple_sine_b0.dat (phi at the output times as gnuplot index blocks; with
 `--b`, triple_sine_b<value>.dat), triple_sine.tsv (the check, against the
-values in published/triple_sine.tsv), triple_sine_notes.md.
+values in published/triple_sine.tsv), triple_sine_runs.tsv (every run's
+front heights to full precision, which notes/triple_sine_notes.md
+presents).
 */
 #include <math.h>
 #include <stdio.h>
@@ -181,19 +183,32 @@ int main(int argc, char **argv)
     p2_fail_if(prog, p2_open(&out, o.out_dir, "triple_sine.tsv", &err), &err);
     fprintf(out.fp, "# tripleSine check: b = 0, accuracy %s, front height at t = 0.5 on the column x_1 = 0.2 (flank) "
                     "and x_1 = 1 (valley)\nN\tpoint\theight\texact\terror\n", hj_ls_accuracy_name(o.acc));
-    const p2_check check = {grids, ngrids, 2, point, point, h[0], exact};
+    const p2_check check = {grids, ngrids, 2, point, NULL, NULL, NULL, h[0], exact};
     p2_check_rows(out.fp, &check);
-    p2_next_file(prog, &out, o.out_dir, "triple_sine_notes.md");
-    fprintf(out.fp, "\nFront height at t = 0.5 for b = 0 (`%s` accuracy) against Huygens' principle (flank x_1 = 0.2: "
-                    "1.710286, valley x_1 = 1: 1.630852):\n\n| nodes per side | flank | error | valley | error |\n|---|---|---|---|---|\n",
-            hj_ls_accuracy_name(o.acc));
-    for (int n = 0; n < ngrids; n++)
-        fprintf(out.fp, "| %ld | %.5f | %.2e | %.5f | %.2e |\n", grids[n], h[n][0], fabs(h[n][0] - exact[0]), h[n][1],
-                fabs(h[n][1] - exact[1]));
-    fprintf(out.fp, "\nThe figure's runs (%ld^2 nodes): front height at t = 0.5; curvature slows the crest (kappa > 0) "
-                    "and speeds up the valley (kappa < 0).\n\n| b | crest | valley |\n|---|---|---|\n", o.N);
-    for (int k = 0; k < nb; k++) fprintf(out.fp, "| %g | %.5f | %.5f |\n", bs[k], hfig[k][0], hfig[k][1]);
-    fputc('\n', out.fp);
+    /* Every run: the check's (flank and valley) and the figure's (crest
+     * and valley), t = 0.5. */
+    p2_next_file(prog, &out, o.out_dir, "triple_sine_runs.tsv");
+    fprintf(out.fp, "# tripleSine: every run, front height at t = 0.5 on the columns x_1 = 0 (crest), 0.2 (flank) "
+                    "and 1 (valley); exact: Huygens' principle (b = 0)\n"
+                    "accuracy\trun\tN\tb\tcrest\tflank\tflank_exact\tflank_error\tvalley\tvalley_exact\t"
+                    "valley_error\n");
+    for (int n = 0; n < ngrids; n++) {
+        fprintf(out.fp, "%s\tcheck\t%ld", hj_ls_accuracy_name(o.acc), grids[n]);
+        p2_cell(out.fp, 0);
+        p2_cell(out.fp, NAN);
+        for (int k = 0; k < 2; k++) {
+            p2_cell(out.fp, h[n][k]);
+            p2_cell(out.fp, exact[k]);
+            p2_cell(out.fp, fabs(h[n][k] - exact[k]));
+        }
+        fputc('\n', out.fp);
+    }
+    for (int k = 0; k < nb; k++) {
+        fprintf(out.fp, "%s\tfigure\t%ld", hj_ls_accuracy_name(o.acc), o.N);
+        const double cells[8] = {bs[k], hfig[k][0], NAN, NAN, NAN, hfig[k][1], NAN, NAN};
+        for (int q = 0; q < 8; q++) p2_cell(out.fp, cells[q]);
+        fputc('\n', out.fp);
+    }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;
 }
