@@ -9,6 +9,8 @@
 void p2_acoustic_defaults(p2_acoustic_par *p)
 {
     p->We = 1.3, p->Wp = 1.5, p->R = 0.8, p->S = 0.5;
+    p->cfl_rule = HJ_LS_CFL_NODE;
+    p->weno_eps = HJ_LS_WENO_EPS_LOCAL;
 }
 
 int p2_acoustic_grid(double dx, hj_ls_grid *g, hj_error *err)
@@ -76,6 +78,8 @@ int p2_acoustic_solve(const hj_ls_grid *g, const p2_acoustic_par *p, int acc, in
     cb_ctx c = {p, g};
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &c);
+    lf.cfl_rule = p->cfl_rule;
+    lf.weno_eps = p->weno_eps;
     hj_ls_restrict rs;
     hj_ls_restrict_init(&rs, g, &lf.base, 0);
     hj_ls_ode_opts o;

@@ -26,10 +26,12 @@
 
 typedef struct {
     double We, Wp, R, S;
+    int cfl_rule; /* HJ_LS_CFL_NODE (ours) or HJ_LS_CFL_TOOLBOX */
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (ours) or HJ_LS_WENO_EPS_GRID */
 } p2_acoustic_par;
 
 /* W_e = 1.3, W_p = 1.5, R = 0.8, S = 0.5 (section 2.6.2; the released
- * acoustic.m has W_p = 1.0). */
+ * acoustic.m has W_p = 1.0), our CFL rule and WENO5 epsilon. */
 void p2_acoustic_defaults(p2_acoustic_par *p);
 
 /* The grid of acoustic.m for spacing dx: [-4, 4] x [-2, 3] (hj_ls_grid_init_dx),

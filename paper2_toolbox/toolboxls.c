@@ -10,7 +10,8 @@ demos at every accuracy level (provenance, drivers and parameters in
 on our kernel and compares node by node:
 
 - air3D (51 x 40 x 50, t = 2.8, 8 chunks), acoustic (201 x 126, t = 4, 8
-  chunks): termLaxFriedrichs with GLF inside termRestrictUpdate;
+  chunks, W_p = 1 as the released acoustic.m): termLaxFriedrichs with GLF
+  inside termRestrictUpdate;
 - burgersLF 1-D N = 80 and 2-D N = 40 (t = 1.5 / pi^2, 10 chunks): GLF;
 - convectionDemo 'linear' 2-D 201^2 (one turn, 8 chunks);
 - reinitDemo 'star' at every accuracy and 'circle' at medium (100^2
@@ -50,6 +51,7 @@ node_rel_max, node_sign_changes) and, for WENO5, with our epsilon
 #include <string.h>
 
 #include "hj.h"
+#include "p2_acoustic.h"
 #include "p2_air3d.h"
 #include "p2_cli.h"
 #include "p2_convection.h"
@@ -58,9 +60,9 @@ node_rel_max, node_sign_changes) and, for WENO5, with our epsilon
 
 static const char *const prog = "toolboxls";
 
-typedef enum { AIR3D, BURGERS1, BURGERS2, CONVECTION, REINIT_STAR, REINIT_CIRCLE, NDEMO } demo;
-static const char *const demo_name[NDEMO] = {"air3D", "burgersLF_1D_N80", "burgersLF_2D_N40", "convectionDemo_linear",
-                                             "reinitDemo_star", "reinitDemo_circle"};
+typedef enum { AIR3D, ACOUSTIC, BURGERS1, BURGERS2, CONVECTION, REINIT_STAR, REINIT_CIRCLE, NDEMO } demo;
+static const char *const demo_name[NDEMO] = {"air3D", "acoustic", "burgersLF_1D_N80", "burgersLF_2D_N40",
+                                             "convectionDemo_linear", "reinitDemo_star", "reinitDemo_circle"};
 static const char *const acc_name[4] = {"low", "medium", "high", "veryHigh"};
 
 /* The reference array of one case: "<toolbox-dir>/<file>.txt". */
@@ -69,7 +71,7 @@ static void array_file(char *buf, size_t n, const char *dir, demo d, int acc)
     if (d == CONVECTION)
         snprintf(buf, n, "%s/convectionDemo_linear_%s_2D_final.txt", dir, acc_name[acc]);
     else
-        snprintf(buf, n, "%s/%s_%s_final.txt", dir, d == AIR3D ? "air3D" : demo_name[d], acc_name[acc]);
+        snprintf(buf, n, "%s/%s_%s_final.txt", dir, demo_name[d], acc_name[acc]);
 }
 
 /* Read a toolbox array (header "# N ...", "# min ...", "# dx ...", then one
@@ -179,6 +181,18 @@ static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, 
         chunks(2.8, 8, ts);
         if (!(rc = p2_air3d_target(g, &p, *phi, err)))
             rc = p2_air3d_solve(g, &p, acc, HJ_LS_GLF, ts, 9, *phi, NULL, NULL, &st, err);
+    } else if (d == ACOUSTIC) {
+        p2_acoustic_par p;
+        p2_acoustic_defaults(&p);
+        p.Wp = 1.0; /* the released acoustic.m, which the toolbox's run used */
+        p.cfl_rule = rule;
+        p.weno_eps = eps;
+        if ((rc = p2_acoustic_grid(1.0 / 25, g, err))) return rc;
+        if (!(*phi = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory");
+        double ts[9];
+        chunks(4, 8, ts);
+        if (!(rc = p2_acoustic_target(g, *phi, err)))
+            rc = p2_acoustic_solve(g, &p, acc, HJ_LS_GLF, ts, 9, *phi, NULL, NULL, &st, err);
     } else if (d == BURGERS1 || d == BURGERS2) {
         p2_os_run r = {d == BURGERS1 ? 1 : 2, d == BURGERS1 ? 80 : 40, acc, HJ_LS_GLF, 0, 1.5 / (HJ_PI * HJ_PI), 10};
         rc = p2_os_solve_rule(&p2_os_burgers, &r, rule, eps, g, phi, NULL, NULL, &st, err);
@@ -281,14 +295,14 @@ int main(int argc, char **argv)
 {
     const char *out_dir = ".", *dir = "toolboxls";
     int quick = 0, which[NDEMO], nwhich = 0;
-    static const char *const names[] = {"air3D", "burgersLF_1D_N80", "burgersLF_2D_N40", "convectionDemo_linear",
-                                        "reinitDemo_star", "reinitDemo_circle", NULL};
+    static const char *const names[] = {"air3D", "acoustic", "burgersLF_1D_N80", "burgersLF_2D_N40",
+                                        "convectionDemo_linear", "reinitDemo_star", "reinitDemo_circle", NULL};
     const char *cases = NULL;
     hj_cli_opt opts[] = {
         {.name = "--toolbox-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
          .help = "the toolbox's decompressed arrays (<case>_<accuracy>_final.txt)"},
         {.name = "--cases", .type = HJ_OPT_STRING, .value = &cases, .metavar = "C,C,...",
-         .help = "only these cases (air3D, burgersLF_1D_N80, burgersLF_2D_N40, convectionDemo_linear, "
+         .help = "only these cases (air3D, acoustic, burgersLF_1D_N80, burgersLF_2D_N40, convectionDemo_linear, "
                  "reinitDemo_star, reinitDemo_circle)", .dflt = "all"},
         {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "the small cases only (burgersLF, reinitDemo)"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
