@@ -81,6 +81,11 @@ static int parse_value(hj_cli_opt *o, const char *v, hj_error *err)
         return HJ_OK;
     case HJ_OPT_LONG_LIST:
         return hj_parse_long_list(v, o->name, (long)o->min, (long)o->max, (long *)o->value, o->maxn, o->count, err);
+    case HJ_OPT_STRING_LIST:
+        if (v[0] == '\0') return hj_error_set(err, HJ_EINVAL, "%s needs a non-empty value", o->name);
+        if (*o->count >= o->maxn) return hj_error_set(err, HJ_EINVAL, "%s is given more than %d times", o->name, o->maxn);
+        ((const char **)o->value)[(*o->count)++] = v;
+        return HJ_OK;
     case HJ_OPT_CHOICE:
         for (int c = 0; o->choices[c]; c++)
             if (!strcmp(o->choices[c], v)) {
@@ -117,7 +122,9 @@ int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *
                 return hj_error_set(err, HJ_EINVAL, "unknown option '%.200s' (see %s --help)", a, spec->prog);
             return hj_error_set(err, HJ_EINVAL, "unexpected argument '%.200s' (see %s --help)", a, spec->prog);
         }
-        if (o->seen) return hj_error_set(err, HJ_EINVAL, "%s is given twice", o->name);
+        if (o->seen && o->type != HJ_OPT_STRING_LIST) return hj_error_set(err, HJ_EINVAL, "%s is given twice", o->name);
+        /* The first occurrence of a list replaces its default values. */
+        if (!o->seen && o->type == HJ_OPT_STRING_LIST) *o->count = 0;
         o->seen = 1;
         if (o->type == HJ_OPT_FLAG) {
             *(int *)o->value = 1;
@@ -155,6 +162,15 @@ void hj_cli_help(const hj_cli_spec *spec, FILE *out)
                 size_t n = (size_t)snprintf(dflt, sizeof dflt, " (default ");
                 for (int c = 0; c < *o->count && n < sizeof dflt; c++)
                     n += (size_t)snprintf(dflt + n, sizeof dflt - n, "%s%ld", c ? "," : "", ((const long *)o->value)[c]);
+                if (n < sizeof dflt) snprintf(dflt + n, sizeof dflt - n, ")");
+            }
+            break;
+        case HJ_OPT_STRING_LIST:
+            snprintf(range, sizeof range, " [repeatable, at most %d]", o->maxn);
+            if (*o->count > 0) {
+                size_t n = (size_t)snprintf(dflt, sizeof dflt, " (default");
+                for (int c = 0; c < *o->count && n < sizeof dflt; c++)
+                    n += (size_t)snprintf(dflt + n, sizeof dflt - n, " %s", ((const char *const *)o->value)[c]);
                 if (n < sizeof dflt) snprintf(dflt + n, sizeof dflt - n, ")");
             }
             break;

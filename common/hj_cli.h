@@ -27,14 +27,18 @@ int hj_parse_long_list(const char *s, const char *what, long min, long max, long
  * range checks and their messages all come from that one place.  Values
  * are written to the variables the table points to, which hold the
  * defaults beforehand (--help prints them).  Every option takes the form
- * "--name value" (or "--name" alone for a flag). */
+ * "--name value" (or "--name" alone for a flag).  An option may be given
+ * once, except a STRING_LIST, which collects one value per occurrence:
+ * its first occurrence replaces the default list, the next ones append. */
 typedef enum {
     HJ_OPT_FLAG,      /* int *: set to 1 */
     HJ_OPT_LONG,      /* long *, in [min, max] */
     HJ_OPT_DOUBLE,    /* double *, finite, in [min, max] */
     HJ_OPT_STRING,    /* const char **: the argument itself, non-empty */
     HJ_OPT_LONG_LIST, /* long * array of maxn, count in *count; each in [min, max] */
-    HJ_OPT_CHOICE     /* int *: index in choices (a NULL-terminated list of words) */
+    HJ_OPT_CHOICE,    /* int *: index in choices (a NULL-terminated list of words) */
+    HJ_OPT_STRING_LIST /* const char ** array of maxn, count in *count: one non-empty value per
+                        * occurrence, at most maxn occurrences (e.g. --source X,Y given twice) */
 } hj_opt_type;
 
 typedef struct {
@@ -45,7 +49,7 @@ typedef struct {
     const char *metavar; /* shown in --help: "N", "FILE" */
     const char *help;    /* one line */
     const char *const *choices; /* CHOICE */
-    int *count, maxn;    /* LONG_LIST */
+    int *count, maxn;    /* LONG_LIST, STRING_LIST */
     const char *dflt;    /* shown as the default instead of the value (e.g. "the paper's") */
     int seen;            /* set by hj_cli_parse when given */
 } hj_cli_opt;
@@ -61,7 +65,7 @@ typedef struct {
 /* Parse argv[1..argc-1] against spec.  Returns HJ_OK, with *help = 1 if
  * --help was given (the caller prints hj_cli_help and exits 0), or
  * HJ_EINVAL / HJ_ENONFINITE with one message naming the option.  Giving an
- * option twice is an error. */
+ * option twice is an error, except a STRING_LIST up to its maxn times. */
 int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *err);
 
 /* "usage: prog [options]", the summary, and one line per option with its

@@ -55,17 +55,10 @@ static int parse_doubles(const char *s, double *out, int n)
     return 0;
 }
 
-/* The options that take a value (all others but --help, --quick are unknown). */
-static int takes_value(const char *a)
-{
-    static const char *const opts[] = {"--speed", "--slowness", "--slowness-const", "--out", "--speed-const", "--N", "--delta", "--eps", "--max-iter", "--pgm-range", "--domain", "--source", "--strategy"};
-    for (size_t k = 0; k < sizeof opts / sizeof opts[0]; k++)
-        if (!strcmp(a, opts[k])) return 1;
-    return 0;
-}
-
 /* Exit status of a run that did not converge (its last iterate is written). */
 enum { EXIT_NOCONV = 3 };
+
+enum { MAX_SOURCES = 64 };
 
 static void show_progress(int iter, double change, void *ctx)
 {
@@ -73,83 +66,72 @@ static void show_progress(int iter, double change, void *ctx)
     hj_progress("\reikonal: iteration %d, mean change %.3g   ", iter, change);
 }
 
-static void usage(FILE *f)
-{
-    fprintf(f, "usage: %s (--speed FILE | --slowness FILE | --speed-const V | --slowness-const F) --source X,Y[,VALUE] ... "
-               "[options]\n"
-               "Solves |grad phi| = f, f = 1 / speed, with phi = VALUE (default 0) at each source: the travel time; see\n"
-               "the top of eikonal.c.\n"
-               "  --speed FILE        speed map (f = 1 / value; every value > 0): plain text grid or PGM (first row = top)\n"
-               "  --slowness FILE     slowness map (f = value >= 0), same formats\n"
-               "  --pgm-range A,B     a PGM pixel v maps to the value A + (B - A) v / maxval (default 0,1; a speed image needs A > 0)\n"
-               "  --speed-const V     uniform speed V > 0 (f = 1 / V)\n"
-               "  --slowness-const F  uniform slowness F > 0\n"
-               "  --domain X0,X1,Y0,Y1  the rectangle (default: [0, columns-1] x [0, rows-1] of the map)\n"
-               "  --N N               intervals in x (default: the map's columns - 1, or 100)\n"
-               "  --source X,Y[,V]    a point source (a grid node); repeat for more (at most 64)\n"
-               "  --strategy S        richardson (default) | first-order\n"
-               "  --delta X           stop when an iteration's mean |change| is below X times the travel-time scale\n"
-               "                      (the domain's diagonal times the largest slowness; default 1e-12)\n"
-               "  --eps X --max-iter N   as in the paper 1 examples\n"
-               "  --out FILE          output grid x y phi (default phi.tsv; - for stdout)\n"
-               "  --help\n"
-               "Exit status: 0 converged, 1 a failed run, 2 bad usage, 3 not converged (the last iterate is written).\n"
-               "Progress on stderr when it is a terminal.\n", prog);
-}
-
 int main(int argc, char **argv)
 {
-    const char *speed_file = NULL, *slow_file = NULL, *out_path = "phi.tsv";
+    const char *speed_file = NULL, *slow_file = NULL, *out_path = "phi.tsv", *pgm_s = "0,1", *dom_s = NULL;
+    const char *src_s[MAX_SOURCES];
     double pgm[2] = {0, 1}, dom[4] = {0, 0, 0, 0}, cst = -1, slow_cst = -1;
-    int have_dom = 0, nsrc = 0;
+    int nsrc = 0, strategy = 0;
     long N = -1;
-    hj_inflow src[64];
+    hj_inflow src[MAX_SOURCES];
     hj_fsm_options opt = hj_fsm_default_options();
-    opt.strategy = HJ_BC_RICHARDSON;
+    long max_iter = opt.max_iter;
     double delta_rel = 1e-12;
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) { usage(stdout); return 0; }
-        if (strncmp(a, "--", 2)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unexpected argument '%s' (see --help)", a);
-        if (!takes_value(a)) hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value (see --help)", a);
-        i++;
-        int rc = HJ_OK;
-        if (!strcmp(a, "--speed")) speed_file = v;
-        else if (!strcmp(a, "--slowness")) slow_file = v;
-        else if (!strcmp(a, "--slowness-const"))
-            rc = hj_parse_double(v, "--slowness-const", 1e-300, 1e300, &slow_cst, &err);
-        else if (!strcmp(a, "--out")) out_path = v;
-        else if (!strcmp(a, "--speed-const")) rc = hj_parse_double(v, "--speed-const", 1e-300, 1e300, &cst, &err);
-        else if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 10000, &N, &err);
-        else if (!strcmp(a, "--delta")) rc = hj_parse_double(v, "--delta", 1e-300, 1, &delta_rel, &err);
-        else if (!strcmp(a, "--eps")) rc = hj_parse_double(v, "--eps", 1e-300, 1, &opt.eps, &err);
-        else if (!strcmp(a, "--max-iter")) {
-            long m;
-            rc = hj_parse_long(v, "--max-iter", 1, 10000000, &m, &err);
-            opt.max_iter = (int)m;
-        } else if (!strcmp(a, "--pgm-range")) {
-            if (parse_doubles(v, pgm, 2) || pgm[0] < 0 || pgm[1] < pgm[0])
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range wants A,B with 0 <= A <= B, got '%s'", v);
-        } else if (!strcmp(a, "--domain")) {
-            if (parse_doubles(v, dom, 4) || !(dom[1] > dom[0]) || !(dom[3] > dom[2]))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--domain wants X0,X1,Y0,Y1 with X0 < X1, Y0 < Y1, got '%s'", v);
-            have_dom = 1;
-        } else if (!strcmp(a, "--source")) {
-            double s[3] = {0, 0, 0};
-            if (nsrc >= 64) hj_cli_fail(prog, HJ_EXIT_USAGE, "at most 64 sources");
-            if (parse_doubles(v, s, 2) && parse_doubles(v, s, 3))
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "--source wants X,Y or X,Y,VALUE (finite numbers), got '%s'", v);
-            src[nsrc++] = (hj_inflow){.type = HJ_INFLOW_POINT, .x = s[0], .y = s[1], .value = s[2], .richardson = 1};
-        } else if (!strcmp(a, "--strategy")) {
-            if (!strcmp(v, "richardson")) opt.strategy = HJ_BC_RICHARDSON;
-            else if (!strcmp(v, "first-order")) opt.strategy = HJ_BC_FIRST_ORDER;
-            else hj_cli_fail(prog, HJ_EXIT_USAGE, "--strategy must be richardson or first-order, got '%s'", v);
-        } else {
-            hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        }
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    static const char *const strategy_w[] = {"richardson", "first-order", NULL};
+    static const hj_bc_strategy strategy_v[] = {HJ_BC_RICHARDSON, HJ_BC_FIRST_ORDER};
+    hj_cli_opt opts[] = {
+        {.name = "--speed", .type = HJ_OPT_STRING, .value = &speed_file, .metavar = "FILE",
+         .help = "speed map (f = 1 / value; every value > 0): plain text grid or PGM (first row = top)"},
+        {.name = "--slowness", .type = HJ_OPT_STRING, .value = &slow_file, .metavar = "FILE",
+         .help = "slowness map (f = value >= 0), same formats"},
+        {.name = "--pgm-range", .type = HJ_OPT_STRING, .value = &pgm_s, .metavar = "A,B",
+         .help = "a PGM pixel v maps to the value A + (B - A) v / maxval (a speed image needs A > 0)"},
+        {.name = "--speed-const", .type = HJ_OPT_DOUBLE, .value = &cst, .min = 1e-300, .max = 1e300, .metavar = "V",
+         .help = "uniform speed V > 0 (f = 1 / V)", .dflt = "none"},
+        {.name = "--slowness-const", .type = HJ_OPT_DOUBLE, .value = &slow_cst, .min = 1e-300, .max = 1e300,
+         .metavar = "F", .help = "uniform slowness F > 0", .dflt = "none"},
+        {.name = "--domain", .type = HJ_OPT_STRING, .value = &dom_s, .metavar = "X0,X1,Y0,Y1", .help = "the rectangle",
+         .dflt = "[0, columns-1] x [0, rows-1] of the map, or [0, 1] x [0, 1]"},
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 8, .max = 10000, .metavar = "N",
+         .help = "intervals in x", .dflt = "the map's columns - 1, or 100"},
+        {.name = "--source", .type = HJ_OPT_STRING_LIST, .value = src_s, .metavar = "X,Y[,V]",
+         .help = "a point source at a grid node, phi = V there (V = 0 if left out)", .count = &nsrc, .maxn = MAX_SOURCES},
+        {.name = "--strategy", .type = HJ_OPT_CHOICE, .value = &strategy, .metavar = "S", .choices = strategy_w,
+         .help = "sources: Richardson extrapolation in [-2h, 2h]^2, or neighbours frozen at first order"},
+        {.name = "--delta", .type = HJ_OPT_DOUBLE, .value = &delta_rel, .min = 1e-300, .max = 1, .metavar = "X",
+         .help = "stop when an iteration's mean |change| < X times the travel-time scale (diagonal times the "
+                 "largest slowness)"},
+        {.name = "--eps", .type = HJ_OPT_DOUBLE, .value = &opt.eps, .min = 1e-300, .max = 1, .metavar = "X",
+         .help = "WENO epsilon"},
+        {.name = "--max-iter", .type = HJ_OPT_LONG, .value = &max_iter, .min = 1, .max = 10000000, .metavar = "N",
+         .help = "at most N iterations"},
+        {.name = "--out", .type = HJ_OPT_STRING, .value = &out_path, .metavar = "FILE",
+         .help = "output grid x y phi (- for stdout)"},
+    };
+    hj_cli_spec spec = {
+        .prog = prog,
+        .summary = "Solves |grad phi| = f, f = 1 / speed, with phi = V at each --source: the travel time.  Give one\n"
+                   "medium (--speed, --slowness, --speed-const or --slowness-const) and at least one --source;\n"
+                   "see the top of eikonal.c.",
+        .opts = opts,
+        .nopts = (int)(sizeof opts / sizeof opts[0]),
+        .epilog = "Exit status: 0 converged, 1 a failed run, 2 bad usage, 3 not converged (the last iterate is "
+                  "written).\nProgress on stderr when it is a terminal.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    opt.strategy = strategy_v[strategy];
+    opt.max_iter = (int)max_iter;
+    /* The values with commas, in the order of the checks of the table. */
+    if (parse_doubles(pgm_s, pgm, 2) || pgm[0] < 0 || pgm[1] < pgm[0])
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range wants A,B with 0 <= A <= B, got '%s'", pgm_s);
+    if (dom_s && (parse_doubles(dom_s, dom, 4) || !(dom[1] > dom[0]) || !(dom[3] > dom[2])))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--domain wants X0,X1,Y0,Y1 with X0 < X1, Y0 < Y1, got '%s'", dom_s);
+    const int have_dom = dom_s != NULL;
+    for (int k = 0; k < nsrc; k++) {
+        double s[3] = {0, 0, 0};
+        if (parse_doubles(src_s[k], s, 2) && parse_doubles(src_s[k], s, 3))
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "--source wants X,Y or X,Y,VALUE (finite numbers), got '%s'", src_s[k]);
+        src[k] = (hj_inflow){.type = HJ_INFLOW_POINT, .x = s[0], .y = s[1], .value = s[2], .richardson = 1};
     }
     const int nmedia = (speed_file != NULL) + (slow_file != NULL) + (cst >= 0) + (slow_cst >= 0);
     if (nmedia == 0)

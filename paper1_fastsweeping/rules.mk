@@ -41,25 +41,26 @@ $(P1_OUT)/fig/%.contour.png: $(P1_OUT)/%.tsv common/plot/contour.gp
 	@mkdir -p $(@D)
 	gnuplot -e "table='$(P1_OUT)/$*'; out='$(@D)/.tmp-$(@F)'; title='Table $(subst table,,$*): contours of the computed solution (N = 80)'" common/plot/contour.gp && mv $(@D)/.tmp-$(@F) $@
 
-# Studies shown in the report (Markdown written by studies.sh).
-P1_STUDIES := $(P1_OUT)/eps-scan.md $(P1_OUT)/richardson-box.md $(P1_OUT)/exclude.md $(P1_OUT)/guess.md $(P1_OUT)/roundoff.md $(P1_OUT)/treatments.md
-$(P1_OUT)/eps-scan.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+# Studies shown in the report: studies.sh writes each one's data (a TSV);
+# the prose and tables are notes/<study>.md, rendered by report/build.sh.
+P1_STUDIES := $(P1_OUT)/eps-scan.tsv $(P1_OUT)/richardson-box.tsv $(P1_OUT)/exclude.tsv $(P1_OUT)/guess.tsv $(P1_OUT)/roundoff.tsv $(P1_OUT)/treatments.tsv
+$(P1_OUT)/eps-scan.tsv: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh eps-scan $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/richardson-box.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+$(P1_OUT)/richardson-box.tsv: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh richardson-box $(<D) $(P1)/published/table3.2.tsv > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/exclude.md: $(BUILD)/bin/$(P1)/example3 $(BUILD)/bin/$(P1)/example4 $(P1)/studies.sh \
-                      $(P1_OUT)/table3.4.tsv $(P1_OUT)/table3.5.tsv
+$(P1_OUT)/exclude.tsv: $(BUILD)/bin/$(P1)/example3 $(BUILD)/bin/$(P1)/example4 $(P1)/studies.sh \
+                       $(P1_OUT)/table3.4.tsv $(P1_OUT)/table3.5.tsv
 	@mkdir -p $(@D)
 	$(P1)/studies.sh exclude $(<D) $(P1)/published/table3.4.tsv $(P1)/published/table3.5.tsv $(@D) > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/guess.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+$(P1_OUT)/guess.tsv: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
-	$(P1)/studies.sh guess $(<D) $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/roundoff.md: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh $(P1_OUT)/table3.2.tsv $(P1_OUT)/table3.3.tsv
+	$(P1)/studies.sh guess $(<D) $(P1)/published/table3.2.tsv $(P1)/published/table3.3.tsv > $@.tmp && mv $@.tmp $@
+$(P1_OUT)/roundoff.tsv: $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh $(P1_OUT)/table3.2.tsv $(P1_OUT)/table3.3.tsv
 	@mkdir -p $(@D)
-	$(P1)/studies.sh roundoff $(<D) $(P1)/published/table3.3.tsv $(@D) > $@.tmp && mv $@.tmp $@
-$(P1_OUT)/treatments.md: $(BUILD)/bin/$(P1)/example1 $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
+	$(P1)/studies.sh roundoff $(<D) $(P1)/published/table3.2.tsv $(P1)/published/table3.3.tsv $(@D) > $@.tmp && mv $@.tmp $@
+$(P1_OUT)/treatments.tsv: $(BUILD)/bin/$(P1)/example1 $(BUILD)/bin/$(P1)/example2 $(P1)/studies.sh
 	@mkdir -p $(@D)
 	$(P1)/studies.sh treatments $(<D) > $@.tmp && mv $@.tmp $@
 
@@ -72,7 +73,7 @@ P1_REPORTED := $(P1_RESULTS) $(P1_FIGS)
 else
 P1_REPORTED := $(P1_RESULTS) $(P1_FIGS) $(P1_STUDIES)
 endif
-REPORT_INPUTS += $(P1_REPORTED) $(P1_EXAMPLES:%=$(P1)/%.c) $(P1)/report.tsv $(P1)/overview.md
+REPORT_INPUTS += $(P1_REPORTED) $(P1_EXAMPLES:%=$(P1)/%.c) $(P1)/report.tsv $(P1)/overview.md $(wildcard $(P1)/notes/*.md)
 
 paper1: $(P1_REPORTED)
 	$(MAKE) --no-print-directory report-now

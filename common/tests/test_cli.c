@@ -1,6 +1,7 @@
 /* hj_cli: the declarative option table.  Every value type, its range, the
- * messages for unknown, repeated and incomplete options, and --help built
- * from the table with the defaults. */
+ * messages for unknown, repeated and incomplete options, the one option
+ * type that may be repeated, and --help built from the table with the
+ * defaults. */
 #include "hj_test.h"
 
 #include "hj_cli.h"
@@ -10,6 +11,8 @@ static double cfl, eps;
 static const char *out;
 static long sizes[4];
 static int nsizes, quick, scheme;
+static const char *points[3];
+static int npoints;
 static const char *const schemes[] = {"eno2", "weno5", NULL};
 static hj_cli_opt opts[] = {
     {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 2, .max = 1000, .metavar = "N", .help = "nodes per dimension"},
@@ -21,6 +24,8 @@ static hj_cli_opt opts[] = {
     {.name = "--scheme", .type = HJ_OPT_CHOICE, .value = &scheme, .metavar = "S", .help = "upwind scheme", .choices = schemes},
     {.name = "--eps", .type = HJ_OPT_DOUBLE, .value = &eps, .min = 0, .max = 1, .metavar = "X", .help = "epsilon",
      .dflt = "the paper's"},
+    {.name = "--point", .type = HJ_OPT_STRING_LIST, .value = points, .metavar = "X,Y", .help = "a point",
+     .count = &npoints, .maxn = 3},
 };
 static hj_cli_spec spec = {.prog = "prog", .summary = "A test program.", .opts = opts,
                            .nopts = (int)(sizeof opts / sizeof opts[0]), .epilog = "Tables: see the source.\n"};
@@ -28,6 +33,7 @@ static hj_cli_spec spec = {.prog = "prog", .summary = "A test program.", .opts =
 static void defaults(void)
 {
     N = 101, cfl = 0.5, out = "phi.tsv", nsizes = 2, sizes[0] = 10, sizes[1] = 20, quick = 0, scheme = 1;
+    npoints = 1, points[0] = "0,0";
 }
 
 static hj_error err;
@@ -84,6 +90,37 @@ static void bad_values(void **state)
     assert_non_null(strstr(err.msg, "--out needs a value"));
 }
 
+/* A STRING_LIST collects one value per occurrence, in order; the first
+ * occurrence replaces the defaults; empty values and more than maxn
+ * occurrences are refused. */
+static void repeated_list(void **state)
+{
+    (void)state;
+    assert_int_equal(parse("--N 40"), HJ_OK);
+    assert_int_equal(npoints, 1);
+    assert_string_equal(points[0], "0,0");
+    assert_int_equal(opts[7].seen, 0);
+    assert_int_equal(parse("--point 1,2 --N 40 --point 3,4,5"), HJ_OK);
+    assert_int_equal(npoints, 2);
+    assert_string_equal(points[0], "1,2");
+    assert_string_equal(points[1], "3,4,5");
+    assert_int_equal(opts[7].seen, 1);
+    assert_int_equal(parse("--point a --point b --point c"), HJ_OK);
+    assert_int_equal(npoints, 3);
+    assert_string_equal(points[2], "c");
+    assert_int_equal(parse("--point a --point b --point c --point d"), HJ_EINVAL);
+    assert_string_equal(err.msg, "--point is given more than 3 times");
+    assert_int_equal(parse("--point a --point"), HJ_EINVAL);
+    assert_string_equal(err.msg, "--point needs a value");
+    char *argv[] = {"prog", "--point", "1,2", "--point", ""};
+    defaults();
+    assert_int_equal(hj_cli_parse(&spec, 5, argv, &help, &err), HJ_EINVAL);
+    assert_string_equal(err.msg, "--point needs a non-empty value");
+    /* the other types stay single */
+    assert_int_equal(parse("--point a --out x --point b --out y"), HJ_EINVAL);
+    assert_string_equal(err.msg, "--out is given twice");
+}
+
 static void help_lists_every_option(void **state)
 {
     (void)state;
@@ -103,7 +140,9 @@ static void help_lists_every_option(void **state)
     assert_non_null(strstr(text, "--help"));
     assert_non_null(strstr(text, "epsilon [0..1] (default the paper's)"));
     assert_non_null(strstr(text, "Tables: see the source."));
+    assert_non_null(strstr(text, "--point X,Y"));
+    assert_non_null(strstr(text, "a point [repeatable, at most 3] (default 0,0)"));
 }
 
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
-             cmocka_unit_test(help_lists_every_option))
+             cmocka_unit_test(repeated_list), cmocka_unit_test(help_lists_every_option))

@@ -177,6 +177,8 @@ static void eikonal_bad_files(void **state)
     expect_failure(P1 "eikonal --speed-const 1 --source 0.013,0 --N 10", 2, "not a grid node");
     expect_failure(P1 "eikonal --speed-const 1 --N 10", 2, "at least one --source");
     expect_failure(P1 "eikonal --speed-const 0 --source 0,0", 2, "--speed-const must be between");
+    expect_failure(P1 "eikonal --speed-const 1 --N 10 --N 12 --source 0,0", 2, "--N is given twice");
+    expect_failure(P1 "eikonal --speed-const 1 --source 0,0 --source ''", 2, "--source needs a non-empty value");
     write_text(path, sizeof path, "zero.txt", "1 1 1\n1 0 1\n1 1 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0 --N 8", path);
     expect_failure(cmd, 1, "speed 0 at row 2, column 2: every speed must be > 0");
