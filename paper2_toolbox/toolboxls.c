@@ -42,7 +42,9 @@ decompresses the gzipped arrays of `toolboxls/arrays` into the build tree).
 **Output.** toolboxls.tsv: case, accuracy, steps, rel_max, rel_band,
 band_nodes, sign_changes, and the same with our CFL rule (node_steps,
 node_rel_max, node_sign_changes) and, for WENO5, with our epsilon
-(local_eps_rel_max).
+(local_eps_rel_max); where `rel_max` exceeds 1e-10, how far our own run
+moves when its initial data is raised by one unit in the last place
+(ulp_rel_max, ulp_rel_band): the scheme's own sensitivity to round-off.
 */
 #include <errno.h>
 #include <math.h>
@@ -163,9 +165,23 @@ static void compare(const hj_ls_grid *g, const double *ours, const double *tb, c
  * the two differ in the last bit at most). */
 static void chunks(double tmax, int n, double *ts) { hj_ls_seq_times(0, tmax, n + 1, ts); }
 
+/* Raise every interior value by one unit in the last place: a change of
+ * the initial data at the size of its rounding. */
+static void nudge(const hj_ls_grid *g, double *phi)
+{
+    long idx[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) phi[k + (size_t)j] = nextafter(phi[k + (size_t)j], INFINITY);
+    }
+}
+
 /* Run demo d at accuracy acc with CFL rule `rule` and WENO5 epsilon `eps`
- * (HJ_LS_WENO_EPS_*) on grid g (set up here); *phi allocated here. */
-static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, long *steps, hj_error *err)
+ * (HJ_LS_WENO_EPS_*) on grid g (set up here), the initial data nudged by
+ * one ulp if `perturb` (not offered for burgersLF, whose initial data
+ * p2_os_solve sets: HJ_EINVAL); *phi allocated here. */
+static int run(demo d, int acc, int rule, int eps, int perturb, hj_ls_grid *g, double **phi, long *steps,
+               hj_error *err)
 {
     hj_ls_ode_stats st = {0};
     int rc = 0;
@@ -179,7 +195,8 @@ static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, 
         if (!(*phi = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory");
         double ts[9];
         chunks(2.8, 8, ts);
-        if (!(rc = p2_air3d_target(g, &p, *phi, err)))
+        if (!(rc = p2_air3d_target(g, &p, *phi, err)) && perturb) nudge(g, *phi);
+        if (!rc)
             rc = p2_air3d_solve(g, &p, acc, HJ_LS_GLF, ts, 9, *phi, NULL, NULL, &st, err);
     } else if (d == ACOUSTIC) {
         p2_acoustic_par p;
@@ -191,9 +208,11 @@ static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, 
         if (!(*phi = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory");
         double ts[9];
         chunks(4, 8, ts);
-        if (!(rc = p2_acoustic_target(g, *phi, err)))
+        if (!(rc = p2_acoustic_target(g, *phi, err)) && perturb) nudge(g, *phi);
+        if (!rc)
             rc = p2_acoustic_solve(g, &p, acc, HJ_LS_GLF, ts, 9, *phi, NULL, NULL, &st, err);
     } else if (d == BURGERS1 || d == BURGERS2) {
+        if (perturb) return hj_error_set(err, HJ_EINVAL, "burgersLF: no perturbed run");
         p2_os_run r = {d == BURGERS1 ? 1 : 2, d == BURGERS1 ? 80 : 40, acc, HJ_LS_GLF, 0, 1.5 / (HJ_PI * HJ_PI), 10};
         rc = p2_os_solve_rule(&p2_os_burgers, &r, rule, eps, g, phi, NULL, NULL, &st, err);
     } else if (d == CONVECTION) {
@@ -204,6 +223,7 @@ static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, 
         if (!(*phi = hj_ls_alloc(g))) return hj_error_set(err, HJ_ENOMEM, "out of memory");
         const double center[HJ_LS_MAXDIM] = {-0.4, 0};
         if ((rc = hj_ls_shape_sphere(g, center, 0.35, *phi, err))) return rc;
+        if (perturb) nudge(g, *phi);
         p2_flow flow = {1, 0, 2};
         hj_ls_convection term;
         hj_ls_convection_init(&term, g, hj_ls_accuracy_scheme(acc));
@@ -236,6 +256,7 @@ static int run(demo d, int acc, int rule, int eps, hj_ls_grid *g, double **phi, 
         if (!(*phi = hj_ls_alloc(g))) rc = hj_error_set(err, HJ_ENOMEM, "out of memory");
         else {
             hj_ls_copy(g, *phi, c.phi0);
+            if (perturb) nudge(g, *phi); /* phi_0 in the sign and the fix stays as it was */
             hj_ls_reinit term;
             hj_ls_reinit_init(&term, g, hj_ls_accuracy_scheme(acc), c.phi0);
             term.subcell_fix = 1;
@@ -270,7 +291,7 @@ static int one_case(demo d, int acc, const char *dir, FILE *fp)
         double *phi;
         hj_error err;
         hj_progress("%s %s, %s ...\n", demo_name[d], acc_name[acc], what[rule]);
-        if (run(d, acc, rules[rule], epss[rule], &g, &phi, &c[rule].steps, &err)) {
+        if (run(d, acc, rules[rule], epss[rule], 0, &g, &phi, &c[rule].steps, &err)) {
             hj_ls_free(phi);
             fprintf(stderr, "%s: %s %s: %s\n", prog, demo_name[d], acc_name[acc], err.msg);
             return -1;
@@ -284,9 +305,31 @@ static int one_case(demo d, int acc, const char *dir, FILE *fp)
     }
     char local[32] = "-";
     if (nvar == 3) snprintf(local, sizeof local, "%.3e", c[2].rel_max);
-    fprintf(fp, "%s\t%s\t%ld\t%.3e\t%.3e\t%ld\t%ld\t%ld\t%.3e\t%ld\t%s\n", demo_name[d], acc_name[acc], c[0].steps,
-            c[0].rel_max, c[0].rel_band, c[0].band_nodes, c[0].sign_changes, c[1].steps, c[1].rel_max,
-            c[1].sign_changes, local);
+    /* Beyond the rounding of the reference: how far does our own result
+     * move when the initial data moves by one ulp?  The same size means
+     * the scheme amplifies round-off there (operations done in another
+     * order than the toolbox's), not a different method. */
+    char ulp[2][32] = {"-", "-"};
+    if (c[0].rel_max > 1e-10 && d != BURGERS1 && d != BURGERS2) {
+        hj_ls_grid g, g2;
+        double *a = NULL, *b = NULL;
+        hj_error err;
+        long st;
+        hj_progress("%s %s, initial data nudged by one ulp ...\n", demo_name[d], acc_name[acc]);
+        if (run(d, acc, rules[0], epss[0], 0, &g, &a, &st, &err) || run(d, acc, rules[0], epss[0], 1, &g2, &b, &st, &err)) {
+            hj_ls_free(a), hj_ls_free(b);
+            fprintf(stderr, "%s: %s %s: %s\n", prog, demo_name[d], acc_name[acc], err.msg);
+            return -1;
+        }
+        cmp u;
+        compare(&g, b, a, &u);
+        snprintf(ulp[0], sizeof ulp[0], "%.3e", u.rel_max);
+        snprintf(ulp[1], sizeof ulp[1], "%.3e", u.rel_band);
+        hj_ls_free(a), hj_ls_free(b);
+    }
+    fprintf(fp, "%s\t%s\t%ld\t%.3e\t%.3e\t%ld\t%ld\t%ld\t%.3e\t%ld\t%s\t%s\t%s\n", demo_name[d], acc_name[acc],
+            c[0].steps, c[0].rel_max, c[0].rel_band, c[0].band_nodes, c[0].sign_changes, c[1].steps, c[1].rel_max,
+            c[1].sign_changes, local, ulp[0], ulp[1]);
     fflush(fp);
     return 0;
 }
@@ -336,7 +379,7 @@ int main(int argc, char **argv)
                     "max |toolbox| (all nodes, band |toolbox| < 2 max dx); node_* with our CFL rule%s\n",
             quick ? " --quick" : "");
     fprintf(out.fp, "case\taccuracy\tsteps\trel_max\trel_band\tband_nodes\tsign_changes\tnode_steps\tnode_rel_max\t"
-                    "node_sign_changes\tlocal_eps_rel_max\n");
+                    "node_sign_changes\tlocal_eps_rel_max\tulp_rel_max\tulp_rel_band\n");
     int bad = 0;
     for (int q = 0; q < nwhich && !bad; q++)
         for (int acc = 0; acc < 4 && !bad; acc++) {
