@@ -6,8 +6,11 @@
 # overview.md and, for every row of its report.tsv (source, tables,
 # figures), the program's own literate comment, the published-vs-computed
 # table of each table it makes (from results/<paper>/<table>.check.tsv),
-# the fitted orders (<table>.fit.tsv) and its figures.  Markdown goes
-# through cmark (CommonMark); tables are emitted as HTML blocks.
+# the fitted orders (<table>.fit.tsv), its figures and its notes (a
+# NAME.md entry: the template <paper>/notes/NAME.md with every number
+# filled from the results by report/note.awk; programs write data only).
+# Markdown goes through cmark (CommonMark); tables are emitted as HTML
+# blocks.
 set -euo pipefail
 res=$1 out=$2 hjcheck=$3 quick=${4:-}
 tmp=$(mktemp -d)
@@ -156,14 +159,13 @@ md=$tmp/report.md
             for f in $figs; do
                 case $f in
                 -) ;;
-                *.md) if [ -f "$dir/notes/$f" ] && awk -v dir="$res/$name" -f report/note.awk "$dir/notes/$f" > "$tmp/note.md"; then
+                *.md) # a note: its template, filled from the results (report/note.awk)
+                      if [ ! -f "$dir/notes/$f" ]; then printf '\n**missing note template: %s/notes/%s**\n\n' "$dir" "$f"
+                      elif awk -v dir="$res/$name" -f report/note.awk "$dir/notes/$f" > "$tmp/note.md"; then
                           cat "$tmp/note.md"; printf '\n'
-                      elif [ -f "$dir/notes/$f" ] && [ -z "$quick" ] && [[ $src != bench_* ]]; then
-                          cat "$tmp/note.md"; printf '\n'   # with its **missing: ...** marks
-                      elif [ -f "$res/$name/$f" ]; then cat "$res/$name/$f"; printf '\n'
-                      elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
-                      elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
-                      else printf '\n*missing: %s*\n\n' "$f"; fi ;;
+                      elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes the data of `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
+                      elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: the data of `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
+                      else cat "$tmp/note.md"; printf '\n'; fi ;; # with its **missing: ...** marks
                 *) if [ -f "$res/$name/$f" ]; then
                        embed_figure "$res/$name/$f" "$f"
                    else
