@@ -223,14 +223,20 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
     }
 }
 
+void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v, double *out,
+                             double *w)
+{
+    hj_ls_upwind_row_select_eps(scheme, p, s, n, dx, -1, v, out, w);
+}
+
 HJ_LS_CLONES
-void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v,
-                             double *restrict out, double *w)
+void hj_ls_upwind_row_select_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps,
+                                 const double *v, double *restrict out, double *w)
 {
     if (scheme != HJ_LS_WENO5A && scheme != HJ_LS_WENO5B && scheme != HJ_LS_WENO3) {
         /* cheap schemes: both sides, then select */
         double *dl = w + (size_t)6 * (size_t)n, *dr = dl + n;
-        hj_ls_upwind_row(scheme, p, s, n, dx, dl, dr, w + (size_t)8 * (size_t)n);
+        hj_ls_upwind_row_eps(scheme, p, s, n, dx, eps, dl, dr, w + (size_t)8 * (size_t)n);
         for (long i = 0; i < n; i++) {
             const double l = dl[i], r = dr[i]; /* unconditional loads: vectorises */
             out[i] = v[i] > 0 ? l : r;
@@ -247,11 +253,17 @@ void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, d
         for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
         first_differences(p, s, n, dx, w, -3, 2);
     }
-    hj_ls_upwind_select_diffs(scheme, D, n, v, out);
+    hj_ls_upwind_select_diffs_eps(scheme, D, n, eps, v, out);
+}
+
+void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const double *v, double *out)
+{
+    hj_ls_upwind_select_diffs_eps(scheme, D, n, -1, v, out);
 }
 
 HJ_LS_CLONES
-void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const double *v, double *restrict out)
+void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, double eps, const double *v,
+                                   double *restrict out)
 {
     /* The right derivative is the left formula on the mirrored stencil
      * (p2, p1, z0, m1, m2, m3): bitwise the same as hj_ls_upwind_row.  One
@@ -267,12 +279,12 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
             const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
             const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;
             out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),
-                           m1 + e20 - f30 / 3, -1);
+                           m1 + e20 - f30 / 3, eps);
         }
     else if (scheme == HJ_LS_WENO5B)
         for (long i = 0; i < n; i++) {
             MIRROR
-            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), -1);
+            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps);
         }
     else
         for (long i = 0; i < n; i++) {

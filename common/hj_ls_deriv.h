@@ -88,12 +88,18 @@ double hj_ls_weno_eps_grid(const hj_ls_grid *g, const double *data, int d);
  * side is computed (half the work); w as above. */
 void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v,
                              double *out, double *w);
+/* The same with the WENO5 epsilon given (as hj_ls_upwind_row_eps). */
+void hj_ls_upwind_row_select_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps,
+                                 const double *v, double *out, double *w);
 
 /* The WENO part of hj_ls_upwind_row_select from precomputed first
  * differences: D[k][i] = D1_{i+k-3+1/2} along the direction, k = 0..5
  * (WENO5A, WENO5B, WENO3 only; other schemes leave out untouched).  Lets a
  * caller reuse differences between neighbouring rows. */
 void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const double *v, double *out);
+/* The same with the WENO5 epsilon given (as hj_ls_upwind_row_eps). */
+void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, double eps, const double *v,
+                                   double *out);
 
 /* D[i] = (p[i + (k+1) s] - p[i + k s]) / dx for i < n: one row of the
  * differences above (k = -3..2), computed exactly as the kernels do. */

@@ -134,6 +134,14 @@ static double bound_by_rule(int rule, const hj_ls_grid *g, double maxinv, const 
     return bound_of(inv);
 }
 
+/* The WENO5 epsilons of a term evaluation: the grid-wide ones of the
+ * toolbox (HJ_LS_WENO_EPS_GRID, WENO5 schemes only) or -1 (local). */
+static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y, double *eps)
+{
+    const int grid = mode == HJ_LS_WENO_EPS_GRID && (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B);
+    for (int d = 0; d < g->dim; d++) eps[d] = grid ? hj_ls_weno_eps_grid(g, y, d) : -1;
+}
+
 /* ---- convection ------------------------------------------------------ */
 
 /* Vector reductions: "omp simd" lets gcc vectorise them without
@@ -145,9 +153,16 @@ static double bound_by_rule(int rule, const hj_ls_grid *g, double maxinv, const 
 #endif
 #define HJ_LS_STR(x) #x
 
+/* A convection evaluation: the term and its WENO5 epsilons (weno_eps). */
+typedef struct {
+    const hj_ls_convection *c;
+    double eps[HJ_LS_MAXDIM];
+} conv_pass;
+
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
-    const hj_ls_convection *c = term;
+    const conv_pass *ps = term;
+    const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     double *acc = rc->ws, *cfl = acc + n, *v = cfl + n, *dl = v + n, *w = dl + n;
@@ -181,9 +196,9 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             rc->cache_r = rc->r;
             const double *D[6];
             for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
-            hj_ls_upwind_select_diffs(c->scheme, D, n, v, dl);
+            hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], v, dl);
         } else
-            hj_ls_upwind_row_select(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], v, dl, w);
+            hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
         const double idx = 1 / g->dx[d];
         for (long j = 0; j < n; j++) {
             acc[j] -= v[j] * dl[j];
@@ -208,8 +223,11 @@ static int convection_eval(const hj_ls_term *term, double t, double *y, double *
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
     hj_ls_fill_ghosts(g, y);
+    conv_pass ps;
+    ps.c = c;
+    weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    int rc = for_rows(g, (size_t)(5 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, c, t, y, ydot, &m,
+    int rc = for_rows(g, (size_t)(5 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, &ps, t, y, ydot, &m,
                       NULL, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
@@ -255,13 +273,6 @@ typedef struct {
     double eps[HJ_LS_MAXDIM];  /* WENO5 epsilon per dimension, < 0: O&F (3.38) */
 } godunov_term;
 
-/* The WENO5 epsilons of a term evaluation: the grid-wide ones of the
- * toolbox (HJ_LS_WENO_EPS_GRID, WENO5 schemes only) or -1 (local). */
-static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y, double *eps)
-{
-    const int grid = mode == HJ_LS_WENO_EPS_GRID && (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B);
-    for (int d = 0; d < g->dim; d++) eps[d] = grid ? hj_ls_weno_eps_grid(g, y, d) : -1;
-}
 
 /* sign(v) as MATLAB's sign: -1, 0 or 1. */
 static inline double sign0(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }

@@ -54,8 +54,8 @@ enum { HJ_LS_CFL_NODE, HJ_LS_CFL_TOOLBOX };
  *                         dimension, at every node: ToolboxLS 1.1's
  *                         upwindFirstWENO5a ('maxOverGrid').
  * Where the solution is steep somewhere, the second makes the weights
- * smoother (closer to the linear ones) everywhere else.  Normal motion,
- * reinitialization and Lax-Friedrichs offer both; convection the first. */
+ * smoother (closer to the linear ones) everywhere else.  Convection,
+ * normal motion, reinitialization and Lax-Friedrichs offer both. */
 enum { HJ_LS_WENO_EPS_LOCAL, HJ_LS_WENO_EPS_GRID };
 typedef int (*hj_ls_term_fn)(const hj_ls_term *term, double t, double *y, double *ydot, double *step_bound,
                              hj_error *err);
@@ -87,6 +87,7 @@ typedef struct {
     const double *velocity_array[HJ_LS_MAXDIM]; /* v_d on the grid, or NULL */
     hj_ls_velocity_fn velocity_fn; /* v_d(t, x), overrides the above */
     void *ctx;
+    int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_convection;
 /* CFL bound: 1 / max_x sum_d |v_d| / dx_d.  Rows on which v_d vanishes
  * skip the derivative in d; only the upwind side is computed, and WENO
