@@ -105,5 +105,29 @@ static void help_lists_every_option(void **state)
     assert_non_null(strstr(text, "Tables: see the source."));
 }
 
+/* --list-options: the table as TSV for the bad-input drivers, bounds
+ * exact, one line per option in table order. */
+static void list_options_as_tsv(void **state)
+{
+    (void)state;
+    assert_int_equal(parse("--N 7 --list-options --frob"), HJ_OK);
+    assert_int_equal(help, HJ_CLI_LIST);
+    assert_int_equal(parse("--help"), HJ_OK);
+    assert_int_equal(help, HJ_CLI_HELP);
+    char text[4096] = "";
+    FILE *f = fmemopen(text, sizeof text - 1, "w");
+    assert_non_null(f);
+    hj_cli_list(&spec, f);
+    fclose(f);
+    assert_string_equal(text, "name\ttype\tmin\tmax\tchoices\tmaxn\n"
+                              "--N\tlong\t2\t1000\t-\t-\n"
+                              "--cfl\tdouble\t0.01\t1\t-\t-\n"
+                              "--out\tstring\t-\t-\t-\t-\n"
+                              "--sizes\tlong-list\t8\t100\t-\t4\n"
+                              "--quick\tflag\t-\t-\t-\t-\n"
+                              "--scheme\tchoice\t-\t-\teno2,weno5\t-\n"
+                              "--eps\tdouble\t0\t1\t-\t-\n");
+}
+
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
-             cmocka_unit_test(help_lists_every_option))
+             cmocka_unit_test(help_lists_every_option), cmocka_unit_test(list_options_as_tsv))
