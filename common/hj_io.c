@@ -53,6 +53,9 @@ void hj_out_remove_on_signal(void)
     const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
         struct sigaction sa;
+        /* An ignored signal stays ignored (nohup, a background job of a
+         * shell): the handler would make it kill the program. */
+        if (sigaction(sigs[k], NULL, &sa) == 0 && sa.sa_handler == SIG_IGN) continue;
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = out_on_signal;
         sigemptyset(&sa.sa_mask);

@@ -170,6 +170,19 @@ static void temporaries_removed(void **state)
     snprintf(stale, sizeof stale, "%s.tmp.%ld", path, (long)child);
     assert_int_not_equal(access(stale, F_OK), 0);
     assert_int_not_equal(access(path, F_OK), 0);
+    /* A signal ignored before (nohup) stays ignored. */
+    child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        signal(SIGHUP, SIG_IGN);
+        hj_out_remove_on_signal();
+        if (hj_out_open(&out, path, NULL)) _exit(3);
+        raise(SIGHUP);
+        hj_out_abort(&out);
+        _exit(5);
+    }
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 5);
 }
 
 /* An empty name is an error (it used to read past the buffer); a file in
