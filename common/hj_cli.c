@@ -1,4 +1,5 @@
 #include "hj_cli.h"
+#include "hj_io.h"
 
 #include <errno.h>
 #include <math.h>
@@ -224,6 +225,7 @@ void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)
         else hj_cli_help(spec, stdout);
         exit(0);
     }
+    hj_out_remove_on_signal();
 }
 
 void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)

@@ -77,7 +77,9 @@ void hj_cli_help(const hj_cli_spec *spec, FILE *out);
 void hj_cli_list(const hj_cli_spec *spec, FILE *out);
 
 /* For main(): parse, print --help or --list-options and exit 0, or print
- * the one message and exit with HJ_EXIT_USAGE. */
+ * the one message and exit with HJ_EXIT_USAGE.  After a good parse it
+ * installs hj_out_remove_on_signal (hj_io.h): an interrupted program
+ * leaves no temporary file. */
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
 
 /* Exit codes used by every program. */
