@@ -230,11 +230,19 @@ void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)
 
 void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
 {
+    /* The message may quote what the user typed: control bytes are
+     * escaped, so that it stays one line and cannot drive the terminal. */
+    char msg[2048];
     va_list ap;
-    fprintf(stderr, "%s: ", prog);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    fprintf(stderr, "%s: ", prog);
+    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
+        if (*p == '\n') fputs("\\n", stderr);
+        else if (*p < 0x20 || *p == 0x7f) fprintf(stderr, "\\x%02x", *p);
+        else fputc(*p, stderr);
+    }
     fputc('\n', stderr);
     exit(exit_code);
 }

@@ -3,6 +3,10 @@
  * from the table with the defaults. */
 #include "hj_test.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "hj_cli.h"
 
 static long N;
@@ -129,5 +133,31 @@ static void list_options_as_tsv(void **state)
                               "--eps\tdouble\t0\t1\t-\t-\n");
 }
 
+/* hj_cli_fail: one line whatever the message quotes (it used to print a
+ * newline or an escape sequence typed on the command line as it was). */
+static void fail_prints_one_line(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/hj_test_cli.XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    fflush(stderr);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        dup2(fd, STDERR_FILENO);
+        hj_cli_fail("prog", HJ_EXIT_USAGE, "--N: '%s' is not an integer", "1\n2\033[0m\t\x7f");
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == HJ_EXIT_USAGE);
+    char text[256] = "";
+    ssize_t n = pread(fd, text, sizeof text - 1, 0);
+    close(fd);
+    unlink(path);
+    assert_true(n > 0);
+    assert_string_equal(text, "prog: --N: '1\\n2\\x1b[0m\\x09\\x7f' is not an integer\n");
+}
+
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
-             cmocka_unit_test(help_lists_every_option), cmocka_unit_test(list_options_as_tsv))
+             cmocka_unit_test(help_lists_every_option), cmocka_unit_test(list_options_as_tsv), cmocka_unit_test(fail_prints_one_line))
