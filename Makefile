@@ -55,7 +55,7 @@ endif
 
 # Dependency groups this invocation needs (scripts/ensure-deps GROUP).
 DEPS_GROUPS := lib
-ifneq ($(filter test unit memcheck examples,$(MAKECMDGOALS)),)
+ifneq ($(filter test unit memcheck examples fuzz fuzz-quick reliability,$(MAKECMDGOALS)),)
 DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
@@ -114,6 +114,7 @@ $(BUILD)/test/common/tests/test_hjtime: | $(HJTIME)
 include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
+include tests/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
