@@ -67,6 +67,13 @@ static void malformed_tables(void **state)
     fprintf(f, "# only comments\n");
     fclose(f);
     assert_int_equal(hj_table_read(&t, path, &err), HJ_EFORMAT);
+    /* A NUL byte (a binary file) is refused; it used to end the line
+     * there, and "1<NUL>9<TAB>2" was read as the one cell "1". */
+    f = fopen(path, "w");
+    fwrite("a\n1\0009\t2\n", 1, 9, f);
+    fclose(f);
+    assert_int_equal(hj_table_read(&t, path, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, ":2: a NUL byte"));
     snprintf(path, sizeof path, "%s/none.tsv", dir);
     assert_int_equal(hj_table_read(&t, path, &err), HJ_EIO);
 }
