@@ -244,6 +244,8 @@ void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
         else fputc(*p, stderr);
     }
     fputc('\n', stderr);
+    /* outputs still being written belong to the failed run */
+    hj_out_remove_all();
     exit(exit_code);
 }
 

@@ -83,7 +83,9 @@ void hj_cli_list(const hj_cli_spec *spec, FILE *out);
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
 
 /* Exit codes used by every program.  hj_cli_fail prints "prog: message"
- * as one line (control bytes in the message escaped: \n, \xHH) and exits. */
+ * as one line (control bytes in the message escaped: \n, \xHH), removes
+ * the temporary files of outputs still open (hj_out_remove_all) and
+ * exits. */
 enum { HJ_EXIT_RUN = 1, HJ_EXIT_USAGE = 2 };
 
 _Noreturn void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)

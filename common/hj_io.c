@@ -40,6 +40,15 @@ static void out_unregister(const char *tmp)
         if (out_slot_used[k] && !strcmp(out_open_tmp[k], tmp)) out_slot_used[k] = 0;
 }
 
+void hj_out_remove_all(void)
+{
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (out_slot_used[k]) {
+            unlink(out_open_tmp[k]);
+            out_slot_used[k] = 0;
+        }
+}
+
 static void out_on_signal(int sig)
 {
     for (int k = 0; k < OUT_SLOTS; k++)

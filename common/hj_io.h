@@ -47,6 +47,10 @@ void hj_out_abort(hj_out *out);
  * (hj_cli_parse_or_exit does, for the programs). */
 void hj_out_remove_on_signal(void);
 
+/* For programs that exit on an error: remove every temporary file still
+ * open (hj_cli_fail calls it), so that a failed run leaves none. */
+void hj_out_remove_all(void);
+
 typedef struct {
     int ncols, nrows;
     char **cols;   /* ncols column names */

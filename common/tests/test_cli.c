@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "hj_cli.h"
+#include "hj_io.h"
 
 static long N;
 static double cfl, eps;
@@ -159,5 +160,31 @@ static void fail_prints_one_line(void **state)
     assert_string_equal(text, "prog: --N: '1\\n2\\x1b[0m\\x09\\x7f' is not an integer\n");
 }
 
+/* hj_cli_fail removes the temporaries of outputs still open: a program
+ * that committed one output and failed on the next left the others. */
+static void fail_removes_open_temporaries(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/hj_test_cli.XXXXXX", path[64], path2[64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/out.tsv", dir);
+    snprintf(path2, sizeof path2, "%s/out2.tsv", dir);
+    fflush(stderr);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        hj_out a, b;
+        if (hj_out_open(&a, path, NULL) || hj_out_open(&b, path2, NULL)) _exit(3);
+        fputs("x\n", a.fp);
+        if (!freopen("/dev/null", "w", stderr)) _exit(4);
+        hj_cli_fail("prog", HJ_EXIT_RUN, "error writing %s", path);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == HJ_EXIT_RUN);
+    assert_int_equal(rmdir(dir), 0); /* no temporary left in it */
+}
+
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
-             cmocka_unit_test(help_lists_every_option), cmocka_unit_test(list_options_as_tsv), cmocka_unit_test(fail_prints_one_line))
+             cmocka_unit_test(help_lists_every_option), cmocka_unit_test(list_options_as_tsv), cmocka_unit_test(fail_prints_one_line),
+             cmocka_unit_test(fail_removes_open_temporaries))
