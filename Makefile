@@ -10,7 +10,10 @@
 #                    results/ and report/out/report.html
 #   make test        unit tests (plain and under ASan+UBSan), the examples
 #                    built against an installed copy through pkg-config,
-#                    then `make check QUICK=1`
+#                    `make check QUICK=1`, then `make reliability` (bad
+#                    command lines, output safety, signals, short fuzzing:
+#                    tests/rules.mk)
+#   make fuzz        each fuzz target for FUZZ_SECONDS (300)
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
 #   make paper1 | paper2 | paper3    one paper's results, then the report
@@ -168,6 +171,7 @@ test:
 	$(MAKE) --no-print-directory SAN=1 unit
 	$(MAKE) --no-print-directory examples
 	$(MAKE) --no-print-directory QUICK=1 check
+	$(MAKE) --no-print-directory reliability
 
 # The examples as a user builds them: libhj installed into a temporary
 # prefix, every flag from `pkg-config --cflags --libs hj`, run against the

@@ -31,6 +31,10 @@ fuzz: $(FUZZ_BINS)
 fuzz-quick: $(FUZZ_BINS)
 	tests/fuzz/run.sh $(FUZZ_QUICK_SECONDS) $(FUZZ_TARGETS)
 
-reliability: all
+# Against the sanitizer build: make SAN=1 reliability (its programs in
+# build/san/bin; the fuzz targets carry their own sanitizers).
+reliability: all $(FUZZ_BINS)
 	tests/cli-matrix.sh $(BUILD)/bin
-	$(MAKE) --no-print-directory fuzz-quick
+	tests/output-safety.sh $(BUILD)/bin
+	tests/interrupt.sh $(BUILD)/bin
+	tests/fuzz/run.sh $(FUZZ_QUICK_SECONDS) $(FUZZ_TARGETS)
