@@ -1,5 +1,4 @@
 #include "hj_cli.h"
-#include "hj_io.h"
 
 #include <errno.h>
 #include <math.h>
@@ -8,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+#include "hj_io.h"
 
 int hj_parse_long(const char *s, const char *what, long min, long max, long *out, hj_error *err)
 {
@@ -109,7 +110,7 @@ int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "--list-options")) {
-            *help = a[2] == 'h' ? HJ_CLI_HELP : HJ_CLI_LIST;
+            *help = strcmp(a, "--help") ? HJ_CLI_LIST : HJ_CLI_HELP;
             return HJ_OK;
         }
         hj_cli_opt *o = find_opt(spec, a);
