@@ -183,22 +183,22 @@ static int pgm_number(pgm_in *in, const char *what, long lo, long hi, long *out,
                             l, k, what);
     }
     const long line = in->line, col = in->col;
-    char tok[24], q[64];
+    char tok[24], q[4 * sizeof tok + 1]; /* the messages quote at most tok */
     size_t n = 0;
-    int digits = 1;
+    int digits = 1, longer = 0;
     long v = 0;
     for (; c != EOF && !isspace(c); c = pgm_getc(in)) {
         if (n < sizeof tok) tok[n++] = (char)c;
-        else digits = 0; /* longer than any number in range */
+        else longer = 1;
         if (!isdigit(c)) digits = 0;
         else if (v <= hi) v = v * 10 + (c - '0'); /* past hi it only needs to stay past it */
     }
     if (!digits)
         return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is '%s%s', not a whole number", in->path, line, col,
-                            what, quote(tok, n, q, sizeof q), n == sizeof tok ? "..." : "");
+                            what, quote(tok, n, q, sizeof q), longer ? "..." : "");
     if (v < lo || v > hi)
-        return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is %s, outside %ld..%ld", in->path, line, col, what,
-                            quote(tok, n, q, sizeof q), lo, hi);
+        return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is %s%s, outside %ld..%ld", in->path, line, col, what,
+                            quote(tok, n, q, sizeof q), longer ? "..." : "", lo, hi);
     *out = v;
     return HJ_OK;
 }

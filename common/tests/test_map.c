@@ -162,8 +162,18 @@ static void pgm_messages_name_line_and_column(void **state)
                "e.pgm:5:5: more data than the 2 x 2 pixels of its header");
     assert_has(PGM_ERROR("o5.pgm", "P5\n2 2\n9\n\001\002\012\004", HJ_EFORMAT),
                "o5.pgm: offset 11: the pixel at row 2, column 1 is 10, above maxval 9");
-    const char long_token[] = "P2\n2 2\n255\n1 123456789012345678901234567890 3 4\n";
-    assert_has(PGM_ERROR("l.pgm", long_token, HJ_EFORMAT), ":4:3: the pixel at row 1, column 2 is '123456789012345678901234...'");
+    const char long_word[] = "P2\n2 2\n255\n1 1234567890123456789012345x 3 4\n";
+    assert_has(PGM_ERROR("l.pgm", long_word, HJ_EFORMAT),
+               ":4:3: the pixel at row 1, column 2 is '123456789012345678901234...', not a whole number");
+    const char long_number[] = "P2\n2 2\n255\n1 123456789012345678901234567890 3 4\n";
+    assert_has(PGM_ERROR("n.pgm", long_number, HJ_EFORMAT),
+               ":4:3: the pixel at row 1, column 2 is 123456789012345678901234..., outside 0..255");
+    /* leading zeros make a long token, not a large number */
+    hj_map m = {0};
+    const char zeros[] = "P2\n2 2\n255\n1 0000000000000000000000000000007 3 4\n";
+    assert_int_equal(hj_map_read_pgm(&m, write_file("z.pgm", zeros, sizeof zeros - 1), 0, 255, NULL), HJ_OK);
+    assert_true(m.v[3] == 7); /* top row, second pixel */
+    hj_map_free(&m);
 }
 
 /* A header is checked against the data that follows it: a 24-byte file
