@@ -1,8 +1,10 @@
 /* fuzz_file.h -- the library's readers take a path: each input is written
- * to one temporary file per fuzzing process, rewritten for every run. */
+ * to a temporary file of this process, removed after the run
+ * (fuzz_file_done; libFuzzer ends without running atexit handlers). */
 #ifndef FUZZ_FILE_H
 #define FUZZ_FILE_H
 
+#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,34 +12,30 @@
 #include <unistd.h>
 
 static char fuzz_path[256];
-static int fuzz_fd = -1;
-
-static void fuzz_file_remove(void)
-{
-    if (fuzz_fd >= 0) unlink(fuzz_path);
-}
 
 /* The path holding data[0..size), or NULL when it cannot be written. */
 static const char *fuzz_file(const uint8_t *data, size_t size)
 {
-    if (fuzz_fd < 0) {
+    if (!fuzz_path[0]) {
         /* /dev/shm: rewriting a file thousands of times a second on a
          * disk file system costs ten times more (truncation flushes). */
         const char *tmp = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : getenv("TMPDIR");
-        snprintf(fuzz_path, sizeof fuzz_path, "%s/hj-fuzz.XXXXXX", tmp && *tmp ? tmp : "/tmp");
-        fuzz_fd = mkstemp(fuzz_path);
-        if (fuzz_fd < 0) return NULL;
-        atexit(fuzz_file_remove);
+        snprintf(fuzz_path, sizeof fuzz_path, "%s/hj-fuzz.%ld", tmp && *tmp ? tmp : "/tmp", (long)getpid());
     }
-    if (ftruncate(fuzz_fd, 0) != 0) return NULL;
+    unlink(fuzz_path); /* a crashed run's, or a stranger's */
+    int fd = open(fuzz_path, O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0) return NULL;
     size_t done = 0;
     while (done < size) {
-        ssize_t n = pwrite(fuzz_fd, data + done, size - done, (off_t)done);
-        if (n <= 0) return NULL;
+        ssize_t n = write(fd, data + done, size - done);
+        if (n <= 0) break;
         done += (size_t)n;
     }
-    return fuzz_path;
+    close(fd);
+    return done == size ? fuzz_path : NULL;
 }
+
+static void fuzz_file_done(void) { unlink(fuzz_path); }
 
 /* A reader's message is one non-empty line with no control byte (what it
  * quotes from the file is escaped). */

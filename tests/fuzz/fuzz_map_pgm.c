@@ -8,7 +8,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!path) return 0;
     hj_map m = {0};
     hj_error err;
-    if (hj_map_read_pgm(&m, path, 1, 3, &err) == HJ_OK) {
+    const int rc = hj_map_read_pgm(&m, path, 1, 3, &err);
+    fuzz_file_done();
+    if (rc == HJ_OK) {
         /* what eikonal does next: invert, interpolate */
         (void)hj_map_eval(0.5 * m.mx, 0.5 * m.my, &m);
         (void)hj_map_invert(&m, &err);

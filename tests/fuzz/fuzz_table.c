@@ -10,7 +10,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!path) return 0;
     hj_table t;
     hj_error err;
-    if (hj_table_read(&t, path, &err) != HJ_OK) {
+    const int rc = hj_table_read(&t, path, &err);
+    fuzz_file_done();
+    if (rc != HJ_OK) {
         if (!fuzz_message_ok(err.msg)) abort();
         return 0;
     }
