@@ -10,7 +10,10 @@
 #                    results/ and report/out/report.html
 #   make test        unit tests (plain and under ASan+UBSan), the examples
 #                    built against an installed copy through pkg-config,
-#                    then `make check QUICK=1`
+#                    `make check QUICK=1`, then `make reliability` (bad
+#                    command lines, output safety, signals, short fuzzing:
+#                    tests/rules.mk)
+#   make fuzz        each fuzz target for FUZZ_SECONDS (300)
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
 #   make paper1 | paper2 | paper3    one paper's results, then the report
@@ -55,7 +58,7 @@ endif
 
 # Dependency groups this invocation needs (scripts/ensure-deps GROUP).
 DEPS_GROUPS := lib
-ifneq ($(filter test unit memcheck examples,$(MAKECMDGOALS)),)
+ifneq ($(filter test unit memcheck examples fuzz fuzz-quick reliability,$(MAKECMDGOALS)),)
 DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
@@ -114,6 +117,7 @@ $(BUILD)/test/common/tests/test_hjtime: | $(HJTIME)
 include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
+include tests/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
@@ -167,6 +171,7 @@ test:
 	$(MAKE) --no-print-directory SAN=1 unit
 	$(MAKE) --no-print-directory examples
 	$(MAKE) --no-print-directory QUICK=1 check
+	$(MAKE) --no-print-directory reliability
 
 # The examples as a user builds them: libhj installed into a temporary
 # prefix, every flag from `pkg-config --cflags --libs hj`, run against the

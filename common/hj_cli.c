@@ -8,6 +8,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "hj_io.h"
+
 int hj_parse_long(const char *s, const char *what, long min, long max, long *out, hj_error *err)
 {
     char *end;
@@ -112,8 +114,8 @@ int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *
     for (int k = 0; k < spec->nopts; k++) spec->opts[k].seen = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--help")) {
-            *help = 1;
+        if (!strcmp(a, "--help") || !strcmp(a, "--list-options")) {
+            *help = strcmp(a, "--help") ? HJ_CLI_LIST : HJ_CLI_HELP;
             return HJ_OK;
         }
         hj_cli_opt *o = find_opt(spec, a);
@@ -192,25 +194,76 @@ void hj_cli_help(const hj_cli_spec *spec, FILE *out)
     if (spec->epilog) fputs(spec->epilog, out);
 }
 
+/* The type's word in hj_cli_list; a type without one is listed as
+ * "other", which a driver tests only for unknown and missing values. */
+static const char *type_word(hj_opt_type t)
+{
+    switch (t) {
+    case HJ_OPT_FLAG: return "flag";
+    case HJ_OPT_LONG: return "long";
+    case HJ_OPT_DOUBLE: return "double";
+    case HJ_OPT_STRING: return "string";
+    case HJ_OPT_LONG_LIST: return "long-list";
+    case HJ_OPT_CHOICE: return "choice";
+    case HJ_OPT_STRING_LIST: return "string-list";
+    default: return "other";
+    }
+}
+
+void hj_cli_list(const hj_cli_spec *spec, FILE *out)
+{
+    fputs("name\ttype\tmin\tmax\tchoices\tmaxn\n", out);
+    for (int k = 0; k < spec->nopts; k++) {
+        const hj_cli_opt *o = &spec->opts[k];
+        fprintf(out, "%s\t%s\t", o->name, type_word(o->type));
+        /* Bounds as the parser compares them: longs truncated, doubles
+         * to all 17 digits. */
+        if (o->type == HJ_OPT_LONG || o->type == HJ_OPT_LONG_LIST)
+            fprintf(out, "%ld\t%ld\t", (long)o->min, (long)o->max);
+        else if (o->type == HJ_OPT_DOUBLE)
+            fprintf(out, "%.17g\t%.17g\t", o->min, o->max);
+        else
+            fputs("-\t-\t", out);
+        if (o->type == HJ_OPT_CHOICE && o->choices)
+            for (int c = 0; o->choices[c]; c++) fprintf(out, "%s%s", c ? "," : "", o->choices[c]);
+        else
+            fputs("-", out);
+        if (o->type == HJ_OPT_LONG_LIST || o->type == HJ_OPT_STRING_LIST) fprintf(out, "\t%d\n", o->maxn);
+        else fputs("\t-\n", out);
+    }
+}
+
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)
 {
     hj_error err;
     int help = 0;
     if (hj_cli_parse(spec, argc, argv, &help, &err)) hj_cli_fail(spec->prog, HJ_EXIT_USAGE, "%s", err.msg);
     if (help) {
-        hj_cli_help(spec, stdout);
+        if (help == HJ_CLI_LIST) hj_cli_list(spec, stdout);
+        else hj_cli_help(spec, stdout);
         exit(0);
     }
+    hj_out_remove_on_signal();
 }
 
 void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
 {
+    /* The message may quote what the user typed: control bytes are
+     * escaped, so that it stays one line and cannot drive the terminal. */
+    char msg[2048];
     va_list ap;
-    fprintf(stderr, "%s: ", prog);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    fprintf(stderr, "%s: ", prog);
+    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
+        if (*p == '\n') fputs("\\n", stderr);
+        else if (*p < 0x20 || *p == 0x7f) fprintf(stderr, "\\x%02x", *p);
+        else fputc(*p, stderr);
+    }
     fputc('\n', stderr);
+    /* outputs still being written belong to the failed run */
+    hj_out_remove_all();
     exit(exit_code);
 }
 

@@ -62,21 +62,34 @@ typedef struct {
     const char *epilog;  /* optional text after the options */
 } hj_cli_spec;
 
-/* Parse argv[1..argc-1] against spec.  Returns HJ_OK, with *help = 1 if
- * --help was given (the caller prints hj_cli_help and exits 0), or
+/* Parse argv[1..argc-1] against spec.  Returns HJ_OK, with *help =
+ * HJ_CLI_HELP if --help was given (the caller prints hj_cli_help and exits
+ * 0) or HJ_CLI_LIST for --list-options (hj_cli_list, exit 0), or
  * HJ_EINVAL / HJ_ENONFINITE with one message naming the option.  Giving an
  * option twice is an error, except a STRING_LIST up to its maxn times. */
+enum { HJ_CLI_HELP = 1, HJ_CLI_LIST = 2 };
 int hj_cli_parse(hj_cli_spec *spec, int argc, char **argv, int *help, hj_error *err);
 
 /* "usage: prog [options]", the summary, and one line per option with its
  * metavariable, range or choices and its current (default) value. */
 void hj_cli_help(const hj_cli_spec *spec, FILE *out);
 
-/* For main(): parse, print --help and exit 0, or print the one message and
- * exit with HJ_EXIT_USAGE. */
+/* The option table for test drivers (--list-options): a header line, then
+ * one tab-separated line per option: name, type (flag, long, double,
+ * string, long-list, choice), min, max (exact; "-" when the type has
+ * none), choices (comma-separated, "-"), maxn (list length, "-"). */
+void hj_cli_list(const hj_cli_spec *spec, FILE *out);
+
+/* For main(): parse, print --help or --list-options and exit 0, or print
+ * the one message and exit with HJ_EXIT_USAGE.  After a good parse it
+ * installs hj_out_remove_on_signal (hj_io.h): an interrupted program
+ * leaves no temporary file. */
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
 
-/* Exit codes used by every program. */
+/* Exit codes used by every program.  hj_cli_fail prints "prog: message"
+ * as one line (control bytes in the message escaped: \n, \xHH), removes
+ * the temporary files of outputs still open (hj_out_remove_all) and
+ * exits. */
 enum { HJ_EXIT_RUN = 1, HJ_EXIT_USAGE = 2 };
 
 _Noreturn void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)

@@ -40,6 +40,15 @@ static void out_unregister(const char *tmp)
         if (out_slot_used[k] && !strcmp(out_open_tmp[k], tmp)) out_slot_used[k] = 0;
 }
 
+void hj_out_remove_all(void)
+{
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (out_slot_used[k]) {
+            unlink(out_open_tmp[k]);
+            out_slot_used[k] = 0;
+        }
+}
+
 static void out_on_signal(int sig)
 {
     for (int k = 0; k < OUT_SLOTS; k++)
@@ -53,6 +62,9 @@ void hj_out_remove_on_signal(void)
     const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
         struct sigaction sa;
+        /* An ignored signal stays ignored (nohup, a background job of a
+         * shell): the handler would make it kill the program. */
+        if (sigaction(sigs[k], NULL, &sa) == 0 && sa.sa_handler == SIG_IGN) continue;
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = out_on_signal;
         sigemptyset(&sa.sa_mask);
@@ -213,16 +225,19 @@ int hj_out_commit(hj_out *out, hj_error *err)
 
 /* ---- TSV tables ------------------------------------------------------ */
 
-static char *read_line(FILE *fp, int *toolong)
+/* One line without its end; *bad = 1 when it is too long, 2 when it holds
+ * a NUL byte (then NULL). */
+static char *read_line(FILE *fp, int *bad)
 {
     size_t cap = 256, len = 0;
     char *buf = malloc(cap);
     int c;
-    *toolong = 0;
+    *bad = 0;
     if (!buf) return NULL;
     while ((c = fgetc(fp)) != EOF && c != '\n') {
+        if (c == '\0') { *bad = 2; free(buf); return NULL; }
         if (len + 1 >= cap) {
-            if (cap > (1u << 20)) { *toolong = 1; free(buf); return NULL; }
+            if (cap > (1u << 20)) { *bad = 1; free(buf); return NULL; }
             char *nb = realloc(buf, cap * 2);
             if (!nb) { free(buf); return NULL; }
             buf = nb;
@@ -285,10 +300,10 @@ int hj_table_read(hj_table *t, const char *path, hj_error *err)
     memset(t, 0, sizeof *t);
     FILE *fp = fopen(path, "r");
     if (!fp) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
-    int lineno = 0, rc = HJ_OK, toolong = 0;
+    int lineno = 0, rc = HJ_OK, bad = 0;
     char *line;
     size_t rowcap = 0;
-    while ((line = read_line(fp, &toolong)) != NULL) {
+    while ((line = read_line(fp, &bad)) != NULL) {
         lineno++;
         if (line[0] == '#') {
             if (push_meta(t, line) != HJ_OK) { free(line); rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
@@ -335,7 +350,8 @@ int hj_table_read(hj_table *t, const char *path, hj_error *err)
         }
         t->cells[t->nrows++] = copy;
     }
-    if (rc == HJ_OK && toolong) rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: line too long", path, lineno + 1);
+    if (rc == HJ_OK && bad)
+        rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %s", path, lineno + 1, bad == 1 ? "line too long" : "a NUL byte");
     if (rc == HJ_OK && ferror(fp)) rc = hj_error_set(err, HJ_EIO, "error reading %s", path);
     if (rc == HJ_OK && !t->cols) rc = hj_error_set(err, HJ_EFORMAT, "%s: no header line with column names", path);
     fclose(fp);

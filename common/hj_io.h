@@ -42,9 +42,14 @@ int hj_out_commit(hj_out *out, hj_error *err);
 void hj_out_abort(hj_out *out);
 
 /* For programs: on SIGINT, SIGTERM or SIGHUP remove every temporary file
- * still open, then die of the signal as before.  The library never
- * installs it by itself. */
+ * still open, then die of the signal as before; a signal the process
+ * ignores (nohup) stays ignored.  The library never installs it by itself
+ * (hj_cli_parse_or_exit does, for the programs). */
 void hj_out_remove_on_signal(void);
+
+/* For programs that exit on an error: remove every temporary file still
+ * open (hj_cli_fail calls it), so that a failed run leaves none. */
+void hj_out_remove_all(void);
 
 typedef struct {
     int ncols, nrows;

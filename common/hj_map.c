@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 double hj_map_eval(double x, double y, void *ctx)
 {
@@ -45,25 +46,55 @@ static void flip_rows(hj_map *m)
         }
 }
 
+/* What a message quotes from a file, in buf: printable ASCII as it is,
+ * every other byte as \xHH and a backslash as \\ (a file may hold
+ * anything; a message is one line of text), cut with "..." to fit. */
+static const char *quote(const char *s, size_t n, char *buf, size_t cap)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        const unsigned char c = (unsigned char)s[i];
+        if (k + 8 >= cap) { /* each byte takes at most 4: "..." fits */
+            strcpy(buf + k, "...");
+            return buf;
+        }
+        if (c >= 0x20 && c < 0x7f && c != '\\') buf[k++] = (char)c;
+        else k += (size_t)snprintf(buf + k, cap - k, c == '\\' ? "\\\\" : "\\x%02x", c);
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
 int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
 {
     FILE *f = fopen(path, "r");
     if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
     size_t cap = 1024, n = 0;
     double *v = malloc(cap * sizeof *v);
-    int rows = 0, cols = -1, c, lineno = 0, rc = HJ_OK;
-    char tok[128];
+    int rows = 0, cols = -1, c, rc = HJ_OK;
+    char tok[128], q[64];
     int tl = 0, incount = 0;
+    long line = 1, col = 0, tcol = 0; /* tcol: column of the token's first byte */
     if (!v) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
     for (;;) {
         c = fgetc(f);
+        if (c != EOF) col++;
         if (c == EOF || isspace(c)) {
             if (tl > 0) {
                 tok[tl] = '\0';
                 char *end;
                 double x = strtod(tok, &end);
-                if (*end) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: '%s' is not a number", path, lineno + 1, tok); break; }
-                if (!isfinite(x) || x < 0) { rc = hj_error_set(err, HJ_ENONFINITE, "%s:%d: value %s must be finite and >= 0", path, lineno + 1, tok); break; }
+                /* end short of the token: a letter, or a NUL byte in it */
+                if (end != tok + tl) {
+                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number", path, line, tcol,
+                                      quote(tok, (size_t)tl, q, sizeof q));
+                    break;
+                }
+                if (!isfinite(x) || x < 0) {
+                    rc = hj_error_set(err, HJ_ENONFINITE, "%s:%ld:%ld: value %s must be finite and >= 0", path, line,
+                                      tcol, quote(tok, (size_t)tl, q, sizeof q));
+                    break;
+                }
                 if (n == cap) {
                     double *nv = realloc(v, 2 * cap * sizeof *v);
                     if (!nv) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
@@ -77,15 +108,21 @@ int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
             if (c == '\n' || c == EOF) {
                 if (incount > 0) {
                     if (cols < 0) cols = incount;
-                    else if (incount != cols) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %d values, previous rows have %d", path, lineno + 1, incount, cols); break; }
+                    else if (incount != cols) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: %d values, previous rows have %d", path, line, incount, cols); break; }
                     rows++;
                 }
                 incount = 0;
-                lineno++;
+                line++;
+                col = 0;
             }
             if (c == EOF) break;
         } else {
-            if (tl >= (int)sizeof tok - 1) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: token too long", path, lineno + 1); break; }
+            if (tl == 0) tcol = col;
+            if (tl >= (int)sizeof tok - 1) {
+                rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: a token longer than %d bytes: '%s'", path, line, tcol,
+                                  (int)sizeof tok - 1, quote(tok, (size_t)tl, q, sizeof q));
+                break;
+            }
             tok[tl++] = (char)c;
         }
     }
@@ -100,72 +137,143 @@ int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
     return HJ_OK;
 }
 
-static int pgm_int(FILE *f, long *out)
+/* A PGM file being read, with the position of the last byte read for the
+ * messages: line and column (from 1) in the header and in P2 pixel data,
+ * the byte offset (from 0) in P5 pixel data. */
+typedef struct {
+    FILE *f;
+    const char *path;
+    long line, col, offset;
+    int newline; /* the last byte read ended a line */
+} pgm_in;
+
+static int pgm_getc(pgm_in *in)
+{
+    const int c = fgetc(in->f);
+    if (c == EOF) return c;
+    if (in->newline) in->line++, in->col = 0;
+    in->newline = c == '\n';
+    in->col++;
+    in->offset++;
+    return c;
+}
+
+/* Where the next byte would be: the position of a missing token. */
+static void pgm_next_pos(const pgm_in *in, long *line, long *col)
+{
+    *line = in->newline ? in->line + 1 : in->line;
+    *col = in->newline ? 1 : in->col + 1;
+}
+
+/* The next token, after white space and comments ('#' to the end of the
+ * line), as a whole number in [lo, hi]; what names it in the messages.
+ * The white space byte that ends the token is consumed (P5 pixel data
+ * starts right after the one that follows maxval). */
+static int pgm_number(pgm_in *in, const char *what, long lo, long hi, long *out, hj_error *err)
 {
     int c;
     do {
-        c = fgetc(f);
-        if (c == '#') while (c != '\n' && c != EOF) c = fgetc(f);
+        c = pgm_getc(in);
+        if (c == '#') while (c != '\n' && c != EOF) c = pgm_getc(in);
     } while (c != EOF && isspace(c));
-    if (c == EOF || !isdigit(c)) return -1;
+    if (c == EOF) {
+        long l, k;
+        pgm_next_pos(in, &l, &k);
+        return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: truncated or malformed: the file ends before the %s", in->path,
+                            l, k, what);
+    }
+    const long line = in->line, col = in->col;
+    char tok[24], q[4 * sizeof tok + 1]; /* the messages quote at most tok */
+    size_t n = 0;
+    int digits = 1, longer = 0;
     long v = 0;
-    while (c != EOF && isdigit(c)) {
-        v = v * 10 + (c - '0');
-        if (v > 100000000) return -1;
-        c = fgetc(f);
+    for (; c != EOF && !isspace(c); c = pgm_getc(in)) {
+        if (n < sizeof tok) tok[n++] = (char)c;
+        else longer = 1;
+        if (!isdigit(c)) digits = 0;
+        else if (v <= hi) v = v * 10 + (c - '0'); /* past hi it only needs to stay past it */
     }
-    /* The whole token is a number: "100.200" is not two pixels. */
-    if (c != EOF && !isspace(c)) return -1;
+    if (!digits)
+        return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is '%s%s', not a whole number", in->path, line, col,
+                            what, quote(tok, n, q, sizeof q), longer ? "..." : "");
+    if (v < lo || v > hi)
+        return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is %s%s, outside %ld..%ld", in->path, line, col, what,
+                            quote(tok, n, q, sizeof q), longer ? "..." : "", lo, hi);
     *out = v;
-    return 0;
-}
-
-/* After the last pixel only white space and comments (P2) or nothing
- * (P5) may follow. */
-static int pgm_at_end(FILE *f, int plain)
-{
-    int c = fgetc(f);
-    while (plain && c != EOF && (isspace(c) || c == '#')) {
-        if (c == '#') while (c != '\n' && c != EOF) c = fgetc(f);
-        c = fgetc(f);
-    }
-    return c == EOF;
+    return HJ_OK;
 }
 
 int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
-    char magic[3] = {0};
-    long w, h, maxval;
-    if (fread(magic, 1, 2, f) != 2 || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '5') || pgm_int(f, &w) ||
-        pgm_int(f, &h) || pgm_int(f, &maxval) || w < 2 || h < 2 || maxval < 1 || maxval > 65535) {
+    pgm_in in = {f, path, 1, 0, 0, 0};
+    char magic[2], q[32];
+    int nm = 0, c = 0;
+    while (nm < 2 && (c = pgm_getc(&in)) != EOF) magic[nm++] = (char)c;
+    if (nm == 2) c = pgm_getc(&in);
+    /* "P2" or "P5", then white space or a comment */
+    if (nm < 2 || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '5') || (c != '#' && !isspace(c))) {
         fclose(f);
-        return hj_error_set(err, HJ_EFORMAT, "%s: not a PGM (P2/P5) image of at least 2 x 2 pixels", path);
+        return hj_error_set(err, HJ_EFORMAT, "%s:1:1: not a PGM image: it starts with '%s', not P2 or P5", path,
+                            quote(magic, (size_t)nm, q, sizeof q));
     }
+    if (c == '#') while (c != '\n' && c != EOF) c = pgm_getc(&in);
+    const int plain = magic[1] == '2';
+    long w, h, maxval;
+    int rc = pgm_number(&in, "width", 2, 100000000, &w, err);
+    if (!rc) rc = pgm_number(&in, "height", 2, 100000000, &h, err);
+    if (!rc) rc = pgm_number(&in, "maxval", 1, 65535, &maxval, err);
+    if (rc) { fclose(f); return rc; }
     if ((double)w * h > 1e9) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "%s: image too large", path); }
+    /* A header must not make us allocate what the file cannot fill: P5
+     * holds 1 or 2 bytes per pixel, P2 at least a digit and a separator. */
+    const int wide = maxval > 255;
+    const double need = plain ? 2.0 * w * h - 1 : (double)w * h * (wide ? 2 : 1);
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (double)(st.st_size - in.offset) < need) {
+        fclose(f);
+        return hj_error_set(err, HJ_EFORMAT,
+                            "%s: truncated or malformed: the %ld x %ld pixels of its header need %s%.0f bytes, %ld follow it",
+                            path, w, h, plain ? "at least " : "", need, (long)(st.st_size - in.offset));
+    }
     double *v = malloc(sizeof *v * (size_t)(w * h));
     if (!v) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "out of memory for %s", path); }
-    int rc = HJ_OK;
     for (long k = 0; k < w * h && rc == HJ_OK; k++) {
-        long p;
-        if (magic[1] == '2') {
-            if (pgm_int(f, &p)) rc = HJ_EFORMAT;
+        long p = 0;
+        char what[64];
+        snprintf(what, sizeof what, "pixel at row %ld, column %ld", k / w + 1, k % w + 1);
+        if (plain) {
+            rc = pgm_number(&in, what, 0, maxval, &p, err);
         } else {
-            int b0 = fgetc(f), b1 = maxval > 255 ? fgetc(f) : 0;
-            if (b0 == EOF || b1 == EOF) rc = HJ_EFORMAT;
-            p = maxval > 255 ? (b0 << 8 | b1) : b0;
+            const int b0 = pgm_getc(&in), b1 = wide && b0 != EOF ? pgm_getc(&in) : 0;
+            if (b0 == EOF || b1 == EOF)
+                rc = hj_error_set(err, HJ_EFORMAT, "%s: offset %ld: truncated or malformed: the file ends before the %s",
+                                  path, in.offset, what);
+            else if ((p = wide ? (long)b0 * 256 + b1 : b0) > maxval)
+                rc = hj_error_set(err, HJ_EFORMAT, "%s: offset %ld: the %s is %ld, above maxval %ld", path,
+                                  in.offset - (wide ? 2 : 1), what, p, maxval);
         }
-        if (rc == HJ_OK && p > maxval) rc = HJ_EFORMAT;
         if (rc == HJ_OK) v[k] = fmin + (fmax - fmin) * (double)p / (double)maxval;
     }
-    const int extra = rc == HJ_OK && !pgm_at_end(f, magic[1] == '2');
-    fclose(f);
-    if (rc) { free(v); return hj_error_set(err, HJ_EFORMAT, "%s: truncated or malformed pixel data", path); }
-    if (extra) {
-        free(v);
-        return hj_error_set(err, HJ_EFORMAT, "%s: more data than the %ld x %ld pixels of its header", path, w, h);
+    /* After the last pixel only white space and comments (P2) or nothing
+     * (P5) may follow. */
+    if (rc == HJ_OK) {
+        c = pgm_getc(&in);
+        while (plain && c != EOF && (isspace(c) || c == '#')) {
+            if (c == '#') while (c != '\n' && c != EOF) c = pgm_getc(&in);
+            c = pgm_getc(&in);
+        }
+        if (c != EOF && plain)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: more data than the %ld x %ld pixels of its header", path,
+                              in.line, in.col, w, h);
+        else if (c != EOF)
+            rc = hj_error_set(err, HJ_EFORMAT, "%s: offset %ld: more data than the %ld x %ld pixels of its header", path,
+                              in.offset - 1, w, h);
     }
+    if (rc == HJ_OK && ferror(f)) rc = hj_error_set(err, HJ_EIO, "error reading %s", path);
+    fclose(f);
+    if (rc) { free(v); return rc; }
     m->mx = (int)w;
     m->my = (int)h;
     m->v = v;

@@ -17,8 +17,11 @@
  * xmin + i (xmax - xmin) / (mx - 1), ymin + j (ymax - ymin) / (my - 1).  Between nodes f is
  * bilinear; outside the rectangle it is clamped to the nearest edge.
  *
- * Library code: returns HJ_* codes with a message naming the file and
- * line, never prints.
+ * Library code: returns HJ_* codes with a message naming the file, the
+ * line and column of the bad token (in P5 pixel data its byte offset),
+ * never prints.  What a message quotes from the file is escaped (\xHH
+ * for a control or non-ASCII byte).  A header is checked against the
+ * file's size before the pixels are allocated.
  */
 #ifndef HJ_MAP_H
 #define HJ_MAP_H

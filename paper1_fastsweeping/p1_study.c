@@ -256,8 +256,10 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
             fprintf(tab.fp, "\t%d\t%d\t%.2e\t%.3f\t%ld\t%ld\n", r->iter, r->fo_iter, r->change, r->seconds, r->ncat3,
                     r->measured);
         }
-    /* the table last: its presence means the run is complete */
-    if ((rc = hj_out_commit(&fit, err)) || (rc = hj_out_commit(&gp, err))) { hj_out_abort(&tab); return rc; }
+    /* the table last: its presence means the run is complete; a failed
+     * commit (a full disk) leaves no temporary of the others */
+    if ((rc = hj_out_commit(&fit, err))) { hj_out_abort(&gp); hj_out_abort(&tab); return rc; }
+    if ((rc = hj_out_commit(&gp, err))) { hj_out_abort(&tab); return rc; }
     return hj_out_commit(&tab, err);
 }
 

@@ -4,7 +4,12 @@
  * defaults. */
 #include "hj_test.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "hj_cli.h"
+#include "hj_io.h"
 
 static long N;
 static double cfl, eps;
@@ -144,5 +149,83 @@ static void help_lists_every_option(void **state)
     assert_non_null(strstr(text, "a point [repeatable, at most 3] (default 0,0)"));
 }
 
+/* --list-options: the table as TSV for the bad-input drivers, bounds
+ * exact, one line per option in table order. */
+static void list_options_as_tsv(void **state)
+{
+    (void)state;
+    assert_int_equal(parse("--N 7 --list-options --frob"), HJ_OK);
+    assert_int_equal(help, HJ_CLI_LIST);
+    assert_int_equal(parse("--help"), HJ_OK);
+    assert_int_equal(help, HJ_CLI_HELP);
+    char text[4096] = "";
+    FILE *f = fmemopen(text, sizeof text - 1, "w");
+    assert_non_null(f);
+    hj_cli_list(&spec, f);
+    fclose(f);
+    assert_string_equal(text, "name\ttype\tmin\tmax\tchoices\tmaxn\n"
+                              "--N\tlong\t2\t1000\t-\t-\n"
+                              "--cfl\tdouble\t0.01\t1\t-\t-\n"
+                              "--out\tstring\t-\t-\t-\t-\n"
+                              "--sizes\tlong-list\t8\t100\t-\t4\n"
+                              "--quick\tflag\t-\t-\t-\t-\n"
+                              "--scheme\tchoice\t-\t-\teno2,weno5\t-\n"
+                              "--eps\tdouble\t0\t1\t-\t-\n"
+                              "--point\tstring-list\t-\t-\t-\t3\n");
+}
+
+/* hj_cli_fail: one line whatever the message quotes (it used to print a
+ * newline or an escape sequence typed on the command line as it was). */
+static void fail_prints_one_line(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/hj_test_cli.XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    fflush(stderr);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        dup2(fd, STDERR_FILENO);
+        hj_cli_fail("prog", HJ_EXIT_USAGE, "--N: '%s' is not an integer", "1\n2\033[0m\t\x7f");
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == HJ_EXIT_USAGE);
+    char text[256] = "";
+    ssize_t n = pread(fd, text, sizeof text - 1, 0);
+    close(fd);
+    unlink(path);
+    assert_true(n > 0);
+    assert_string_equal(text, "prog: --N: '1\\n2\\x1b[0m\\x09\\x7f' is not an integer\n");
+}
+
+/* hj_cli_fail removes the temporaries of outputs still open: a program
+ * that committed one output and failed on the next left the others. */
+static void fail_removes_open_temporaries(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/hj_test_cli.XXXXXX", path[64], path2[64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/out.tsv", dir);
+    snprintf(path2, sizeof path2, "%s/out2.tsv", dir);
+    fflush(stderr);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        hj_out a, b;
+        if (hj_out_open(&a, path, NULL) || hj_out_open(&b, path2, NULL)) _exit(3);
+        fputs("x\n", a.fp);
+        if (!freopen("/dev/null", "w", stderr)) _exit(4);
+        hj_cli_fail("prog", HJ_EXIT_RUN, "error writing %s", path);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == HJ_EXIT_RUN);
+    assert_int_equal(rmdir(dir), 0); /* no temporary left in it */
+}
+
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
-             cmocka_unit_test(repeated_list), cmocka_unit_test(help_lists_every_option))
+             cmocka_unit_test(repeated_list), cmocka_unit_test(help_lists_every_option),
+             cmocka_unit_test(list_options_as_tsv), cmocka_unit_test(fail_prints_one_line),
+             cmocka_unit_test(fail_removes_open_temporaries))

@@ -68,5 +68,22 @@ static void bad_usage(void **state)
     assert_non_null(strstr(out_text, "usage"));
 }
 
+/* A FIFO (or link, device, directory) under OUT.tsv is refused before the
+ * command runs, and left as it was (it used to be removed and replaced). */
+static void special_file_kept(void **state)
+{
+    (void)state;
+    char args[512], fifo[256];
+    snprintf(fifo, sizeof fifo, "%s/fifo.tsv", dir);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    snprintf(args, sizeof args, "%s demo -- touch %s/ran", fifo, dir);
+    assert_int_equal(run(args), 2);
+    assert_non_null(strstr(out_text, "not a regular file"));
+    struct stat st;
+    assert_int_equal(lstat(fifo, &st), 0);
+    assert_true(S_ISFIFO(st.st_mode));
+    assert_false(exists("ran"));
+}
+
 HJ_TEST_MAIN("hjtime", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(success_writes_row),
-             cmocka_unit_test(failure_leaves_no_table), cmocka_unit_test(bad_usage))
+             cmocka_unit_test(failure_leaves_no_table), cmocka_unit_test(bad_usage), cmocka_unit_test(special_file_kept))

@@ -67,6 +67,13 @@ static void malformed_tables(void **state)
     fprintf(f, "# only comments\n");
     fclose(f);
     assert_int_equal(hj_table_read(&t, path, &err), HJ_EFORMAT);
+    /* A NUL byte (a binary file) is refused; it used to end the line
+     * there, and "1<NUL>9<TAB>2" was read as the one cell "1". */
+    f = fopen(path, "w");
+    fwrite("a\n1\0009\t2\n", 1, 9, f);
+    fclose(f);
+    assert_int_equal(hj_table_read(&t, path, &err), HJ_EFORMAT);
+    assert_non_null(strstr(err.msg, ":2: a NUL byte"));
     snprintf(path, sizeof path, "%s/none.tsv", dir);
     assert_int_equal(hj_table_read(&t, path, &err), HJ_EIO);
 }
@@ -170,6 +177,19 @@ static void temporaries_removed(void **state)
     snprintf(stale, sizeof stale, "%s.tmp.%ld", path, (long)child);
     assert_int_not_equal(access(stale, F_OK), 0);
     assert_int_not_equal(access(path, F_OK), 0);
+    /* A signal ignored before (nohup) stays ignored. */
+    child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        signal(SIGHUP, SIG_IGN);
+        hj_out_remove_on_signal();
+        if (hj_out_open(&out, path, NULL)) _exit(3);
+        raise(SIGHUP);
+        hj_out_abort(&out);
+        _exit(5);
+    }
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 5);
 }
 
 /* An empty name is an error (it used to read past the buffer); a file in

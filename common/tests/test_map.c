@@ -5,6 +5,9 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "hj_map.h"
 
@@ -68,7 +71,7 @@ static void malformed_maps(void **state)
     assert_non_null(strstr(err.msg, "cannot read /nonexistent.txt"));
     const char word[] = "1 2\n3 x\n", ragged[] = "1 2\n3\n", negative[] = "1 -2\n3 4\n", small[] = "1 2\n";
     assert_int_equal(hj_map_read(&m, write_file("w.txt", word, strlen(word)), 0, 1, &err), HJ_EFORMAT);
-    assert_non_null(strstr(err.msg, ":2: 'x' is not a number"));
+    assert_non_null(strstr(err.msg, ":2:3: 'x' is not a number"));
     assert_int_equal(hj_map_read(&m, write_file("r.txt", ragged, strlen(ragged)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, "previous rows have 2"));
     assert_int_equal(hj_map_read(&m, write_file("n.txt", negative, strlen(negative)), 0, 1, &err), HJ_ENONFINITE);
@@ -121,5 +124,107 @@ static void pixel_units_and_speeds(void **state)
     hj_map_free(&m);
 }
 
+/* err.msg after reading the n bytes of data as a PGM (which must fail
+ * with code); the message must be one line without control bytes. */
+static const char *pgm_error(const char *name, const char *data, size_t n, int code)
+{
+    static hj_error err;
+    hj_map m = {0};
+    assert_int_equal(hj_map_read_pgm(&m, write_file(name, data, n), 0, 1, &err), code);
+    for (const unsigned char *p = (const unsigned char *)err.msg; *p; p++)
+        if (*p < 0x20 || *p == 0x7f) fail_msg("control byte 0x%02x in '%s'", *p, err.msg);
+    return err.msg;
+}
+#define PGM_ERROR(name, lit, code) pgm_error(name, lit, sizeof lit - 1, code)
+#define assert_has(msg, part)                                                                                          \
+    do {                                                                                                               \
+        if (!strstr(msg, part)) fail_msg("'%s' does not contain '%s'", msg, part);                                    \
+    } while (0)
+
+/* A bad PGM token is named by file, line and column, quoted with its
+ * control bytes escaped. */
+static void pgm_messages_name_line_and_column(void **state)
+{
+    (void)state;
+    assert_has(PGM_ERROR("x.pgm", "P2\n# c\n3 2\n255\n1 2 3\n4 x5 6\n", HJ_EFORMAT),
+               "x.pgm:6:3: the pixel at row 2, column 2 is 'x5', not a whole number");
+    assert_has(PGM_ERROR("esc.pgm", "P2\n2 2\n255\n1 \033[31m\n1 1\n", HJ_EFORMAT),
+               "esc.pgm:4:3: the pixel at row 1, column 2 is '\\x1b[31m', not a whole number");
+    assert_has(PGM_ERROR("w.pgm", "P2\n1 2\n255\n1 2\n", HJ_EFORMAT), "w.pgm:2:1: the width is 1, outside 2..100000000");
+    assert_has(PGM_ERROR("mv.pgm", "P5 2 2\n\t70000\n", HJ_EFORMAT), "mv.pgm:2:2: the maxval is 70000, outside 1..65535");
+    assert_has(PGM_ERROR("big.pgm", "P2\n2 2\n4\n0 5\n1 1\n", HJ_EFORMAT),
+               "big.pgm:4:3: the pixel at row 1, column 2 is 5, outside 0..4");
+    assert_has(PGM_ERROR("m.pgm", "P7\n2 2\n", HJ_EFORMAT), "m.pgm:1:1: not a PGM image: it starts with 'P7'");
+    assert_has(PGM_ERROR("b.pgm", "\001\377", HJ_EFORMAT), "it starts with '\\x01\\xff'");
+    assert_has(PGM_ERROR("j.pgm", "P22 2 255\n1 2\n3 4\n", HJ_EFORMAT), "not a PGM image");
+    assert_has(PGM_ERROR("h.pgm", "P2\n2 2\n", HJ_EFORMAT), "h.pgm:3:1: truncated or malformed: the file ends before the maxval");
+    assert_has(PGM_ERROR("e.pgm", "P2\n2 2\n4\n0 4\n2 3 x\n", HJ_EFORMAT),
+               "e.pgm:5:5: more data than the 2 x 2 pixels of its header");
+    assert_has(PGM_ERROR("o5.pgm", "P5\n2 2\n9\n\001\002\012\004", HJ_EFORMAT),
+               "o5.pgm: offset 11: the pixel at row 2, column 1 is 10, above maxval 9");
+    const char long_word[] = "P2\n2 2\n255\n1 1234567890123456789012345x 3 4\n";
+    assert_has(PGM_ERROR("l.pgm", long_word, HJ_EFORMAT),
+               ":4:3: the pixel at row 1, column 2 is '123456789012345678901234...', not a whole number");
+    const char long_number[] = "P2\n2 2\n255\n1 123456789012345678901234567890 3 4\n";
+    assert_has(PGM_ERROR("n.pgm", long_number, HJ_EFORMAT),
+               ":4:3: the pixel at row 1, column 2 is 123456789012345678901234..., outside 0..255");
+    /* leading zeros make a long token, not a large number */
+    hj_map m = {0};
+    const char zeros[] = "P2\n2 2\n255\n1 0000000000000000000000000000007 3 4\n";
+    assert_int_equal(hj_map_read_pgm(&m, write_file("z.pgm", zeros, sizeof zeros - 1), 0, 255, NULL), HJ_OK);
+    assert_true(m.v[3] == 7); /* top row, second pixel */
+    hj_map_free(&m);
+}
+
+/* A header is checked against the data that follows it: a 24-byte file
+ * claiming 30000 x 30000 pixels is refused before 7 GB are allocated, and
+ * a 16-bit P5 cut inside its data is refused (reading it shifted EOF, -1,
+ * left: undefined behaviour, found by the fuzzer). */
+static void pgm_header_against_file_size(void **state)
+{
+    (void)state;
+    assert_has(PGM_ERROR("huge.pgm", "P5\n30000 30000\n255\n\001\002", HJ_EFORMAT),
+               "the 30000 x 30000 pixels of its header need 900000000 bytes, 2 follow it");
+    assert_has(PGM_ERROR("huge2.pgm", "P2 30000 30000 255 1 2 3", HJ_EFORMAT), "need at least 1799999999 bytes");
+    assert_has(PGM_ERROR("cut16.pgm", "P5\n2 2\n65535\n\000\001\000\002\000", HJ_EFORMAT), "need 8 bytes, 5 follow it");
+    /* Through a FIFO (no size to check) the pixel loop sees the end. */
+    char fifo[160];
+    snprintf(fifo, sizeof fifo, "%s/cut.pgm", dir);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        FILE *f = fopen(fifo, "wb");
+        static const char cut[] = "P5\n2 2\n65535\n\000\001\000\002\000";
+        if (f) fwrite(cut, 1, sizeof cut - 1, f), fclose(f);
+        _exit(0);
+    }
+    hj_map m = {0};
+    hj_error err;
+    assert_int_equal(hj_map_read_pgm(&m, fifo, 0, 1, &err), HJ_EFORMAT);
+    waitpid(child, NULL, 0);
+    assert_has(err.msg, "cut.pgm: offset 18: truncated or malformed: the file ends before the pixel at row 2, column 1");
+}
+
+/* Text maps: the column of a bad token, its control bytes escaped, and a
+ * NUL byte inside a token refused (strtod stopped at it: "4\0005" was
+ * read as 4). */
+static void text_map_messages(void **state)
+{
+    (void)state;
+    hj_map m = {0};
+    hj_error err;
+    const char ctl[] = "1 2\n3 \001x\n", nul[] = "1 2\n3 4\0005\n";
+    assert_int_equal(hj_map_read_text(&m, write_file("c.txt", ctl, sizeof ctl - 1), &err), HJ_EFORMAT);
+    assert_has(err.msg, "c.txt:2:3: '\\x01x' is not a number");
+    assert_int_equal(hj_map_read_text(&m, write_file("z.txt", nul, sizeof nul - 1), &err), HJ_EFORMAT);
+    assert_has(err.msg, "z.txt:2:3: '4\\x005' is not a number");
+    const char neg[] = "1 2\n3   -4\n";
+    assert_int_equal(hj_map_read_text(&m, write_file("n.txt", neg, sizeof neg - 1), &err), HJ_ENONFINITE);
+    assert_has(err.msg, "n.txt:2:5: value -4 must be finite and >= 0");
+}
+
 HJ_TEST_MAIN("hj_map", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(text_map_rows_flipped), cmocka_unit_test(pixel_units_and_speeds),
-             cmocka_unit_test(pgm_maps), cmocka_unit_test(malformed_maps), cmocka_unit_test(bilinear_and_clamped))
+             cmocka_unit_test(pgm_maps), cmocka_unit_test(malformed_maps), cmocka_unit_test(bilinear_and_clamped),
+             cmocka_unit_test(pgm_messages_name_line_and_column), cmocka_unit_test(pgm_header_against_file_size),
+             cmocka_unit_test(text_map_messages))

@@ -13,7 +13,8 @@
  * largest of its processes, from getrusage).  The report shows these as the run
  * times of the examples; they are never compared or tested.  A command that
  * fails leaves no OUT.tsv (an older one is removed), so a stale time is
- * never shown for a run that did not finish.
+ * never shown for a run that did not finish.  OUT.tsv must be absent or a
+ * regular file (exit status 2 otherwise, before COMMAND runs).
  */
 #include <errno.h>
 #include <stdio.h>
@@ -59,6 +60,12 @@ int main(int argc, char **argv)
     if (rc) {
         fprintf(stderr, "hjtime: %s\n", err.msg);
         return 1;
+    }
+    /* Only a regular file is replaced (hj_io.h): a FIFO, link, device or
+     * directory under the name is refused before the command runs. */
+    if (hj_out_check(out, &err)) {
+        fprintf(stderr, "hjtime: %s\n", err.msg);
+        return 2;
     }
     remove(out);
     const double t0 = now();
