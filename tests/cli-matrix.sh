@@ -84,7 +84,7 @@ matrix() {
         run "$prog" unknown "${out[@]}" --no-such-option 1
         run "$prog" unknown "${out[@]}" stray
         run "$prog" control $'--no\nsuch\e[0m'
-        local o t lo hi ch maxn v below above ctl=" "
+        local o t lo hi ch maxn v below above k args ctl=" "
         while IFS=$'\t' read -r o t lo hi ch maxn; do
             opts+="$o "
             local rest=("${out[@]}")
