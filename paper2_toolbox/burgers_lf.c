@@ -79,9 +79,6 @@ by `plot/fig14.gp`.
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "hj_cli.h"
 #include "hj_fit.h"
@@ -123,11 +120,7 @@ int main(int argc, char **argv)
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
     p2_os_run r = cli.run;
-#ifdef _OPENMP
-    /* Grids of at most 1280 or 160^2 nodes: a second thread costs more in
-     * synchronisation than it saves (results do not depend on it). */
-    omp_set_num_threads(1);
-#endif
+    p2_one_thread(); /* grids of at most 1280 or 160^2 nodes */
     char path[4096];
     hj_ls_grid g;
 

@@ -125,10 +125,7 @@ int main(int argc, char **argv)
     p2_os_parse_cli(prog, summary, epilog, argc, argv, 1, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-#ifdef _OPENMP
-    /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
-    omp_set_num_threads(1);
-#endif
+    p2_one_thread(); /* small grids; the thread check below sets its own */
     char path[4096];
     hj_ls_grid g, g2;
     if (cli.single) {

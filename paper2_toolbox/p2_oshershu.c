@@ -237,11 +237,8 @@ void p2_os_parse_cli(const char *prog, const char *summary, const char *epilog, 
     int n = 0;
     for (int k = 0; k < (int)NOPT; k++)
         if (k != PARTIAL || allow_partial) all[n++] = opts[k];
-    hj_cli_spec spec = {prog, summary, all, n, epilog};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    c->single = p2_seen_any(all, allow_partial ? PARTIAL + 1 : PARTIAL);
+    c->single = p2_parse_runs(prog, summary, epilog, all, n, allow_partial ? PARTIAL + 1 : PARTIAL, argc, argv,
+                              &c->out_dir);
     c->run.dim = (int)dim;
     if (!c->run.N) c->run.N = 80 >> (c->run.dim - 1);
-    hj_error err;
-    p2_fail_if(prog, hj_mkdirs(c->out_dir, &err), &err);
 }

@@ -130,11 +130,9 @@ void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, 
          .help = "accepted: the default set is already quick"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &o->dir, .metavar = "DIR", .help = "output directory"},
     };
-    hj_cli_spec spec = {prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), epilog};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    o->single = opts[0].seen || opts[1].seen;
+    o->single =
+        p2_parse_runs(prog, summary, epilog, opts, (int)(sizeof opts / sizeof opts[0]), 2, argc, argv, &o->dir);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o->dir, &err), &err);
     char name[256];
     snprintf(name, sizeof name, "%s%s.tsv", base, o->single ? "_run" : "");
     p2_fail_if(prog, p2_open(tab, o->dir, name, &err), &err);
