@@ -114,6 +114,24 @@ void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, con
     p2_fail_if(o->prog, hj_out_commit(&out, &err), &err);
 }
 
+void p2_star_figures(const p2_opts *o, const p2_star_figure *f, int only, p2_figure_fn run, void *ctx)
+{
+    hj_error err;
+    hj_ls_grid g;
+    p2_fail_if(o->prog, p2_square_grid(&g, o->N, &err), &err);
+    double *phi = hj_ls_alloc(&g);
+    if (!phi) hj_cli_fail(o->prog, HJ_EXIT_RUN, "out of memory");
+    for (int k = 0; k < 2; k++) {
+        if (only >= 0 && f->value[k] != only) continue;
+        hj_ls_fill(&g, phi, hj_ls_star_fn, (void *)&f->star);
+        hj_out out;
+        p2_fail_if(o->prog, p2_open(&out, o->out_dir, f->file[k], &err), &err);
+        fprintf(out.fp, f->head, hj_ls_accuracy_name(o->acc), f->value[k], o->N);
+        p2_commit_run(o->prog, &out, run(&g, f->value[k], phi, out.fp, f->label[k], ctx, &err), &err);
+    }
+    hj_ls_free(phi);
+}
+
 void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,
                      const char *tsv_head, const char *runs, const char *runs_head)
 {
