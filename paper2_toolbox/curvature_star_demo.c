@@ -162,12 +162,9 @@ int main(int argc, char **argv)
         for (int s = 0; s < 3; s++) {
             const double exact = s < 2 ? loss_exact : NAN;
             fprintf(out.fp, "%s\t%ld\t%s", hj_ls_accuracy_name(o.acc), grids[n], shape[s]);
-            p2_cell(out.fp, loss[n][s]);
-            p2_cell(out.fp, exact);
-            p2_cell(out.fp, loss[n][s] / exact);
-            p2_cell(out.fp, s == 0 ? rc[n] : NAN);
-            p2_cell(out.fp, s == 0 ? r_exact : NAN);
-            fputc('\n', out.fp);
+            const double cells[5] = {loss[n][s], exact, loss[n][s] / exact, s == 0 ? rc[n] : NAN,
+                                     s == 0 ? r_exact : NAN};
+            p2_cells(out.fp, cells, 5);
         }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

@@ -80,6 +80,12 @@ void p2_cell(FILE *fp, double v)
     else fprintf(fp, "\t%.17g", v);
 }
 
+void p2_cells(FILE *fp, const double *v, int n)
+{
+    for (int k = 0; k < n; k++) p2_cell(fp, v[k]);
+    fputc('\n', fp);
+}
+
 void p2_check_runs(FILE *fp, const char *accuracy, const p2_check *c)
 {
     fprintf(fp, "accuracy\tN\tdx\tcase%s%s\t%s\t%s_exact\terror\terror_dx\n", c->param_name ? "\t" : "",

@@ -79,6 +79,8 @@ int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err);
  * (notes/<demo>_notes.md) present them.  p2_cell writes one number: a tab,
  * then v as %.17g, or "-" when v is NaN. */
 void p2_cell(FILE *fp, double v);
+/* The numbers that end a row: p2_cell of v[0 .. n - 1], then the line end. */
+void p2_cells(FILE *fp, const double *v, int n);
 
 /* A check table: value[n * ncase + c] of case c on the grid of grids[n]
  * nodes per side against exact[c]; case_name in both tables; value_name
