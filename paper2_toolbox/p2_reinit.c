@@ -139,3 +139,22 @@ void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, 
     fputs(comment, tab->fp);
     p2_reinit_header(tab->fp);
 }
+
+void p2_reinit_begin_runs(const char *prog, const p2_reinit_opts *o, const char *base, const char *comment,
+                          const char *extra, hj_out *runs)
+{
+    char name[256];
+    snprintf(name, sizeof name, "%s_runs.tsv", base);
+    hj_error err;
+    p2_fail_if(prog, p2_open(runs, o->dir, name, &err), &err);
+    fputs(comment, runs->fp);
+    p2_reinit_run_header(runs->fp);
+    fprintf(runs->fp, "%s\n", extra);
+}
+
+void p2_reinit_end(const char *prog, const p2_reinit_opts *o, hj_out *tab, hj_out *runs)
+{
+    hj_error err;
+    p2_fail_if(prog, hj_out_commit(tab, &err), &err);
+    if (!o->single) p2_fail_if(prog, hj_out_commit(runs, &err), &err);
+}
