@@ -74,10 +74,6 @@ presents); plotted by `plot/fig18.gp`.
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "hj_cli.h"
 #include "hj_io.h"
 #include "hj_ls_io.h"
@@ -199,6 +195,12 @@ static void run(const p2_acoustic_par *q, int acc, int diss, double dx, double t
     hj_ls_free(y0);
 }
 
+static const char *summary = "The acoustic capture game of Mitchell's toolbox (section 2.6.2, Figure 18).";
+static const char *epilog =
+    "With none of the run options (--accuracy .. --tmax): Figure 18's data and the checks\n"
+    "(acoustic.tsv, acoustic_2d.dat, acoustic_summary.tsv).  With any of them: one run, its time\n"
+    "sequence in acoustic_run.dat and its areas on stdout.  See the comment at the top of acoustic.c.\n";
+
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
@@ -220,20 +222,9 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&out_dir),
         p2_opt_quick(&quick, "the checks on dx = 0.08, 0.04 only"),
     };
-    enum { NRUN = 5 };
-    hj_cli_spec spec = {prog, "The acoustic capture game of Mitchell's toolbox (section 2.6.2, Figure 18).", opts,
-                        (int)(sizeof opts / sizeof opts[0]),
-                        "With none of the run options (--accuracy .. --tmax): Figure 18's data and the checks\n"
-                        "(acoustic.tsv, acoustic_2d.dat, acoustic_summary.tsv).  With any of them: one run, its time\n"
-                        "sequence in acoustic_run.dat and its areas on stdout.  See the comment at the top of acoustic.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = p2_seen_any(opts, NRUN);
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
-#ifdef _OPENMP
-    /* 2-D grids of 10^4-10^5 nodes: one thread (two cost more in
-     * synchronisation on a shared machine; results do not depend on it). */
-    omp_set_num_threads(1);
-#endif
+    const int single =
+        p2_parse_runs(prog, summary, epilog, opts, (int)(sizeof opts / sizeof opts[0]), 5, argc, argv, &out_dir);
+    p2_one_thread(); /* 2-D grids of 10^4-10^5 nodes */
     char path[4096];
     static result R[8];
     if (single) {

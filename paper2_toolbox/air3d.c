@@ -137,6 +137,12 @@ static void run(const p2_air3d_par *p, int acc, int diss, long Nx, double tmax, 
     if (phi) *phi = y; else hj_ls_free(y);
 }
 
+static const char *summary = "The game of two identical vehicles of Mitchell's toolbox (section 2.6.1, Figure 17).";
+static const char *epilog =
+    "With none of the run options (--accuracy .. --tmax): Figure 17's data and the checks\n"
+    "(air3d.tsv, air3d.vtk, air3d_vox.dat, air3d_summary.tsv).  With any of them: one run written to\n"
+    "air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n";
+
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
@@ -155,15 +161,8 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&out_dir),
         p2_opt_quick(&quick, "the checks on NX = 26 only"),
     };
-    enum { NRUN = 4 };
-    hj_cli_spec spec = {prog, "The game of two identical vehicles of Mitchell's toolbox (section 2.6.1, Figure 17).",
-                        opts, (int)(sizeof opts / sizeof opts[0]),
-                        "With none of the run options (--accuracy .. --tmax): Figure 17's data and the checks\n"
-                        "(air3d.tsv, air3d.vtk, air3d_vox.dat, air3d_summary.tsv).  With any of them: one run written to\n"
-                        "air3d_run.vtk, its volumes on stdout.  See the comment at the top of air3d.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = p2_seen_any(opts, NRUN);
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
+    const int single =
+        p2_parse_runs(prog, summary, epilog, opts, (int)(sizeof opts / sizeof opts[0]), 4, argc, argv, &out_dir);
     p2_air3d_par par;
     p2_air3d_defaults(&par);
     char path[4096];

@@ -77,9 +77,6 @@ plotted by `plot/fig20.gp`.
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "hj_cli.h"
 #include "hj_io.h"
@@ -263,6 +260,13 @@ static void exact_areas(const par *q, int M, double *a3, double *a2)
     *a2 = 2500.0 * (double)n2 / ((double)M * M);
 }
 
+static const char *summary = "Three-mode collision avoidance of Mitchell's toolbox (section 2.6.3, Figure 20).";
+static const char *epilog =
+    "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv,\n"
+    "air_mode_2d.dat, air_mode_summary.tsv).  With one of them: one run written to air_mode_run.dat\n"
+    "(x y reach avoid mode3 mode2 switch2), its areas on stdout.  See the comment at the top of\n"
+    "air_mode.c.\n";
+
 int main(int argc, char **argv)
 {
     const char *out_dir = ".";
@@ -277,19 +281,9 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&out_dir),
         p2_opt_quick(&quick, "the checks on N = 101, 201 only"),
     };
-    enum { NRUN = 2 };
-    hj_cli_spec spec = {prog, "Three-mode collision avoidance of Mitchell's toolbox (section 2.6.3, Figure 20).", opts,
-                        (int)(sizeof opts / sizeof opts[0]),
-                        "With neither --accuracy nor --N: Figure 20's data and the checks (air_mode.tsv,\n"
-                        "air_mode_2d.dat, air_mode_summary.tsv).  With one of them: one run written to air_mode_run.dat\n"
-                        "(x y reach avoid mode3 mode2 switch2), its areas on stdout.  See the comment at the top of\n"
-                        "air_mode.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = p2_seen_any(opts, NRUN);
-    p2_fail_if(prog, hj_mkdirs(out_dir, &err), &err);
-#ifdef _OPENMP
-    omp_set_num_threads(1); /* 2-D grids: see acoustic.c */
-#endif
+    const int single =
+        p2_parse_runs(prog, summary, epilog, opts, (int)(sizeof opts / sizeof opts[0]), 2, argc, argv, &out_dir);
+    p2_one_thread(); /* 2-D grids */
     par q = {5, 3, 4, -4 * HJ_PI / 3, 1, 0, 0};
     q.c1 = -q.va + q.vb * cos(q.psi), q.c2 = q.vb * sin(q.psi);
     hj_ls_grid g;

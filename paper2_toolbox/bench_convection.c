@@ -54,6 +54,7 @@ by `make bench`, never by the tests.
 #include "hj_ls_accuracy.h"
 #include "hj_ls_seq.h"
 #include "hj_sys.h"
+#include "p2_cli.h"
 #include "p2_convection.h"
 
 static const char *const PROG = "bench_convection";
@@ -153,10 +154,8 @@ int main(int argc, char **argv)
     const double arr = (double)g.total * sizeof(double) / 1048576.0;
 
     /* The numbers of the report's note (notes/convection.md), one row per level and thread count. */
-    char path[4096];
-    snprintf(path, sizeof path, "%s/convection_bench.tsv", dir);
     hj_out o;
-    if (hj_out_open(&o, path, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
+    p2_fail_if(PROG, p2_open(&o, dir, "convection_bench.tsv", &err), &err);
     fprintf(o.fp, "# bench_convection: convectionDemo('linear') on an n^3 grid; published_s = the document's MATLAB seconds\n"
                   "# (published_rel: relative to low); wall seconds of the integration (wall_rel: relative to the first level\n"
                   "# run with the same thread count) and CPU seconds; bitwise = final states equal across the thread counts\n"
@@ -174,7 +173,7 @@ int main(int argc, char **argv)
                     secs[li][q] / base[q], cpu[li][q], steps[li], nthr > 1 ? (same[li] ? "yes" : "no") : "-", emax[li],
                     vchange[li], load0[0], load1[0], (double)sysconf(_SC_NPROCESSORS_ONLN), peak_mb, arr);
     }
-    if (hj_out_commit(&o, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
+    p2_fail_if(PROG, hj_out_commit(&o, &err), &err);
     printf("peak memory %.1f MB (array %.1f MB)\n", peak_mb, arr);
     hj_ls_free(y0), hj_ls_free(y), hj_ls_free(first);
     return 0;

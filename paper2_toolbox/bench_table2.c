@@ -36,6 +36,7 @@ bench`, never by the tests.
 #include "hj_io.h"
 #include "hj_ls_deriv.h"
 #include "hj_math.h"
+#include "p2_cli.h"
 
 static const char *const PROG = "bench_table2";
 /* Table 2 as published (rows in the order of enum HJ_LS_*). */
@@ -104,10 +105,8 @@ int main(int argc, char **argv)
     }
     hj_progress("\n");
 
-    char path[4096];
-    snprintf(path, sizeof path, "%s/table2.tsv", dir);
     hj_out o;
-    if (hj_out_open(&o, path, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
+    p2_fail_if(PROG, p2_open(&o, dir, "table2.tsv", &err), &err);
     fprintf(o.fp, "# bench_table2: left and right derivatives in x_1 on an N x N periodic grid, one thread, fastest of "
                   "repeated runs; published: Table 2's relative time (- for the section 4 extra)\n"
                   "scheme\tN\tpublished\trelative_time\tms_per_call\n");
@@ -117,7 +116,7 @@ int main(int argc, char **argv)
         else fputc('-', o.fp);
         fprintf(o.fp, "\t%.17g\t%.17g\n", best[s] / best[0], 1e3 * best[s]);
     }
-    if (hj_out_commit(&o, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
+    p2_fail_if(PROG, hj_out_commit(&o, &err), &err);
     for (int s = 0; s < HJ_LS_NSCHEMES; s++)
         printf("%-20s %8.2f ms  x%.1f\n", hj_ls_scheme_name(s), 1e3 * best[s], best[s] / best[0]);
     hj_ls_free(a), hj_ls_free(l), hj_ls_free(r);

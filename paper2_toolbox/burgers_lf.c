@@ -79,9 +79,6 @@ by `plot/fig14.gp`.
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "hj_cli.h"
 #include "hj_fit.h"
@@ -104,10 +101,7 @@ static const char *epilog =
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
-    hj_error err;
-    double *phi = p2_os_solve_to_file(&p2_os_burgers, r, g, path, &err);
-    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    return phi;
+    return p2_os_solve_or_exit(prog, &p2_os_burgers, r, g, path);
 }
 
 #define NCASE 2
@@ -123,11 +117,7 @@ int main(int argc, char **argv)
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
     p2_os_run r = cli.run;
-#ifdef _OPENMP
-    /* Grids of at most 1280 or 160^2 nodes: a second thread costs more in
-     * synchronisation than it saves (results do not depend on it). */
-    omp_set_num_threads(1);
-#endif
+    p2_one_thread(); /* grids of at most 1280 or 160^2 nodes */
     char path[4096];
     hj_ls_grid g;
 
@@ -159,12 +149,8 @@ int main(int argc, char **argv)
     const long fig_n[2] = {10, 40};
     for (int q = 0; q < 2; q++) {
         p2_os_run f = {1, fig_n[q], HJ_LS_ACC_HIGH, HJ_LS_LLF, 0, tk, 1};
-        double *phi = run(&f, &g, NULL);
-        fprintf(out.fp, "\n\n# index %d: ENO3-LLF (accuracy high, local) on %ld nodes\n", q + 1, fig_n[q]);
-        const char *names[1] = {"phi"};
-        const double *fl[1] = {phi};
-        p2_fail_if(prog, hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
-        hj_ls_free(phi);
+        p2_os_append_block(prog, &p2_os_burgers, &f, out.fp,
+                           "\n\n# index %d: ENO3-LLF (accuracy high, local) on %ld nodes\n", q + 1, fig_n[q]);
     }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     /* Figure 14 (b): 2-D, ENO-LLF on 40^2, the toolbox's 10 output steps. */

@@ -210,6 +210,11 @@ static void table_row(FILE *fp, const cfg *c, const result *r)
             r->front_max, r->front_mean, r->exact, r->steps);
 }
 
+static const char *const SUMMARY = "convectionDemo of Mitchell's toolbox (section 2.1, Figures 1-3).";
+static const char *const EPILOG =
+    "With none of --flow, --accuracy, --dim, --N, --periodic: the figures and checked table.\n"
+    "See the comment at the top of convection_demo.c.\n";
+
 int main(int argc, char **argv)
 {
     cfg one = {P2_CONSTANT, HJ_LS_ACC_LOW, 2, 0, 101};
@@ -232,15 +237,9 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&dir),
         p2_opt_quick(&quick, "the default set without the 3-D run (make check QUICK=1)"),
     };
-    enum { NRUN = 5 };
-    hj_cli_spec spec = {PROG, "convectionDemo of Mitchell's toolbox (section 2.1, Figures 1-3).", opts,
-                        (int)(sizeof opts / sizeof opts[0]),
-                        "With none of --flow, --accuracy, --dim, --N, --periodic: the figures and checked table.\n"
-                        "See the comment at the top of convection_demo.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = p2_seen_any(opts, NRUN);
+    const int single =
+        p2_parse_runs(PROG, SUMMARY, EPILOG, opts, (int)(sizeof opts / sizeof opts[0]), 5, argc, argv, &dir);
     one.dim = (int)dim;
-    if (hj_mkdirs(dir, &err)) hj_cli_fail(PROG, HJ_EXIT_RUN, "%s", err.msg);
     char path[4096], path2[4096];
     hj_out tab;
     if (single) {

@@ -207,8 +207,7 @@ static void loss_rows(FILE *fp, const char *accuracy, const char *run, const cha
         const double exact = 2 * HJ_PI * b * tspan[k];
         fprintf(fp, "%s\t%s\t%s\t%ld", accuracy, run, initial, n);
         const double cells[6] = {tspan[k], area[0], area[k], area[0] - area[k], exact, (area[0] - area[k]) / exact};
-        for (int q = 0; q < 6; q++) p2_cell(fp, cells[q]);
-        fputc('\n', fp);
+        p2_cells(fp, cells, 6);
     }
 }
 

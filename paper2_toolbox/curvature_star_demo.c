@@ -89,35 +89,33 @@ static int run_curv(const hj_ls_grid *g, int order, double b0, int split, const 
     return p2_run(order, g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL_CURVATURE, err);
 }
 
+/* The speed b0 and the output times of the figure and the check. */
+static const double b0 = 0.02, tspan[4] = {0, 0.25, 0.5, 1.0};
+
+/* Figure 9's case (ctx: the options): the star under curvature motion,
+ * b split if split. */
+static int figure_run(const hj_ls_grid *g, int split, double *phi, FILE *fp, const char *label, void *ctx,
+                      hj_error *err)
+{
+    const p2_opts *o = ctx;
+    return run_curv(g, hj_ls_accuracy_order(o->acc), b0, split, tspan, 4, phi, fp, NULL, label, err);
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
     p2_parse_demo(&o, argc, argv, "--split-flow", &only, NULL, 0);
     hj_error err;
-    const double b0 = 0.02;
-    const double tspan[4] = {0, 0.25, 0.5, 1.0};
     const hj_ls_star star = {0.25, 2, 7};
 
     /* Figure 9. */
+    const p2_star_figure fig = {star, {0, 1}, {"curvature_star_a.dat", "curvature_star_b.dat"},
+                                {"star", "star, split"},
+                                "# curvatureStarDemo(%s, splitFlow = %d) on %ld^2 nodes: phi at t = 0, 0.25, 0.5, 1\n"};
+    p2_star_figures(&o, &fig, only, figure_run, &o);
     hj_ls_grid g;
-    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
-    double *phi = hj_ls_alloc(&g);
-    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    for (int split = 0; split < 2; split++) {
-        if (only >= 0 && split != only) continue;
-        hj_ls_fill(&g, phi, hj_ls_star_fn, (void *)&star);
-        hj_out out;
-        p2_fail_if(prog, p2_open(&out, o.out_dir, split ? "curvature_star_b.dat" : "curvature_star_a.dat", &err),
-                   &err);
-        fprintf(out.fp, "# curvatureStarDemo(%s, splitFlow = %d) on %ld^2 nodes: phi at t = 0, 0.25, 0.5, 1\n",
-                hj_ls_accuracy_name(o.acc), split, o.N);
-        p2_commit_run(prog, &out,
-                      run_curv(&g, hj_ls_accuracy_order(o.acc), b0, split, tspan, 4, phi, out.fp, NULL,
-                               split ? "star, split" : "star", &err),
-                      &err);
-    }
-    hj_ls_free(phi);
+    double *phi;
 
     /* The check: area loss 2 pi b t of the star and of a circle. */
     const long grids[3] = {51, 101, 201};
@@ -164,12 +162,9 @@ int main(int argc, char **argv)
         for (int s = 0; s < 3; s++) {
             const double exact = s < 2 ? loss_exact : NAN;
             fprintf(out.fp, "%s\t%ld\t%s", hj_ls_accuracy_name(o.acc), grids[n], shape[s]);
-            p2_cell(out.fp, loss[n][s]);
-            p2_cell(out.fp, exact);
-            p2_cell(out.fp, loss[n][s] / exact);
-            p2_cell(out.fp, s == 0 ? rc[n] : NAN);
-            p2_cell(out.fp, s == 0 ? r_exact : NAN);
-            fputc('\n', out.fp);
+            const double cells[5] = {loss[n][s], exact, loss[n][s] / exact, s == 0 ? rc[n] : NAN,
+                                     s == 0 ? r_exact : NAN};
+            p2_cells(out.fp, cells, 5);
         }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

@@ -339,8 +339,7 @@ int main(int argc, char **argv)
     for (int n = 0; n < ngrids; n++) {
         fprintf(out.fp, "%s\t%ld\t%ld\t%ld", acc, grids[n], (grids[n] + 1) / 2, (grids[n] - 1) / 2);
         const double cells[5] = {tp[n], n ? tp[n] - tp[n - 1] : NAN, rs[n], 0.2, fabs(rs[n] - 0.2)};
-        for (int q = 0; q < 5; q++) p2_cell(out.fp, cells[q]);
-        fputc('\n', out.fp);
+        p2_cells(out.fp, cells, 5);
     }
     /* Observed order from each three successive grids (dx_k = 2 / (N_k -
      * 1)): solve (t3 - t2) / (t2 - t1) = (h3^p - h2^p) / (h2^p - h1^p) for
@@ -366,9 +365,8 @@ int main(int argc, char **argv)
         }
         if (!(isfinite(p) && p > 0.15 && p < 5.9)) p = NAN;
         fprintf(out.fp, "%s\t%ld\t%ld\t%ld", acc, grids[n - 2], grids[n - 1], grids[n]);
-        p2_cell(out.fp, p);
-        p2_cell(out.fp, isnan(p) ? NAN : t3 + (t3 - t2) * pow(h3, p) / (pow(h2, p) - pow(h3, p)));
-        fputc('\n', out.fp);
+        const double cells[2] = {p, isnan(p) ? NAN : t3 + (t3 - t2) * pow(h3, p) / (pow(h2, p) - pow(h3, p))};
+        p2_cells(out.fp, cells, 2);
     }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

@@ -73,9 +73,6 @@ lax_friedrichs_run.tsv and lax_friedrichs_run.dat.
 #include "hj_sys.h"
 #include "p2_cli.h"
 #include "p2_convection.h"
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 static const char *const PROG = "lax_friedrichs_demo";
 static const char *const SHAPE[2] = {"circle", "cube"};
@@ -138,6 +135,12 @@ static double run(const lf_case *c, int flow, int acc, int diss, double *phi, co
     return secs;
 }
 
+static const char *const SUMMARY = "laxFriedrichsDemo of Mitchell's toolbox (section 2.2.2, Figure 6).";
+static const char *const EPILOG =
+    "With none of --flow, --shape, --accuracy, --dissipation: the figure's data and\n"
+    "lax_friedrichs.tsv; with any of them: one run, lax_friedrichs_run.tsv and lax_friedrichs_run.dat.\n"
+    "See the comment at the top of lax_friedrichs_demo.c.\n";
+
 int main(int argc, char **argv)
 {
     int flow = P2_LINEAR, shape = 1, acc = HJ_LS_ACC_LOW, diss = HJ_LS_GLF, quick = 0;
@@ -157,15 +160,8 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&dir),
         p2_opt_quick(&quick, "the default set for low and medium only"),
     };
-    enum { NRUN = 4 };
-    hj_cli_spec spec = {PROG, "laxFriedrichsDemo of Mitchell's toolbox (section 2.2.2, Figure 6).", opts,
-                        (int)(sizeof opts / sizeof opts[0]),
-                        "With none of --flow, --shape, --accuracy, --dissipation: the figure's data and\n"
-                        "lax_friedrichs.tsv; with any of them: one run, lax_friedrichs_run.tsv and lax_friedrichs_run.dat.\n"
-                        "See the comment at the top of lax_friedrichs_demo.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = p2_seen_any(opts, NRUN);
-    p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
+    const int single =
+        p2_parse_runs(PROG, SUMMARY, EPILOG, opts, (int)(sizeof opts / sizeof opts[0]), 4, argc, argv, &dir);
     char path[4096];
     hj_out tab, sum;
     lf_case c;
@@ -191,9 +187,7 @@ int main(int argc, char **argv)
     }
 
     setup(&c, 1);
-#ifdef _OPENMP
-    omp_set_num_threads(1); /* timings: one thread (the results do not depend on it) */
-#endif
+    p2_one_thread(); /* the timings are of one thread */
     const int nacc = quick ? 2 : HJ_LS_NACC;
     double *phi = hj_ls_alloc(&c.g), *glf[HJ_LS_NACC] = {0};
     if (!phi) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");

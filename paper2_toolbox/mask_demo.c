@@ -211,6 +211,12 @@ static void run(int acc, const char *seq_path, const char *min_path, result *res
     hj_ls_free(y), hj_ls_free(psi), hj_ls_free(min), hj_ls_free(y2), hj_ls_free(min2);
 }
 
+static const char *const SUMMARY = "maskDemo of Mitchell's toolbox (section 2.2.3, Figure 7).";
+static const char *const EPILOG =
+    "Without --accuracy: every accuracy, the figure's data (low), mask.tsv and mask_summary.tsv; with\n"
+    "it: one run, mask_run.tsv, mask_run_seq.dat and mask_run_min.dat.  See the comment at the top of\n"
+    "mask_demo.c.\n";
+
 int main(int argc, char **argv)
 {
     int acc = HJ_LS_ACC_LOW, quick = 0; /* --quick: the same set */
@@ -221,14 +227,8 @@ int main(int argc, char **argv)
         p2_opt_out_dir(&dir),
         p2_opt_quick(&quick, "the same set (it takes a second)"),
     };
-    hj_cli_spec spec = {PROG, "maskDemo of Mitchell's toolbox (section 2.2.3, Figure 7).", opts,
-                        (int)(sizeof opts / sizeof opts[0]),
-                        "Without --accuracy: every accuracy, the figure's data (low), mask.tsv and mask_summary.tsv; with\n"
-                        "it: one run, mask_run.tsv, mask_run_seq.dat and mask_run_min.dat.  See the comment at the top of\n"
-                        "mask_demo.c.\n"};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    const int single = opts[0].seen;
-    p2_fail_if(PROG, hj_mkdirs(dir, &err), &err);
+    const int single =
+        p2_parse_runs(PROG, SUMMARY, EPILOG, opts, (int)(sizeof opts / sizeof opts[0]), 1, argc, argv, &dir);
     char path[4096], seq[4096], mn[4096];
     hj_out tab, sum;
     snprintf(path, sizeof path, "%s/%s", dir, single ? "mask_run.tsv" : "mask.tsv");

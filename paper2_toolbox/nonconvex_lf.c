@@ -86,10 +86,7 @@ static const char *epilog =
 
 static double *run(const p2_os_run *r, hj_ls_grid *g, const char *path)
 {
-    hj_error err;
-    double *phi = p2_os_solve_to_file(&p2_os_nonconvex, r, g, path, &err);
-    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    return phi;
+    return p2_os_solve_or_exit(prog, &p2_os_nonconvex, r, g, path);
 }
 
 static double max_diff(const hj_ls_grid *g, const double *a, const double *b)
@@ -125,10 +122,7 @@ int main(int argc, char **argv)
     p2_os_parse_cli(prog, summary, epilog, argc, argv, 1, &cli);
     const char *out_dir = cli.out_dir;
     const int quick = cli.quick;
-#ifdef _OPENMP
-    /* small grids: one thread (see burgers_lf.c); the thread check below sets its own */
-    omp_set_num_threads(1);
-#endif
+    p2_one_thread(); /* small grids; the thread check below sets its own */
     char path[4096];
     hj_ls_grid g, g2;
     if (cli.single) {
@@ -146,13 +140,9 @@ int main(int argc, char **argv)
     const int fig_acc[3] = {HJ_LS_ACC_VERYHIGH, HJ_LS_ACC_HIGH, HJ_LS_ACC_HIGH};
     for (int q = 0; q < 3; q++) {
         p2_os_run f = {1, fig_n[q], fig_acc[q], HJ_LS_GLF, 0, tk, 1};
-        double *phi = run(&f, &g, NULL);
-        fprintf(out.fp, "%s# index %d: accuracy %s, global, %ld nodes, t = 1.5/pi^2\n", q ? "\n\n" : "", q,
-                hj_ls_accuracy_name(fig_acc[q]), fig_n[q]);
-        const char *names[1] = {"phi"};
-        const double *fl[1] = {phi};
-        p2_fail_if(prog, hj_ls_write_block(out.fp, &g, 1, names, fl, &err), &err);
-        hj_ls_free(phi);
+        p2_os_append_block(prog, &p2_os_nonconvex, &f, out.fp,
+                           "%s# index %d: accuracy %s, global, %ld nodes, t = 1.5/pi^2\n", q ? "\n\n" : "", q,
+                           hj_ls_accuracy_name(fig_acc[q]), fig_n[q]);
     }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     {

@@ -91,34 +91,27 @@ static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label
     return run_normal(g, ctx, speed[c], c == 2, tc, 3, phi, NULL, label, err);
 }
 
+/* Figure 10's case (ctx: the options): the star at speed a0 = 0.25 to
+ * tMax = 1, reversed at t = 0.5 if reverse, at 9 output times. */
+static int figure_run(const hj_ls_grid *g, int reverse, double *phi, FILE *fp, const char *label, void *ctx,
+                      hj_error *err)
+{
+    double tspan[9];
+    hj_ls_seq_times(0, 1, 9, tspan);
+    return run_normal(g, ctx, 0.25, reverse, tspan, 9, phi, fp, label, err);
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 101, ".", 0};
     int only = -1; /* -1: both cases */
     p2_parse_demo(&o, argc, argv, "--reverse-flow", &only, NULL, 0);
-    hj_error err;
-    const double a0 = 0.25;
-    double tspan[9];
-    hj_ls_seq_times(0, 1, 9, tspan);
 
     /* Figure 10: the star, constant and reversed speed. */
-    hj_ls_grid g;
-    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
-    double *phi = hj_ls_alloc(&g);
-    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    hj_ls_star star = {0.20, 2.5, 7};
-    for (int rev = 0; rev < 2; rev++) {
-        if (only >= 0 && rev != only) continue;
-        hj_ls_fill(&g, phi, hj_ls_star_fn, &star);
-        hj_out out;
-        p2_fail_if(prog, p2_open(&out, o.out_dir, rev ? "normal_star_b.dat" : "normal_star_a.dat", &err), &err);
-        fprintf(out.fp, "# normalStarDemo(%s, reverseFlow = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
-                hj_ls_accuracy_name(o.acc), rev, o.N);
-        p2_commit_run(prog, &out,
-                      run_normal(&g, &o, a0, rev, tspan, 9, phi, out.fp, rev ? "star, reversed" : "star", &err),
-                      &err);
-    }
-    hj_ls_free(phi);
+    const p2_star_figure fig = {{0.20, 2.5, 7}, {0, 1}, {"normal_star_a.dat", "normal_star_b.dat"},
+                                {"star", "star, reversed"},
+                                "# normalStarDemo(%s, reverseFlow = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n"};
+    p2_star_figures(&o, &fig, only, figure_run, &o);
 
     /* The check: a circle under the same term. */
     const char *case_name[3] = {"grow", "shrink", "reverse"};

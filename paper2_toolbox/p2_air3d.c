@@ -7,6 +7,7 @@
 #include "hj_ls_term.h"
 #include "hj_ls_accuracy.h"
 #include "hj_math.h"
+#include "p2_reach.h"
 
 
 void p2_air3d_defaults(p2_air3d_par *p)
@@ -106,12 +107,7 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &c);
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
-    hj_ls_restrict rs;
-    hj_ls_restrict_init(&rs, g, &lf.base, 0);
-    hj_ls_ode_opts o;
-    hj_ls_ode_defaults(&o);
-    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
-    int rc = hj_ls_ode(hj_ls_accuracy_order(acc), g, &rs.base, ts, nt, phi, &o, out, out_ctx, stats, err);
+    int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
     free(c.cs);
     return rc;
 }

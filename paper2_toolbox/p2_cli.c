@@ -3,6 +3,9 @@
 
 #include <stdio.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "hj_cli.h"
 #include "hj_ls_accuracy.h"
@@ -75,6 +78,24 @@ int p2_seen_any(const hj_cli_opt *opts, int n)
     return 0;
 }
 
+int p2_parse_runs(const char *prog, const char *summary, const char *epilog, hj_cli_opt *opts, int nopts, int nrun,
+                  int argc, char **argv, const char *const *out_dir)
+{
+    hj_cli_spec spec = {prog, summary, opts, nopts, epilog};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    const int single = p2_seen_any(opts, nrun);
+    hj_error err;
+    p2_fail_if(prog, hj_mkdirs(*out_dir, &err), &err);
+    return single;
+}
+
+void p2_one_thread(void)
+{
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+}
+
 void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *value, hj_cli_opt *extra, int nextra)
 {
     static const char *const binary[] = {"0", "1", NULL};
@@ -94,13 +115,10 @@ void p2_parse_demo(p2_opts *o, int argc, char **argv, const char *flag, int *val
     if (ncommon + nextra > MAXOPTS) hj_cli_fail(o->prog, HJ_EXIT_RUN, "too many options for p2_parse_demo");
     memcpy(all, opts, sizeof opts[0] * (size_t)ncommon);
     if (nextra) memcpy(all + ncommon, extra, sizeof extra[0] * (size_t)nextra);
-    hj_cli_spec spec = {o->prog, "A demo of Mitchell's Toolbox of Level Set Methods (2004), section 2.", all,
-                        ncommon + nextra, o->usage};
-    hj_cli_parse_or_exit(&spec, argc, argv);
+    p2_parse_runs(o->prog, "A demo of Mitchell's Toolbox of Level Set Methods (2004), section 2.", o->usage, all,
+                  ncommon + nextra, 0, argc, argv, &o->out_dir);
     if (flag && all[4].seen) *value = choice;
     for (int k = 0; k < nextra; k++) extra[k].seen = all[ncommon + k].seen;
-    hj_error err;
-    p2_fail_if(o->prog, hj_mkdirs(o->out_dir, &err), &err);
 }
 
 void p2_fail_if(const char *prog, int rc, const hj_error *err)

@@ -41,6 +41,21 @@ hj_cli_opt p2_opt_quick(int *quick, const char *help);
 /* 1 if any of opts[0 .. n - 1] was given (after hj_cli_parse). */
 int p2_seen_any(const hj_cli_opt *opts, int n);
 
+/* The command line of a program whose first nrun options are its run
+ * options (any of them given: one run instead of the default set), read
+ * against opts[0 .. nopts - 1]: --help prints summary, the options and
+ * epilog, and bad usage ends the program with one message.  Then the
+ * output directory *out_dir is created.  Returns 1 when a run option was
+ * given. */
+int p2_parse_runs(const char *prog, const char *summary, const char *epilog, hj_cli_opt *opts, int nopts, int nrun,
+                  int argc, char **argv, const char *const *out_dir);
+
+/* One OpenMP thread for the rest of the program: the grids of these
+ * programs are too small for a second thread to pay for its
+ * synchronisation on a shared machine (the results do not depend on the
+ * thread count). */
+void p2_one_thread(void);
+
 /* Options of the section 2.3-2.4 demos: --accuracy, --N, --out-dir,
  * --quick, --help. */
 typedef struct {

@@ -80,6 +80,12 @@ void p2_cell(FILE *fp, double v)
     else fprintf(fp, "\t%.17g", v);
 }
 
+void p2_cells(FILE *fp, const double *v, int n)
+{
+    for (int k = 0; k < n; k++) p2_cell(fp, v[k]);
+    fputc('\n', fp);
+}
+
 void p2_check_runs(FILE *fp, const char *accuracy, const p2_check *c)
 {
     fprintf(fp, "accuracy\tN\tdx\tcase%s%s\t%s\t%s_exact\terror\terror_dx\n", c->param_name ? "\t" : "",
@@ -112,6 +118,24 @@ void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, con
     fputs(runs_head, out.fp);
     p2_check_runs(out.fp, acc, c);
     p2_fail_if(o->prog, hj_out_commit(&out, &err), &err);
+}
+
+void p2_star_figures(const p2_opts *o, const p2_star_figure *f, int only, p2_figure_fn run, void *ctx)
+{
+    hj_error err;
+    hj_ls_grid g;
+    p2_fail_if(o->prog, p2_square_grid(&g, o->N, &err), &err);
+    double *phi = hj_ls_alloc(&g);
+    if (!phi) hj_cli_fail(o->prog, HJ_EXIT_RUN, "out of memory");
+    for (int k = 0; k < 2; k++) {
+        if (only >= 0 && f->value[k] != only) continue;
+        hj_ls_fill(&g, phi, hj_ls_star_fn, (void *)&f->star);
+        hj_out out;
+        p2_fail_if(o->prog, p2_open(&out, o->out_dir, f->file[k], &err), &err);
+        fprintf(out.fp, f->head, hj_ls_accuracy_name(o->acc), f->value[k], o->N);
+        p2_commit_run(o->prog, &out, run(&g, f->value[k], phi, out.fp, f->label[k], ctx, &err), &err);
+    }
+    hj_ls_free(phi);
 }
 
 void p2_circle_check(const p2_opts *o, const p2_circle *circ, p2_case_fn run, void *ctx, p2_check *c, const char *tsv,

@@ -16,6 +16,7 @@
 
 #include "hj_error.h"
 #include "hj_ls_grid.h"
+#include "hj_ls_shape.h"
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
 #include "p2_cli.h"
@@ -78,6 +79,8 @@ int p2_area_hook(int k, double t, const double *y, void *ctx, hj_error *err);
  * (notes/<demo>_notes.md) present them.  p2_cell writes one number: a tab,
  * then v as %.17g, or "-" when v is NaN. */
 void p2_cell(FILE *fp, double v);
+/* The numbers that end a row: p2_cell of v[0 .. n - 1], then the line end. */
+void p2_cells(FILE *fp, const double *v, int n);
 
 /* A check table: value[n * ncase + c] of case c on the grid of grids[n]
  * nodes per side against exact[c]; case_name in both tables; value_name
@@ -104,6 +107,22 @@ void p2_check_runs(FILE *fp, const char *accuracy, const p2_check *c);
  * then the runs table).  For main(): ends the program on a failure. */
 void p2_check_files(const p2_opts *o, const char *tsv, const char *tsv_head, const char *runs, const char *runs_head,
                     const p2_check *c);
+
+/* The figures of curvatureStarDemo, normalStarDemo and spinStarDemo, for
+ * main(): on the square grid of o->N nodes per side, for each case k of
+ * the two (all but the one with value[k] == only skipped when only >= 0),
+ * the star evolved by run(g, value[k], phi, fp, label[k], ctx, err) with
+ * its output times written to o->out_dir/file[k] after the line head, a
+ * printf format of the accuracy's name, value[k] and o->N. */
+typedef int (*p2_figure_fn)(const hj_ls_grid *g, int value, double *phi, FILE *fp, const char *label, void *ctx,
+                            hj_error *err);
+typedef struct {
+    hj_ls_star star;
+    int value[2];                   /* the demo's switch per case, e.g. reverseFlow */
+    const char *file[2], *label[2]; /* the data file and the progress label per case */
+    const char *head;
+} p2_star_figure;
+void p2_star_figures(const p2_opts *o, const p2_star_figure *f, int only, p2_figure_fn run, void *ctx);
 
 /* The circle checks of normalStarDemo and spinStarDemo, for main(): on
  * the square grids (p2_square_grid) of 51, 101, 201 nodes per side (with

@@ -2,11 +2,14 @@
 #include "p2_oshershu.h"
 
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "hj_cli.h"
 #include "hj_io.h"
+#include "hj_ls_io.h"
 
 #include "hj_ls_term.h"
 #include "hj_ls_accuracy.h"
@@ -210,6 +213,30 @@ double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_g
     return phi;
 }
 
+double *p2_os_solve_or_exit(const char *prog, const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g,
+                            const char *path)
+{
+    hj_error err;
+    double *phi = p2_os_solve_to_file(pb, r, g, path, &err);
+    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    return phi;
+}
+
+void p2_os_append_block(const char *prog, const p2_os_problem *pb, const p2_os_run *r, FILE *fp, const char *fmt, ...)
+{
+    hj_ls_grid g = {0}; /* set by the run */
+    double *phi = p2_os_solve_or_exit(prog, pb, r, &g, NULL);
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(fp, fmt, ap);
+    va_end(ap);
+    const char *names[1] = {"phi"};
+    const double *fields[1] = {phi};
+    hj_error err;
+    p2_fail_if(prog, hj_ls_write_block(fp, &g, 1, names, fields, &err), &err);
+    hj_ls_free(phi);
+}
+
 void p2_os_parse_cli(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
                      int allow_partial, p2_os_cli *c)
 {
@@ -237,11 +264,8 @@ void p2_os_parse_cli(const char *prog, const char *summary, const char *epilog, 
     int n = 0;
     for (int k = 0; k < (int)NOPT; k++)
         if (k != PARTIAL || allow_partial) all[n++] = opts[k];
-    hj_cli_spec spec = {prog, summary, all, n, epilog};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    c->single = p2_seen_any(all, allow_partial ? PARTIAL + 1 : PARTIAL);
+    c->single = p2_parse_runs(prog, summary, epilog, all, n, allow_partial ? PARTIAL + 1 : PARTIAL, argc, argv,
+                              &c->out_dir);
     c->run.dim = (int)dim;
     if (!c->run.N) c->run.N = 80 >> (c->run.dim - 1);
-    hj_error err;
-    p2_fail_if(prog, hj_mkdirs(c->out_dir, &err), &err);
 }

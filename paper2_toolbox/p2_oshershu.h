@@ -15,6 +15,8 @@
 #ifndef P2_OSHERSHU_H
 #define P2_OSHERSHU_H
 
+#include <stdio.h>
+
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_ode.h"
@@ -76,6 +78,20 @@ void p2_os_errors(const hj_ls_grid *g, const double *phi, const double *exact, d
  * (atomically; path may be NULL); returns the final state or NULL. */
 double *p2_os_solve_to_file(const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g, const char *path,
                             hj_error *err);
+
+/* For main(): p2_os_solve_to_file, ending the program with the message
+ * (prog: ...) on a failure. */
+double *p2_os_solve_or_exit(const char *prog, const p2_os_problem *pb, const p2_os_run *r, hj_ls_grid *g,
+                            const char *path);
+
+/* For main(): run r, then append its final state to fp as one gnuplot
+ * index block (field "phi") after the comment printed by fmt (the
+ * figures' 1-D panels); ends the program on a failure. */
+void p2_os_append_block(const char *prog, const p2_os_problem *pb, const p2_os_run *r, FILE *fp, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
 
 /* The command line of burgersLF and nonconvexLF through hj_cli's option
  * table: --accuracy, --diss, --dim (1-3), --N (4-100000), --tmax, and with

@@ -3,6 +3,7 @@
 
 #include <string.h>
 
+#include "hj_ls_accuracy.h"
 #include "hj_ls_measure.h"
 
 int p2_reach_log_init(p2_reach_log *log, const hj_ls_grid *g, int periodic_dim, double t0, const double *y0,
@@ -42,4 +43,15 @@ void p2_reach_log_free(p2_reach_log *log)
 {
     hj_ls_free(log->prev);
     log->prev = NULL;
+}
+
+int p2_reach_solve(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *ts, int nt, double *phi,
+                   hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
+{
+    hj_ls_restrict rs;
+    hj_ls_restrict_init(&rs, g, term, 0);
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = HJ_LS_FACTOR_CFL_REACH;
+    return hj_ls_ode(order, g, &rs.base, ts, nt, phi, &o, out, out_ctx, stats, err);
 }

@@ -11,6 +11,7 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 #include "hj_ls_ode.h"
+#include "hj_ls_term.h"
 
 /* Pass p2_reach_output as hj_ls_ode's output callback with the log as
  * context; it calls user(k, t, y, user_ctx, err) too when set (to write
@@ -30,5 +31,12 @@ int p2_reach_log_init(p2_reach_log *log, const hj_ls_grid *g, int periodic_dim, 
                       hj_ls_output_fn user, void *user_ctx, hj_error *err);
 int p2_reach_output(int k, double t, const double *y, void *ctx, hj_error *err);
 void p2_reach_log_free(p2_reach_log *log);
+
+/* Integrate phi (the target on entry) from ts[0] through ts[1 .. nt - 1]
+ * with the TVD RK scheme of the given order by term inside
+ * termRestrictUpdate (the set only grows), at the CFL factor of air3D.m
+ * and acoustic.m (HJ_LS_FACTOR_CFL_REACH); arguments as hj_ls_ode. */
+int p2_reach_solve(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *ts, int nt, double *phi,
+                   hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
 
 #endif

@@ -130,14 +130,31 @@ void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, 
          .help = "accepted: the default set is already quick"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &o->dir, .metavar = "DIR", .help = "output directory"},
     };
-    hj_cli_spec spec = {prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), epilog};
-    hj_cli_parse_or_exit(&spec, argc, argv);
-    o->single = opts[0].seen || opts[1].seen;
+    o->single =
+        p2_parse_runs(prog, summary, epilog, opts, (int)(sizeof opts / sizeof opts[0]), 2, argc, argv, &o->dir);
     hj_error err;
-    p2_fail_if(prog, hj_mkdirs(o->dir, &err), &err);
     char name[256];
     snprintf(name, sizeof name, "%s%s.tsv", base, o->single ? "_run" : "");
     p2_fail_if(prog, p2_open(tab, o->dir, name, &err), &err);
     fputs(comment, tab->fp);
     p2_reinit_header(tab->fp);
+}
+
+void p2_reinit_begin_runs(const char *prog, const p2_reinit_opts *o, const char *base, const char *comment,
+                          const char *extra, hj_out *runs)
+{
+    char name[256];
+    snprintf(name, sizeof name, "%s_runs.tsv", base);
+    hj_error err;
+    p2_fail_if(prog, p2_open(runs, o->dir, name, &err), &err);
+    fputs(comment, runs->fp);
+    p2_reinit_run_header(runs->fp);
+    fprintf(runs->fp, "%s\n", extra);
+}
+
+void p2_reinit_end(const char *prog, const p2_reinit_opts *o, hj_out *tab, hj_out *runs)
+{
+    hj_error err;
+    p2_fail_if(prog, hj_out_commit(tab, &err), &err);
+    if (!o->single) p2_fail_if(prog, hj_out_commit(runs, &err), &err);
 }

@@ -75,4 +75,14 @@ typedef struct {
 void p2_reinit_begin(const char *prog, const char *summary, const char *epilog, int argc, char **argv,
                      const char *base, const char *comment, p2_reinit_opts *o, hj_out *tab);
 
+/* For main(), for the default set (not o->single): the table of every
+ * run, o->dir/<base>_runs.tsv, opened in *runs with the comment line(s),
+ * the run columns, the further columns extra ("" for none) and the line
+ * end. */
+void p2_reinit_begin_runs(const char *prog, const p2_reinit_opts *o, const char *base, const char *comment,
+                          const char *extra, hj_out *runs);
+
+/* For main(): commit the table and, for the default set, the runs table. */
+void p2_reinit_end(const char *prog, const p2_reinit_opts *o, hj_out *tab, hj_out *runs);
+
 #endif

@@ -109,13 +109,10 @@ int main(int argc, char **argv)
     const char *dir = opt.dir;
     hj_error err;
     char path[4096];
-    if (!single) { /* every run to full precision, for the notes */
-        p2_fail_if(PROG, p2_open(&runs, dir, "reinit_runs.tsv", &err), &err);
-        fprintf(runs.fp, "# reinitDemo: every run, near the front (nodes within 5 dx of the exact initial curve) "
-                         "before and after reinitialization to t = 1\n");
-        p2_reinit_run_header(runs.fp);
-        fputc('\n', runs.fp);
-    }
+    if (!single) /* every run to full precision, for the notes */
+        p2_reinit_begin_runs(PROG, &opt, "reinit",
+                             "# reinitDemo: every run, near the front (nodes within 5 dx of the exact initial curve) "
+                             "before and after reinitialization to t = 1\n", "", &runs);
     for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
         p2_reinit_case c;
@@ -144,7 +141,6 @@ int main(int argc, char **argv)
         hj_ls_free(phi), hj_ls_free(g0), hj_ls_free(g1);
         p2_reinit_free(&c);
     }
-    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
-    if (!single) p2_fail_if(PROG, hj_out_commit(&runs, &err), &err);
+    p2_reinit_end(PROG, &opt, &tab, &runs);
     return 0;
 }

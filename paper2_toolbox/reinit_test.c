@@ -68,14 +68,12 @@ int main(int argc, char **argv)
     const int shape = opt.shape, acc = opt.acc, single = opt.single;
     const char *dir = opt.dir;
     hj_error err;
-    if (!single) { /* every run to full precision, for the notes */
-        p2_fail_if(PROG, p2_open(&runs, dir, "reinit_test_runs.tsv", &err), &err);
-        fprintf(runs.fp, "# reinitTest (signedDistanceIterative, default t_max and errorMax): every run, near the "
-                         "front (nodes within 5 dx of the exact initial curve) before and after; "
-                         "stopped_by_error_max: whether the update criterion stopped the iteration\n");
-        p2_reinit_run_header(runs.fp);
-        fputs("\tstopped_by_error_max\n", runs.fp);
-    }
+    if (!single) /* every run to full precision, for the notes */
+        p2_reinit_begin_runs(PROG, &opt, "reinit_test",
+                             "# reinitTest (signedDistanceIterative, default t_max and errorMax): every run, near the "
+                             "front (nodes within 5 dx of the exact initial curve) before and after; "
+                             "stopped_by_error_max: whether the update criterion stopped the iteration\n",
+                             "\tstopped_by_error_max", &runs);
     for (int s = 0; s < P2_NSHAPE; s++) {
         if (single && s != shape) continue;
         p2_reinit_case c;
@@ -108,7 +106,6 @@ int main(int argc, char **argv)
         p2_reinit_free(&c);
     }
     hj_progress("\n");
-    p2_fail_if(PROG, hj_out_commit(&tab, &err), &err);
-    if (!single) p2_fail_if(PROG, hj_out_commit(&runs, &err), &err);
+    p2_reinit_end(PROG, &opt, &tab, &runs);
     return 0;
 }

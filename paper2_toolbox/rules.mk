@@ -11,6 +11,7 @@ $(BUILD)/obj/$(P2)/%.o: CFLAGS += -fopenmp -O3
 P2_OUT := $(RESULTS)/paper2
 P2_BIN := $(BUILD)/bin/$(P2)
 P2_PROGS := fig21_shapes fig22_derivatives bench_table2 bench_convection
+$(P2_BIN)/bench_table2: $(BUILD)/obj/$(P2)/p2_cli.o
 
 # Figure 22: errors and fitted orders, then the four-panel figure.
 $(P2_OUT)/fig22.tsv $(P2_OUT)/fig22.dat $(P2_OUT)/fig22_orders.tsv &: $(P2_BIN)/fig22_derivatives

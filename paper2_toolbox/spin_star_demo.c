@@ -114,34 +114,28 @@ static int circle_run(const hj_ls_grid *g, int c, double *phi, const char *label
     return run_spin(g, ctx, CIRCLE_SPEED[c], 1, tc, 2, phi, NULL, label, err);
 }
 
+/* Figure 11's case (ctx: the options): the star under rigid rotation (or
+ * rotation times |x|^2) plus normal speed 0.20 to t = 1, 9 output times. */
+static int figure_run(const hj_ls_grid *g, int rigid, double *phi, FILE *fp, const char *label, void *ctx,
+                      hj_error *err)
+{
+    double tspan[9];
+    hj_ls_seq_times(0, 1, 9, tspan);
+    return run_spin(g, ctx, 0.20, rigid, tspan, 9, phi, fp, label, err);
+}
+
 int main(int argc, char **argv)
 {
     p2_opts o = {prog, usage, HJ_LS_ACC_MEDIUM, 0, ".", 0};
     int only = -1; /* -1: both cases */
     p2_parse_demo(&o, argc, argv, "--rigid", &only, NULL, 0);
     if (!o.N) o.N = o.quick ? 101 : 201; /* the figure grid: 201^2 as in the text, 101^2 in quick mode */
-    hj_error err;
-    double tspan[9];
-    hj_ls_seq_times(0, 1, 9, tspan);
 
     /* Figure 11: (a) rigid, (b) rotation times |x|^2. */
-    hj_ls_grid g;
-    p2_fail_if(prog, p2_square_grid(&g, o.N, &err), &err);
-    double *phi = hj_ls_alloc(&g);
-    if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
-    hj_ls_star star = {0.20, 2.5, 7};
-    for (int rigid = 1; rigid >= 0; rigid--) {
-        if (only >= 0 && rigid != only) continue;
-        hj_ls_fill(&g, phi, hj_ls_star_fn, &star);
-        hj_out out;
-        p2_fail_if(prog, p2_open(&out, o.out_dir, rigid ? "spin_star_a.dat" : "spin_star_b.dat", &err), &err);
-        fprintf(out.fp, "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n",
-                hj_ls_accuracy_name(o.acc), rigid, o.N);
-        p2_commit_run(prog, &out,
-                      run_spin(&g, &o, 0.20, rigid, tspan, 9, phi, out.fp, rigid ? "star, rigid" : "star, |x|^2", &err),
-                      &err);
-    }
-    hj_ls_free(phi);
+    const p2_star_figure fig = {{0.20, 2.5, 7}, {1, 0}, {"spin_star_a.dat", "spin_star_b.dat"},
+                                {"star, rigid", "star, |x|^2"},
+                                "# spinStarDemo(%s, rigid = %d) on %ld^2 nodes: phi at t = k/8, k = 0..8\n"};
+    p2_star_figures(&o, &fig, only, figure_run, &o);
 
     /* The check: an off-centre circle, rigid rotation plus normal motion. */
     const char *case_name[2] = {"grow", "shrink"};

@@ -206,8 +206,7 @@ int main(int argc, char **argv)
     for (int k = 0; k < nb; k++) {
         fprintf(out.fp, "%s\tfigure\t%ld", hj_ls_accuracy_name(o.acc), o.N);
         const double cells[8] = {bs[k], hfig[k][0], NAN, NAN, NAN, hfig[k][1], NAN, NAN};
-        for (int q = 0; q < 8; q++) p2_cell(out.fp, cells[q]);
-        fputc('\n', out.fp);
+        p2_cells(out.fp, cells, 8);
     }
     p2_fail_if(prog, hj_out_commit(&out, &err), &err);
     return 0;

@@ -7,7 +7,7 @@ REPORT_INPUTS += $(P2)/notes/air3d_notes.md
 # Benchmark (make bench, never the tests): air3D at low and medium, 1 and 2 threads;
 # notes/air3d_bench.md presents its air3d_bench.tsv.
 P2_PROGS += bench_air3d
-$(P2_BIN)/bench_air3d: $(BUILD)/obj/$(P2)/p2_air3d.o
+$(P2_BIN)/bench_air3d: $(BUILD)/obj/$(P2)/p2_air3d.o $(BUILD)/obj/$(P2)/p2_reach.o
 REPORT_INPUTS += $(P2)/bench_air3d.c $(P2)/notes/air3d_bench.md
 BENCHES += bench-air3d
 .PHONY: bench-air3d

@@ -2,7 +2,7 @@
 # laxFriedrichsDemo, maskDemo and bench_convection too.  notes/convection_notes.md
 # presents convection_summary.tsv.
 $(eval $(call p2_demo,convection_demo,convection cli,convection.tsv convection_summary.tsv convection_2d_linear_medium.dat convection_2d_linearRev_low.dat convection_1d_constantRev_veryHigh.dat,convection.tsv,OMP_WAIT_POLICY=passive))
-$(P2_BIN)/bench_convection: $(BUILD)/obj/$(P2)/p2_convection.o
+$(P2_BIN)/bench_convection: $(BUILD)/obj/$(P2)/p2_convection.o $(BUILD)/obj/$(P2)/p2_cli.o
 $(eval $(call p2_figure,fig01,convection_2d_linear_medium.dat))
 $(eval $(call p2_figure,fig02,convection_2d_linearRev_low.dat))
 # fig03 needs the 3-D run's convection_3d_linear_medium.dat, written with convection.tsv (full run only)
