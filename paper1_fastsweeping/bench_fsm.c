@@ -16,7 +16,6 @@ time is kept), `--out-dir` for bench.tsv.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <time.h>
 
 #include "hj_cli.h"
@@ -61,22 +60,18 @@ int main(int argc, char **argv)
     long N = 640, repeat = 3;
     const char *out_dir = ".";
     hj_error err;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help")) {
-            printf("usage: %s [--N N] [--repeat R] [--out-dir DIR]\nSee the comment at the top of bench_fsm.c.\n", prog);
-            return 0;
-        }
-        if (strcmp(a, "--N") && strcmp(a, "--repeat") && strcmp(a, "--out-dir"))
-            hj_cli_fail(prog, HJ_EXIT_USAGE, "unknown option '%s' (see --help)", a);
-        if (!v) hj_cli_fail(prog, HJ_EXIT_USAGE, "option %s needs a value", a);
-        i++;
-        int rc = HJ_OK;
-        if (!strcmp(a, "--N")) rc = hj_parse_long(v, "--N", 8, 10000, &N, &err);
-        else if (!strcmp(a, "--repeat")) rc = hj_parse_long(v, "--repeat", 1, 100, &repeat, &err);
-        else out_dir = v;
-        if (rc) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
-    }
+    hj_cli_opt opts[] = {
+        {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 8, .max = 10000, .metavar = "N", .help = "grid nodes per side"},
+        {.name = "--repeat", .type = HJ_OPT_LONG, .value = &repeat, .min = 1, .max = 100, .metavar = "R",
+         .help = "solves per timing (the minimum is kept)"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR", .help = "where to write bench.tsv"},
+    };
+    hj_cli_spec spec = {prog, "Cost of the fast sweeping solver: full third order solve against its first order guess.",
+                        opts, (int)(sizeof opts / sizeof opts[0]), "See the comment at the top of bench_fsm.c.\n"};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/bench.tsv", out_dir);
+    if (hj_mkdirs(out_dir, &err) || hj_out_check(path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     hj_grid2 g = {(int)N, (int)N, -1, -1, 2.0 / N};
     double *phi = malloc(sizeof(double) * (size_t)(N + 1) * (size_t)(N + 1));
     if (!phi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for N=%ld", N);
@@ -92,10 +87,8 @@ int main(int argc, char **argv)
     const double weno_visit = (t_full - t_fo) / (full.iterations * 4.0 * nodes);
     const double base_per_node = t_fo / nodes;
 
-    char path[4096];
-    snprintf(path, sizeof path, "%s/bench.tsv", out_dir);
     hj_out out;
-    if (hj_mkdirs(out_dir, &err) || hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    if (hj_out_open(&out, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(out.fp, "# bench_fsm: Example 1, N = %ld, minimum of %ld runs; baseline = the solve stopped after the first order guess\n", N, repeat);
     fprintf(out.fp, "quantity\tratio\tseconds_or_ns\n");
     fprintf(out.fp, "baseline_solve\t1.00\t%.4f s\n", t_fo);
