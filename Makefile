@@ -12,7 +12,8 @@
 #                    built against an installed copy through pkg-config,
 #                    `make check QUICK=1`, then `make reliability` (bad
 #                    command lines, output safety, signals, short fuzzing:
-#                    tests/rules.mk)
+#                    tests/rules.mk) and its program tests again against
+#                    the sanitizer build
 #   make fuzz        each fuzz target for FUZZ_SECONDS (300)
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
@@ -58,7 +59,7 @@ endif
 
 # Dependency groups this invocation needs (scripts/ensure-deps GROUP).
 DEPS_GROUPS := lib
-ifneq ($(filter test unit memcheck examples fuzz fuzz-quick reliability,$(MAKECMDGOALS)),)
+ifneq ($(filter test unit memcheck examples fuzz fuzz-quick reliability reliability-programs,$(MAKECMDGOALS)),)
 DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
@@ -172,6 +173,7 @@ test:
 	$(MAKE) --no-print-directory examples
 	$(MAKE) --no-print-directory QUICK=1 check
 	$(MAKE) --no-print-directory reliability
+	$(MAKE) --no-print-directory SAN=1 reliability-programs
 
 # The examples as a user builds them: libhj installed into a temporary
 # prefix, every flag from `pkg-config --cflags --libs hj`, run against the

@@ -25,16 +25,18 @@ $(eval $(call fuzz_target,table,common/hj_io.c common/hj_compare.c common/hj_err
 $(eval $(call fuzz_target,mintime,common/hj_mintime.c common/hj_error.c))
 $(eval $(call fuzz_target,cli,common/hj_cli.c common/hj_io.c common/hj_ls_accuracy.c common/hj_error.c))
 
-.PHONY: fuzz fuzz-quick reliability
+.PHONY: fuzz fuzz-quick reliability reliability-programs
 fuzz: $(FUZZ_BINS)
 	tests/fuzz/run.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 fuzz-quick: $(FUZZ_BINS)
 	tests/fuzz/run.sh $(FUZZ_QUICK_SECONDS) $(FUZZ_TARGETS)
 
-# Against the sanitizer build: make SAN=1 reliability (its programs in
-# build/san/bin; the fuzz targets carry their own sanitizers).
-reliability: all $(FUZZ_BINS)
+# The program-level tests; against the sanitizer build with SAN=1 (its
+# programs in build/san/bin), as make test also runs them.  The fuzz
+# targets carry their own sanitizers.
+reliability-programs: all
 	tests/cli-matrix.sh $(BUILD)/bin
 	tests/output-safety.sh $(BUILD)/bin
 	tests/interrupt.sh $(BUILD)/bin
+reliability: reliability-programs $(FUZZ_BINS)
 	tests/fuzz/run.sh $(FUZZ_QUICK_SECONDS) $(FUZZ_TARGETS)
