@@ -486,7 +486,8 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             a = fabs(a);
             diss += a * 0.5 * (r - l);
             s += a / g->dx[d];
-            rc->dmax[d] = a / g->dx[d] > rc->dmax[d] ? a / g->dx[d] : rc->dmax[d];
+            if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) /* per-dimension maxima only where used */
+                rc->dmax[d] = a / g->dx[d] > rc->dmax[d] ? a / g->dx[d] : rc->dmax[d];
         }
         ydot[k] = -(H - diss);
         m = s > m ? s : m;
