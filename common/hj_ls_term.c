@@ -446,6 +446,46 @@ static int lf_range_row(const void *term, double t, double *y, double *ydot, row
     return HJ_OK;
 }
 
+/* Per-node adapters: the batched calls made of per-node callbacks (what
+ * the row pipeline runs when the user gave ham or partial only). */
+static void lf_ham_nodes(const hj_ls_lax_friedrichs *c, double t, const hj_ls_row_info *row, const double *phi,
+                         const double *const *P, double *H)
+{
+    const int dim = c->grid->dim;
+    double x[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM];
+    memcpy(x, row->x, sizeof(double) * (size_t)dim);
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        for (int d = 0; d < dim; d++) p[d] = P[d][j];
+        H[j] = c->ham(t, x, phi[j], p, c->ctx);
+    }
+}
+
+static void lf_partial_nodes(const hj_ls_lax_friedrichs *c, double t, const hj_ls_row_info *row,
+                             const double *const *lo, const double *const *hi, int d, double *alpha)
+{
+    const int dim = c->grid->dim;
+    double x[HJ_LS_MAXDIM], pl[HJ_LS_MAXDIM], ph[HJ_LS_MAXDIM];
+    memcpy(x, row->x, sizeof(double) * (size_t)dim);
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        for (int e = 0; e < dim; e++) pl[e] = lo[e][j], ph[e] = hi[e][j];
+        alpha[j] = c->partial(t, x, pl, ph, d, c->ctx);
+    }
+}
+
+/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or bad. */
+static long first_nonfinite(const double *v, long bad)
+{
+    for (long j = 0; j < bad; j++)
+        if (!(v[j] - v[j] == 0)) return j;
+    return bad;
+}
+
+/* One row of G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2):
+ * derivatives, then the Hamiltonian and the partials over the whole row
+ * (one call each), then the dissipation and the CFL bound in vector loops.
+ * The arithmetic per node is the per-node form's, in the same order. */
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
@@ -453,44 +493,59 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     const int dim = g->dim;
-    double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
-    for (int d = 0; d < dim; d++)
-        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl + d * n, dr + d * n, w);
-    double m = 0, x[HJ_LS_MAXDIM];
-    memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    const size_t dn = (size_t)dim * (size_t)n;
+    double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
+    double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
+    double *H = GH + dn, *A = H + n, *DS = A + n, *S = DS + n;
+    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) {
+        double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
+        double *pd = P + (size_t)d * (size_t)n, *ll = LL + (size_t)d * (size_t)n, *lh = LH + (size_t)d * (size_t)n;
+        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
+        for (long j = 0; j < n; j++) {
+            pd[j] = 0.5 * (l[j] + r[j]);
+            ll[j] = l[j] < r[j] ? l[j] : r[j];
+            lh[j] = l[j] < r[j] ? r[j] : l[j];
+        }
+        pp[d] = pd;
+        if (c->dissipation == HJ_LS_LLLF) lo[d] = ll, hi[d] = lh;
+        else {
+            double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
+            const double a = ps->gmin[d], b = ps->gmax[d];
+            for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
+            lo[d] = gl, hi[d] = gh;
+        }
+    }
+    const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
+    const double *phi = y + rc->k;
+    if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
+    else lf_ham_nodes(c, t, &row, phi, pp, H);
+    long badj = first_nonfinite(H, n);
+    for (long j = 0; j < n; j++) DS[j] = 0, S[j] = 0;
+    for (int d = 0; d < dim; d++) {
+        const double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
+        const double *sl = lo[d], *sh = hi[d];
+        if (c->dissipation == HJ_LS_LLF) /* local range in d only */
+            lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
+        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, A, c->ctx);
+        else lf_partial_nodes(c, t, &row, lo, hi, d, A);
+        lo[d] = sl, hi[d] = sh;
+        badj = first_nonfinite(A, badj);
+        const double dx = g->dx[d];
+        double dm = rc->dmax[d];
+        for (long j = 0; j < n; j++) {
+            const double a = fabs(A[j]);
+            DS[j] += a * 0.5 * (r[j] - l[j]);
+            S[j] += a / dx;
+            dm = a / dx > dm ? a / dx : dm;
+        }
+        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) rc->dmax[d] = dm; /* per-dimension maxima only where used */
+    }
+    if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
+    double m = 0, *out = ydot + rc->k;
     for (long j = 0; j < n; j++) {
-        const size_t k = rc->k + (size_t)j;
-        x[0] = g->min[0] + (double)j * g->dx[0];
-        double p[HJ_LS_MAXDIM], lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
-        for (int d = 0; d < dim; d++) {
-            const double l = dl[d * n + j], r = dr[d * n + j];
-            p[d] = 0.5 * (l + r);
-            lo[d] = c->dissipation == HJ_LS_LLLF ? (l < r ? l : r) : ps->gmin[d];
-            hi[d] = c->dissipation == HJ_LS_LLLF ? (l < r ? r : l) : ps->gmax[d];
-        }
-        const double H = c->ham(t, x, y[k], p, c->ctx);
-        if (!isfinite(H)) { *bad = j; return HJ_ENONFINITE; }
-        double diss = 0, s = 0;
-        for (int d = 0; d < dim; d++) {
-            const double l = dl[d * n + j], r = dr[d * n + j];
-            double a;
-            if (c->dissipation == HJ_LS_LLF) {
-                /* local range in d only */
-                const double sl = lo[d], sh = hi[d];
-                lo[d] = l < r ? l : r, hi[d] = l < r ? r : l;
-                a = c->partial(t, x, lo, hi, d, c->ctx);
-                lo[d] = sl, hi[d] = sh;
-            } else
-                a = c->partial(t, x, lo, hi, d, c->ctx);
-            if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
-            a = fabs(a);
-            diss += a * 0.5 * (r - l);
-            s += a / g->dx[d];
-            if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) /* per-dimension maxima only where used */
-                rc->dmax[d] = a / g->dx[d] > rc->dmax[d] ? a / g->dx[d] : rc->dmax[d];
-        }
-        ydot[k] = -(H - diss);
-        m = s > m ? s : m;
+        out[j] = -(H[j] - DS[j]);
+        m = S[j] > m ? S[j] : m;
     }
     *inv = m;
     return HJ_OK;
@@ -501,7 +556,8 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     const hj_ls_lax_friedrichs *c = (const hj_ls_lax_friedrichs *)term;
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown scheme");
-    if (!c->ham || !c->partial) return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks");
+    if ((!c->ham && !c->ham_row) || (!c->partial && !c->partial_row))
+        return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks (per node or per row)");
     if (c->dissipation < HJ_LS_GLF || c->dissipation > HJ_LS_LLLF)
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown dissipation %d", c->dissipation);
     hj_ls_fill_ghosts(g, y);
@@ -547,7 +603,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
         if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the Lax-Friedrichs workspace");
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
+    int rc = for_rows(g, (size_t)(7 * g->dim + HJ_LS_ROW_WORK + 4) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
                       "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);

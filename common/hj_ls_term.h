@@ -141,7 +141,10 @@ void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const d
  *   LLF   local range in dimension d, global in the others,
  *   LLLF  local range in every dimension.
  * CFL bound 1 / max_x sum_d alpha_d / dx_d.  A NaN from either callback is
- * an HJ_ENONFINITE error naming the node. */
+ * an HJ_ENONFINITE error naming the node.  The callbacks come per node
+ * (ham, partial: simplest to write) or per row (ham_row, partial_row below:
+ * no call per node, vectorisable); either of each pair is enough, and both
+ * forms give the same bits when they compute the same expression. */
 enum { HJ_LS_GLF, HJ_LS_LLF, HJ_LS_LLLF };
 /* The toolbox's names of the dissipations (artificialDissipationGLF, LLF,
  * LLLF as its examples' arguments): "global", "local", "locallocal"; "?"
@@ -152,6 +155,28 @@ int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err);
 typedef double (*hj_ls_ham_fn)(double t, const double *x, double phi, const double *p, void *ctx);
 typedef double (*hj_ls_partial_fn)(double t, const double *x, const double *pmin, const double *pmax, int d,
                                    void *ctx);
+/* A row of n nodes along dimension 0 as batched callbacks see it: node j
+ * has the coordinates (x[0] + j dx0, x[1], ..., x[dim-1]) (x[0] is the
+ * grid's min[0], so x[0] + j dx0 has the bits of hj_ls_coord's) and the
+ * grid index (j, idx[1], ..., idx[dim-1]); k is its offset in arrays on
+ * the grid, so tables of time-independent coefficients can be read by
+ * index instead of recomputed from coordinates. */
+typedef struct {
+    long n;
+    double dx0;
+    const double *x;
+    const long *idx;
+    size_t k;
+} hj_ls_row_info;
+/* Batched forms of ham and partial, one call per row (and dimension d)
+ * so that the compiler can vectorise the user's loop: H[j] = ham(t, x_j,
+ * phi[j], (p[0][j], ..., p[dim-1][j])) and alpha[j] = partial(t, x_j,
+ * (pmin[e][j])_e, (pmax[e][j])_e, d).  A non-finite value is reported as
+ * the per-node callbacks' are. */
+typedef void (*hj_ls_ham_row_fn)(double t, const hj_ls_row_info *row, const double *phi, const double *const *p,
+                                 double *H, void *ctx);
+typedef void (*hj_ls_partial_row_fn)(double t, const hj_ls_row_info *row, const double *const *pmin,
+                                     const double *const *pmax, int d, double *alpha, void *ctx);
 typedef struct {
     hj_ls_term base;
     const hj_ls_grid *grid;
@@ -159,6 +184,8 @@ typedef struct {
     int dissipation; /* HJ_LS_GLF, HJ_LS_LLF or HJ_LS_LLLF */
     hj_ls_ham_fn ham;
     hj_ls_partial_fn partial;
+    hj_ls_ham_row_fn ham_row;         /* if set, used instead of ham */
+    hj_ls_partial_row_fn partial_row; /* if set, used instead of partial */
     void *ctx;
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */

@@ -44,55 +44,54 @@ int p2_air3d_target(const hj_ls_grid *g, const p2_air3d_par *p, double *phi, hj_
     return HJ_OK;
 }
 
-/* The callbacks look up cos psi, sin psi and y by node index, from
- * tables built mirror-symmetric (cos(-psi) = cos psi, sin(-psi) = -sin psi,
+/* The callbacks read cos psi, sin psi and y by node index (time
+ * independent: computed once, in p2_air3d_solve), from tables built
+ * mirror-symmetric (cos(-psi) = cos psi, sin(-psi) = -sin psi,
  * y_{N-1-j} = -y_j exactly), so that the reflection symmetry of the game
- * is not broken by the rounding of the coordinates. */
+ * is not broken by the rounding of the coordinates.  One call per row of
+ * x: the loops vectorise. */
 typedef struct {
     const p2_air3d_par *q;
-    const hj_ls_grid *g;
     double *cs, *sn, *ys;
 } cb_ctx;
 
-static void lookup(const cb_ctx *c, const double *x, double *cs, double *sn, double *y)
-{
-    const hj_ls_grid *g = c->g;
-    long k = lround((x[2] - g->min[2]) / g->dx[2]), j = lround((x[1] - g->min[1]) / g->dx[1]);
-    k = ((k % g->N[2]) + g->N[2]) % g->N[2];
-    *cs = c->cs[k], *sn = c->sn[k];
-    *y = j >= 0 && j < g->N[1] ? c->ys[j] : x[1];
-}
-
-static double ham(double t, const double *x, double phi, const double *p, void *ctx)
+static void ham_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
+                    void *ctx)
 {
     (void)t, (void)phi;
     const cb_ctx *c = ctx;
     const p2_air3d_par *q = c->q;
-    double cs, sn, y;
-    lookup(c, x, &cs, &sn, &y);
-    const double H = -q->va * p[0] + q->vb * (cs * p[0] + sn * p[1]) + q->A * fabs(y * p[0] - x[0] * p[1] - p[2]) -
-                     q->B * fabs(p[2]);
-    return -H;
+    const double cs = c->cs[row->idx[2]], sn = c->sn[row->idx[2]], y = c->ys[row->idx[1]];
+    const double va = q->va, vb = q->vb, A = q->A, B = q->B, x0 = row->x[0], dx0 = row->dx0;
+    const double *p0 = p[0], *p1 = p[1], *p2 = p[2];
+    for (long j = 0; j < row->n; j++) {
+        const double x = x0 + (double)j * dx0;
+        const double h = -va * p0[j] + vb * (cs * p0[j] + sn * p1[j]) + A * fabs(y * p0[j] - x * p1[j] - p2[j]) -
+                         B * fabs(p2[j]);
+        H[j] = -h;
+    }
 }
 
-static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+static void partial_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
+                        int d, double *alpha, void *ctx)
 {
     (void)t, (void)pmin, (void)pmax;
     const cb_ctx *c = ctx;
     const p2_air3d_par *q = c->q;
-    double cs, sn, y;
-    lookup(c, x, &cs, &sn, &y);
-    switch (d) {
-    case 0: return fabs(-q->va + q->vb * cs) + q->A * fabs(y);
-    case 1: return fabs(q->vb * sn) + q->A * fabs(x[0]);
-    default: return q->A + q->B;
+    const long n = row->n;
+    if (d == 1) {
+        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, x0 = row->x[0], dx0 = row->dx0;
+        for (long j = 0; j < n; j++) alpha[j] = s + A * fabs(x0 + (double)j * dx0);
+        return;
     }
+    const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
+    for (long j = 0; j < n; j++) alpha[j] = a;
 }
 
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
                    double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
-    cb_ctx c = {p, g, NULL, NULL, NULL};
+    cb_ctx c = {p, NULL, NULL, NULL};
     const long n3 = g->N[2], n2 = g->N[1];
     c.cs = malloc(sizeof(double) * (size_t)(2 * n3 + n2));
     if (!c.cs) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
@@ -104,7 +103,9 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     }
     for (long j = 0; j < n2; j++) c.ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
     hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &c);
+    hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, NULL, NULL, &c);
+    lf.ham_row = ham_row;
+    lf.partial_row = partial_row;
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
