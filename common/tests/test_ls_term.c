@@ -265,6 +265,112 @@ static void callback_errors(void **state)
     hj_ls_free(y), hj_ls_free(f);
 }
 
+/* A position-dependent nonconvex Hamiltonian in 3-D and partials that use
+ * the gradient box, per node and per row with the same expressions: both
+ * forms must give the same bits for every dissipation and CFL rule, with
+ * 1 and 2 threads. */
+static double ham_mix(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)phi, (void)ctx;
+    return x[0] * p[0] * p[1] - fabs(x[1] * p[2]) + (1 + t) * x[2] * p[0];
+}
+static double partial_mix(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)ctx;
+    const double big1 = fabs(pmin[1]) > fabs(pmax[1]) ? fabs(pmin[1]) : fabs(pmax[1]);
+    const double big0 = fabs(pmin[0]) > fabs(pmax[0]) ? fabs(pmin[0]) : fabs(pmax[0]);
+    return d == 0 ? fabs(x[0]) * big1 + fabs((1 + t) * x[2]) : d == 1 ? fabs(x[0]) * big0 : fabs(x[1]);
+}
+static void ham_mix_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
+                        void *ctx)
+{
+    double x[3] = {0, row->x[1], row->x[2]};
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        const double q[3] = {p[0][j], p[1][j], p[2][j]};
+        H[j] = ham_mix(t, x, phi[j], q, ctx);
+    }
+}
+static void partial_mix_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
+                            int d, double *alpha, void *ctx)
+{
+    double x[3] = {0, row->x[1], row->x[2]};
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        const double lo[3] = {pmin[0][j], pmin[1][j], pmin[2][j]}, hi[3] = {pmax[0][j], pmax[1][j], pmax[2][j]};
+        alpha[j] = partial_mix(t, x, lo, hi, d, ctx);
+    }
+}
+static double bump3(const double *x, void *ctx)
+{
+    (void)ctx;
+    return sqrt(x[0] * x[0] + 2 * x[1] * x[1] + 0.5 * x[2] * x[2]) - 0.5 + 0.1 * sin(3 * x[0] * x[2]);
+}
+
+static void lax_friedrichs_rows_equal_nodes(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 17, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, bump3, NULL);
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
+        for (int rule = HJ_LS_CFL_NODE; rule <= HJ_LS_CFL_TOOLBOX; rule++) {
+            double b0 = 0;
+            for (int form = 0; form < 2 * threads; form++) {
+#ifdef _OPENMP
+                omp_set_num_threads(1 + form / 2);
+#endif
+                hj_ls_lax_friedrichs lf;
+                hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_WENO5A, diss, ham_mix, partial_mix, NULL);
+                lf.cfl_rule = rule;
+                if (form % 2) lf.ham = NULL, lf.partial = NULL, lf.ham_row = ham_mix_row, lf.partial_row = partial_mix_row;
+                double b;
+                assert_int_equal(lf.base.eval(&lf.base, 0.3, y, form ? f1 : f0, &b, NULL), HJ_OK);
+                if (!form) b0 = b;
+                else {
+                    assert_memory_equal(&b, &b0, sizeof b);
+                    long idx[3];
+                    for (size_t r = 0; r < g.rows; r++) {
+                        const size_t k = hj_ls_row(&g, r, idx);
+                        assert_memory_equal(f0 + k, f1 + k, sizeof(double) * (size_t)g.N[0]);
+                    }
+                }
+            }
+        }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+}
+
+/* A NaN from a batched callback names its node as a per-node one does. */
+static void partial_nan_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
+                            int d, double *alpha, void *ctx)
+{
+    (void)t, (void)pmin, (void)pmax, (void)ctx;
+    for (long j = 0; j < row->n; j++) alpha[j] = d == 1 && row->idx[1] == 3 && j >= 7 ? NAN : 1;
+}
+
+static void callback_errors_rows(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), b;
+    hj_ls_fill(&g, y, circle, &(double){0.3});
+    hj_error err;
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_norm, NULL, NULL);
+    assert_int_equal(lf.base.eval(&lf.base, 0, y, f, &b, &err), HJ_EINVAL); /* no partial of either form */
+    lf.partial_row = partial_nan_row;
+    assert_int_equal(lf.base.eval(&lf.base, 0, y, f, &b, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "x = (0.4, -0.4)"));
+    hj_ls_free(y), hj_ls_free(f);
+}
+
 /* Motion by mean curvature of a circle: r(t)^2 = r0^2 - 2 t. */
 static void curvature_shrinking_circle(void **state)
 {
@@ -376,5 +482,6 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_arrays_equal_callback),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
+                        cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(callback_errors_rows),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
                         cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
