@@ -7,6 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* AVX-512 and AVX2 clones of the row loops where the CPU has them
+ * (-std=c11 contracts no multiply-add: the bits are the SSE2 code's). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
+#define HJ_LS_TERM_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define HJ_LS_TERM_CLONES
+#endif
+
 /* ---- row driver ------------------------------------------------------ */
 
 /* Context of one row: its first node k, node index and coordinates (x[0]
@@ -23,6 +31,7 @@ typedef struct {
     int head;       /* ring slot of the difference k = -3 */
     double dmax[HJ_LS_MAXDIM]; /* per dimension: running maximum of the
                                 * speed over dx_d (the toolbox's rule) */
+    int filled; /* the evaluator's per-thread constants are in ws */
 } row_ctx;
 
 /* A row evaluator: writes ydot on the row, *inv = the row's largest inverse
@@ -58,6 +67,7 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             for (long j = 0; j < n; j++) rc.tmax[j] = 0;
             rc.cache_r = (size_t)-1;
             rc.head = 0;
+            rc.filled = 0;
             for (int d = 0; d < HJ_LS_MAXDIM; d++) rc.dmax[d] = 0;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 32)
@@ -425,6 +435,7 @@ typedef struct {
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
  * carries nothing.  The range is kept in the workspace tail and merged by
  * the caller; here rows only update thread-local ranges. */
+HJ_LS_TERM_CLONES
 static int lf_range_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     (void)t, (void)ydot, (void)bad;
@@ -435,6 +446,9 @@ static int lf_range_row(const void *term, double t, double *y, double *ydot, row
     for (int d = 0; d < g->dim; d++) {
         hj_ls_upwind_row_eps(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         double lo = range[2 * d], hi = range[2 * d + 1];
+#ifdef _OPENMP
+#pragma omp simd reduction(min : lo) reduction(max : hi)
+#endif
         for (long j = 0; j < n; j++) {
             const double a = dl[j] < dr[j] ? dl[j] : dr[j], b = dl[j] < dr[j] ? dr[j] : dl[j];
             lo = a < lo ? a : lo;
@@ -474,18 +488,24 @@ static void lf_partial_nodes(const hj_ls_lax_friedrichs *c, double t, const hj_l
     }
 }
 
-/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or bad. */
+/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or
+ * bad.  The common case, all finite, is one vector pass. */
 static long first_nonfinite(const double *v, long bad)
 {
-    for (long j = 0; j < bad; j++)
-        if (!(v[j] - v[j] == 0)) return j;
+    int any = 0;
+    for (long j = 0; j < bad; j++) any |= !(v[j] - v[j] == 0);
+    if (any)
+        for (long j = 0; j < bad; j++)
+            if (!(v[j] - v[j] == 0)) return j;
     return bad;
 }
+
 
 /* One row of G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2):
  * derivatives, then the Hamiltonian and the partials over the whole row
  * (one call each), then the dissipation and the CFL bound in vector loops.
  * The arithmetic per node is the per-node form's, in the same order. */
+HJ_LS_TERM_CLONES
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
@@ -502,20 +522,23 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *pd = P + (size_t)d * (size_t)n, *ll = LL + (size_t)d * (size_t)n, *lh = LH + (size_t)d * (size_t)n;
         hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
-        for (long j = 0; j < n; j++) {
-            pd[j] = 0.5 * (l[j] + r[j]);
-            ll[j] = l[j] < r[j] ? l[j] : r[j];
-            lh[j] = l[j] < r[j] ? r[j] : l[j];
-        }
+        for (long j = 0; j < n; j++) pd[j] = 0.5 * (l[j] + r[j]);
+        if (c->dissipation != HJ_LS_GLF) /* the local ranges */
+            for (long j = 0; j < n; j++) {
+                ll[j] = l[j] < r[j] ? l[j] : r[j];
+                lh[j] = l[j] < r[j] ? r[j] : l[j];
+            }
         pp[d] = pd;
         if (c->dissipation == HJ_LS_LLLF) lo[d] = ll, hi[d] = lh;
         else {
             double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
             const double a = ps->gmin[d], b = ps->gmax[d];
-            for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
+            if (!rc->filled) /* the global range: the same for every row of this evaluation */
+                for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
             lo[d] = gl, hi[d] = gh;
         }
     }
+    rc->filled = 1;
     const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
     const double *phi = y + rc->k;
     if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
@@ -532,21 +555,26 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         lo[d] = sl, hi[d] = sh;
         badj = first_nonfinite(A, badj);
         const double dx = g->dx[d];
-        double dm = rc->dmax[d];
         for (long j = 0; j < n; j++) {
             const double a = fabs(A[j]);
             DS[j] += a * 0.5 * (r[j] - l[j]);
             S[j] += a / dx;
-            dm = a / dx > dm ? a / dx : dm;
         }
-        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) rc->dmax[d] = dm; /* per-dimension maxima only where used */
+        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
+            double dm = rc->dmax[d];
+            SIMD_REDUCE(max : dm)
+            for (long j = 0; j < n; j++) {
+                const double a = fabs(A[j]) / dx;
+                dm = a > dm ? a : dm;
+            }
+            rc->dmax[d] = dm;
+        }
     }
     if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
     double m = 0, *out = ydot + rc->k;
-    for (long j = 0; j < n; j++) {
-        out[j] = -(H[j] - DS[j]);
-        m = S[j] > m ? S[j] : m;
-    }
+    for (long j = 0; j < n; j++) out[j] = -(H[j] - DS[j]);
+    SIMD_REDUCE(max : m)
+    for (long j = 0; j < n; j++) m = S[j] > m ? S[j] : m;
     *inv = m;
     return HJ_OK;
 }
