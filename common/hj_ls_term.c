@@ -130,6 +130,17 @@ static inline double scalar_at(const hj_ls_scalar *s, double t, const double *x,
     return s->fn ? s->fn(t, x, phi, s->ctx) : s->array ? s->array[k] : s->value;
 }
 
+/* The scalar over a row into a[0..n-1] when it has a batched callback;
+ * returns 0 (and leaves a alone) otherwise, for scalar_at per node. */
+static int scalar_row(const hj_ls_scalar *s, double t, const hj_ls_grid *g, const row_ctx *rc, const double *y,
+                      double *a)
+{
+    if (!s || !s->row_fn) return 0;
+    const hj_ls_row_info row = {g->N[0], g->dx[0], rc->x, rc->idx, rc->k};
+    s->row_fn(t, &row, y + rc->k, a, s->ctx);
+    return 1;
+}
+
 static double bound_of(double maxinv) { return maxinv > 0 ? 1 / maxinv : INFINITY; }
 
 /* The CFL bound by the term's rule: 1 / max_x sum_d s_d(x) / dx_d
@@ -333,8 +344,10 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     const long n = g->N[0];
     const int dim = g->dim;
     double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
+    double *arow = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < dim; d++)
         hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], c->eps[d], dl + d * n, dr + d * n, w);
+    const int batched = !c->initial && scalar_row(c->speed, t, g, rc, y, arow);
     double m = 0, x[HJ_LS_MAXDIM];
     long idx[HJ_LS_MAXDIM];
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
@@ -347,7 +360,7 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
         else if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
         else {
             x[0] = g->min[0] + (double)j * g->dx[0];
-            a = scalar_at(c->speed, t, x, y[k], k);
+            a = batched ? arow[j] : scalar_at(c->speed, t, x, y[k], k);
             if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
         }
         double p[HJ_LS_MAXDIM];
@@ -383,7 +396,7 @@ static int godunov_eval(const hj_ls_grid *g, godunov_term *gt, int eps_mode, dou
     hj_ls_fill_ghosts(g, y);
     weno_eps(g, eps_mode, gt->scheme, y, gt->eps);
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
+    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK + 1) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
                       dm, what, err);
     if (rc) return rc;
     *bound = bound_by_rule(gt->cfl_rule, g, m, dm);
@@ -670,6 +683,7 @@ static int point_row(const void *term, double t, double *y, double *ydot, row_ct
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
     double sdx = 0;
     for (int d = 0; d < dim; d++) sdx += 1 / (g->dx[d] * g->dx[d]);
+    const int batched = c->kind != PT_HESS && scalar_row(c->s, t, g, rc, y, rc->ws);
     for (long j = 0; j < g->N[0]; j++) {
         const size_t k = rc->k + (size_t)j;
         x[0] = g->min[0] + (double)j * g->dx[0];
@@ -685,7 +699,7 @@ static int point_row(const void *term, double t, double *y, double *ydot, row_ct
                     v -= c->M[a * dim + b] * hab;
                 }
         } else {
-            const double a = scalar_at(c->s, t, x, y[k], k);
+            const double a = batched ? rc->ws[j] : scalar_at(c->s, t, x, y[k], k);
             if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
             if (c->kind == PT_CURV) {
                 double kappa, mag;
@@ -711,7 +725,7 @@ static int point_eval(const point_term *pt, double t, double *y, double *ydot, d
     const hj_ls_grid *g = pt->grid;
     hj_ls_fill_ghosts(g, y);
     double m;
-    int rc = for_rows(g, 1, point_row, pt, t, y, ydot, &m, NULL, what, err);
+    int rc = for_rows(g, (size_t)g->N[0], point_row, pt, t, y, ydot, &m, NULL, what, err);
     if (rc) return rc;
     if (pt->kind == PT_HESS) {
         m = 0;
