@@ -443,6 +443,7 @@ typedef struct {
     const hj_ls_lax_friedrichs *lf;
     double gmin[HJ_LS_MAXDIM], gmax[HJ_LS_MAXDIM]; /* global gradient range */
     double eps[HJ_LS_MAXDIM];                      /* WENO5 epsilons (weno_eps) */
+    double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -455,8 +456,10 @@ static int lf_range_row(const void *term, double t, double *y, double *ydot, row
     const lf_pass *ps = term;
     const hj_ls_grid *g = ps->lf->grid;
     const long n = g->N[0];
-    double *dl = rc->ws, *dr = dl + n, *w = dr + n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
+    double *w = rc->ws + 2 * n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < g->dim; d++) {
+        /* into the cache when there is one (row r, dimension d: dl then dr) */
+        double *dl = ps->cache ? ps->cache + (rc->r * (size_t)g->dim + (size_t)d) * 2 * (size_t)n : rc->ws, *dr = dl + n;
         hj_ls_upwind_row_eps(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         double lo = range[2 * d], hi = range[2 * d + 1];
 #ifdef _OPENMP
@@ -530,11 +533,15 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
     double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
     double *H = GH + dn, *A = H + n, *DS = A + n, *S = DS + n;
-    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
+    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM], *DL[HJ_LS_MAXDIM], *DR[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *pd = P + (size_t)d * (size_t)n, *ll = LL + (size_t)d * (size_t)n, *lh = LH + (size_t)d * (size_t)n;
-        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
+        if (ps->cache) /* the range pass computed them */
+            l = ps->cache + (rc->r * (size_t)dim + (size_t)d) * 2 * (size_t)n, r = l + n;
+        else
+            hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
+        DL[d] = l, DR[d] = r;
         for (long j = 0; j < n; j++) pd[j] = 0.5 * (l[j] + r[j]);
         if (c->dissipation != HJ_LS_GLF) /* the local ranges */
             for (long j = 0; j < n; j++) {
@@ -559,7 +566,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     long badj = first_nonfinite(H, n);
     for (long j = 0; j < n; j++) DS[j] = 0, S[j] = 0;
     for (int d = 0; d < dim; d++) {
-        const double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
+        const double *l = DL[d], *r = DR[d];
         const double *sl = lo[d], *sh = hi[d];
         if (c->dissipation == HJ_LS_LLF) /* local range in d only */
             lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
@@ -604,6 +611,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     hj_ls_fill_ghosts(g, y);
     lf_pass ps;
     ps.lf = c;
+    ps.cache = c->dissipation != HJ_LS_LLLF ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
     if (c->dissipation != HJ_LS_LLLF) {
@@ -629,6 +637,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
                     double inv;
                     long j;
                     rc.k = hj_ls_row(g, r, rc.idx);
+                    rc.r = r;
                     lf_range_row(&ps, t, y, ydot, &rc, &inv, &j);
                 }
 #ifdef _OPENMP
@@ -650,6 +659,8 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
 }
+
+size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g) { return 2 * (size_t)g->dim * g->nodes; }
 
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx)

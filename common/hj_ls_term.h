@@ -189,12 +189,19 @@ typedef struct {
     hj_ls_partial_fn partial;
     hj_ls_ham_row_fn ham_row;         /* if set, used instead of ham */
     hj_ls_partial_row_fn partial_row; /* if set, used instead of partial */
+    double *work; /* optional, hj_ls_lax_friedrichs_work_size doubles (below) */
     void *ctx;
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_lax_friedrichs;
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);
+/* The doubles of the optional caller-owned work array (2 dim nodes): with
+ * it, GLF and LLF keep the one-sided derivatives of their gradient-range
+ * pass and the update pass reads them instead of computing them again
+ * (same bits; worth it where the derivatives cost more than the memory
+ * traffic, as WENO5's do).  LLLF has no range pass and does not use it. */
+size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
 
 /* ---- mean curvature (6): G = b kappa |grad phi|, centered second order
  * (hj_ls_curvature_at).  CFL bound 1 / max_x 2 b sum_d 1/dx_d^2. */
