@@ -16,6 +16,14 @@
  * threads on a 2-D grid. */
 enum { SEG = 256 };
 
+/* The row kernels are built for AVX2 as well as the baseline x86-64 and
+ * chosen at run time (no FMA: the same IEEE operations, the same bits). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define HJ_UB_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HJ_UB_CLONES
+#endif
+
 static int thread_id(void)
 {
 #ifdef _OPENMP
@@ -121,11 +129,16 @@ double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
         row_coords(ws, r, 0, 0, x);
         for (int a = 0; a < pb->ncontrols; a++) {
             row_dyn(ws, t, x, ws->xlast + 1, n, a, f);
-            for (int k = 0; k < d; k++)
+            /* max |f_k| / dx_k = max (|f_k| / dx_k): division is monotone */
+            for (int k = 0; k < d; k++) {
+                double fk = 0;
                 for (int j = 0; j < n; j++) {
-                    const double q = fabs(f[(size_t)k * (size_t)n + (size_t)j]) / ws->dx[k];
-                    rate = q > rate ? q : rate;
+                    const double q = fabs(f[(size_t)k * (size_t)n + (size_t)j]);
+                    fk = q > fk ? q : fk;
                 }
+                const double q = fk / ws->dx[k];
+                rate = q > rate ? q : rate;
+            }
         }
     }
     const double left = tmax - t;
@@ -136,18 +149,23 @@ double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
 /* ---- the Ultra-Bee fluxes over rows (hj_ub.c's flux_left, flux_right) ----- */
 
 /* The flux node j hands to the face it feeds when mu_j != 0: W^L_{j+1/2}
- * (mu_j > 0) or W^R_{j-1/2} (mu_j < 0), from W_{j-1}, W_j, W_{j+1}. */
+ * (mu_j > 0) or W^R_{j-1/2} (mu_j < 0), from W_{j-1}, W_j, W_{j+1}.
+ * hj_ub.c clips to [mx + (c - mx)/mu, mn + (c - mn)/mu] with mx, mn the
+ * max and min of c = W_j and its upwind neighbour e: one of the two bounds
+ * is c + (+0)/mu = c + 0.0, so one division gives both, bit for bit
+ * (c + 0.0 keeps the sign-of-zero rule of the original). */
+HJ_UB_CLONES
 static void row_flux(long len, const double *restrict wm, const double *restrict wi, const double *restrict wp,
                      const double *restrict mu, double *restrict out)
 {
     for (long j = 0; j < len; j++) {
         const double m = mu[j], c = wi[j];
         const int right = m > 0;
-        const double up = right ? wm[j] : wp[j], down = right ? wp[j] : wm[j];
+        const double e = right ? wm[j] : wp[j], down = right ? wp[j] : wm[j];
         const double den = right ? m : m < 0 ? -m : 1;
-        const double mx = c > up ? c : up, mn = c < up ? c : up;
-        const double lo = mx + (c - mx) / den, hi = mn + (c - mn) / den;
-        double x = down < lo ? lo : down;
+        const double g = e + (c - e) / den, c0 = c + 0.0;
+        const double lo = c > e ? c0 : g, hi = c < e ? c0 : g;
+        const double x = down < lo ? lo : down;
         out[j] = x > hi ? hi : x;
     }
 }
@@ -164,6 +182,17 @@ static inline double node_update(double wmm, double wm, double w0, double wp, do
     const double fln = mR < 0 ? aR : mR == 0 ? (wp != wpp ? w0 : wp) : (w0 == wm ? w0 : wp);
     const double fl = m0 > 0 ? a0 : fln, fr = m0 > 0 ? frp : a0;
     return m0 == 0 ? w0 : w0 - m0 * (fl - fr);
+}
+
+/* node_update over a row. */
+HJ_UB_CLONES
+static void row_update(long len, const double *restrict wmm, const double *restrict wm, const double *restrict w0,
+                       const double *restrict wp, const double *restrict wpp, const double *restrict mL,
+                       const double *restrict m0, const double *restrict mR, const double *restrict aL,
+                       const double *restrict a0, const double *restrict aR, double *restrict out)
+{
+    for (long j = 0; j < len; j++)
+        out[j] = node_update(wmm[j], wm[j], w0[j], wp[j], wpp[j], mL[j], m0[j], mR[j], aL[j], a0[j], aR[j]);
 }
 
 /* What the sweep does with its value: the next sweep's input, the minimum
@@ -215,9 +244,7 @@ static void sweep_last(hj_ub_dense *ws, const double *src, double *dst, const si
         w[0] = w[1] = w[n + 2] = w[n + 3] = bnd; /* w[j + 2] = W_j */
         memcpy(w + 2, in, (size_t)n * sizeof *w);
         row_flux(n + 2, w, w + 1, w + 2, mu, A); /* A[j + 1] = A_j, j = -1..n */
-        for (long j = 0; j < n; j++)
-            val[j] = node_update(w[j], w[j + 1], w[j + 2], w[j + 3], w[j + 4], mu[j], mu[j + 1], mu[j + 2], A[j], A[j + 1],
-                                 A[j + 2]);
+        row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, val);
         const size_t o = r * (size_t)n;
         row_store(s, n, val, dst + o, ws->vmin + o, s->v0 ? s->v0 + o : NULL);
     }
@@ -260,8 +287,7 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
             const double *wmm = ROW(i - 2), *wm = ROW(i - 1), *w0 = ROW(i), *wp = ROW(i + 1), *wpp = ROW(i + 2);
             const double *mL = mu[sl], *m0 = mu[s0], *mR = mu[sr], *aL = A[sl], *a0 = A[s0], *aR = A[sr];
             double *out = dst + (base + (size_t)i * stride) * (size_t)n + j0;
-            for (long j = 0; j < len; j++)
-                out[j] = node_update(wmm[j], wm[j], w0[j], wp[j], wpp[j], mL[j], m0[j], mR[j], aL[j], a0[j], aR[j]);
+            row_update(len, wmm, wm, w0, wp, wpp, mL, m0, mR, aL, a0, aR, out);
         }
 #undef FILL
 #undef ROW

@@ -75,8 +75,15 @@ REPORT_INPUTS += $(P3_RESULTS) $(P3_PROGS:%=$(P3)/%.c)
 
 .PHONY: bench-paper3
 BENCHES += bench-paper3
-# The timing tables (ratios between grids and between structures).
-bench-paper3: $(P3_STORE) $(P3_HJB)
+# The timing tables (ratios between grids and between structures), and the
+# dense and band UB steps against a measured triad bandwidth (bench_ub.c).
+P3_BENCH := $(BUILD)/bin/$(P3)/bench_ub
+PROGRAMS += $(P3_BENCH)
+$(P3_BENCH): $(P3_LIBOBJ)
+$(BUILD)/obj/$(P3)/bench_ub.o: CFLAGS += -fopenmp
+bench-paper3: $(P3_STORE) $(P3_HJB) $(P3_BENCH)
+	@mkdir -p $(P3_OUT)
+	OMP_WAIT_POLICY=passive $(P3_BENCH) $(QUICKFLAG) --out-dir $(P3_OUT)
 
 # `make paper3` runs two lanes side by side, each one program at a time:
 # storage alone (25 minutes), and the UB runs (Tables 12, 11, 13, the
