@@ -35,7 +35,7 @@ static inline double flux_right(double wm, double wi, double wp, double mu)
     return wi != wp ? wm : wi;
 }
 
-double hj_ub_update(const double *w, const double *mu)
+static inline double ub_update(const double *w, const double *mu)
 {
     const double m = mu[1];
     if (m > 0) {
@@ -51,6 +51,8 @@ double hj_ub_update(const double *w, const double *mu)
     }
     return w[2];
 }
+
+double hj_ub_update(const double *w, const double *mu) { return ub_update(w, mu); }
 
 /* ---- geometry ------------------------------------------------------------ */
 
@@ -172,6 +174,7 @@ static int reserve(hj_ub_solver *sv, size_t m, hj_error *err)
     GROW(wn, cap);
     GROW(vmin, cap);
     GROW(f, cap * (size_t)d);
+    GROW(x, cap * (size_t)d);
     GROW(mu, cap * (size_t)d);
     GROW(link, cap * 2 * (size_t)d);
 #undef GROW
@@ -189,6 +192,7 @@ void hj_ub_free(hj_ub_solver *sv)
     free(sv->wn);
     free(sv->vmin);
     free(sv->f);
+    free(sv->x);
     free(sv->mu);
     free(sv->link);
     memset(sv, 0, sizeof *sv);
@@ -376,6 +380,7 @@ static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
     for (size_t i = 0; i < c.m; i++) {
         int idx[HJ_BAND_DMAX];
         unlin(d, sv->pb->n, sv->lin[i], idx);
+        hj_ub_centre(sv, idx, &sv->x[i * d]); /* once per step, for every control */
         for (int k = 0; k < d; k++)
             for (int s = 0; s < 2; s++) {
                 int32_t *l = &sv->link[i * 2 * d + 2 * k + s];
@@ -397,9 +402,7 @@ static double time_step(hj_ub_solver *sv, size_t m, double tmax)
     double rate = 0, f[HJ_BAND_DMAX], x[HJ_BAND_DMAX];
     for (int a = 0; a < pb->ncontrols; a++)
         for (size_t i = 0; i < m; i++) {
-            int idx[HJ_BAND_DMAX];
-            unlin(pb->d, pb->n, sv->lin[i], idx);
-            hj_ub_centre(sv, idx, x);
+            memcpy(x, &sv->x[i * pb->d], (size_t)pb->d * sizeof *x);
             pb->dyn(sv->t, x, a, f, pb->ctx);
             for (int k = 0; k < pb->d; k++) {
                 const double r = fabs(f[k]) / sv->dx[k];
@@ -414,10 +417,8 @@ static double time_step(hj_ub_solver *sv, size_t m, double tmax)
 /* mu of direction k at the cell next to node i (s = 0: left, 1: right). */
 static double mu_beside(hj_ub_solver *sv, size_t i, int k, int s, int a, double dt)
 {
-    int idx[HJ_BAND_DMAX];
     double x[HJ_BAND_DMAX], f[HJ_BAND_DMAX];
-    unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
-    hj_ub_centre(sv, idx, x);
+    memcpy(x, &sv->x[i * sv->pb->d], (size_t)sv->pb->d * sizeof *x);
     x[k] += s ? sv->dx[k] : -sv->dx[k];
     sv->pb->dyn(sv->t, x, a, f, sv->pb->ctx);
     return dt / sv->dx[k] * f[k];
@@ -449,7 +450,7 @@ static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
             w5[s ? 4 : 0] = w2;
             mu3[s ? 2 : 0] = m1;
         }
-        sv->wn[i] = hj_ub_update(w5, mu3);
+        sv->wn[i] = ub_update(w5, mu3);
     }
 }
 
@@ -482,10 +483,8 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
     const double dt = time_step(sv, m, tmax), snap = pb->snap > 0 ? pb->snap : 1e-12;
     for (int a = 0; a < pb->ncontrols; a++) {
         for (size_t i = 0; i < m; i++) {
-            int idx[HJ_BAND_DMAX];
             double x[HJ_BAND_DMAX];
-            unlin(d, pb->n, sv->lin[i], idx);
-            hj_ub_centre(sv, idx, x);
+            memcpy(x, &sv->x[i * d], (size_t)d * sizeof *x);
             pb->dyn(sv->t, x, a, &sv->f[i * d], pb->ctx);
             for (int k = 0; k < d; k++) sv->mu[i * d + k] = dt / sv->dx[k] * sv->f[i * d + k];
         }

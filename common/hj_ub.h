@@ -89,6 +89,7 @@ typedef struct {
     size_t cap;
     int64_t *lin;
     double **ptr, *v0, *w, *wn, *vmin, *f, *mu;
+    double *x;            /* band node centres, d per node (once per step) */
     int32_t *link;
 } hj_ub_solver;
 

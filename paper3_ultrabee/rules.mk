@@ -75,9 +75,24 @@ REPORT_INPUTS += $(P3_RESULTS) $(P3_PROGS:%=$(P3)/%.c)
 
 .PHONY: bench-paper3
 BENCHES += bench-paper3
-# The timing tables (ratios between grids and between structures).
-bench-paper3: $(P3_STORE) $(P3_HJB)
+# The timing tables (ratios between grids and between structures), and the
+# dense and band UB steps against a measured triad bandwidth (bench_ub.c).
+P3_BENCH := $(BUILD)/bin/$(P3)/bench_ub
+PROGRAMS += $(P3_BENCH)
+$(P3_BENCH): $(P3_LIBOBJ)
+# -O3: the row dynamics (dyn_row) vectorise, as a user's batched callback should
+$(BUILD)/obj/$(P3)/bench_ub.o: CFLAGS += -fopenmp -O3
+bench-paper3: $(P3_STORE) $(P3_HJB) bench-ub
+# On its own (seconds, no full-size run first): make bench-ub [QUICK=1].
+.PHONY: bench-ub
+bench-ub: $(P3_BENCH)
+	@mkdir -p $(P3_OUT)
+	OMP_WAIT_POLICY=passive $(P3_BENCH) $(QUICKFLAG) --out-dir $(P3_OUT)
 
+# `make reproduce` also runs the other papers' results (REPRODUCE_BESIDE,
+# the top Makefile) in lane B after paper 3's, beside the storage
+# comparison, instead of after both lanes: lane B ends minutes before lane
+# A, and papers 1 and 2 then ran alone on one core of two.
 # `make paper3` runs two lanes side by side, each one program at a time:
 # storage alone (25 minutes), and the UB runs (Tables 12, 11, 13, the
 # 2-D examples) with hjbstep (20 minutes): measured on 23 November 2026,
@@ -94,6 +109,7 @@ paper3-lane-a:
 	$(MAKE) --no-print-directory -j1 $(P3_LANE_A)
 paper3-lane-b:
 	$(MAKE) --no-print-directory -j1 $(P3_LANE_B)
+	$(if $(REPRODUCE_BESIDE_ON),$(MAKE) --no-print-directory -j1 $(REPRODUCE_BESIDE))
 REPRODUCE_FIRST += paper3-results
 paper3:
 	$(MAKE) --no-print-directory paper3-results

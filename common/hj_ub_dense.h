@@ -1,0 +1,65 @@
+/* hj_ub_dense.h -- one step of the UB-HJB scheme (hj_ub.h) on the full grid
+ * held as one array, row by row.
+ *
+ * The same scheme and the same numbers as hj_ub_step on the FS store
+ * (bitwise: unit test), without the store: V is n^d doubles, row-major
+ * (the last index runs fastest), and every direction is swept over whole
+ * rows of the last index, so that the Ultra-Bee flux evaluation is one
+ * branch-free loop the compiler vectorises.  Each node's flux is computed
+ * once per sweep and shared by the two faces that use it.  The dynamics
+ * may be given over a row of nodes per call (hj_ub_row_fn), so that the
+ * user's code vectorises too; without it the problem's per-node dyn is
+ * called.
+ *
+ * Why the controls' loop is outside the sweeps: with dimension splitting a
+ * control's second sweep needs its first sweep on the neighbouring rows,
+ * so running every control inside the row loop would hold one intermediate
+ * grid per control (11 grids for Table 5).  Each control instead runs its d
+ * sweeps over the grid, and the last sweep takes the minimum over the
+ * controls (and the final min with V^n, the snap) in the same pass.
+ *
+ * OpenMP: the rows (or row segments) of a sweep are shared among the
+ * threads; each node's value depends on its stencil only, so results are
+ * bitwise the same for any thread count (unit test).
+ *
+ * Library code: returns HJ_* codes, never prints.
+ */
+#ifndef HJ_UB_DENSE_H
+#define HJ_UB_DENSE_H
+
+#include <stddef.h>
+
+#include "hj_error.h"
+#include "hj_ub.h"
+
+/* The dynamics of control a over a row of len nodes: the row's first d - 1
+ * coordinates in x[0..d-2], the last coordinate of node j in xlast[j];
+ * writes f[k len + j], component k of f(t, x_j, a). */
+typedef void (*hj_ub_row_fn)(double t, const double *x, const double *xlast, long len, int a, double *f, void *ctx);
+
+typedef struct {
+    const hj_ub_problem *pb; /* d, n, lo, hi, ncontrols, dyn, target, cfl, boundary, dtmax, snap, ctx */
+    hj_ub_row_fn dyn_row;    /* NULL: pb->dyn node by node */
+    int nthreads;            /* OpenMP threads of the sweeps (the maximum when set up) */
+    size_t total;            /* n^d */
+    double dx[HJ_BAND_DMAX];
+    double *w1, *w2, *vmin;  /* intermediate sweeps, minimum over controls */
+    double *xlast;           /* last coordinate of nodes -1 .. n */
+    double *buf;             /* per-thread row buffers */
+    size_t bufper;
+} hj_ub_dense;
+
+/* Set up the workspace for problem pb (pb->avg0, uniform, reached, bbox and
+ * front_sub are not used).  Holds 3 n^d doubles besides the caller's V. */
+int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_row, hj_error *err);
+void hj_ub_dense_free(hj_ub_dense *ws);
+
+/* The time step at time t towards tmax: CFL pb->cfl over every node and
+ * control, truncated to land on tmax, capped by pb->dtmax (hj_ub_step's). */
+double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax);
+
+/* V^{n+1} from V^n = v at time t, in place, with the step dt (from
+ * hj_ub_dense_dt; dt > 0). */
+int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *err);
+
+#endif

@@ -1,0 +1,196 @@
+/* Unit tests of common/hj_ub_dense: the row-by-row UB-HJB step gives
+ * bitwise the values of hj_ub_step on the FS store (every flux branch:
+ * both signs of mu, mu = 0, inflow through the grid's edge, several
+ * controls, the target problem), the batched dynamics the same as the
+ * per-node ones, and the same bits for 1 and 2 OpenMP threads. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ub_dense.h"
+
+typedef struct {
+    int d;
+    int kind;              /* 0 constant (f_1 = 0: mu = 0), 1 rotation, 2 three controls, 3 inflow */
+    double blo[4], bhi[4]; /* the initial box */
+} dcase;
+
+static void dyn(double t, const double *x, int a, double *f, void *vctx)
+{
+    const dcase *c = vctx;
+    switch (c->kind) {
+    case 0: f[0] = -1.3; f[1] = 0; f[2] = 0.7; f[3] = 0.2; break;
+    case 1: f[0] = -x[1]; f[1] = x[0]; f[2] = 0.3 + 0.1 * t; f[3] = 0.5; break;
+    case 2: f[0] = a - 1.0; f[1] = 1; f[2] = a == 1 ? -0.5 : 0.5; f[3] = 0; break;
+    default: f[0] = 0.9; f[1] = 0.3 * x[0]; f[2] = 0.2; f[3] = 0.1; break;
+    }
+}
+
+/* The batched form of dyn: the row's coordinates, the last one per node. */
+static void dyn_row(double t, const double *x, const double *xl, long len, int a, double *f, void *vctx)
+{
+    const dcase *c = vctx;
+    for (long j = 0; j < len; j++) {
+        double z[4] = {0, 0, 0, 0}, h[4];
+        for (int k = 0; k < c->d - 1; k++) z[k] = x[k];
+        z[c->d - 1] = xl[j];
+        dyn(t, z, a, h, vctx);
+        for (int k = 0; k < c->d; k++) f[(long)k * len + j] = h[k];
+    }
+}
+
+static double avg(const double *blo, const double *bhi, void *vctx)
+{
+    const dcase *c = vctx;
+    return hj_ub_avg_box(c->d, blo, bhi, c->blo, c->bhi);
+}
+
+static hj_ub_problem problem(dcase *c, int n)
+{
+    hj_ub_problem pb = {.d = c->d, .n = n, .ncontrols = c->kind == 2 ? 3 : 1, .dyn = dyn, .target = c->kind == 2,
+                        .cfl = 0.9, .boundary = 1, .avg0 = avg, .ctx = c};
+    for (int k = 0; k < c->d; k++) {
+        pb.lo[k] = -2;
+        pb.hi[k] = 2;
+        pb.bbox_lo[k] = c->blo[k];
+        pb.bbox_hi[k] = c->bhi[k];
+    }
+    return pb;
+}
+
+static int collect(const int *idx, double *v, void *vctx)
+{
+    (void)idx;
+    double **p = vctx;
+    *(*p)++ = *v;
+    return 0;
+}
+
+/* The FS store's values in row-major order. */
+static void fs_values(hj_ub_solver *sv, double *out) { hj_band_foreach(sv->s, collect, &out); }
+
+static void cases(dcase *cs, int *m)
+{
+    *m = 0;
+    for (int d = 2; d <= 3; d++)
+        for (int kind = 0; kind < 4; kind++) {
+            dcase c = {d, kind, {0.3, -0.5, -0.4, 0}, {1.1, 0.5, 0.2, 0}};
+            if (kind == 3) { c.blo[0] = -3; c.bhi[0] = 0.1; } /* the box crosses the edge x1 = -2: inflow of 1 */
+            cs[(*m)++] = c;
+        }
+}
+
+/* Steps of hj_ub_step on FS and of the dense step, compared bit for bit. */
+static void equals_fs_store(void **state)
+{
+    (void)state;
+    hj_test_one_thread();
+    dcase cs[8];
+    int m;
+    cases(cs, &m);
+    for (int i = 0; i < m; i++)
+        for (int batched = 0; batched < 2; batched++) {
+            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 37 : 15);
+            hj_ub_solver sv;
+            hj_ub_dense ws;
+            assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
+            assert_int_equal(hj_ub_dense_init(&ws, &pb, batched ? dyn_row : NULL, NULL), HJ_OK);
+            double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
+            fs_values(&sv, v);
+            const double T = 0.6;
+            double t = 0;
+            for (int st = 0; st < 10 && t < T; st++) {
+                const double dt = hj_ub_dense_dt(&ws, t, T);
+                assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
+                t = dt == T - t ? T : t + dt;
+                assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
+                assert_true(sv.t == t);
+                fs_values(&sv, ref);
+                size_t moved = 0;
+                for (size_t k = 0; k < ws.total; k++) {
+                    if (memcmp(&v[k], &ref[k], sizeof v[k]))
+                        fail_msg("d %d kind %d step %d node %zu: %.17g, FS %.17g", cs[i].d, cs[i].kind, st, k, v[k], ref[k]);
+                    moved += v[k] != 1 && v[k] != -1;
+                }
+                assert_true(moved > 0); /* the front is on the grid */
+            }
+            free(v);
+            free(ref);
+            hj_ub_dense_free(&ws);
+            hj_ub_free(&sv);
+        }
+}
+
+/* 1 and 2 threads: the same bits (the rows are shared among threads, each
+ * node's value depends on its stencil only). */
+static void threads_bitwise(void **state)
+{
+    (void)state;
+#ifdef _OPENMP
+    dcase cs[8];
+    int m;
+    cases(cs, &m);
+    for (int i = 0; i < m; i++) {
+        double *v[2] = {NULL, NULL};
+        size_t total = 0;
+        for (int th = 1; th <= 2; th++) {
+            omp_set_num_threads(th);
+            /* 2-D: rows longer than one segment, so that segments are shared */
+            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 300 : 40);
+            hj_ub_solver sv;
+            hj_ub_dense ws;
+            assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
+            assert_int_equal(hj_ub_dense_init(&ws, &pb, dyn_row, NULL), HJ_OK);
+            assert_int_equal(ws.nthreads, th);
+            total = ws.total;
+            v[th - 1] = malloc(total * sizeof *v[0]);
+            fs_values(&sv, v[th - 1]);
+            hj_ub_free(&sv);
+            double t = 0;
+            for (int st = 0; st < 4; st++) {
+                const double dt = hj_ub_dense_dt(&ws, t, 1.0);
+                assert_int_equal(hj_ub_dense_step(&ws, v[th - 1], t, dt, NULL), HJ_OK);
+                t += dt;
+            }
+            hj_ub_dense_free(&ws);
+        }
+        assert_memory_equal(v[0], v[1], total * sizeof *v[0]);
+        free(v[0]);
+        free(v[1]);
+    }
+    omp_set_num_threads(1);
+#endif
+}
+
+static void bad_input(void **state)
+{
+    (void)state;
+    dcase c = {2, 0, {0.3, -0.5, 0, 0}, {1.1, 0.5, 0, 0}};
+    hj_ub_problem pb = problem(&c, 21);
+    hj_ub_dense ws;
+    hj_error err;
+    pb.cfl = 1.5;
+    assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_EINVAL);
+    pb.cfl = 0.9;
+    pb.d = 5;
+    assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_EINVAL);
+    pb.d = 2;
+    pb.hi[1] = -3;
+    assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_EINVAL);
+    pb.hi[1] = 2;
+    assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_OK);
+    double v[21 * 21];
+    assert_int_equal(hj_ub_dense_step(&ws, v, 0, 0, &err), HJ_EINVAL);
+    hj_ub_dense_free(&ws);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(equals_fs_store),
+        cmocka_unit_test(threads_bitwise),
+        cmocka_unit_test(bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
