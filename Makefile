@@ -112,7 +112,7 @@ $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 # Reachability runs its per-node passes (projection, time-to-reach) in
 # parallel over rows like the kernel.
 $(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o: CFLAGS += -fopenmp -O3
-$(BUILD)/obj/common/tests/test_reach.o: CFLAGS += -fopenmp
+$(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
 $(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'

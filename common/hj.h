@@ -42,6 +42,7 @@
 /* Reachability on the kernel: control-affine dynamics, reach-avoid sets
  * and tubes, time-to-reach, optimal control and trajectories */
 #include "hj_reach.h"
+#include "hj_ctrl.h"
 
 /* Ultra-Bee on sparse narrow bands (paper 3): the band stores, the UB-HJB
  * scheme, front errors, the minimal time function */
