@@ -122,6 +122,7 @@ $(BUILD)/test/common/tests/test_hjtime: | $(HJTIME)
 include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
+include studies/reach/rules.mk
 include tests/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck

@@ -197,7 +197,18 @@ void hj_reach_dyn_eval(const hj_reach_dyn *s, double t, const double *x, const d
 typedef struct {
     const hj_reach_dyn *dyn;
     double T;
+    unsigned long id; /* this solve's number, for the cache of ls_partial */
 } ham_ctx;
+
+static _Atomic unsigned long solve_count;
+
+/* The kernel asks for alpha_d one dimension at a time at the same node:
+ * the bounds of all dimensions are computed at once and kept, per thread,
+ * for the next calls at that node of the same solve. */
+static _Thread_local struct {
+    unsigned long id;
+    double tau, x[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
+} cache;
 
 static double ls_ham(double tau, const double *x, double phi, const double *p, void *ctx)
 {
@@ -206,14 +217,11 @@ static double ls_ham(double tau, const double *x, double phi, const double *p, v
     return -hj_reach_hamiltonian(h->dyn, h->T - tau, x, p);
 }
 
-static double partial_of(const hj_reach_dyn *s, double t, const double *x, int d)
+/* alpha[0..nx-1] at (t, x): the largest |dx_i/dt| over the input sets. */
+static void partials(const hj_reach_dyn *s, double t, const double *x, double *alpha)
 {
-    double a = 0, b = 0, M[MATMAX], c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
-    if (s->f) {
-        double fx[HJ_LS_MAXDIM];
-        s->f(t, x, fx, s->ctx);
-        a = fx[d];
-    }
+    double a[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
+    if (s->f) s->f(t, x, a, s->ctx);
     const hj_reach_input *in[2] = {&s->u, &s->d};
     const hj_reach_vec_fn mf[2] = {s->G, s->H};
     for (int k = 0; k < 2; k++) {
@@ -221,23 +229,40 @@ static double partial_of(const hj_reach_dyn *s, double t, const double *x, int d
         if (n == 0) continue;
         mf[k](t, x, M, s->ctx);
         centre(in[k], c, w);
-        double n2 = 0;
-        for (int j = 0; j < n; j++) {
-            const double m = M[d * n + j];
-            a += m * c[j];
-            if (in[k]->shape == HJ_REACH_BOX) b += fabs(m) * w[j];
-            else n2 += m * m;
+        for (int d = 0; d < s->nx; d++) {
+            double n2 = 0;
+            for (int j = 0; j < n; j++) {
+                const double m = M[d * n + j];
+                a[d] += m * c[j];
+                if (in[k]->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
+                else n2 += m * m;
+            }
+            if (in[k]->shape == HJ_REACH_BALL) b[d] += in[k]->r * sqrt(n2);
         }
-        if (in[k]->shape == HJ_REACH_BALL) b += in[k]->r * sqrt(n2);
     }
-    return fabs(a) + b;
+    for (int d = 0; d < s->nx; d++) alpha[d] = fabs(a[d]) + b[d];
+}
+
+static double partial_of(const hj_reach_dyn *s, double t, const double *x, int d)
+{
+    double alpha[HJ_LS_MAXDIM];
+    partials(s, t, x, alpha);
+    return alpha[d];
 }
 
 static double ls_partial(double tau, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
 {
     (void)pmin, (void)pmax;
     const ham_ctx *h = ctx;
-    return partial_of(h->dyn, h->T - tau, x, d);
+    const int nx = h->dyn->nx;
+    int hit = cache.id == h->id && cache.tau == tau;
+    for (int i = 0; hit && i < nx; i++) hit = cache.x[i] == x[i];
+    if (!hit) {
+        partials(h->dyn, h->T - tau, x, cache.alpha);
+        cache.id = h->id, cache.tau = tau;
+        for (int i = 0; i < nx; i++) cache.x[i] = x[i];
+    }
+    return cache.alpha[d];
 }
 
 double hj_reach_ls_ham(double t, const double *x, double phi, const double *p, void *ctx)
@@ -401,7 +426,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
             phi[k] = pc.prev[k] = v;
         }
     }
-    ham_ctx hc = {pb->dyn, T};
+    ham_ctx hc = {pb->dyn, T, ++solve_count};
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, pb->scheme, pb->dissipation, ls_ham, ls_partial, &hc);
     hj_ls_discount disc;
