@@ -191,8 +191,8 @@ int main(int argc, char **argv)
          .metavar = "R", .help = "radius of the target ball"},
         {.name = "--obstacle", .type = HJ_OPT_STRING, .value = &obstacle_s, .metavar = "LO:HI",
          .help = "obstacle box lo1,lo2:hi1,hi2 over the first two dimensions", .dflt = "none"},
-        {.name = "--horizon", .type = HJ_OPT_DOUBLE, .value = &horizon, .min = 1e-12, .max = INFINITY,
-         .metavar = "T", .help = "time horizon (inf: until converged, needs --tol)"},
+        {.name = "--horizon", .type = HJ_OPT_DOUBLE, .value = &horizon, .min = 0, .max = 1e12, .metavar = "T",
+         .help = "time horizon (0: until converged, needs --tol)"},
         {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &tol, .min = 0, .max = 1e12, .metavar = "RATE",
          .help = "stop when max |dphi/dtau| falls below RATE (0: never)"},
         {.name = "--discount", .type = HJ_OPT_DOUBLE, .value = &discount, .min = 0, .max = 1e12, .metavar = "L",
@@ -226,7 +226,7 @@ int main(int argc, char **argv)
         for (int d = 1; d < dim; d++) N[d] = N[0];
     else if (ncount != dim)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--N: %s is %d-D, got %d counts", systems[sys], dim, ncount);
-    if (isinf(horizon) && !(tol > 0)) hj_cli_fail(prog, HJ_EXIT_USAGE, "--horizon inf needs --tol > 0");
+    if (horizon == 0 && !(tol > 0)) hj_cli_fail(prog, HJ_EXIT_USAGE, "--horizon 0 (until converged) needs --tol > 0");
     sets st = {sys == 0 ? 1 : 2, {0, 0}, radius, {0, 0}, {0, 0}};
     if (centre_s) parse_list(centre_s, "--target-centre", st.c, st.dims);
     if (obstacle_s) {
@@ -270,7 +270,7 @@ int main(int argc, char **argv)
     pb.kind = kind == 0 ? HJ_REACH_BRT : HJ_REACH_BRS;
     pb.target.fn = target_fn, pb.target.ctx = &st;
     if (obstacle_s) pb.obstacle.fn = obstacle_fn, pb.obstacle.ctx = &st;
-    pb.horizon = horizon, pb.conv_tol = tol, pb.discount = discount;
+    pb.horizon = horizon > 0 ? horizon : INFINITY, pb.conv_tol = tol, pb.discount = discount;
     pb.scheme = scheme_ids[scheme], pb.order = scheme == 0 ? 1 : scheme == 1 ? 2 : 3;
     double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
     if (!phi || !ttr) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for a %zu-node grid", g.nodes);
