@@ -386,7 +386,37 @@ static void dubins_threads_and_period(void **state)
     hj_ls_free(cyl);
 }
 
+/* Problems refused before any work: no target, a zero horizon, a grid of
+ * another dimension, a measure with two periodic dimensions. */
+static void invalid_problems(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_ls_grid g = grid1(11);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    double *phi = hj_ls_alloc(&g);
+    hj_error err;
+    pb.horizon = 1;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL); /* no target */
+    pb.target.fn = interval, pb.target.ctx = &r, pb.horizon = 0;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    pb.horizon = 1;
+    s.nx = 2;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "2-D dynamics on a 1-D grid"));
+    hj_ls_free(phi);
+    hj_ls_grid g2;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g2, 2, (double[]){0, 0}, (double[]){1, 1}, (long[]){5, 5}, bc, NULL), HJ_OK);
+    double *b = hj_ls_alloc(&g2), m;
+    assert_int_equal(hj_reach_measure(&g2, b, &m, &err), HJ_EINVAL);
+    hj_ls_free(b);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
-             cmocka_unit_test(dubins_threads_and_period))
+             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(invalid_problems))
