@@ -24,6 +24,7 @@
  * maps read from files, inflow curves */
 #include "hj_fsm.h"
 #include "hj_map.h"
+#include "hj_vol.h"
 #include "hj_curve.h"
 
 /* The level set kernel (paper 2) */
