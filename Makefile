@@ -26,7 +26,7 @@
 # build/san/.  Dependencies (Debian packages) are installed on first use by
 # scripts/ensure-deps, by group: lib (Ceres) for the library and programs,
 # test (cmocka, pkg-config) for the tests, repro (gnuplot, cmark) for
-# figures and the report.
+# figures and the report, bench (scikit-fmm) for `make bench`.
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -64,6 +64,9 @@ DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
 DEPS_GROUPS += repro
+endif
+ifneq ($(filter bench bench-eikonal,$(MAKECMDGOALS)),)
+DEPS_GROUPS += bench
 endif
 DEPS_OK := $(DEPS_GROUPS:%=build/.deps-%)
 
