@@ -112,6 +112,9 @@ LDFLAGS += -fopenmp
 $(BUILD)/obj/common/hj_ls_%.o $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
+# The Eikonal sweeps run hyperplanes in parallel (bitwise thread-independent).
+$(BUILD)/obj/common/hj_eik.o $(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/tests/test_eik.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
 $(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
