@@ -541,8 +541,6 @@ int main(int argc, char **argv)
     hj_eik_stats st = {0};
     int rc = hj_eik_solve(&g, f, f_const, obst, src, (int)npts, fixed, &opt, T, &st, &err);
     hj_progress("\n");
-    free(src);
-    free(fixed);
     free(obst);
     hj_vol_free(&map);
     if (rc && rc != HJ_ENOCONV) {
@@ -550,6 +548,21 @@ int main(int argc, char **argv)
         hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     }
     const int converged = rc == HJ_OK;
+    /* T can never fall below the earliest start: below it (or NaN) the
+     * iteration has blown up, and such numbers are not written. */
+    double t_min = INFINITY;
+    for (long s = 0; s < npts; s++) t_min = src[s].t0 < t_min ? src[s].t0 : t_min;
+    for (long k = 0; fixed && k < total; k++) t_min = fixed[k] < t_min ? fixed[k] : t_min;
+    for (long k = 0; k < total; k++)
+        if (isnan(T[k]) || T[k] < t_min - 1e-6 * (fabs(t_min) + 1)) {
+            hj_cli_fail(prog, HJ_EXIT_RUN,
+                        "the order %d iteration blew up (T = %g at node (%ld, %ld, %ld), below the earliest source "
+                        "time %g); nothing is written: try --order %d",
+                        opt.order, T[k], k % g.n[0], k / g.n[0] % g.n[1], k / (g.n[0] * g.n[1]), t_min,
+                        opt.order > 1 ? opt.order - 2 : 1);
+        }
+    free(src);
+    free(fixed);
 
     /* ---- output ---- */
     const int fmt = format ? format : dim == 3 ? 3 : 1;
