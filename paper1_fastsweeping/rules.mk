@@ -3,7 +3,8 @@
 
 P1 := paper1_fastsweeping
 P1_EXAMPLES := example1 example2 example3 example4
-P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal $(BUILD)/bin/$(P1)/bench_fsm
+P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal $(BUILD)/bin/$(P1)/bench_fsm \
+           $(BUILD)/bin/$(P1)/bench_eik
 P1_LIBOBJ := $(BUILD)/obj/$(P1)/p1_study.o
 $(P1_BINS): $(P1_LIBOBJ)
 $(BUILD)/obj/$(P1)/%.o: CPPFLAGS += -I$(P1)
@@ -87,3 +88,14 @@ $(BUILD)/test/$(P1)/tests/test_cli: | $(P1_BINS)
 BENCHES += bench-paper1
 bench-paper1: $(BUILD)/bin/$(P1)/bench_fsm
 	$< --N 640 --out-dir results/paper1
+
+# The Eikonal solver against scikit-fmm (Debian's python3-scikit-fmm), one
+# process at a time, one thread each: CPU ratios at equal N and at equal
+# accuracy, see bench_eik.c.  The peer runs first; its table feeds ours.
+.PHONY: bench-eikonal
+BENCHES += bench-eikonal
+bench-eikonal: $(BUILD)/bin/$(P1)/bench_eik
+	@mkdir -p results/bench
+	OMP_NUM_THREADS=1 /usr/bin/python3 $(P1)/bench_skfmm.py results/bench/skfmm.tsv 200,400,800,1600 100,200
+	OMP_NUM_THREADS=1 $< --sizes 25,50,100,200,400,800,1600 --sizes3 25,50,100 --sizes3-order1 200 \
+	    --peer results/bench/skfmm.tsv --out-dir results/bench
