@@ -24,8 +24,11 @@
  * differences, or the WENO3 (Zhang, Zhao & Qian 2006) or WENO5 (Xiong,
  * Zhang, Zhang & Shu 2010) approximations written as an extrapolated
  * neighbour value tau -/+ h D^-/+ tau, as in hj_fsm.  The upwind side is
- * the one whose neighbour value of T is smaller; the Godunov update then
- * solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
+ * the one whose adjacent node has the smaller T (decided on the nodes, not
+ * on the WENO values: deciding on the WENO values made the side flip back
+ * and forth where fronts meet, and the third order iteration then needed
+ * 60-70 iterations instead of 11-15 on a 3-D test); the Godunov update
+ * then solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
  *
  * The sweeps.  The Gauss-Seidel order of each of the 2^dim sweeps is by
  * hyperplanes i + j (+ k) = const of the sweep's orientation (Detrixhe,
@@ -189,77 +192,100 @@ static inline double godunov_solve(int m, double *a, double *b, double f)
     return tau;
 }
 
-/* New tau at padded node k (coordinates x) with the scheme of `order`. */
+/* Adds dimension d's upwind term to (a, b, m) from the neighbour values
+ * nl, nr (tau at x -/+ h, or their WENO extrapolations). */
+static inline int add_term(const eik_work *w, int o, double T0, const double *x, int d, double nl, double nr,
+                           int side, double *a, double *b, int *m)
+{
+    const double h = w->h[d];
+    double xn[3] = {x[0], x[1], x[2]};
+    /* upwind side (side < 0): the smaller neighbour value of T */
+    double Tl = INFINITY, Tr = INFINITY;
+    if (nl < INFINITY) {
+        xn[d] = x[d] - h;
+        Tl = src_T0(w, o, xn) * nl;
+    }
+    if (nr < INFINITY) {
+        xn[d] = x[d] + h;
+        Tr = src_T0(w, o, xn) * nr;
+    }
+    if (!(Tl < INFINITY) && !(Tr < INFINITY)) return -1;
+    const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
+    if (side < 0 || !((side ? Tr : Tl) < INFINITY)) side = Tl <= Tr ? 0 : 1;
+    if (side == 0) {
+        a[*m] = T0 / h + p;
+        b[*m] = T0 * nl / h;
+    } else {
+        a[*m] = T0 / h - p;
+        b[*m] = T0 * nr / h;
+    }
+    if (a[*m] > 0) (*m)++;
+    return side;
+}
+
+/* New tau at padded node k (coordinates x) with the scheme of `order`.
+ * A higher order value is clamped to within f h (in T) of the first order
+ * update of the same stencil: on smooth data the two differ by O(h^2), so
+ * the clamp only acts where WENO's extrapolations go wild (kinks, corners
+ * next to obstacles) and keeps the iteration from running away there; a
+ * clamp rather than a switch keeps the update continuous. */
 static double local_update(const eik_work *w, long k, const double *x, int order)
 {
     const int o = w->own[k];
     const double T0 = w->T0[k];
-    double a[3], b[3];
-    int m = 0;
+    double a[3], b[3], a1[3], b1[3];
+    int m = 0, m1 = 0, high = 0;
     for (int d = 0; d < w->dim; d++) {
         const long st = w->st[d];
         const double h = w->h[d];
         double xn[3] = {x[0], x[1], x[2]};
-        double nl = INFINITY, nr = INFINITY; /* neighbour values of tau, left and right */
-        int done = 0, ord = order;
-        if (ord > 1) {
-            const int R = ord == 5 ? 3 : 2;
-            double v[7];
-            int ok = 1;
-            for (int q = -R; q <= R && ok; q++) {
-                xn[d] = x[d] + q * h;
-                v[q + R] = q == 0 ? w->tau[k] : tau_in(w, o, k + q * st, xn);
-                ok = isfinite(v[q + R]);
-            }
-            if (!ok && R == 3) { /* WENO5 stencil cut: try WENO3 */
-                ok = 1;
-                for (int q = 1; q <= 5; q++) ok = ok && isfinite(v[q]);
-                if (ok) memmove(v, v + 1, 5 * sizeof v[0]);
-                ord = 3;
-            }
-            if (ok) {
-                double hm, hp;
-                if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
-                else weno3(v, w->eps3, &hm, &hp);
-                nl = w->tau[k] - hm;
-                nr = w->tau[k] + hp;
-                done = 1;
-            }
-        }
-        if (!done) {
-            if (w->state[k - st] != ST_GHOST) {
-                xn[d] = x[d] - h;
-                nl = tau_in(w, o, k - st, xn);
-            }
-            if (w->state[k + st] != ST_GHOST) {
-                xn[d] = x[d] + h;
-                nr = tau_in(w, o, k + st, xn);
-            }
-        }
-        /* upwind side: the smaller neighbour value of T */
-        double Tl = INFINITY, Tr = INFINITY;
-        if (nl < INFINITY) {
+        double nl1 = INFINITY, nr1 = INFINITY; /* first order neighbour values */
+        if (w->state[k - st] != ST_GHOST) {
             xn[d] = x[d] - h;
-            Tl = src_T0(w, o, xn) * nl;
+            nl1 = tau_in(w, o, k - st, xn);
         }
-        if (nr < INFINITY) {
+        if (w->state[k + st] != ST_GHOST) {
             xn[d] = x[d] + h;
-            Tr = src_T0(w, o, xn) * nr;
+            nr1 = tau_in(w, o, k + st, xn);
         }
-        if (!(Tl < INFINITY) && !(Tr < INFINITY)) continue;
-        double p = 0;
-        if (o >= 0) p = w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0;
-        if (Tl <= Tr) {
-            a[m] = T0 / h + p;
-            b[m] = T0 * nl / h;
+        const int side = add_term(w, o, T0, x, d, nl1, nr1, -1, a1, b1, &m1);
+        if (order == 1) continue;
+        const int R = order == 5 ? 3 : 2;
+        double v[7];
+        int ok = 1;
+        for (int q = -R; q <= R; q++) {
+            xn[d] = x[d] + q * h;
+            v[q + R] = q == 0 ? w->tau[k] : tau_in(w, o, k + q * st, xn);
+            /* a stencil reaching into another source's nodes straddles
+             * the kink where the two fronts meet: lower order there */
+            if (q != 0 && w->own[k + q * st] != o) v[q + R] = NAN;
+            ok = ok && isfinite(v[q + R]);
+        }
+        int ord = order;
+        if (!ok && R == 3) { /* WENO5 stencil cut: try WENO3 */
+            ok = 1;
+            for (int q = 1; q <= 5; q++) ok = ok && isfinite(v[q]);
+            if (ok) memmove(v, v + 1, 5 * sizeof v[0]);
+            ord = 3;
+        }
+        if (ok) {
+            double hm, hp;
+            if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
+            else weno3(v, w->eps3, &hm, &hp);
+            add_term(w, o, T0, x, d, w->tau[k] - hm, w->tau[k] + hp, side, a, b, &m);
+            high = 1;
         } else {
-            a[m] = T0 / h - p;
-            b[m] = T0 * nr / h;
+            add_term(w, o, T0, x, d, nl1, nr1, -1, a, b, &m);
         }
-        if (a[m] > 0) m++;
     }
-    if (m == 0) return INFINITY;
-    return godunov_solve(m, a, b, w->fs[k]);
+    const double v1 = m1 > 0 ? godunov_solve(m1, a1, b1, w->fs[k]) : INFINITY;
+    if (order == 1 || !high) return v1;
+    const double v = m > 0 ? godunov_solve(m, a, b, w->fs[k]) : INFINITY;
+    double hmin = w->h[0];
+    for (int d = 1; d < w->dim; d++) hmin = w->h[d] < hmin ? w->h[d] : hmin;
+    const double lim = w->fs[k] * hmin / T0;
+    if (!(v >= v1 - lim)) return v < INFINITY || v1 == INFINITY ? v1 - lim : v1;
+    return v > v1 + lim ? v1 + lim : v;
 }
 
 /* ---- sweeps ------------------------------------------------------------ */
