@@ -97,7 +97,7 @@ BENCHES += bench-eikonal
 bench-eikonal: $(BUILD)/bin/$(P1)/bench_eik
 	@mkdir -p results/bench
 	OMP_NUM_THREADS=1 /usr/bin/python3 $(P1)/bench_skfmm.py results/bench/skfmm.tsv 200,400,800,1600 100,200
-	OMP_NUM_THREADS=1 $< --sizes 25,50,100,200,400,800,1600 --sizes3 25,50,100 --sizes3-order1 200 \
+	OMP_NUM_THREADS=1 $< --sizes 25,50,100,200,400,800,1600 --max-high 400 --sizes3 25,50,100 --sizes3-order1 200 \
 	    --peer results/bench/skfmm.tsv --out-dir results/bench
 
 # The general Eikonal solver (common/hj_eik) beyond paper 1: convergence of
