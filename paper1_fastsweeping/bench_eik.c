@@ -170,8 +170,9 @@ static void print_ratios(FILE *fp, const run_row *rows, int n, const int *orders
                 if (o->N == s->N) eq_n = s->cpu / o->cpu, ours_e = o->emean;
             }
             const double eq_acc = s->cpu / cpu_at_error(rows, n, s->problem, s->dim, orders[k], s->emean);
-            fprintf(fp, "%s\t%d\t%ld\t%d\t%.3g\t%d\t%.3g\t", s->problem, s->dim, s->N, s->order, s->emean,
-                    orders[k], ours_e);
+            fprintf(fp, "%s\t%d\t%ld\t%d\t%.3g\t%d\t", s->problem, s->dim, s->N, s->order, s->emean, orders[k]);
+            if (isnan(ours_e)) fputs("-\t", fp); /* no run of ours at this N */
+            else fprintf(fp, "%.3g\t", ours_e);
             if (isnan(eq_n)) fputs("-\t", fp);
             else fprintf(fp, "%.3g\t", eq_n);
             if (!isnan(eq_acc)) fprintf(fp, "%.3g\n", eq_acc);
