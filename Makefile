@@ -26,7 +26,7 @@
 # build/san/.  Dependencies (Debian packages) are installed on first use by
 # scripts/ensure-deps, by group: lib (Ceres) for the library and programs,
 # test (cmocka, pkg-config) for the tests, repro (gnuplot, cmark) for
-# figures and the report.
+# figures and the report, bench (scikit-fmm) for `make bench`.
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -64,6 +64,9 @@ DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
 DEPS_GROUPS += repro
+endif
+ifneq ($(filter bench bench-eikonal,$(MAKECMDGOALS)),)
+DEPS_GROUPS += bench
 endif
 DEPS_OK := $(DEPS_GROUPS:%=build/.deps-%)
 
@@ -119,6 +122,9 @@ $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 # parallel over rows like the kernel.
 $(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o: CFLAGS += -fopenmp -O3
 $(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
+# The Eikonal sweeps run hyperplanes in parallel (bitwise thread-independent).
+$(BUILD)/obj/common/hj_eik.o $(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/tests/test_eik.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
 $(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
