@@ -224,7 +224,8 @@ static void noconv_keeps_iterate(void **state)
 
 /* Order of convergence of the point source in the linear velocity, 2-D:
  * order 1 halves the error, orders 3 and 5 divide it by at least 2^2.5
- * (the source region's O(h^3) initial values bound both; see hj_eik.c). */
+ * (the maximum error sits at the outflow corner, where the quadratic ghost
+ * extrapolation holds order 5 at about 3; see hj_eik.c). */
 static void orders_on_small_case(void **state)
 {
     (void)state;
