@@ -39,7 +39,13 @@
  * converged first order solution.  A node whose stencil did not change
  * since its last update is skipped (locking, Bak, McLaughlin & Renzi
  * 2010): exactly in the first order phase, and in the higher order phase
- * when the changes were below a tenth of the stopping threshold. */
+ * when the changes were below a tenth of the stopping threshold.
+ *
+ * Known limit: where the solution has kinks on a coarse grid (two sources
+ * and a wall on 20 x 18 x 16 nodes, in the unit tests), the WENO5
+ * iteration can settle into a cycle with changes of about 1e-4 of the
+ * solution's scale and ends with HJ_ENOCONV (the last iterate kept); WENO3
+ * converges there in 11-15 iterations. */
 #include "hj_eik.h"
 
 #include <math.h>
