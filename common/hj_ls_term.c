@@ -180,6 +180,7 @@ typedef struct {
     double eps[HJ_LS_MAXDIM];
 } conv_pass;
 
+HJ_LS_TERM_CLONES
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const conv_pass *ps = term;
