@@ -180,14 +180,16 @@ typedef struct {
     double eps[HJ_LS_MAXDIM];
 } conv_pass;
 
+HJ_LS_TERM_CLONES
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const conv_pass *ps = term;
     const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    double *acc = rc->ws, *cfl = acc + n, *v = cfl + n, *dl = v + n, *w = dl + n;
-    for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
+    /* acc is the row of ydot itself (no copy at the end) */
+    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *w = dl + n;
+    int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
         if (c->velocity_fn || c->velocity_array[d]) {
             if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
@@ -221,18 +223,24 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
         } else
             hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
         const double idx = 1 / g->dx[d];
-        for (long j = 0; j < n; j++) {
-            acc[j] -= v[j] * dl[j];
-            cfl[j] += fabs(v[j]) * idx;
-        }
+        if (first) /* 0 - x and 0 + x: the bits of accumulating from zero */
+            for (long j = 0; j < n; j++) {
+                acc[j] = 0.0 - v[j] * dl[j];
+                cfl[j] = 0.0 + fabs(v[j]) * idx;
+            }
+        else
+            for (long j = 0; j < n; j++) {
+                acc[j] -= v[j] * dl[j];
+                cfl[j] += fabs(v[j]) * idx;
+            }
+        first = 0;
     }
+    if (first)
+        for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
     /* Elementwise running maximum (no reduction chain in the row loop); a
      * NaN or infinite velocity shows up there as a non-finite bound. */
-    double *out = ydot + rc->k, *tm = rc->tmax;
-    for (long j = 0; j < n; j++) {
-        out[j] = acc[j];
-        tm[j] = (cfl[j] > tm[j] || cfl[j] != cfl[j]) ? cfl[j] : tm[j];
-    }
+    double *tm = rc->tmax;
+    for (long j = 0; j < n; j++) tm[j] = (cfl[j] > tm[j] || cfl[j] != cfl[j]) ? cfl[j] : tm[j];
     (void)bad;
     *inv = 0;
     return HJ_OK;
