@@ -109,6 +109,10 @@ LDFLAGS += -fopenmp
 $(BUILD)/obj/common/hj_ls_%.o $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
+# Reachability runs its per-node passes (projection, time-to-reach) in
+# parallel over rows like the kernel.
+$(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
 $(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
@@ -118,6 +122,7 @@ $(BUILD)/test/common/tests/test_hjtime: | $(HJTIME)
 include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
+include studies/reach/rules.mk
 include tests/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck

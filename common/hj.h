@@ -39,6 +39,11 @@
 #include "hj_ls_seq.h"
 #include "hj_ls_front.h"
 
+/* Reachability on the kernel: control-affine dynamics, reach-avoid sets
+ * and tubes, time-to-reach, optimal control and trajectories */
+#include "hj_reach.h"
+#include "hj_ctrl.h"
+
 /* Ultra-Bee on sparse narrow bands (paper 3): the band stores, the UB-HJB
  * scheme, front errors, the minimal time function */
 #include "hj_band.h"

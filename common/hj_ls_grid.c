@@ -8,8 +8,8 @@
 
 #include "hj_sys.h"
 
-int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
-                    hj_error *err)
+int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
+                      hj_error *err)
 {
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
@@ -39,14 +39,51 @@ int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max
         g->total *= (size_t)g->ext[d];
         g->nodes *= (size_t)N[d];
     }
-    const double mem = hj_sys_physical_memory();
-    if (mem > 0 && (double)g->total * sizeof(double) > mem)
-        return hj_error_set(err, HJ_ENOMEM, "grid too large: one array needs %.3g GB, the machine has %.3g GB",
-                            (double)g->total * sizeof(double) / 1e9, mem / 1e9);
     g->offset = 0;
     for (int d = 0; d < dim; d++) g->offset += (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
     g->rows = g->nodes / (size_t)N[0];
     return HJ_OK;
+}
+
+int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
+                    hj_error *err)
+{
+    const int rc = hj_ls_grid_layout(g, dim, min, max, N, bc, err);
+    if (rc) return rc;
+    const double mem = hj_sys_physical_memory();
+    if (mem > 0 && (double)g->total * sizeof(double) > mem)
+        return hj_error_set(err, HJ_ENOMEM, "grid too large: one array needs %.3g GB, the machine has %.3g GB",
+                            (double)g->total * sizeof(double) / 1e9, mem / 1e9);
+    return HJ_OK;
+}
+
+int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N,
+                           const hj_ls_bc *bc, hj_error *err)
+{
+    if (dim < 1 || dim > HJ_LS_MAXDIM)
+        return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
+    double mx[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) {
+        mx[d] = max[d];
+        if (bc[d].type != HJ_LS_BC_PERIODIC) continue;
+        if (!isfinite(min[d]) || !isfinite(max[d]))
+            return hj_error_set(err, HJ_ENONFINITE, "grid bounds in dimension %d are not finite", d);
+        if (!(max[d] > min[d])) return hj_error_set(err, HJ_EINVAL, "the period must be positive in dimension %d", d);
+        if (N[d] < 2) return hj_error_set(err, HJ_EINVAL, "grid needs N >= 2 in dimension %d, got %ld", d, N[d]);
+        /* N nodes per period: the last node sits one spacing before the
+         * first node's image min + period. */
+        mx[d] = min[d] + (max[d] - min[d]) * (double)(N[d] - 1) / (double)N[d];
+    }
+    const int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    if (rc) return rc;
+    for (int d = 0; d < dim; d++)
+        if (bc[d].type == HJ_LS_BC_PERIODIC) g->dx[d] = (max[d] - min[d]) / (double)N[d];
+    return HJ_OK;
+}
+
+double hj_ls_grid_period(const hj_ls_grid *g, int d)
+{
+    return g->bc[d].type == HJ_LS_BC_PERIODIC ? (double)g->N[d] * g->dx[d] : 0.0;
 }
 
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,

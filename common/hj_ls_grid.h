@@ -64,6 +64,23 @@ typedef struct {
 int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                     hj_error *err);
 
+/* The same where the periodic dimensions are given by their period: for
+ * bc[d] PERIODIC, max[d] = min[d] + period is the first node's periodic
+ * image, excluded (N[d] nodes per period, dx = period / N[d], the last node
+ * at max[d] - dx); other dimensions as in hj_ls_grid_init.  A periodic
+ * angle is then [0, 2 pi) with no node duplicated. */
+int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N,
+                           const hj_ls_bc *bc, hj_error *err);
+
+/* The period N[d] dx[d] of a periodic dimension d, 0 for another. */
+double hj_ls_grid_period(const hj_ls_grid *g, int d);
+
+/* The layout of hj_ls_grid_init (sizes, strides, offsets, all size_t)
+ * without the check against the machine's memory: the index arithmetic of
+ * grids too large to allocate can be computed and checked. */
+int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
+                      hj_error *err);
+
 /* The same with a spacing instead of a node count: N = round((max - min) /
  * dx) + 1 and max is moved to min + (N - 1) dx (the toolbox's processGrid). */
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,

@@ -1,71 +1,48 @@
 /* # Reach-avoid set of a Dubins car with an obstacle
  *
- * **Problem.** x' = v cos th, y' = v sin th, th' = u with |u| <= w,
- * v = w = 1.  The states from which some control brings the car into the
- * disc of radius 0.5 about the origin within T = 1 while never entering the
- * box [-1.4, -0.6] x [0.2, 1.4]: a backward reachable tube with an
- * obstacle on (x, y, th) in [-2, 2]^2 x [0, 2 pi), th periodic.
+ * **Problem.** x' = cos th, y' = sin th, th' = u with |u| <= 1 (a
+ * control-affine system: f = (cos th, sin th, 0), G = (0, 0, 1)).  The
+ * states from which some control brings the car into the disc of radius
+ * 0.5 about the origin within T = 1 while never entering the box
+ * [-1.4, -0.6] x [0.2, 1.4]: a backward reachable tube with an obstacle on
+ * (x, y, th) in [-2, 2]^2 x [0, 2 pi), th periodic, given by its period.
  *
- * **Method.** phi_t + H(x, grad phi) = 0 with H = -min_u grad phi . f =
- * -v (p_x cos th + p_y sin th) + w |p_th|; Lax-Friedrichs with the exact
- * partial bounds v |cos th|, v |sin th|, w; the update restricted to
- * G <= 0 (a tube: the set only grows); ENO2 with second order TVD
- * Runge-Kutta; after every step phi = max(phi, -obstacle) (the mask keeps
- * the obstacle out of the set).
+ * **Method.** hj_reach_solve: the Hamiltonian and the Lax-Friedrichs
+ * bounds follow from the dynamics object (the control minimises, it
+ * reaches); ENO2 with second order TVD Runge-Kutta; after every step
+ * phi = max(min(phi, target), -obstacle).  Grid 41 x 41 x 40.
  *
- * **Checked number.** On the ray y = 0, th = pi (the car heads straight
- * at the target) the set ends exactly at x = 0.5 + v T = 1.5: the zero of
- * phi there must lie within 0.1 (one cell) of 1.5.
+ * **Checked number.** On the ray y = 0, th = pi (heading at the target)
+ * the set ends at x = 0.5 + T = 1.5: phi(1.4, 0, pi) < 0 < phi(1.6, 0, pi).
+ * With an argument, writes the slice th = pi (x y phi) there for a figure.
  */
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
 #define TRY(call) if (call) return fprintf(stderr, "dubins: %s\n", err.msg), 1
 
-static double ham(double t, const double *x, double phi, const double *p, void *ctx)
-{
-    (void)t, (void)phi, (void)ctx;
-    return -(p[0] * cos(x[2]) + p[1] * sin(x[2])) + fabs(p[2]);
-}
-static double partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
-{
-    (void)t, (void)pmin, (void)pmax, (void)ctx;
-    return d == 0 ? fabs(cos(x[2])) : d == 1 ? fabs(sin(x[2])) : 1.0;
-}
+static void f(double t, const double *x, double *o, void *c) { (void)t, (void)c, o[0] = cos(x[2]), o[1] = sin(x[2]), o[2] = 0; }
+static void G(double t, const double *x, double *o, void *c) { (void)t, (void)x, (void)c, o[0] = o[1] = 0, o[2] = 1; }
+static double target(double t, const double *x, void *c) { (void)t, (void)c; return hypot(x[0], x[1]) - 0.5; }
+static double obstacle(double t, const double *x, void *c) { (void)t, (void)c; return fmax(fabs(x[0] + 1) - 0.4, fabs(x[1] - 0.8) - 0.6); }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    const long N[3] = {41, 41, 40};
-    const double lo[3] = {-2, -2, 0}, hi[3] = {2, 2, 2 * HJ_PI * 39 / 40}, c[3] = {0, 0, 0};
-    const double box_lo[3] = {-1.4, 0.2, -INFINITY}, box_hi[3] = {-0.6, 1.4, INFINITY};
-    const int ignore_th = 2;
-    const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
-    hj_error err;
-    hj_ls_grid g;
-    TRY(hj_ls_grid_init(&g, 3, lo, hi, N, bc, &err));
-    double *phi = hj_ls_alloc(&g), *obstacle = hj_ls_alloc(&g);
-    if (!phi || !obstacle) return fprintf(stderr, "dubins: out of memory\n"), 1;
-    TRY(hj_ls_shape_cylinder(&g, &ignore_th, 1, c, 0.5, phi, &err));
-    TRY(hj_ls_shape_rectangle_corners(&g, box_lo, box_hi, obstacle, &err));
-    hj_ls_shape_complement(&g, obstacle, obstacle);
-
-    hj_ls_lax_friedrichs lf;
-    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham, partial, NULL);
-    hj_ls_restrict tube;
-    hj_ls_restrict_init(&tube, &g, &lf.base, 0);
-    hj_ls_mask avoid = {&g, obstacle, 1};
-    hj_ls_ode_opts opts;
-    hj_ls_ode_defaults(&opts);
-    opts.post = hj_ls_post_mask, opts.post_ctx = &avoid;
-    const double tspan[2] = {0, 1};
-    TRY(hj_ls_ode(2, &g, &tube.base, tspan, 2, phi, &opts, NULL, NULL, NULL, &err));
-
-    double x0 = NAN; /* zero of phi on y = 0, th = pi, x > 0, by linear interpolation */
-    for (long i = 20; i + 1 < N[0] && isnan(x0); i++) {
-        const double a = phi[hj_ls_index(&g, (long[]){i, 20, 20})], b = phi[hj_ls_index(&g, (long[]){i + 1, 20, 20})];
-        if (a <= 0 && b > 0) x0 = lo[0] + g.dx[0] * ((double)i + a / (a - b));
-    }
-    printf("dubins_reach_avoid: set ends at x = %.4f on the ray th = pi (exact 1.5)\n", x0);
-    hj_ls_free(phi), hj_ls_free(obstacle);
-    return fabs(x0 - 1.5) <= 0.1 ? 0 : 1;
+    const hj_ls_bc ex = {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, bc[3] = {ex, ex, {HJ_LS_BC_PERIODIC, 0, 0}};
+    hj_error err; hj_ls_grid g; hj_reach_dyn car; hj_reach_problem pb;
+    TRY(hj_ls_grid_init_period(&g, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI}, (long[]){41, 41, 40}, bc, &err));
+    hj_reach_dyn_init(&car, 3, f, NULL);
+    hj_reach_dyn_control_box(&car, G, 1, (double[]){-1}, (double[]){1});
+    hj_reach_problem_init(&pb, &g, &car);
+    pb.target.fn = target, pb.obstacle.fn = obstacle, pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g);
+    TRY(!phi || hj_reach_solve(&pb, phi, NULL, NULL, &err));
+    const double in = hj_ctrl_value(&g, phi, (double[]){1.4, 0, HJ_PI}), out = hj_ctrl_value(&g, phi, (double[]){1.6, 0, HJ_PI});
+    printf("dubins_reach_avoid: phi(1.4, 0, pi) = %.4f, phi(1.6, 0, pi) = %.4f (the set ends at 1.5)\n", in, out);
+    FILE *fp = argc > 1 ? fopen(argv[1], "w") : NULL; /* the slice th = pi (node 20) */
+    for (long j = 0; fp && j < 41; j++, fputc('\n', fp))
+        for (long i = 0; i < 41; i++) fprintf(fp, "%g %g %g\n", g.min[0] + g.dx[0] * (double)i, g.min[1] + g.dx[1] * (double)j, phi[hj_ls_index(&g, (long[]){i, j, 20})]);
+    if (fp) fclose(fp);
+    hj_ls_free(phi);
+    return in < 0 && out > 0 ? 0 : 1;
 }

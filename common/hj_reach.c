@@ -1,0 +1,476 @@
+/* hj_reach.c -- control-affine dynamics and reachability problems. */
+#include "hj_reach.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hj_ls_measure.h"
+
+void hj_reach_dyn_init(hj_reach_dyn *s, int nx, hj_reach_vec_fn f, void *ctx)
+{
+    memset(s, 0, sizeof *s);
+    s->nx = nx;
+    s->f = f;
+    s->ctx = ctx;
+    s->u.mode = HJ_REACH_MIN;
+    s->d.mode = HJ_REACH_MAX;
+}
+
+static void set_box(hj_reach_input *in, int n, const double *lo, const double *hi)
+{
+    in->n = n;
+    in->shape = HJ_REACH_BOX;
+    for (int j = 0; j < n && j < HJ_REACH_MAXIN; j++) in->lo[j] = lo[j], in->hi[j] = hi[j];
+}
+
+static void set_ball(hj_reach_input *in, int n, const double *c, double r)
+{
+    in->n = n;
+    in->shape = HJ_REACH_BALL;
+    for (int j = 0; j < n && j < HJ_REACH_MAXIN; j++) in->c[j] = c[j];
+    in->r = r;
+}
+
+void hj_reach_dyn_control_box(hj_reach_dyn *s, hj_reach_vec_fn G, int n, const double *lo, const double *hi)
+{
+    s->G = G;
+    set_box(&s->u, n, lo, hi);
+}
+void hj_reach_dyn_control_ball(hj_reach_dyn *s, hj_reach_vec_fn G, int n, const double *c, double r)
+{
+    s->G = G;
+    set_ball(&s->u, n, c, r);
+}
+void hj_reach_dyn_disturbance_box(hj_reach_dyn *s, hj_reach_vec_fn H, int n, const double *lo, const double *hi)
+{
+    s->H = H;
+    set_box(&s->d, n, lo, hi);
+}
+void hj_reach_dyn_disturbance_ball(hj_reach_dyn *s, hj_reach_vec_fn H, int n, const double *c, double r)
+{
+    s->H = H;
+    set_ball(&s->d, n, c, r);
+}
+
+void hj_reach_dyn_goal(hj_reach_dyn *s, int goal)
+{
+    s->u.mode = goal == HJ_REACH_AVOID ? HJ_REACH_MAX : HJ_REACH_MIN;
+    s->d.mode = goal == HJ_REACH_AVOID ? HJ_REACH_MIN : HJ_REACH_MAX;
+}
+
+static int check_input(const hj_reach_input *in, const char *who, int have_matrix, hj_error *err)
+{
+    if (in->n < 0 || in->n > HJ_REACH_MAXIN)
+        return hj_error_set(err, HJ_EINVAL, "%s: %d inputs, must be 0..%d", who, in->n, HJ_REACH_MAXIN);
+    if (in->n == 0) return HJ_OK;
+    if (!have_matrix) return hj_error_set(err, HJ_EINVAL, "%s: %d inputs but no input matrix", who, in->n);
+    if (in->mode != HJ_REACH_MIN && in->mode != HJ_REACH_MAX)
+        return hj_error_set(err, HJ_EINVAL, "%s: mode must be HJ_REACH_MIN or HJ_REACH_MAX", who);
+    if (in->shape == HJ_REACH_BOX) {
+        for (int j = 0; j < in->n; j++)
+            if (!(in->lo[j] <= in->hi[j]) || !isfinite(in->lo[j]) || !isfinite(in->hi[j]))
+                return hj_error_set(err, HJ_EINVAL, "%s: box [%g, %g] of input %d is empty or not finite", who,
+                                    in->lo[j], in->hi[j], j);
+    } else if (in->shape == HJ_REACH_BALL) {
+        if (!(in->r >= 0) || !isfinite(in->r))
+            return hj_error_set(err, HJ_EINVAL, "%s: ball radius %g must be finite and >= 0", who, in->r);
+        for (int j = 0; j < in->n; j++)
+            if (!isfinite(in->c[j])) return hj_error_set(err, HJ_EINVAL, "%s: ball centre is not finite", who);
+    } else
+        return hj_error_set(err, HJ_EINVAL, "%s: unknown set shape %d", who, in->shape);
+    return HJ_OK;
+}
+
+int hj_reach_dyn_check(const hj_reach_dyn *s, hj_error *err)
+{
+    if (s->nx < 1 || s->nx > HJ_LS_MAXDIM)
+        return hj_error_set(err, HJ_EINVAL, "dynamics: state dimension %d, must be 1..%d", s->nx, HJ_LS_MAXDIM);
+    int rc = check_input(&s->u, "control", s->G != NULL, err);
+    return rc ? rc : check_input(&s->d, "disturbance", s->H != NULL, err);
+}
+
+/* Centre and half widths of an input set (a ball's w is unused). */
+static void centre(const hj_reach_input *in, double *c, double *w)
+{
+    for (int j = 0; j < in->n; j++) {
+        if (in->shape == HJ_REACH_BOX) {
+            c[j] = 0.5 * (in->lo[j] + in->hi[j]);
+            w[j] = 0.5 * (in->hi[j] - in->lo[j]);
+        } else
+            c[j] = in->c[j], w[j] = 0;
+    }
+}
+
+/* q = M^T p for an nx x n matrix M. */
+static void mat_tp(const double *M, int nx, int n, const double *p, double *q)
+{
+    for (int j = 0; j < n; j++) q[j] = 0;
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < n; j++) q[j] += M[i * n + j] * p[i];
+}
+
+/* opt_{v in set} q . v, and the optimal v (may be NULL). */
+static double input_opt(const hj_reach_input *in, const double *q, double *v)
+{
+    double c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
+    centre(in, c, w);
+    const double sg = in->mode == HJ_REACH_MIN ? -1.0 : 1.0;
+    double val = 0;
+    if (in->shape == HJ_REACH_BOX) {
+        for (int j = 0; j < in->n; j++) {
+            const double aq = fabs(q[j]);
+            val += q[j] * c[j] + sg * aq * w[j];
+            if (v) v[j] = q[j] == 0 ? c[j] : c[j] + sg * (q[j] > 0 ? w[j] : -w[j]);
+        }
+    } else {
+        double n2 = 0;
+        for (int j = 0; j < in->n; j++) val += q[j] * c[j], n2 += q[j] * q[j];
+        const double nq = sqrt(n2);
+        val += sg * in->r * nq;
+        for (int j = 0; v && j < in->n; j++) v[j] = nq > 0 ? c[j] + sg * in->r * q[j] / nq : c[j];
+    }
+    return val;
+}
+
+#define MATMAX (HJ_LS_MAXDIM * HJ_REACH_MAXIN)
+
+double hj_reach_hamiltonian(const hj_reach_dyn *s, double t, const double *x, const double *p)
+{
+    double h = 0, q[HJ_REACH_MAXIN], M[MATMAX];
+    if (s->f) {
+        double fx[HJ_LS_MAXDIM];
+        s->f(t, x, fx, s->ctx);
+        for (int i = 0; i < s->nx; i++) h += p[i] * fx[i];
+    }
+    if (s->u.n > 0) {
+        s->G(t, x, M, s->ctx);
+        mat_tp(M, s->nx, s->u.n, p, q);
+        h += input_opt(&s->u, q, NULL);
+    }
+    if (s->d.n > 0) {
+        s->H(t, x, M, s->ctx);
+        mat_tp(M, s->nx, s->d.n, p, q);
+        h += input_opt(&s->d, q, NULL);
+    }
+    return h;
+}
+
+void hj_reach_dyn_optimal(const hj_reach_dyn *s, double t, const double *x, const double *p, double *u, double *d)
+{
+    double q[HJ_REACH_MAXIN], M[MATMAX];
+    if (u && s->u.n > 0) {
+        s->G(t, x, M, s->ctx);
+        mat_tp(M, s->nx, s->u.n, p, q);
+        input_opt(&s->u, q, u);
+    }
+    if (d && s->d.n > 0) {
+        s->H(t, x, M, s->ctx);
+        mat_tp(M, s->nx, s->d.n, p, q);
+        input_opt(&s->d, q, d);
+    }
+}
+
+void hj_reach_dyn_eval(const hj_reach_dyn *s, double t, const double *x, const double *u, const double *d,
+                       double *xdot)
+{
+    double M[MATMAX];
+    for (int i = 0; i < s->nx; i++) xdot[i] = 0;
+    if (s->f) s->f(t, x, xdot, s->ctx);
+    if (u && s->u.n > 0) {
+        s->G(t, x, M, s->ctx);
+        for (int i = 0; i < s->nx; i++)
+            for (int j = 0; j < s->u.n; j++) xdot[i] += M[i * s->u.n + j] * u[j];
+    }
+    if (d && s->d.n > 0) {
+        s->H(t, x, M, s->ctx);
+        for (int i = 0; i < s->nx; i++)
+            for (int j = 0; j < s->d.n; j++) xdot[i] += M[i * s->d.n + j] * d[j];
+    }
+}
+
+/* The kernel integrates in tau with the Hamiltonian -H; the ctx of the
+ * kernel's callbacks is a struct holding the system and the horizon, so
+ * that the system sees the forward time t = T - tau. */
+typedef struct {
+    const hj_reach_dyn *dyn;
+    double T;
+    unsigned long id; /* this solve's number, for the cache of ls_partial */
+} ham_ctx;
+
+static _Atomic unsigned long solve_count;
+
+/* The kernel asks for alpha_d one dimension at a time at the same node:
+ * the bounds of all dimensions are computed at once and kept, per thread,
+ * for the next calls at that node of the same solve. */
+static _Thread_local struct {
+    unsigned long id;
+    double tau, x[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
+} cache;
+
+static double ls_ham(double tau, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)phi;
+    const ham_ctx *h = ctx;
+    return -hj_reach_hamiltonian(h->dyn, h->T - tau, x, p);
+}
+
+/* alpha[0..nx-1] at (t, x): the largest |dx_i/dt| over the input sets. */
+static void partials(const hj_reach_dyn *s, double t, const double *x, double *alpha)
+{
+    double a[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
+    if (s->f) s->f(t, x, a, s->ctx);
+    const hj_reach_input *in[2] = {&s->u, &s->d};
+    const hj_reach_vec_fn mf[2] = {s->G, s->H};
+    for (int k = 0; k < 2; k++) {
+        const int n = in[k]->n;
+        if (n == 0) continue;
+        mf[k](t, x, M, s->ctx);
+        centre(in[k], c, w);
+        for (int d = 0; d < s->nx; d++) {
+            double n2 = 0;
+            for (int j = 0; j < n; j++) {
+                const double m = M[d * n + j];
+                a[d] += m * c[j];
+                if (in[k]->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
+                else n2 += m * m;
+            }
+            if (in[k]->shape == HJ_REACH_BALL) b[d] += in[k]->r * sqrt(n2);
+        }
+    }
+    for (int d = 0; d < s->nx; d++) alpha[d] = fabs(a[d]) + b[d];
+}
+
+static double partial_of(const hj_reach_dyn *s, double t, const double *x, int d)
+{
+    double alpha[HJ_LS_MAXDIM];
+    partials(s, t, x, alpha);
+    return alpha[d];
+}
+
+static double ls_partial(double tau, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)pmin, (void)pmax;
+    const ham_ctx *h = ctx;
+    const int nx = h->dyn->nx;
+    int hit = cache.id == h->id && cache.tau == tau;
+    for (int i = 0; hit && i < nx; i++) hit = cache.x[i] == x[i];
+    if (!hit) {
+        partials(h->dyn, h->T - tau, x, cache.alpha);
+        cache.id = h->id, cache.tau = tau;
+        for (int i = 0; i < nx; i++) cache.x[i] = x[i];
+    }
+    return cache.alpha[d];
+}
+
+double hj_reach_ls_ham(double t, const double *x, double phi, const double *p, void *ctx)
+{
+    (void)phi;
+    return -hj_reach_hamiltonian(ctx, t, x, p);
+}
+
+double hj_reach_ls_partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)pmin, (void)pmax;
+    return partial_of(ctx, t, x, d);
+}
+
+void hj_reach_problem_init(hj_reach_problem *pb, const hj_ls_grid *g, const hj_reach_dyn *s)
+{
+    memset(pb, 0, sizeof *pb);
+    pb->grid = g;
+    pb->dyn = s;
+    pb->kind = HJ_REACH_BRT;
+    pb->horizon = NAN;
+    pb->scheme = HJ_LS_ENO2;
+    pb->order = 2;
+    pb->dissipation = HJ_LS_LLF;
+    pb->factor_cfl = 0.5;
+}
+
+static int set_given(const hj_reach_set *s) { return s->fn || s->array; }
+
+static double set_at(const hj_reach_set *s, double t, const double *x, size_t k)
+{
+    return s->fn ? s->fn(t, x, s->ctx) : s->array[k];
+}
+
+/* State of the post-step projection. */
+typedef struct {
+    const hj_reach_problem *pb;
+    double *prev; /* phi before the step */
+    double *ttr;
+    double tau_prev;
+    double change; /* max |phi - prev| / dt of the last step */
+    int converged;
+    long steps;
+    int bad; /* a set function returned NaN */
+} post_ctx;
+
+/* A private code that ends the integration at convergence (not an error). */
+#define STOP_CONVERGED (-1)
+
+static int post_step(double tau, double *y, void *ctx, hj_error *err)
+{
+    post_ctx *c = ctx;
+    const hj_reach_problem *pb = c->pb;
+    const hj_ls_grid *g = pb->grid;
+    const double t = pb->horizon - tau, dt = tau - c->tau_prev;
+    const int tube = pb->kind == HJ_REACH_BRT, obst = set_given(&pb->obstacle);
+    double change = 0;
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 16) reduction(max : change) reduction(| : bad)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k0 = hj_ls_row(g, r, i);
+        hj_ls_coord(g, i, x);
+        double rc = 0;
+        int rb = 0;
+        for (long j = 0; j < g->N[0]; j++) {
+            const size_t k = k0 + (size_t)j;
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            double v = y[k];
+            if (tube) {
+                const double l = set_at(&pb->target, t, x, k);
+                rb |= isnan(l);
+                v = l < v ? l : v;
+            }
+            if (obst) {
+                const double o = -set_at(&pb->obstacle, t, x, k);
+                rb |= isnan(o);
+                v = o > v ? o : v;
+            }
+            y[k] = v;
+            const double old = c->prev[k], dv = fabs(v - old);
+            rc = dv > rc ? dv : rc;
+            if (c->ttr && old > 0 && v <= 0 && isinf(c->ttr[k])) c->ttr[k] = c->tau_prev + dt * old / (old - v);
+            c->prev[k] = v;
+        }
+        change = rc > change ? rc : change;
+        bad |= rb;
+    }
+    if (bad) return hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
+    c->change = change / dt;
+    c->tau_prev = tau;
+    c->steps++;
+    if (pb->conv_tol > 0 && c->change <= pb->conv_tol) {
+        c->converged = 1;
+        return STOP_CONVERGED;
+    }
+    return HJ_OK;
+}
+
+static int check_problem(const hj_reach_problem *pb, hj_error *err)
+{
+    if (!pb->grid || !pb->dyn) return hj_error_set(err, HJ_EINVAL, "reach: the problem needs a grid and dynamics");
+    int rc = hj_reach_dyn_check(pb->dyn, err);
+    if (rc) return rc;
+    if (pb->dyn->nx != pb->grid->dim)
+        return hj_error_set(err, HJ_EINVAL, "reach: %d-D dynamics on a %d-D grid", pb->dyn->nx, pb->grid->dim);
+    if (!set_given(&pb->target)) return hj_error_set(err, HJ_EINVAL, "reach: no target");
+    if (pb->kind != HJ_REACH_BRS && pb->kind != HJ_REACH_BRT)
+        return hj_error_set(err, HJ_EINVAL, "reach: kind must be HJ_REACH_BRS or HJ_REACH_BRT");
+    if (!(pb->horizon > 0)) return hj_error_set(err, HJ_EINVAL, "reach: the horizon must be > 0, got %g", pb->horizon);
+    if (isinf(pb->horizon) && !(pb->conv_tol > 0))
+        return hj_error_set(err, HJ_EINVAL, "reach: an infinite horizon needs a convergence tolerance");
+    if (!(pb->discount >= 0) || !isfinite(pb->discount))
+        return hj_error_set(err, HJ_EINVAL, "reach: the discount must be finite and >= 0, got %g", pb->discount);
+    if (!(pb->conv_tol >= 0)) return hj_error_set(err, HJ_EINVAL, "reach: the convergence tolerance must be >= 0");
+    return HJ_OK;
+}
+
+static double wall(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err)
+{
+    int rc = check_problem(pb, err);
+    if (rc) return rc;
+    const double start = wall();
+    const hj_ls_grid *g = pb->grid;
+    /* With an infinite horizon the sets are static: T only shifts time. */
+    const double T = isinf(pb->horizon) ? 0 : pb->horizon;
+    hj_reach_problem p = *pb;
+    p.horizon = T;
+    post_ctx pc = {&p, hj_ls_alloc(g), ttr, 0, INFINITY, 0, 0, 0};
+    if (!pc.prev) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory");
+    /* tau = 0: max(target(T), -obstacle(T)). */
+    const int obst = set_given(&pb->obstacle);
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k0 = hj_ls_row(g, r, i);
+        hj_ls_coord(g, i, x);
+        for (long j = 0; j < g->N[0]; j++) {
+            const size_t k = k0 + (size_t)j;
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            double v = set_at(&pb->target, T, x, k);
+            if (isnan(v)) {
+                hj_ls_free(pc.prev);
+                return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
+            }
+            if (ttr) ttr[k] = v <= 0 ? 0 : INFINITY;
+            if (obst) {
+                const double o = -set_at(&pb->obstacle, T, x, k);
+                v = o > v ? o : v;
+            }
+            phi[k] = pc.prev[k] = v;
+        }
+    }
+    ham_ctx hc = {pb->dyn, T, ++solve_count};
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, g, pb->scheme, pb->dissipation, ls_ham, ls_partial, &hc);
+    hj_ls_discount disc;
+    hj_ls_discount_init(&disc, g);
+    disc.lambda.value = pb->discount;
+    hj_ls_sum sum;
+    const hj_ls_term *terms[2] = {&lf.base, &disc.base};
+    const hj_ls_term *term = &lf.base;
+    int have_sum = 0;
+    if (pb->discount > 0) {
+        if ((rc = hj_ls_sum_init(&sum, g, terms, 2, err))) goto done;
+        have_sum = 1;
+        term = &sum.base;
+    }
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.factor_cfl = pb->factor_cfl;
+    o.post = post_step;
+    o.post_ctx = &pc;
+    o.blowup_factor = 0; /* obstacle and target bound phi; discount decays */
+    /* An infinite horizon runs until convergence: a long finite span. */
+    const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
+    rc = hj_ls_ode(pb->order, g, term, tspan, 2, phi, &o, NULL, NULL, NULL, err);
+    if (rc == STOP_CONVERGED) rc = HJ_OK, hj_error_clear(err);
+    if (rc == HJ_OK) hj_ls_fill_ghosts(g, phi);
+done:
+    if (have_sum) hj_ls_sum_free(&sum);
+    hj_ls_free(pc.prev);
+    if (stats) {
+        stats->steps = pc.steps;
+        stats->tau = pc.tau_prev;
+        stats->converged = pc.converged;
+        stats->seconds = wall() - start;
+    }
+    return rc;
+}
+
+int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
+{
+    int pdim = -1;
+    for (int d = 0; d < g->dim; d++)
+        if (g->bc[d].type == HJ_LS_BC_PERIODIC) {
+            if (pdim >= 0) return hj_error_set(err, HJ_EINVAL, "measure: more than one periodic dimension");
+            pdim = d;
+        }
+    return hj_ls_measure_periodic(g, phi, pdim, m, err);
+}

@@ -1,0 +1,160 @@
+/* hj_reach.h -- reachability on the level set kernel: control-affine
+ * dynamics as data, and backward reachable sets and tubes (BRS, BRT),
+ * reach-avoid problems and time-to-reach functions solved with the
+ * kernel's Lax-Friedrichs term (hj_ls_term.h) and TVD Runge-Kutta
+ * integrator (hj_ls_ode.h).
+ *
+ * Dynamics.  dx/dt = f(t, x) + G(t, x) u + H(t, x) d, with u in a box
+ * [lo, hi] or a ball |u - c| <= r of R^nu, and d likewise in R^nd.  Each
+ * player is named as minimising or maximising the value phi: with the set
+ * {phi <= 0}, a control that reaches it minimises, a control that avoids
+ * it maximises, and a disturbance plays against the control (or with it:
+ * the user says).  With p = grad phi and the optimal inputs,
+ *     H(t, x, p) = p . f + opt_u (G^T p) . u + opt_d (H^T p) . d,
+ * where, for a box with centre c and half widths w, min_u q . u =
+ * q . c - sum_j |q_j| w_j (max: +), and for a ball min_u q . u = q . c -
+ * r |q| (max: +).  phi evolves in backward time tau = T - t (the time
+ * remaining to the horizon T) by
+ *     D_tau phi - H(T - tau, x, grad phi) = 0,
+ * i.e. the kernel's Hamiltonian is -H.  Its partial bounds are exact over
+ * the input sets, independent of p:
+ *     alpha_i = |f_i + (G c_u)_i + (H c_d)_i| + sum_j |G_ij| w_j
+ *               + sum_j |H_ij| w'_j     (boxes; r |G_i.| for a ball),
+ * the largest |dx_i/dt| over the inputs (section 2.6's air3D bounds).
+ * The general form stays: hj_ls_lax_friedrichs with any H and partial.
+ *
+ * Problems.  The target and the obstacle are level set functions
+ * (negative inside), static arrays on the grid or functions of the
+ * forward time t and the state.  The value at tau = 0 is
+ * max(target(T), -obstacle(T)); after every step of the kernel
+ *     BRT (tube):  phi = max(min(phi, target(t)), -obstacle(t)),
+ *     BRS (set):   phi = max(phi, -obstacle(t)),
+ * t = T - tau: the discrete form of the reach-avoid variational
+ * inequality (Fisac et al., 2015), which treats time-varying targets and
+ * obstacles at the time they hold.  Optional: a discount term lambda phi
+ * (hj_ls_discount), a convergence stop (max |phi_new - phi_old| / dt below
+ * a tolerance: the infinite horizon value, for static sets), and the
+ * time-to-reach function: the first tau at which each node's phi becomes
+ * <= 0, interpolated linearly in the step (INFINITY for nodes never
+ * reached); for a time-invariant system and target under a BRT it is the
+ * minimum time to reach the target while avoiding the obstacle.
+ *
+ * Every evaluation is node by node and parallel over rows, so results do
+ * not depend on the number of OpenMP threads; callbacks must be
+ * thread-safe.  Errors are returned (hj_error.h), never printed.
+ */
+#ifndef HJ_REACH_H
+#define HJ_REACH_H
+
+#include "hj_error.h"
+#include "hj_ls_grid.h"
+#include "hj_ls_ode.h"
+#include "hj_ls_term.h"
+
+#define HJ_REACH_MAXIN 8
+
+enum { HJ_REACH_BOX, HJ_REACH_BALL };
+/* What a player does with the value phi. */
+enum { HJ_REACH_MIN, HJ_REACH_MAX };
+/* Shorthands for the control's goal: REACH the set {phi <= 0} (control
+ * minimises, disturbance maximises) or AVOID it (the reverse). */
+enum { HJ_REACH_REACH, HJ_REACH_AVOID };
+
+/* An input set in R^n: a box [lo, hi] or a ball of centre c and radius r. */
+typedef struct {
+    int n;     /* number of inputs, 0..HJ_REACH_MAXIN */
+    int shape; /* HJ_REACH_BOX or HJ_REACH_BALL */
+    double lo[HJ_REACH_MAXIN], hi[HJ_REACH_MAXIN]; /* box */
+    double c[HJ_REACH_MAXIN], r;                   /* ball */
+    int mode;  /* HJ_REACH_MIN or HJ_REACH_MAX */
+} hj_reach_input;
+
+/* f: fx[0..nx-1]; G, H: nx x n matrices, row major (g[i * n + j]). */
+typedef void (*hj_reach_vec_fn)(double t, const double *x, double *out, void *ctx);
+
+typedef struct {
+    int nx;                 /* state dimension, that of the grid */
+    hj_reach_vec_fn f;      /* drift, NULL for 0 */
+    hj_reach_vec_fn G;      /* control matrix (needed when u.n > 0) */
+    hj_reach_vec_fn H;      /* disturbance matrix (needed when d.n > 0) */
+    hj_reach_input u, d;
+    void *ctx;
+} hj_reach_dyn;
+
+/* Zero inputs, no callbacks. */
+void hj_reach_dyn_init(hj_reach_dyn *s, int nx, hj_reach_vec_fn f, void *ctx);
+/* A box [lo, hi] (ball: hj_reach_input_ball) of n inputs as control (G)
+ * or disturbance (H). */
+void hj_reach_dyn_control_box(hj_reach_dyn *s, hj_reach_vec_fn G, int n, const double *lo, const double *hi);
+void hj_reach_dyn_control_ball(hj_reach_dyn *s, hj_reach_vec_fn G, int n, const double *c, double r);
+void hj_reach_dyn_disturbance_box(hj_reach_dyn *s, hj_reach_vec_fn H, int n, const double *lo, const double *hi);
+void hj_reach_dyn_disturbance_ball(hj_reach_dyn *s, hj_reach_vec_fn H, int n, const double *c, double r);
+/* Set the players' modes from the control's goal (HJ_REACH_REACH or
+ * HJ_REACH_AVOID); the disturbance opposes the control. */
+void hj_reach_dyn_goal(hj_reach_dyn *s, int goal);
+/* HJ_EINVAL for an inconsistent system (dimensions, empty box, missing
+ * matrix, unknown mode). */
+int hj_reach_dyn_check(const hj_reach_dyn *s, hj_error *err);
+
+/* The Hamiltonian H(t, x, p) above (the players' optima), and the
+ * kernel's form (hj_ls_ham_fn, hj_ls_partial_fn, ctx = the hj_reach_dyn,
+ * t the forward time): -H and the partial bounds alpha_d. */
+double hj_reach_hamiltonian(const hj_reach_dyn *s, double t, const double *x, const double *p);
+double hj_reach_ls_ham(double t, const double *x, double phi, const double *p, void *ctx);
+double hj_reach_ls_partial(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx);
+
+/* The optimal control u[0..nu-1] and disturbance d[0..nd-1] (either may
+ * be NULL) for the gradient p at (t, x): the argument of the optima in H.
+ * Where a component of G^T p vanishes the box's centre is taken. */
+void hj_reach_dyn_optimal(const hj_reach_dyn *s, double t, const double *x, const double *p, double *u, double *d);
+/* dx/dt = f + G u + H d (u, d may be NULL for zero inputs). */
+void hj_reach_dyn_eval(const hj_reach_dyn *s, double t, const double *x, const double *u, const double *d,
+                       double *xdot);
+
+/* A level set function of the forward time and the state. */
+typedef double (*hj_reach_set_fn)(double t, const double *x, void *ctx);
+/* A set: an array on the grid, or fn (overrides the array), or neither
+ * (no set). */
+typedef struct {
+    const double *array;
+    hj_reach_set_fn fn;
+    void *ctx;
+} hj_reach_set;
+
+enum { HJ_REACH_BRS, HJ_REACH_BRT };
+
+typedef struct {
+    const hj_ls_grid *grid;
+    const hj_reach_dyn *dyn;
+    int kind;             /* HJ_REACH_BRS or HJ_REACH_BRT (default) */
+    hj_reach_set target;  /* needed */
+    hj_reach_set obstacle; /* optional */
+    double horizon;       /* T > 0 (the largest tau); INFINITY needs conv_tol
+                           * and static sets (functions then see t = -tau) */
+    double conv_tol;      /* > 0: stop when max |dphi| / dt <= conv_tol */
+    double discount;      /* lambda >= 0: the term lambda phi (0: none) */
+    int scheme;           /* HJ_LS_* upwind scheme, default HJ_LS_ENO2 */
+    int order;            /* RK order 1..3, default 2 */
+    int dissipation;      /* default HJ_LS_LLF */
+    double factor_cfl;    /* default 0.5 */
+} hj_reach_problem;
+
+/* Defaults above for grid g and system s (target and horizon to set). */
+void hj_reach_problem_init(hj_reach_problem *pb, const hj_ls_grid *g, const hj_reach_dyn *s);
+
+typedef struct {
+    long steps;
+    double tau;    /* backward time reached (T, or less when converged) */
+    int converged; /* the convergence stop ended the run */
+    double seconds;
+} hj_reach_stats;
+
+/* Solve: phi (an array on the grid, written) receives the value at tau
+ * (forward time T - tau); ttr (may be NULL) the time-to-reach. */
+int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
+
+/* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
+ * periodic dimension, which counts a full period (hj_ls_measure_periodic). */
+int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
+
+#endif

@@ -1,0 +1,130 @@
+/* Unit tests of common/hj_ctrl: multilinear interpolation and its
+ * gradient (exact on multilinear data, periodic wrap), the optimal inputs
+ * from a grid value, and closed-loop RK4 runs with known arrival times. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ctrl.h"
+#include "hj_math.h"
+
+static double bilinear(const double *x) { return 1 + 2 * x[0] - x[1] + 0.5 * x[0] * x[1]; }
+
+static void fill(const hj_ls_grid *g, double *a, double (*f)(const double *))
+{
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, i);
+        for (long j = 0; j < g->N[0]; j++) {
+            i[0] = j;
+            hj_ls_coord(g, i, x);
+            a[k + (size_t)j] = f(x);
+        }
+    }
+}
+
+static void interpolation_exact(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, (double[]){-1, -2}, (double[]){1, 2}, (long[]){11, 21}, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    fill(&g, a, bilinear);
+    const double xs[4][2] = {{0.13, -0.77}, {-0.99, 1.999}, {1, 2}, {0.5, 0.5}};
+    for (int k = 0; k < 4; k++) {
+        assert_close(hj_ctrl_value(&g, a, xs[k]), bilinear(xs[k]), 1e-13, 0);
+        double p[2];
+        hj_ctrl_gradient(&g, a, (double[]){0.31, 0.47}, p);
+        /* The central difference of a bilinear function is its derivative. */
+        assert_close(p[0], 2 + 0.5 * 0.47, 1e-13, 0);
+        assert_close(p[1], -1 + 0.5 * 0.31, 1e-13, 0);
+    }
+    /* Outside the box the value is clamped to the nearest boundary point. */
+    assert_close(hj_ctrl_value(&g, a, (double[]){3, 0}), bilinear((double[]){1, 0}), 1e-13, 0);
+    hj_ls_free(a);
+}
+
+static double wave(const double *x) { return cos(x[0]); }
+
+static void interpolation_periodic(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc = {HJ_LS_BC_PERIODIC, 0, 0};
+    assert_int_equal(hj_ls_grid_init_period(&g, 1, (double[]){0}, (double[]){2 * HJ_PI}, (long[]){64}, &bc, NULL),
+                     HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    fill(&g, a, wave);
+    /* Between the last node and the period's end, and one period away. */
+    const double th = 2 * HJ_PI - 0.5 * g.dx[0];
+    assert_close(hj_ctrl_value(&g, a, &th), cos(th), 2e-3, 0);
+    const double th2 = th - 4 * HJ_PI;
+    assert_close(hj_ctrl_value(&g, a, &th2), hj_ctrl_value(&g, a, &th), 1e-12, 0);
+    hj_ls_free(a);
+}
+
+/* x' = u, |u| <= 1, value |x| - 0.5: from 1.2 the target is reached at
+ * t = 0.7 (first step end at or after it). */
+static void one_g(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 1;
+}
+static double absx(const double *x) { return fabs(x[0]) - 0.5; }
+static double target_fn(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fabs(x[0]) - 0.5;
+}
+static double obstacle_fn(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fabs(x[0] - 1.0) - 0.05; /* around 1.0 */
+}
+
+static void simulate_reaches(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, (double[]){-2}, (double[]){2}, (long[]){41}, &bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    fill(&g, a, absx);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, NULL, NULL);
+    hj_reach_dyn_control_box(&s, one_g, 1, (double[]){-1}, (double[]){1});
+    double u;
+    hj_ctrl_optimal(&s, &g, a, 0, (double[]){1.2}, &u, NULL);
+    assert_close(u, -1, 0, 0);
+    hj_ctrl_sim_opts o;
+    hj_ctrl_sim_defaults(&o);
+    o.dt = 0.01, o.t_max = 2;
+    o.target.fn = target_fn, o.obstacle.fn = obstacle_fn;
+    hj_ctrl_traj tr;
+    hj_error err;
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 1, 1, 0, 200, &err), HJ_OK);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){1.2}, &o, &tr, &err), HJ_OK);
+    assert_true(tr.reached);
+    assert_close(tr.t[tr.n - 1], 0.7, 1e-9, 0);
+    assert_close(tr.x[tr.n - 1], 0.5, 1e-9, 0);
+    assert_close(tr.value[0], 0.7, 1e-12, 0);
+    assert_true(tr.collided); /* it crossed 1.0 */
+    assert_close(tr.min_obstacle, -0.05, 1e-9, 0);
+    /* An avoiding controller (max) from inside stays away: never reaches. */
+    hj_reach_dyn_goal(&s, HJ_REACH_AVOID);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){0.6}, &o, &tr, &err), HJ_OK);
+    assert_false(tr.reached);
+    assert_close(tr.t[tr.n - 1], 2, 1e-12, 0);
+    assert_int_equal(tr.n, 201);
+    /* Too short a trajectory for the run: refused. */
+    o.t_max = 3;
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){0.6}, &o, &tr, &err), HJ_EINVAL);
+    hj_ctrl_traj_free(&tr);
+    hj_ls_free(a);
+}
+
+HJ_TEST_MAIN_ONE_THREAD("ctrl", NULL, NULL, cmocka_unit_test(interpolation_exact),
+                        cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches))

@@ -1,0 +1,416 @@
+/* Unit tests of common/hj_reach: the Hamiltonian and partial bounds of
+ * control-affine dynamics against brute force over the input sets, the
+ * optimal inputs, and reachability problems with closed-form answers in
+ * 1-D (a tube, the time-to-reach, the convergence stop, time-varying
+ * targets, discounting), bitwise independence of the thread count, and
+ * the periodic grid's measure. */
+#include "hj_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj_ls_shape.h"
+#include "hj_math.h"
+#include "hj_reach.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+/* A 2-D test system with state-dependent matrices: f = (x1, -x0),
+ * G = [[1, x0], [0, 2]], H = [[0.5], [x1]]. */
+static void f2(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[1], o[1] = -x[0];
+}
+static void G2(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = 1, o[1] = x[0], o[2] = 0, o[3] = 2;
+}
+static void H2(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = 0.5, o[1] = x[1];
+}
+
+/* Brute force: opt over a grid of inputs of p . xdot (u on a fine grid of
+ * the box or circle, d on the segment's ends and middle). */
+static double brute(const hj_reach_dyn *s, const double *x, const double *p)
+{
+    const int n = 200;
+    double best_u = s->u.mode == HJ_REACH_MIN ? INFINITY : -INFINITY;
+    for (int a = 0; a <= n; a++)
+        for (int b = 0; b <= (s->u.shape == HJ_REACH_BOX ? n : 0); b++) {
+            double u[2];
+            if (s->u.shape == HJ_REACH_BOX) {
+                u[0] = s->u.lo[0] + (s->u.hi[0] - s->u.lo[0]) * a / n;
+                u[1] = s->u.lo[1] + (s->u.hi[1] - s->u.lo[1]) * b / n;
+            } else {
+                const double th = 2 * HJ_PI * a / n;
+                u[0] = s->u.c[0] + s->u.r * cos(th), u[1] = s->u.c[1] + s->u.r * sin(th);
+            }
+            double best_d = s->d.mode == HJ_REACH_MIN ? INFINITY : -INFINITY;
+            for (int e = 0; e <= 2; e++) {
+                const double d = s->d.lo[0] + (s->d.hi[0] - s->d.lo[0]) * e / 2;
+                double xd[2];
+                hj_reach_dyn_eval(s, 0, x, u, &d, xd);
+                const double v = p[0] * xd[0] + p[1] * xd[1];
+                best_d = s->d.mode == HJ_REACH_MIN ? fmin(best_d, v) : fmax(best_d, v);
+            }
+            best_u = s->u.mode == HJ_REACH_MIN ? fmin(best_u, best_d) : fmax(best_u, best_d);
+        }
+    return best_u;
+}
+
+static void hamiltonian_brute_force(void **state)
+{
+    (void)state;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 2, f2, NULL);
+    hj_reach_dyn_control_box(&s, G2, 2, (double[]){-1, 0}, (double[]){1, 0.5});
+    hj_reach_dyn_disturbance_box(&s, H2, 1, (double[]){-0.3}, (double[]){0.3});
+    assert_int_equal(hj_reach_dyn_check(&s, NULL), HJ_OK);
+    const double xs[3][2] = {{0.3, -0.7}, {-1.2, 0.4}, {0, 0}};
+    const double ps[3][2] = {{1, 2}, {-0.5, 0.25}, {0.7, -1.1}};
+    for (int goal = 0; goal < 2; goal++) {
+        hj_reach_dyn_goal(&s, goal);
+        for (int shape = 0; shape < 2; shape++) {
+            if (shape) hj_reach_dyn_control_ball(&s, G2, 2, (double[]){0.1, -0.2}, 0.8);
+            else hj_reach_dyn_control_box(&s, G2, 2, (double[]){-1, 0}, (double[]){1, 0.5});
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    const double h = hj_reach_hamiltonian(&s, 0, xs[a], ps[b]);
+                    /* The box's vertices are on the brute-force grid;
+                     * the circle is sampled at 200 points. */
+                    assert_close(h, brute(&s, xs[a], ps[b]), shape ? 1e-3 : 1e-12, 1e-12);
+                    /* The optimal inputs attain it. */
+                    double u[2], d[1], xd[2];
+                    hj_reach_dyn_optimal(&s, 0, xs[a], ps[b], u, d);
+                    hj_reach_dyn_eval(&s, 0, xs[a], u, d, xd);
+                    assert_close(ps[b][0] * xd[0] + ps[b][1] * xd[1], h, 1e-12, 1e-12);
+                    /* The kernel's form is -H at the forward time. */
+                    assert_close(hj_reach_ls_ham(0, xs[a], 0, ps[b], &s), -h, 0, 0);
+                }
+        }
+    }
+}
+
+/* The partial bound alpha_i is max over the inputs of |dx_i/dt|: check it
+ * is attained on the box's vertices and bounds every sampled input. */
+static void partial_bounds_exact(void **state)
+{
+    (void)state;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 2, f2, NULL);
+    hj_reach_dyn_control_box(&s, G2, 2, (double[]){-1, 0}, (double[]){1, 0.5});
+    hj_reach_dyn_disturbance_box(&s, H2, 1, (double[]){-0.3}, (double[]){0.3});
+    const double x[2] = {0.3, -0.7};
+    for (int i = 0; i < 2; i++) {
+        double m = 0;
+        for (int v = 0; v < 8; v++) {
+            const double u[2] = {v & 1 ? 1 : -1, v & 2 ? 0.5 : 0}, d = v & 4 ? 0.3 : -0.3;
+            double xd[2];
+            hj_reach_dyn_eval(&s, 0, x, u, &d, xd);
+            m = fmax(m, fabs(xd[i]));
+        }
+        assert_close(hj_reach_ls_partial(0, x, NULL, NULL, i, &s), m, 1e-15, 1e-15);
+    }
+    /* A ball: alpha_i = |f_i + (G c)_i| + r |G_i.|. */
+    hj_reach_dyn_control_ball(&s, G2, 2, (double[]){0, 0}, 2.0);
+    s.d.n = 0;
+    assert_close(hj_reach_ls_partial(0, x, NULL, NULL, 0, &s), fabs(-0.7) + 2 * sqrt(1 + 0.09), 1e-15, 1e-15);
+}
+
+static void invalid_systems(void **state)
+{
+    (void)state;
+    hj_reach_dyn s;
+    hj_error err;
+    hj_reach_dyn_init(&s, 2, f2, NULL);
+    hj_reach_dyn_control_box(&s, NULL, 1, (double[]){-1}, (double[]){1});
+    assert_int_equal(hj_reach_dyn_check(&s, &err), HJ_EINVAL);
+    hj_reach_dyn_control_box(&s, G2, 2, (double[]){1, 0}, (double[]){-1, 1});
+    assert_int_equal(hj_reach_dyn_check(&s, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "empty"));
+    hj_reach_dyn_control_ball(&s, G2, 2, (double[]){0, 0}, -1);
+    assert_int_equal(hj_reach_dyn_check(&s, &err), HJ_EINVAL);
+}
+
+/* 1-D: x' = a x + u, |u| <= 1, on [-2, 2] with N nodes. */
+static void f1(double t, const double *x, double *o, void *c)
+{
+    (void)t;
+    o[0] = *(const double *)c * x[0];
+}
+static void G1(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 1;
+}
+
+static hj_ls_grid grid1(long n)
+{
+    hj_ls_grid g;
+    const double lo = -2, hi = 2;
+    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, &lo, &hi, &n, &bc, NULL), HJ_OK);
+    return g;
+}
+
+static double interval(double t, const double *x, void *c)
+{
+    (void)t;
+    return fabs(x[0]) - *(const double *)c;
+}
+
+/* Zero crossing of phi on x > 0 (the set's right end). */
+static double right_end(const hj_ls_grid *g, const double *phi)
+{
+    for (long i = g->N[0] / 2; i + 1 < g->N[0]; i++) {
+        const double a = phi[g->offset + (size_t)i], b = phi[g->offset + (size_t)i + 1];
+        if (a <= 0 && b > 0) return g->min[0] + g->dx[0] * ((double)i + a / (a - b));
+    }
+    return NAN;
+}
+
+static void tube_and_time_to_reach(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    hj_reach_dyn_goal(&s, HJ_REACH_REACH);
+    hj_ls_grid g = grid1(81);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    hj_reach_stats st;
+    hj_error err;
+    assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
+    /* The set is |x| <= 0.5 + T; time-to-reach |x| - 0.5 (exact for the
+     * linear value: the scheme is exact on linear data away from the kink). */
+    assert_close(right_end(&g, phi), 1.5, 1e-4, 0);
+    for (long i = 0; i < g.N[0]; i++) {
+        const double x = -2 + g.dx[0] * (double)i, t = ttr[g.offset + (size_t)i];
+        if (fabs(x) <= 0.5) assert_close(t, 0, 0, 0);
+        else if (fabs(x) < 1.5 - 1e-9) assert_close(t, fabs(x) - 0.5, 1e-4, 0);
+        else if (fabs(x) > 1.5 + 1e-9) assert_true(isinf(t));
+    }
+    assert_close(st.tau, 1, 0, 0);
+    assert_false(st.converged);
+    /* An avoiding control against the same set: the set does not grow. */
+    hj_reach_dyn_goal(&s, HJ_REACH_AVOID);
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
+    assert_close(right_end(&g, phi), 0.5, 1e-12, 0); /* an avoider leaves whenever it can */
+    hj_ls_free(phi), hj_ls_free(ttr);
+}
+
+/* x' = x + u, |u| <= 1, target |x| <= 0.5: the infinite horizon tube is
+ * |x| < 1, reached after ln(0.5 / (1 - |x|)). */
+static void convergence_stop(void **state)
+{
+    (void)state;
+    double a = 1, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    hj_ls_grid g = grid1(201);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    pb.horizon = INFINITY;
+    pb.conv_tol = 1e-6;
+    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    hj_reach_stats st;
+    hj_error err;
+    if (hj_reach_solve(&pb, phi, ttr, &st, &err)) fail_msg("%s", err.msg);
+    assert_true(st.converged);
+    assert_true(st.tau > 3 && st.tau < 100);
+    assert_close(right_end(&g, phi), 1.0, 2 * g.dx[0], 0);
+    for (long i = 0; i < g.N[0]; i++) {
+        const double x = -2 + g.dx[0] * (double)i;
+        if (fabs(x) > 0.55 && fabs(x) < 0.9) assert_close(ttr[g.offset + (size_t)i], log(0.5 / (1 - fabs(x))), 0.03, 0);
+    }
+    /* Without a tolerance an infinite horizon is refused. */
+    pb.conv_tol = 0;
+    assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_EINVAL);
+    hj_ls_free(phi), hj_ls_free(ttr);
+}
+
+/* A target given as a function constant in time and as an array: the same
+ * bits.  A target that shrinks in time: a BRS (the set at tau = T only)
+ * reaches the target as it is at the end, T - tau = 0 ... */
+static double moving(double t, const double *x, void *c)
+{
+    (void)c;
+    return fabs(x[0] - t) - 0.25; /* the interval [t - 0.25, t + 0.25] */
+}
+
+static void time_varying_target(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-0.5}, (double[]){0.5});
+    hj_ls_grid g = grid1(81);
+    double *phi = hj_ls_alloc(&g), *phi2 = hj_ls_alloc(&g), *target = hj_ls_alloc(&g);
+    for (long i = 0; i < g.N[0]; i++) target[g.offset + (size_t)i] = fabs(-2 + g.dx[0] * (double)i) - r;
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.horizon = 1;
+    pb.target.fn = interval, pb.target.ctx = &r;
+    hj_error err;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
+    pb.target.fn = NULL, pb.target.array = target;
+    assert_int_equal(hj_reach_solve(&pb, phi2, NULL, NULL, &err), HJ_OK);
+    assert_int_equal(hj_ls_count_differ(&g, phi, phi2), 0);
+    /* The moving interval: at forward time t it is [t - 0.25, t + 0.25];
+     * from x at time 0, speed 0.5, T = 1: a BRS (reach it at t = 1, the
+     * interval [0.75, 1.25]) is [0.25, 1.75]; the tube reaches it at
+     * some t in [0, 1]: x + 0.5 t >= t - 0.25 and x - 0.5 t <= t + 0.25,
+     * i.e. x in [-0.25, 1.75]. */
+    pb.target.fn = moving, pb.target.array = NULL;
+    pb.kind = HJ_REACH_BRS;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
+    for (long i = 0; i < g.N[0]; i++) {
+        const double x = -2 + g.dx[0] * (double)i, v = phi[g.offset + (size_t)i];
+        if (x < 0.25 - 0.06 || x > 1.75 + 0.06) assert_true(v > 0);
+        if (x > 0.25 + 0.06 && x < 1.75 - 0.06) assert_true(v < 0);
+    }
+    pb.kind = HJ_REACH_BRT;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
+    for (long i = 0; i < g.N[0]; i++) {
+        const double x = -2 + g.dx[0] * (double)i, v = phi[g.offset + (size_t)i];
+        if (x < -0.25 - 0.06 || x > 1.75 + 0.06) assert_true(v > 0);
+        if (x > -0.25 + 0.06 && x < 1.75 - 0.06) assert_true(v < 0);
+    }
+    hj_ls_free(phi), hj_ls_free(phi2), hj_ls_free(target);
+}
+
+/* Discounting phi_tau + ... + lambda phi = 0 with no motion: phi decays
+ * as exp(-lambda tau) where the target does not bind (BRS). */
+static void discount(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.kind = HJ_REACH_BRS;
+    pb.horizon = 1;
+    pb.discount = 0.5;
+    pb.order = 3;
+    pb.factor_cfl = 0.05; /* the decay's own limit is the only one: dt = 0.1 */
+    pb.target.fn = interval, pb.target.ctx = &r;
+    double *phi = hj_ls_alloc(&g);
+    hj_error err;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
+    assert_close(phi[g.offset], 1.5 * exp(-0.5), 1e-4, 0);
+    pb.discount = -1;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    hj_ls_free(phi);
+}
+
+/* Dubins car reach-avoid on a period-given grid: one thread and two give
+ * the same bits; the measure counts the full period. */
+static void dub_f(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = cos(x[2]), o[1] = sin(x[2]), o[2] = 0;
+}
+static void dub_G(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 0, o[2] = 1;
+}
+static double disc(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return hypot(x[0], x[1]) - 0.5;
+}
+static double box(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fmax(fabs(x[0] + 1) - 0.4, fabs(x[1] - 0.8) - 0.6);
+}
+
+static void dubins_threads_and_period(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    assert_int_equal(hj_ls_grid_init_period(&g, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI},
+                                            (long[]){21, 21, 16}, bc, NULL),
+                     HJ_OK);
+    assert_close(g.dx[2], 2 * HJ_PI / 16, 0, 0);
+    assert_close(hj_ls_grid_period(&g, 2), 2 * HJ_PI, 1e-15, 0);
+    assert_close(hj_ls_grid_period(&g, 0), 0, 0, 0);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 3, dub_f, NULL);
+    hj_reach_dyn_control_box(&s, dub_G, 1, (double[]){-1}, (double[]){1});
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = disc, pb.obstacle.fn = box, pb.horizon = 0.5;
+    double *phi[2] = {hj_ls_alloc(&g), hj_ls_alloc(&g)}, *ttr[2] = {hj_ls_alloc(&g), hj_ls_alloc(&g)};
+    hj_error err;
+    for (int k = 0; k < 2; k++) {
+#ifdef _OPENMP
+        omp_set_num_threads(k + 1);
+#endif
+        assert_int_equal(hj_reach_solve(&pb, phi[k], ttr[k], NULL, &err), HJ_OK);
+    }
+    hj_test_one_thread();
+    assert_int_equal(hj_ls_count_differ(&g, phi[0], phi[1]), 0);
+    assert_int_equal(hj_ls_count_differ(&g, ttr[0], ttr[1]), 0);
+    /* The target's cylinder over a full period: pi 0.5^2 2 pi, to the
+     * accuracy of the piecewise linear interface on this grid. */
+    double *cyl = hj_ls_alloc(&g), m;
+    for (size_t r = 0; r < g.rows; r++) {
+        long i[3];
+        double x[3];
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 0; j < g.N[0]; j++) {
+            i[0] = j;
+            hj_ls_coord(&g, i, x);
+            cyl[k + (size_t)j] = disc(0, x, NULL);
+        }
+    }
+    assert_int_equal(hj_reach_measure(&g, cyl, &m, &err), HJ_OK);
+    assert_close(m, HJ_PI * 0.25 * 2 * HJ_PI, 0, 0.03);
+    for (int k = 0; k < 2; k++) hj_ls_free(phi[k]), hj_ls_free(ttr[k]);
+    hj_ls_free(cyl);
+}
+
+/* 64-bit sizes: a 2000 x 2000 x 1000 grid (4e9 nodes, above 2^31 and
+ * 2^32) is laid out without overflow and not allocated. */
+static void layout_64bit(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[3] = {{HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}};
+    const long N[3] = {2000, 2000, 1000};
+    assert_int_equal(hj_ls_grid_layout(&g, 3, (double[]){0, 0, 0}, (double[]){1, 1, 1}, N, bc, NULL), HJ_OK);
+    assert_true(g.nodes == (size_t)4000000000ULL);
+    assert_true(g.total == (size_t)2006 * (size_t)2006 * (size_t)1006);
+    assert_true(g.rows == (size_t)2000 * 1000);
+    const size_t last = hj_ls_index(&g, (long[]){1999, 1999, 999});
+    const size_t e = 2006;
+    assert_true(last == e * e * 1006 - 1 - (3 + 3 * e + 3 * e * e));
+    long i[3];
+    assert_true(hj_ls_row(&g, g.rows - 1, i) == last - 1999);
+    assert_int_equal(i[1], 1999);
+    assert_int_equal(i[2], 999);
+}
+
+HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
+             cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
+             cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
+             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(layout_64bit))

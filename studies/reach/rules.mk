@@ -1,0 +1,25 @@
+# Reachability checks (common/hj_reach, common/hj_ctrl): one program,
+# studies/reach/reach_checks.c, writes the tables make check holds against
+# studies/reach/reference/ (README.md there) and the figure data.
+# Included by the top-level Makefile.
+
+RS := studies/reach
+RS_OUT := $(RESULTS)/reach
+RS_BIN := $(BUILD)/bin/$(RS)
+$(BUILD)/obj/$(RS)/%.o: CFLAGS += -fopenmp -O3
+
+RS_TABLES := di_mintime.tsv product6d.tsv trajectories.tsv moving_obstacle.tsv
+RS_DATA := di_mintime.dat trajectories.dat moving_obstacle.dat
+$(RS_TABLES:%=$(RS_OUT)/%) $(RS_DATA:%=$(RS_OUT)/%) &: $(RS_BIN)/reach_checks
+	@mkdir -p $(RS_OUT)
+	OMP_WAIT_POLICY=passive $< $(QUICKFLAG) --out-dir $(RS_OUT)
+
+$(eval $(call hj_figure,$(RS),$(RS_OUT),reach,$(RS_DATA)))
+
+PROGRAMS += $(RS_BIN)/reach_checks
+CHECK_PAPERS += reach=$(RS)
+CHECK_INPUTS += $(RS_TABLES:%=$(RS_OUT)/%)
+REPORT_INPUTS += $(RS)/reach_checks.c $(RS_TABLES:%=$(RS_OUT)/%)
+
+.PHONY: reach
+reach: $(RS_TABLES:%=$(RS_OUT)/%) $(RS_OUT)/reach.png
