@@ -124,6 +124,7 @@ include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 include studies/reach/rules.mk
 include tests/rules.mk
+include mpi/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
