@@ -50,9 +50,11 @@ static double di_box(double t, const double *x, void *c)
 typedef struct {
     int which; /* 0 air3d, 1 di6 */
     long N;
-    long nsplit_n; /* di6: nodes on axes 4 and 5 */
+    long nsplit_n; /* di6: nodes on axis 4 (and 5 unless n5) */
+    long n5;       /* di6: nodes on axis 5 (0: nsplit_n) */
     double tmax;
     int acc;
+    int first;     /* di6: first order in space and time */
 } run_par;
 
 static int grid_of(const run_par *rp, hj_ls_grid *g, hj_error *err)
@@ -62,7 +64,7 @@ static int grid_of(const run_par *rp, hj_ls_grid *g, hj_error *err)
     double lo[6], hi[6];
     long n[6];
     for (int d = 0; d < 6; d++)
-        bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0}, lo[d] = -1.5, hi[d] = 1.5, n[d] = d < 4 ? rp->N : rp->nsplit_n;
+        bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0}, lo[d] = -1.5, hi[d] = 1.5, n[d] = d < 4 ? rp->N : d == 5 && rp->n5 ? rp->n5 : rp->nsplit_n;
     return hj_ls_grid_init(g, 6, lo, hi, n, bc, err);
 }
 
@@ -87,6 +89,7 @@ static int solve(const run_par *rp, const hj_ls_grid *global, const hj_ls_grid *
     hj_reach_problem pb;
     hj_reach_problem_init(&pb, g, &s);
     pb.kind = HJ_REACH_BRS, pb.target.fn = di_box, pb.horizon = rp->tmax;
+    if (rp->first) pb.scheme = HJ_LS_UPWIND_FIRST, pb.order = 1;
     hj_reach_stats st;
     int rc = hj_reach_solve(&pb, phi, NULL, &st, err);
     *steps = st.steps;
@@ -108,7 +111,7 @@ int main(int argc, char **argv)
     MPI_Comm_size(MPI_COMM_WORLD, &wsize);
     static const char *const cases[] = {"air3d", "di6", NULL};
     static const char *const accs[] = {"low", "medium", "high", "veryHigh", NULL};
-    run_par rp = {0, 0, 0, 0, 1};
+    run_par rp = {0, 0, 0, 0, 0, 1, 0};
     int serial = 0, header = 0, nsplit = 0;
     long split[HJ_LS_MAXDIM];
     const char *out = NULL;
@@ -118,7 +121,11 @@ int main(int argc, char **argv)
         {.name = "--N", .type = HJ_OPT_LONG, .value = &rp.N, .min = 0, .max = 100000, .metavar = "N",
          .help = "air3d: NX (default 26); di6: nodes on axes 0-3 (default 7)", .dflt = "per case"},
         {.name = "--Nsplit", .type = HJ_OPT_LONG, .value = &rp.nsplit_n, .min = 0, .max = 100000, .metavar = "N",
-         .help = "di6: nodes on axes 4 and 5 (default 9)", .dflt = "9"},
+         .help = "di6: nodes on axes 4 and 5", .dflt = "9"},
+        {.name = "--N5", .type = HJ_OPT_LONG, .value = &rp.n5, .min = 0, .max = 100000, .metavar = "N",
+         .help = "di6: nodes on axis 5 (weak scaling: grows with the processes)", .dflt = "--Nsplit"},
+        {.name = "--first-order", .type = HJ_OPT_FLAG, .value = &rp.first,
+         .help = "di6: first order upwind differences and forward Euler (default ENO2, RK2)"},
         {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &rp.tmax, .min = 0, .max = 1000, .metavar = "T",
          .help = "horizon (default: air3d 2.8, di6 0.5)", .dflt = "per case"},
         {.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = &rp.acc, .choices = accs,
@@ -155,7 +162,7 @@ int main(int argc, char **argv)
     const char *bad = NULL;
     if (serial && wsize != 1) bad = "--serial runs on one process";
     else if (rp.which == 0 && rp.N < 8) bad = "air3d needs --N >= 8";
-    else if (rp.which == 1 && (rp.N < 2 || rp.nsplit_n < 2)) bad = "di6 needs at least 2 nodes per axis";
+    else if (rp.which == 1 && (rp.N < 2 || rp.nsplit_n < 2 || rp.n5 == 1)) bad = "di6 needs at least 2 nodes per axis";
     else if (out && !(strlen(out) > 4 && (!strcmp(out + strlen(out) - 4, ".vtk") || !strcmp(out + strlen(out) - 4, ".raw"))))
         bad = "--out must end in .vtk or .raw";
     if (bad) {
