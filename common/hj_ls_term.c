@@ -7,6 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* AVX-512 and AVX2 clones of the row loops where the CPU has them
+ * (-std=c11 contracts no multiply-add: the bits are the SSE2 code's). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
+#define HJ_LS_TERM_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define HJ_LS_TERM_CLONES
+#endif
+
 /* ---- row driver ------------------------------------------------------ */
 
 /* Context of one row: its first node k, node index and coordinates (x[0]
@@ -23,6 +31,7 @@ typedef struct {
     int head;       /* ring slot of the difference k = -3 */
     double dmax[HJ_LS_MAXDIM]; /* per dimension: running maximum of the
                                 * speed over dx_d (the toolbox's rule) */
+    int filled; /* the evaluator's per-thread constants are in ws */
 } row_ctx;
 
 /* A row evaluator: writes ydot on the row, *inv = the row's largest inverse
@@ -58,6 +67,7 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             for (long j = 0; j < n; j++) rc.tmax[j] = 0;
             rc.cache_r = (size_t)-1;
             rc.head = 0;
+            rc.filled = 0;
             for (int d = 0; d < HJ_LS_MAXDIM; d++) rc.dmax[d] = 0;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 32)
@@ -126,6 +136,17 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
 static inline double scalar_at(const hj_ls_scalar *s, double t, const double *x, double phi, size_t k)
 {
     return s->fn ? s->fn(t, x, phi, s->ctx) : s->array ? s->array[k] : s->value;
+}
+
+/* The scalar over a row into a[0..n-1] when it has a batched callback;
+ * returns 0 (and leaves a alone) otherwise, for scalar_at per node. */
+static int scalar_row(const hj_ls_scalar *s, double t, const hj_ls_grid *g, const row_ctx *rc, const double *y,
+                      double *a)
+{
+    if (!s || !s->row_fn) return 0;
+    const hj_ls_row_info row = {g->N[0], g->dx[0], rc->x, rc->idx, rc->k};
+    s->row_fn(t, &row, y + rc->k, a, s->ctx);
+    return 1;
 }
 
 static double bound_of(double maxinv) { return maxinv > 0 ? 1 / maxinv : INFINITY; }
@@ -332,8 +353,10 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     const long n = g->N[0];
     const int dim = g->dim;
     double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
+    double *arow = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < dim; d++)
         hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], c->eps[d], dl + d * n, dr + d * n, w);
+    const int batched = !c->initial && scalar_row(c->speed, t, g, rc, y, arow);
     double m = 0, x[HJ_LS_MAXDIM];
     long idx[HJ_LS_MAXDIM];
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
@@ -346,7 +369,7 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
         else if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
         else {
             x[0] = g->min[0] + (double)j * g->dx[0];
-            a = scalar_at(c->speed, t, x, y[k], k);
+            a = batched ? arow[j] : scalar_at(c->speed, t, x, y[k], k);
             if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
         }
         double p[HJ_LS_MAXDIM];
@@ -382,7 +405,7 @@ static int godunov_eval(const hj_ls_grid *g, godunov_term *gt, int eps_mode, dou
     hj_ls_fill_ghosts(g, y);
     weno_eps(g, eps_mode, gt->scheme, y, gt->eps);
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
+    int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK + 1) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
                       dm, what, err);
     if (rc) return rc;
     *bound = bound_by_rule(gt->cfl_rule, g, m, dm);
@@ -429,21 +452,28 @@ typedef struct {
     const hj_ls_lax_friedrichs *lf;
     double gmin[HJ_LS_MAXDIM], gmax[HJ_LS_MAXDIM]; /* global gradient range */
     double eps[HJ_LS_MAXDIM];                      /* WENO5 epsilons (weno_eps) */
+    double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
  * carries nothing.  The range is kept in the workspace tail and merged by
  * the caller; here rows only update thread-local ranges. */
+HJ_LS_TERM_CLONES
 static int lf_range_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     (void)t, (void)ydot, (void)bad;
     const lf_pass *ps = term;
     const hj_ls_grid *g = ps->lf->grid;
     const long n = g->N[0];
-    double *dl = rc->ws, *dr = dl + n, *w = dr + n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
+    double *w = rc->ws + 2 * n, *range = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < g->dim; d++) {
+        /* into the cache when there is one (row r, dimension d: dl then dr) */
+        double *dl = ps->cache ? ps->cache + (rc->r * (size_t)g->dim + (size_t)d) * 2 * (size_t)n : rc->ws, *dr = dl + n;
         hj_ls_upwind_row_eps(ps->lf->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         double lo = range[2 * d], hi = range[2 * d + 1];
+#ifdef _OPENMP
+#pragma omp simd reduction(min : lo) reduction(max : hi)
+#endif
         for (long j = 0; j < n; j++) {
             const double a = dl[j] < dr[j] ? dl[j] : dr[j], b = dl[j] < dr[j] ? dr[j] : dl[j];
             lo = a < lo ? a : lo;
@@ -483,18 +513,24 @@ static void lf_partial_nodes(const hj_ls_lax_friedrichs *c, double t, const hj_l
     }
 }
 
-/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or bad. */
+/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or
+ * bad.  The common case, all finite, is one vector pass. */
 static long first_nonfinite(const double *v, long bad)
 {
-    for (long j = 0; j < bad; j++)
-        if (!(v[j] - v[j] == 0)) return j;
+    int any = 0;
+    for (long j = 0; j < bad; j++) any |= !(v[j] - v[j] == 0);
+    if (any)
+        for (long j = 0; j < bad; j++)
+            if (!(v[j] - v[j] == 0)) return j;
     return bad;
 }
+
 
 /* One row of G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2):
  * derivatives, then the Hamiltonian and the partials over the whole row
  * (one call each), then the dissipation and the CFL bound in vector loops.
  * The arithmetic per node is the per-node form's, in the same order. */
+HJ_LS_TERM_CLONES
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
@@ -506,25 +542,32 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
     double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
     double *H = GH + dn, *A = H + n, *DS = A + n, *S = DS + n;
-    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
+    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM], *DL[HJ_LS_MAXDIM], *DR[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *pd = P + (size_t)d * (size_t)n, *ll = LL + (size_t)d * (size_t)n, *lh = LH + (size_t)d * (size_t)n;
-        hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
-        for (long j = 0; j < n; j++) {
-            pd[j] = 0.5 * (l[j] + r[j]);
-            ll[j] = l[j] < r[j] ? l[j] : r[j];
-            lh[j] = l[j] < r[j] ? r[j] : l[j];
-        }
+        if (ps->cache) /* the range pass computed them */
+            l = ps->cache + (rc->r * (size_t)dim + (size_t)d) * 2 * (size_t)n, r = l + n;
+        else
+            hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
+        DL[d] = l, DR[d] = r;
+        for (long j = 0; j < n; j++) pd[j] = 0.5 * (l[j] + r[j]);
+        if (c->dissipation != HJ_LS_GLF) /* the local ranges */
+            for (long j = 0; j < n; j++) {
+                ll[j] = l[j] < r[j] ? l[j] : r[j];
+                lh[j] = l[j] < r[j] ? r[j] : l[j];
+            }
         pp[d] = pd;
         if (c->dissipation == HJ_LS_LLLF) lo[d] = ll, hi[d] = lh;
         else {
             double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
             const double a = ps->gmin[d], b = ps->gmax[d];
-            for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
+            if (!rc->filled) /* the global range: the same for every row of this evaluation */
+                for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
             lo[d] = gl, hi[d] = gh;
         }
     }
+    rc->filled = 1;
     const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
     const double *phi = y + rc->k;
     if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
@@ -532,7 +575,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     long badj = first_nonfinite(H, n);
     for (long j = 0; j < n; j++) DS[j] = 0, S[j] = 0;
     for (int d = 0; d < dim; d++) {
-        const double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
+        const double *l = DL[d], *r = DR[d];
         const double *sl = lo[d], *sh = hi[d];
         if (c->dissipation == HJ_LS_LLF) /* local range in d only */
             lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
@@ -541,21 +584,26 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         lo[d] = sl, hi[d] = sh;
         badj = first_nonfinite(A, badj);
         const double dx = g->dx[d];
-        double dm = rc->dmax[d];
         for (long j = 0; j < n; j++) {
             const double a = fabs(A[j]);
             DS[j] += a * 0.5 * (r[j] - l[j]);
             S[j] += a / dx;
-            dm = a / dx > dm ? a / dx : dm;
         }
-        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) rc->dmax[d] = dm; /* per-dimension maxima only where used */
+        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
+            double dm = rc->dmax[d];
+            SIMD_REDUCE(max : dm)
+            for (long j = 0; j < n; j++) {
+                const double a = fabs(A[j]) / dx;
+                dm = a > dm ? a : dm;
+            }
+            rc->dmax[d] = dm;
+        }
     }
     if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
     double m = 0, *out = ydot + rc->k;
-    for (long j = 0; j < n; j++) {
-        out[j] = -(H[j] - DS[j]);
-        m = S[j] > m ? S[j] : m;
-    }
+    for (long j = 0; j < n; j++) out[j] = -(H[j] - DS[j]);
+    SIMD_REDUCE(max : m)
+    for (long j = 0; j < n; j++) m = S[j] > m ? S[j] : m;
     *inv = m;
     return HJ_OK;
 }
@@ -572,6 +620,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     hj_ls_fill_ghosts(g, y);
     lf_pass ps;
     ps.lf = c;
+    ps.cache = c->dissipation != HJ_LS_LLLF ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
     if (c->dissipation != HJ_LS_LLLF) {
@@ -597,6 +646,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
                     double inv;
                     long j;
                     rc.k = hj_ls_row(g, r, rc.idx);
+                    rc.r = r;
                     lf_range_row(&ps, t, y, ydot, &rc, &inv, &j);
                 }
 #ifdef _OPENMP
@@ -620,6 +670,8 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
 }
+
+size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g) { return 2 * (size_t)g->dim * g->nodes; }
 
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx)
@@ -653,6 +705,7 @@ static int point_row(const void *term, double t, double *y, double *ydot, row_ct
     memcpy(x, rc->x, sizeof(double) * (size_t)dim);
     double sdx = 0;
     for (int d = 0; d < dim; d++) sdx += 1 / (g->dx[d] * g->dx[d]);
+    const int batched = c->kind != PT_HESS && scalar_row(c->s, t, g, rc, y, rc->ws);
     for (long j = 0; j < g->N[0]; j++) {
         const size_t k = rc->k + (size_t)j;
         x[0] = g->min[0] + (double)j * g->dx[0];
@@ -668,7 +721,7 @@ static int point_row(const void *term, double t, double *y, double *ydot, row_ct
                     v -= c->M[a * dim + b] * hab;
                 }
         } else {
-            const double a = scalar_at(c->s, t, x, y[k], k);
+            const double a = batched ? rc->ws[j] : scalar_at(c->s, t, x, y[k], k);
             if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
             if (c->kind == PT_CURV) {
                 double kappa, mag;
@@ -694,7 +747,7 @@ static int point_eval(const point_term *pt, double t, double *y, double *ydot, d
     const hj_ls_grid *g = pt->grid;
     hj_ls_fill_ghosts(g, y);
     double m;
-    int rc = for_rows(g, 1, point_row, pt, t, y, ydot, &m, NULL, what, err);
+    int rc = for_rows(g, (size_t)g->N[0], point_row, pt, t, y, ydot, &m, NULL, what, err);
     if (rc) return rc;
     if (pt->kind == PT_HESS) {
         m = 0;

@@ -63,15 +63,31 @@ struct hj_ls_term {
     hj_ls_term_fn eval;
 };
 
-/* A scalar parameter a(t, x, phi): fn if set, else array (on the grid) if
- * set, else the constant value (the toolbox's scalar / array /
- * scalarGridFunc choices). */
+/* A row of n nodes along dimension 0 as batched callbacks see it: node j
+ * has the coordinates (x[0] + j dx0, x[1], ..., x[dim-1]) (x[0] is the
+ * grid's min[0], so x[0] + j dx0 has the bits of hj_ls_coord's) and the
+ * grid index (j, idx[1], ..., idx[dim-1]); k is its offset in arrays on
+ * the grid, so tables of time-independent coefficients can be read by
+ * index instead of recomputed from coordinates. */
+typedef struct {
+    long n;
+    double dx0;
+    const double *x;
+    const long *idx;
+    size_t k;
+} hj_ls_row_info;
+/* A scalar parameter a(t, x, phi): row_fn if set, else fn, else array (on
+ * the grid) if set, else the constant value (the toolbox's scalar / array
+ * / scalarGridFunc choices).  row_fn is fn batched over a row (one call,
+ * a vectorisable loop): a[j] = a(t, x_j, phi[j]) for j < row->n. */
 typedef double (*hj_ls_scalar_fn)(double t, const double *x, double phi, void *ctx);
+typedef void (*hj_ls_scalar_row_fn)(double t, const hj_ls_row_info *row, const double *phi, double *a, void *ctx);
 typedef struct {
     double value;
     const double *array;
     hj_ls_scalar_fn fn;
     void *ctx;
+    hj_ls_scalar_row_fn row_fn; /* ctx is passed to it too */
 } hj_ls_scalar;
 
 /* ---- convection (2): G = -v(x, t) . grad phi, upwinded per dimension. */
@@ -155,19 +171,6 @@ int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err);
 typedef double (*hj_ls_ham_fn)(double t, const double *x, double phi, const double *p, void *ctx);
 typedef double (*hj_ls_partial_fn)(double t, const double *x, const double *pmin, const double *pmax, int d,
                                    void *ctx);
-/* A row of n nodes along dimension 0 as batched callbacks see it: node j
- * has the coordinates (x[0] + j dx0, x[1], ..., x[dim-1]) (x[0] is the
- * grid's min[0], so x[0] + j dx0 has the bits of hj_ls_coord's) and the
- * grid index (j, idx[1], ..., idx[dim-1]); k is its offset in arrays on
- * the grid, so tables of time-independent coefficients can be read by
- * index instead of recomputed from coordinates. */
-typedef struct {
-    long n;
-    double dx0;
-    const double *x;
-    const long *idx;
-    size_t k;
-} hj_ls_row_info;
 /* Batched forms of ham and partial, one call per row (and dimension d)
  * so that the compiler can vectorise the user's loop: H[j] = ham(t, x_j,
  * phi[j], (p[0][j], ..., p[dim-1][j])) and alpha[j] = partial(t, x_j,
@@ -186,12 +189,19 @@ typedef struct {
     hj_ls_partial_fn partial;
     hj_ls_ham_row_fn ham_row;         /* if set, used instead of ham */
     hj_ls_partial_row_fn partial_row; /* if set, used instead of partial */
+    double *work; /* optional, hj_ls_lax_friedrichs_work_size doubles (below) */
     void *ctx;
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
 } hj_ls_lax_friedrichs;
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);
+/* The doubles of the optional caller-owned work array (2 dim nodes): with
+ * it, GLF and LLF keep the one-sided derivatives of their gradient-range
+ * pass and the update pass reads them instead of computing them again
+ * (same bits; worth it where the derivatives cost more than the memory
+ * traffic, as WENO5's do).  LLLF has no range pass and does not use it. */
+size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
 
 /* ---- mean curvature (6): G = b kappa |grad phi|, centered second order
  * (hj_ls_curvature_at).  CFL bound 1 / max_x 2 b sum_d 1/dx_d^2. */

@@ -82,7 +82,7 @@ static int run_curv(const hj_ls_grid *g, int order, double b0, int split, const 
     p2_switch sw = {0.5 * tspan[nt - 1], {b0, b0}, {split ? -1 : 0, split ? 1 : 0}, 0};
     hj_ls_curvature_term term;
     hj_ls_curvature_term_init(&term, g);
-    term.b.fn = p2_switch_fn;
+    term.b.row_fn = p2_switch_row;
     term.b.ctx = &sw;
     p2_areas areas = {g, area};
     p2_seq seq = {fp, g, "phi", &sw, area ? p2_area_hook : NULL, &areas, label, NULL, NULL};

@@ -77,7 +77,7 @@ static int run_normal(const hj_ls_grid *g, const p2_opts *o, double a0, int reve
     p2_switch sw = {0.5 * tspan[nt - 1], {a0, reverse ? -a0 : a0}, {0, 0}, 0};
     hj_ls_normal term;
     hj_ls_normal_init(&term, g, hj_ls_accuracy_scheme(o->acc));
-    term.speed.fn = p2_switch_fn;
+    term.speed.row_fn = p2_switch_row;
     term.speed.ctx = &sw;
     p2_seq seq = {fp, g, "phi", &sw, NULL, NULL, label, NULL, NULL};
     return p2_run(hj_ls_accuracy_order(o->acc), g, &term.base, tspan, nt, phi, &seq, HJ_LS_FACTOR_CFL, err);

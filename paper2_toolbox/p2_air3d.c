@@ -123,7 +123,9 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     lf.partial_row = partial_row;
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
+    lf.work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(g)); /* optional: NULL recomputes */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
+    free(lf.work);
     free(tab);
     return rc;
 }

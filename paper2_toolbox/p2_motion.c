@@ -35,6 +35,24 @@ double p2_switch_fn(double t, const double *x, double phi, void *ctx)
     return s->value[k] * (1 + s->cos_coef[k] * c);
 }
 
+void p2_switch_row(double t, const hj_ls_row_info *row, const double *phi, double *a, void *ctx)
+{
+    (void)t, (void)phi;
+    const p2_switch *s = ctx;
+    const int k = s->after;
+    const long n = row->n;
+    if (s->cos_coef[k] == 0) {
+        for (long j = 0; j < n; j++) a[j] = s->value[k];
+        return;
+    }
+    const double y = row->x[1], v = s->value[k], cc = s->cos_coef[k];
+    for (long j = 0; j < n; j++) {
+        const double x = row->x[0] + (double)j * row->dx0, r = hypot(x, y);
+        const double c = r > 0 ? x / r : 0; /* as p2_switch_fn */
+        a[j] = v * (1 + cc * c);
+    }
+}
+
 /* The hook of the sequence: the progress line, then the demo's hook. */
 static int progress_hook(int k, double t, const double *y, void *ctx, hj_error *err)
 {

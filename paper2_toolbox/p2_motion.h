@@ -44,6 +44,8 @@ typedef struct {
     int after;
 } p2_switch;
 double p2_switch_fn(double t, const double *x, double phi, void *ctx);
+/* The same over a row (hj_ls_scalar's row_fn): one call per row of nodes. */
+void p2_switch_row(double t, const hj_ls_row_info *row, const double *phi, double *a, void *ctx);
 
 /* A run's outputs: the state at every output time appended to fp as one
  * gnuplot index block (hj_ls_seq, "# t = " to 6 digits; fp may be NULL:
