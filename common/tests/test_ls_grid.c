@@ -250,6 +250,55 @@ static void dist_hooks(void **state)
     hj_ls_free(a);
 }
 
+/* 64-bit sizes: a 2000 x 2000 x 1000 grid (4e9 nodes, above 2^31 and
+ * 2^32) is laid out without overflow and not allocated. */
+static void layout_64bit(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[3] = {{HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}};
+    const long N[3] = {2000, 2000, 1000};
+    assert_int_equal(hj_ls_grid_layout(&g, 3, (double[]){0, 0, 0}, (double[]){1, 1, 1}, N, bc, NULL), HJ_OK);
+    assert_true(g.nodes == (size_t)4000000000ULL);
+    assert_true(g.total == (size_t)2006 * (size_t)2006 * (size_t)1006);
+    assert_true(g.rows == (size_t)2000 * 1000);
+    const size_t last = hj_ls_index(&g, (long[]){1999, 1999, 999});
+    const size_t e = 2006;
+    assert_true(last == e * e * 1006 - 1 - (3 + 3 * e + 3 * e * e));
+    long i[3];
+    assert_true(hj_ls_row(&g, g.rows - 1, i) == last - 1999);
+    assert_int_equal(i[1], 1999);
+    assert_int_equal(i[2], 999);
+}
+
+/* A periodic dimension given by its period: N nodes per period, no node
+ * at min + period; the other dimensions as hj_ls_grid_init; bad periods. */
+static void period_grid(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    hj_error err;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    const double pi2 = 6.283185307179586;
+    assert_int_equal(hj_ls_grid_init_period(&g, 2, (double[]){-1, 0}, (double[]){1, pi2}, (long[]){21, 16}, bc, &err),
+                     HJ_OK);
+    assert_close(g.dx[0], 0.1, 1e-15, 0);
+    assert_close(g.dx[1], pi2 / 16, 0, 0);
+    assert_close(g.max[1], pi2 - pi2 / 16, 1e-15, 0);
+    assert_close(hj_ls_grid_period(&g, 1), pi2, 1e-15, 0);
+    assert_close(hj_ls_grid_period(&g, 0), 0, 0, 0);
+    /* The last node's coordinate is one spacing short of the period. */
+    double x[2];
+    hj_ls_coord(&g, (long[]){0, 15}, x);
+    assert_close(x[1], pi2 - g.dx[1], 1e-14, 0);
+    assert_int_equal(hj_ls_grid_init_period(&g, 2, (double[]){-1, 1}, (double[]){1, 1}, (long[]){21, 16}, bc, &err),
+                     HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_period(&g, 2, (double[]){-1, 0}, (double[]){1, NAN}, (long[]){21, 16}, bc, &err),
+                     HJ_ENONFINITE);
+    assert_int_equal(hj_ls_grid_init_period(&g, 9, (double[]){-1, 0}, (double[]){1, 1}, (long[]){21, 16}, bc, &err),
+                     HJ_EINVAL);
+}
+
 HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms),
-             cmocka_unit_test(counts))
+             cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

@@ -3,7 +3,7 @@
  * optimal inputs, and reachability problems with closed-form answers in
  * 1-D (a tube, the time-to-reach, the convergence stop, time-varying
  * targets, discounting), bitwise independence of the thread count, and
- * the periodic grid's measure. */
+ * the measure of a set on a grid periodic by its period. */
 #include "hj_test.h"
 
 #include <stdlib.h>
@@ -350,9 +350,6 @@ static void dubins_threads_and_period(void **state)
     assert_int_equal(hj_ls_grid_init_period(&g, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI},
                                             (long[]){21, 21, 16}, bc, NULL),
                      HJ_OK);
-    assert_close(g.dx[2], 2 * HJ_PI / 16, 0, 0);
-    assert_close(hj_ls_grid_period(&g, 2), 2 * HJ_PI, 1e-15, 0);
-    assert_close(hj_ls_grid_period(&g, 0), 0, 0, 0);
     hj_reach_dyn s;
     hj_reach_dyn_init(&s, 3, dub_f, NULL);
     hj_reach_dyn_control_box(&s, dub_G, 1, (double[]){-1}, (double[]){1});
@@ -389,28 +386,37 @@ static void dubins_threads_and_period(void **state)
     hj_ls_free(cyl);
 }
 
-/* 64-bit sizes: a 2000 x 2000 x 1000 grid (4e9 nodes, above 2^31 and
- * 2^32) is laid out without overflow and not allocated. */
-static void layout_64bit(void **state)
+/* Problems refused before any work: no target, a zero horizon, a grid of
+ * another dimension, a measure with two periodic dimensions. */
+static void invalid_problems(void **state)
 {
     (void)state;
-    hj_ls_grid g;
-    const hj_ls_bc bc[3] = {{HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}};
-    const long N[3] = {2000, 2000, 1000};
-    assert_int_equal(hj_ls_grid_layout(&g, 3, (double[]){0, 0, 0}, (double[]){1, 1, 1}, N, bc, NULL), HJ_OK);
-    assert_true(g.nodes == (size_t)4000000000ULL);
-    assert_true(g.total == (size_t)2006 * (size_t)2006 * (size_t)1006);
-    assert_true(g.rows == (size_t)2000 * 1000);
-    const size_t last = hj_ls_index(&g, (long[]){1999, 1999, 999});
-    const size_t e = 2006;
-    assert_true(last == e * e * 1006 - 1 - (3 + 3 * e + 3 * e * e));
-    long i[3];
-    assert_true(hj_ls_row(&g, g.rows - 1, i) == last - 1999);
-    assert_int_equal(i[1], 1999);
-    assert_int_equal(i[2], 999);
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_ls_grid g = grid1(11);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    double *phi = hj_ls_alloc(&g);
+    hj_error err;
+    pb.horizon = 1;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL); /* no target */
+    pb.target.fn = interval, pb.target.ctx = &r, pb.horizon = 0;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    pb.horizon = 1;
+    s.nx = 2;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "2-D dynamics on a 1-D grid"));
+    hj_ls_free(phi);
+    hj_ls_grid g2;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g2, 2, (double[]){0, 0}, (double[]){1, 1}, (long[]){5, 5}, bc, NULL), HJ_OK);
+    double *b = hj_ls_alloc(&g2), m;
+    assert_int_equal(hj_reach_measure(&g2, b, &m, &err), HJ_EINVAL);
+    hj_ls_free(b);
 }
 
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
-             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(layout_64bit))
+             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(invalid_problems))

@@ -195,12 +195,9 @@ static double box6(double t, const double *x, void *c)
     return fmax(fmax(box2(t, x, c), box2(t, x + 2, c)), box2(t, x + 4, c));
 }
 
-static void check_product(void)
+/* One row of product6d.tsv: N nodes a dimension, the scheme and RK order. */
+static void product_row(hj_out *o, long N, int scheme, int order)
 {
-    /* Quick: first order upwind with forward Euler (a third of the work of
-     * ENO2/RK2 per step); full: ENO2/RK2 on a finer grid. */
-    const long N = quick ? 9 : 11;
-    const int scheme = quick ? HJ_LS_UPWIND_FIRST : HJ_LS_ENO2, order = quick ? 1 : 2;
     const double T = 0.5, lo = -1.5, hi = 1.5;
     hj_error err;
     hj_ls_grid g2, g6;
@@ -257,17 +254,25 @@ static void check_product(void)
             if (in6 != prod) differ++, differ_away += !near;
         }
     }
-    hj_out o;
-    open_out(&o, "product6d.tsv");
-    fprintf(o.fp, "# Three double integrators, box target |x_k|, |v_k| <= 0.5, BRS at T = %g on [%g, %g]^6, "
-                  "LLF: nodes of the 6-D set against the product of the 2-D sets on the same nodes\n",
-            T, lo, hi);
-    fprintf(o.fp, "N\tscheme\tnodes\tinside_6d\tinside_product\tdiffer\tdiffer_away\tsteps\tseconds\tbytes_per_node\n");
-    fprintf(o.fp, "%ld\t%s-rk%d\t%zu\t%ld\t%ld\t%ld\t%ld\t%ld\t%.2f\t%.1f\n", N, hj_ls_scheme_name(scheme), order, g6.nodes, inside, inside2, differ, differ_away,
+    fprintf(o->fp, "%ld\t%s-rk%d\t%zu\t%ld\t%ld\t%ld\t%ld\t%ld\t%.2f\t%.1f\n", N, hj_ls_scheme_name(scheme), order, g6.nodes, inside, inside2, differ, differ_away,
             st.steps, st.seconds, 4.0 * (double)g6.total * sizeof(double) / (double)g6.nodes);
-    commit(&o);
     free(in2), free(bd2);
     hj_ls_free(v2), hj_ls_free(v6);
+}
+
+/* Quick: 9^6 nodes, first order upwind with forward Euler (a third of the
+ * work of ENO2/RK2 per step); full: that and ENO2/RK2 on 11^6 nodes. */
+static void check_product(void)
+{
+    hj_out o;
+    open_out(&o, "product6d.tsv");
+    fprintf(o.fp, "# Three double integrators, box target |x_k|, |v_k| <= 0.5, BRS at T = 0.5 on [-1.5, 1.5]^6, "
+                  "LLF: nodes of the 6-D set against the product of the 2-D sets on the same nodes; bytes_per_node: "
+                  "the four arrays of a run (value, previous value, two RK stages) with their ghost layers\n");
+    fprintf(o.fp, "N\tscheme\tnodes\tinside_6d\tinside_product\tdiffer\tdiffer_away\tsteps\tseconds\tbytes_per_node\n");
+    product_row(&o, 9, HJ_LS_UPWIND_FIRST, 1);
+    if (!quick) product_row(&o, 11, HJ_LS_ENO2, 2);
+    commit(&o);
 }
 
 /* ---- Dubins car with wind: trajectories ------------------------------- */
@@ -423,42 +428,47 @@ static double moving_run(long N, hj_reach_set_fn obstacle, double **phi_out, hj_
     return area;
 }
 
+/* Each grid N against the time-varying run on 4 (N - 1) + 1 nodes a side
+ * (its nodes include the coarse ones): quick 41, full 41 and 81. */
 static void check_moving(void)
 {
-    const long N = quick ? 41 : 81, Nf = 4 * (N - 1) + 1;
+    hj_out o;
+    open_out(&o, "moving_obstacle.tsv");
+    fprintf(o.fp, "# x' = u, |u| <= 1, target disc 0.3, bar obstacle sweeping from x = -1.2 (t = 0) to 0.8 (t = 1), "
+                  "BRT T = 1 on [-2, 2]^2, ENO2/LLF/RK2; reference: the time-varying run on 4 (N - 1) + 1 nodes a "
+                  "side (area_ref); cells: nodes whose sign differs from the reference's\n");
+    fprintf(o.fp, "treatment\tN\tarea\tarea_ref\tarea_rel_err\tcells_differ\tvisibly_worse\n");
+    for (long N = 41; N <= (quick ? 41 : 81); N = 2 * N - 1) {
+    const long Nf = 4 * (N - 1) + 1, step = 4;
     hj_ls_grid g, gs, gf;
     double *phi, *phis, *phif;
     hj_progress("%s: moving obstacle, N = %ld and %ld\n", prog, N, Nf);
+    const double af = moving_run(Nf, bar, &phif, &gf);
     const double a = moving_run(N, bar, &phi, &g);
     const double as = moving_run(N, bar_static, &phis, &gs);
-    const double af = moving_run(Nf, bar, &phif, &gf);
     long dm = 0, ds = 0;
     for (long b = 0; b < N; b++)
         for (long c = 0; c < N; c++) {
-            const int ref = phif[hj_ls_index(&gf, (long[]){4 * c, 4 * b})] < 0;
+            const int ref = phif[hj_ls_index(&gf, (long[]){step * c, step * b})] < 0;
             const size_t k = hj_ls_index(&g, (long[]){c, b});
             dm += (phi[k] < 0) != ref;
             ds += (phis[k] < 0) != ref;
         }
     const double em = fabs(a / af - 1), es = fabs(as / af - 1);
-    hj_out o;
-    open_out(&o, "moving_obstacle.tsv");
-    fprintf(o.fp, "# x' = u, |u| <= 1, target disc 0.3, bar obstacle sweeping from x = -1.2 (t = 0) to 0.8 (t = 1), "
-                  "BRT T = 1 on [-2, 2]^2, ENO2/LLF/RK2; reference: the time-varying run on %ld^2 (area %.5f); "
-                  "cells: nodes whose sign differs from the reference's\n",
-            Nf, af);
-    fprintf(o.fp, "treatment\tN\tarea\tarea_rel_err\tcells_differ\tvisibly_worse\n");
-    fprintf(o.fp, "moving\t%ld\t%.5f\t%.4f\t%ld\t-\n", N, a, em, dm);
-    fprintf(o.fp, "static\t%ld\t%.5f\t%.4f\t%ld\t%d\n", N, as, es, ds, es > 5 * em && ds > 5 * dm);
-    commit(&o);
-    hj_out d;
-    hj_error err;
-    open_out(&d, "moving_obstacle.dat");
-    const char *names[2] = {"phi_moving", "phi_static"};
-    const double *f[2] = {phi, phis};
-    CHECK(hj_ls_write_block(d.fp, &g, 2, names, f, &err));
-    commit(&d);
+    fprintf(o.fp, "moving\t%ld\t%.5f\t%.5f\t%.4f\t%ld\t-\n", N, a, af, em, dm);
+    fprintf(o.fp, "static\t%ld\t%.5f\t%.5f\t%.4f\t%ld\t%d\n", N, as, af, es, ds, es > 5 * em && ds > 5 * dm);
+    if (N == 41) {
+        hj_out d;
+        hj_error err;
+        open_out(&d, "moving_obstacle.dat");
+        const char *names[2] = {"phi_moving", "phi_static"};
+        const double *f[2] = {phi, phis};
+        CHECK(hj_ls_write_block(d.fp, &g, 2, names, f, &err));
+        commit(&d);
+    }
     hj_ls_free(phi), hj_ls_free(phis), hj_ls_free(phif);
+    }
+    commit(&o);
 }
 
 int main(int argc, char **argv)

@@ -16,10 +16,18 @@ $(RS_TABLES:%=$(RS_OUT)/%) $(RS_DATA:%=$(RS_OUT)/%) &: $(RS_BIN)/reach_checks
 
 $(eval $(call hj_figure,$(RS),$(RS_OUT),reach,$(RS_DATA)))
 
-PROGRAMS += $(RS_BIN)/reach_checks
+PROGRAMS += $(RS_BIN)/reach_checks $(RS_BIN)/hjreach $(RS_BIN)/bench_reach
 CHECK_PAPERS += reach=$(RS)
 CHECK_INPUTS += $(RS_TABLES:%=$(RS_OUT)/%)
 REPORT_INPUTS += $(RS)/reach_checks.c $(RS_TABLES:%=$(RS_OUT)/%)
 
 .PHONY: reach
 reach: $(RS_TABLES:%=$(RS_OUT)/%) $(RS_OUT)/reach.png
+
+# Benchmark (make bench, never the tests): 6-D node updates per second of
+# the first order and WENO5/RK3 schemes, bytes per node.
+BENCHES += bench-reach
+.PHONY: bench-reach
+bench-reach: $(RS_BIN)/bench_reach
+	@mkdir -p $(RS_OUT)
+	OMP_WAIT_POLICY=passive $(RS_BIN)/bench_reach --out-dir $(RS_OUT)

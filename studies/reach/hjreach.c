@@ -1,0 +1,287 @@
+/* hjreach -- reachable sets from the command line: a system from a small
+ * catalogue, a grid, a target, an obstacle and a horizon; writes the value
+ * and the time-to-reach (common/hj_reach).
+ *
+ *   hjreach --system dubins --N 41,41,40 --target-radius 0.5 \
+ *           --obstacle -1.4,0.2:-0.6,1.4 --horizon 1 --out-dir out
+ *
+ * Systems (state order; the control reaches the target unless the system
+ * says otherwise):
+ *   double_integrator  (x, v): x' = v, v' = u, |u| <= --u-max
+ *   dubins             (x, y, th): speed --speed, |th'| <= --u-max, th
+ *                      periodic (its grid is given by the period)
+ *   planar_di          (x, y, vx, vy): acceleration in a disc of radius --u-max
+ *   air3d              (x, y, psi): the toolbox's game (section 2.6.1),
+ *                      evader speed and turn rate --speed, --u-max avoid
+ *                      the capture cylinder, the pursuer (same speed and
+ *                      rate) disturbs; psi periodic
+ * The target is the ball (a cylinder in the other dimensions) of radius
+ * --target-radius about --target-centre over the first two state
+ * dimensions (the first for the double integrator: |x - c| <= r); the
+ * obstacle (optional) a box lo:hi over the same dimensions.
+ *
+ * Outputs in --out-dir: value.dat and ttr.dat (gnuplot blocks: 1-D to
+ * 3-D; for 4-D the slice through the middle of the velocities) and, for
+ * 3-D, reach.vtk with both fields.  ttr is inf where the set is not
+ * reached by the horizon.  Progress on stderr; one line of results on
+ * stdout: the steps, the final tau and the measure of the set (dimensions
+ * 1 to 3).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hj.h"
+
+static const char *prog = "hjreach";
+
+typedef struct {
+    double speed, umax;
+} params;
+
+static void di_f(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[1], o[1] = 0;
+}
+static void di_G(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 1;
+}
+static void dub_f(double t, const double *x, double *o, void *c)
+{
+    (void)t;
+    const params *p = c;
+    o[0] = p->speed * cos(x[2]), o[1] = p->speed * sin(x[2]), o[2] = 0;
+}
+static void dub_G(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 0, o[2] = 1;
+}
+static void pdi_f(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[2], o[1] = x[3], o[2] = 0, o[3] = 0;
+}
+static void pdi_G(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    for (int q = 0; q < 8; q++) o[q] = q == 4 || q == 7;
+}
+/* air3D: relative position (x, y) of the pursuer in the evader's frame
+ * and relative heading psi; evader turn a (control), pursuer turn b. */
+static void air_f(double t, const double *x, double *o, void *c)
+{
+    (void)t;
+    const params *p = c;
+    o[0] = -p->speed + p->speed * cos(x[2]), o[1] = p->speed * sin(x[2]), o[2] = 0;
+}
+static void air_G(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[1], o[1] = -x[0], o[2] = -1;
+}
+static void air_H(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 0, o[2] = 1;
+}
+
+typedef struct {
+    int dims; /* target/obstacle dimensions: 1 or 2 */
+    double c[2], r;
+    double lo[2], hi[2];
+} sets;
+
+static double target_fn(double t, const double *x, void *ctx)
+{
+    (void)t;
+    const sets *s = ctx;
+    double d2 = 0;
+    for (int k = 0; k < s->dims; k++) d2 += (x[k] - s->c[k]) * (x[k] - s->c[k]);
+    return sqrt(d2) - s->r;
+}
+static double obstacle_fn(double t, const double *x, void *ctx)
+{
+    (void)t;
+    const sets *s = ctx;
+    double m = -INFINITY;
+    for (int k = 0; k < s->dims; k++) m = fmax(m, fmax(s->lo[k] - x[k], x[k] - s->hi[k]));
+    return m;
+}
+
+/* Comma-separated doubles, exactly n of them. */
+static void parse_list(const char *s, const char *what, double *out, int n)
+{
+    hj_error err;
+    char buf[512], *save = NULL;
+    if (strlen(s) >= sizeof buf) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: too long", what);
+    strcpy(buf, s);
+    int k = 0;
+    for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++) {
+        if (k >= n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d numbers, got more", what, n);
+        if (hj_parse_double(tok, what, -1e300, 1e300, &out[k], &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    }
+    if (k != n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d numbers, got %d", what, n, k);
+}
+
+static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi, const double *ttr)
+{
+    hj_error err;
+    char path[1024];
+    const char *names[2] = {"value", "ttr"};
+    const double *f[2] = {phi, ttr};
+    if (g->dim <= 3) {
+        snprintf(path, sizeof path, "%s/value.dat", dir);
+        if (hj_ls_write_dat(path, g, 1, names, f, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+        snprintf(path, sizeof path, "%s/ttr.dat", dir);
+        if (hj_ls_write_dat(path, g, 1, names + 1, f + 1, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+        if (g->dim == 3) {
+            snprintf(path, sizeof path, "%s/reach.vtk", dir);
+            if (hj_ls_write_vtk(path, g, "hjreach value and time-to-reach", 2, names, f, &err))
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+        }
+        return;
+    }
+    /* 4-D: the (x, y) slice through the middle nodes of the velocities. */
+    hj_ls_grid s;
+    const hj_ls_bc bc[2] = {g->bc[0], g->bc[1]};
+    if (hj_ls_grid_init(&s, 2, g->min, g->max, g->N, bc, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    double *a = hj_ls_alloc(&s), *b = hj_ls_alloc(&s);
+    if (!a || !b) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
+    for (long j = 0; j < g->N[1]; j++)
+        for (long i = 0; i < g->N[0]; i++) {
+            const size_t k = hj_ls_index(g, (long[]){i, j, g->N[2] / 2, g->N[3] / 2}), q = hj_ls_index(&s, (long[]){i, j});
+            a[q] = phi[k], b[q] = ttr[k];
+        }
+    const double *sf[2] = {a, b};
+    snprintf(path, sizeof path, "%s/value.dat", dir);
+    if (hj_ls_write_dat(path, &s, 1, names, sf, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    snprintf(path, sizeof path, "%s/ttr.dat", dir);
+    if (hj_ls_write_dat(path, &s, 1, names + 1, sf + 1, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    hj_ls_free(a), hj_ls_free(b);
+}
+
+int main(int argc, char **argv)
+{
+    static const char *const systems[] = {"double_integrator", "dubins", "planar_di", "air3d", NULL};
+    static const char *const kinds[] = {"brt", "brs", NULL};
+    static const char *const schemes[] = {"upwind1", "eno2", "eno3", "weno5", NULL};
+    static const int scheme_ids[] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
+    int sys = 1, kind = 0, scheme = 1, ncount = 0;
+    long N[4] = {0};
+    const char *lo_s = NULL, *hi_s = NULL, *centre_s = NULL, *obstacle_s = NULL, *out_dir = ".";
+    double horizon = 1, radius = 0.5, tol = 0, speed = 1, umax = 1, discount = 0;
+    hj_cli_opt opts[] = {
+        {.name = "--system", .type = HJ_OPT_CHOICE, .value = &sys, .choices = systems, .metavar = "NAME",
+         .help = "the system from the catalogue"},
+        {.name = "--N", .type = HJ_OPT_LONG_LIST, .value = N, .min = 3, .max = 100000, .count = &ncount, .maxn = 4,
+         .metavar = "N1,N2,..", .help = "nodes in each dimension (per period for a periodic one)",
+         .dflt = "41 (21 in 4-D)"},
+        {.name = "--min", .type = HJ_OPT_STRING, .value = &lo_s, .metavar = "A,B,..",
+         .help = "lower corner of the grid", .dflt = "the system's"},
+        {.name = "--max", .type = HJ_OPT_STRING, .value = &hi_s, .metavar = "A,B,..",
+         .help = "upper corner (a periodic dimension: min + period)", .dflt = "the system's"},
+        {.name = "--target-centre", .type = HJ_OPT_STRING, .value = &centre_s, .metavar = "X,Y",
+         .help = "centre of the target ball over the first two dimensions", .dflt = "0"},
+        {.name = "--target-radius", .type = HJ_OPT_DOUBLE, .value = &radius, .min = 1e-12, .max = 1e12,
+         .metavar = "R", .help = "radius of the target ball"},
+        {.name = "--obstacle", .type = HJ_OPT_STRING, .value = &obstacle_s, .metavar = "LO:HI",
+         .help = "obstacle box lo1,lo2:hi1,hi2 over the first two dimensions", .dflt = "none"},
+        {.name = "--horizon", .type = HJ_OPT_DOUBLE, .value = &horizon, .min = 0, .max = 1e12, .metavar = "T",
+         .help = "time horizon (0: until converged, needs --tol)"},
+        {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &tol, .min = 0, .max = 1e12, .metavar = "RATE",
+         .help = "stop when max |dphi/dtau| falls below RATE (0: never)"},
+        {.name = "--discount", .type = HJ_OPT_DOUBLE, .value = &discount, .min = 0, .max = 1e12, .metavar = "L",
+         .help = "discount rate lambda of the term lambda phi"},
+        {.name = "--kind", .type = HJ_OPT_CHOICE, .value = &kind, .choices = kinds, .metavar = "KIND",
+         .help = "reachable tube or set"},
+        {.name = "--scheme", .type = HJ_OPT_CHOICE, .value = &scheme, .choices = schemes, .metavar = "S",
+         .help = "spatial scheme (RK order 1 for upwind1, 2 for eno2, 3 otherwise)"},
+        {.name = "--speed", .type = HJ_OPT_DOUBLE, .value = &speed, .min = 0, .max = 1e6, .metavar = "V",
+         .help = "speed (dubins, air3d)"},
+        {.name = "--u-max", .type = HJ_OPT_DOUBLE, .value = &umax, .min = 0, .max = 1e6, .metavar = "U",
+         .help = "control bound (turn rate, acceleration)"},
+        {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
+         .help = "where to write value.dat, ttr.dat (and reach.vtk in 3-D)"},
+    };
+    hj_cli_spec spec = {prog, "reachable sets of a catalogue system: the value and the time-to-reach", opts,
+                        (int)(sizeof opts / sizeof opts[0]), NULL};
+    hj_cli_parse_or_exit(&spec, argc, argv);
+
+    static const int dims[] = {2, 3, 4, 3};
+    static const double dlo[4][4] = {{-2, -2}, {-2, -2, 0}, {-1.6, -1.6, -1.2, -1.2}, {-6, -10, 0}};
+    static const double dhi[4][4] = {{2, 2}, {2, 2, 2 * HJ_PI}, {1.6, 1.6, 1.2, 1.2}, {20, 10, 2 * HJ_PI}};
+    const int dim = dims[sys];
+    double lo[4], hi[4];
+    for (int d = 0; d < dim; d++) lo[d] = dlo[sys][d], hi[d] = dhi[sys][d];
+    if (lo_s) parse_list(lo_s, "--min", lo, dim);
+    if (hi_s) parse_list(hi_s, "--max", hi, dim);
+    if (ncount == 0)
+        for (int d = 0; d < dim; d++) N[d] = dim == 4 ? 21 : 41;
+    else if (ncount == 1)
+        for (int d = 1; d < dim; d++) N[d] = N[0];
+    else if (ncount != dim)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--N: %s is %d-D, got %d counts", systems[sys], dim, ncount);
+    if (horizon == 0 && !(tol > 0)) hj_cli_fail(prog, HJ_EXIT_USAGE, "--horizon 0 (until converged) needs --tol > 0");
+    sets st = {sys == 0 ? 1 : 2, {0, 0}, radius, {0, 0}, {0, 0}};
+    if (centre_s) parse_list(centre_s, "--target-centre", st.c, st.dims);
+    if (obstacle_s) {
+        const char *colon = strchr(obstacle_s, ':');
+        if (!colon) hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle: expected lo1,lo2:hi1,hi2");
+        char lo_part[256];
+        const size_t n = (size_t)(colon - obstacle_s);
+        if (n >= sizeof lo_part) hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle: too long");
+        memcpy(lo_part, obstacle_s, n), lo_part[n] = '\0';
+        parse_list(lo_part, "--obstacle (lower corner)", st.lo, st.dims);
+        parse_list(colon + 1, "--obstacle (upper corner)", st.hi, st.dims);
+        for (int k = 0; k < st.dims; k++)
+            if (!(st.lo[k] < st.hi[k])) hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle: the box is empty");
+    }
+    hj_error err;
+    char probe[1024];
+    snprintf(probe, sizeof probe, "%s/value.dat", out_dir);
+    if (hj_out_check(probe, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+
+    hj_ls_bc bc[4];
+    for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    if (sys == 1 || sys == 3) bc[2].type = HJ_LS_BC_PERIODIC;
+    hj_ls_grid g;
+    if (hj_ls_grid_init_period(&g, dim, lo, hi, N, bc, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+
+    params p = {speed, umax};
+    hj_reach_dyn s;
+    const hj_reach_vec_fn fs[4] = {di_f, dub_f, pdi_f, air_f};
+    const hj_reach_vec_fn Gs[4] = {di_G, dub_G, pdi_G, air_G};
+    hj_reach_dyn_init(&s, dim, fs[sys], &p);
+    if (sys == 2) hj_reach_dyn_control_ball(&s, Gs[sys], 2, (double[]){0, 0}, umax);
+    else hj_reach_dyn_control_box(&s, Gs[sys], 1, (double[]){-umax}, (double[]){umax});
+    if (sys == 3) {
+        /* The evader (control) avoids capture, the pursuer (disturbance)
+         * seeks it: modes named, not signs. */
+        hj_reach_dyn_disturbance_box(&s, air_H, 1, (double[]){-umax}, (double[]){umax});
+        hj_reach_dyn_goal(&s, HJ_REACH_AVOID);
+    }
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.kind = kind == 0 ? HJ_REACH_BRT : HJ_REACH_BRS;
+    pb.target.fn = target_fn, pb.target.ctx = &st;
+    if (obstacle_s) pb.obstacle.fn = obstacle_fn, pb.obstacle.ctx = &st;
+    pb.horizon = horizon > 0 ? horizon : INFINITY, pb.conv_tol = tol, pb.discount = discount;
+    pb.scheme = scheme_ids[scheme], pb.order = scheme == 0 ? 1 : scheme == 1 ? 2 : 3;
+    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    if (!phi || !ttr) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for a %zu-node grid", g.nodes);
+    hj_progress("%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
+    hj_reach_stats stats;
+    if (hj_reach_solve(&pb, phi, ttr, &stats, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    write_fields(out_dir, &g, phi, ttr);
+    double m = NAN;
+    if (dim <= 3 && hj_reach_measure(&g, phi, &m, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    printf("%s: %s, %ld steps, tau = %g%s, measure of the set %.6g\n", prog, systems[sys], stats.steps, stats.tau,
+           stats.converged ? " (converged)" : "", m);
+    hj_ls_free(phi), hj_ls_free(ttr);
+    return 0;
+}
