@@ -4,8 +4,9 @@
 # with or without it: hj_mpi.o goes into build/libhj_mpi.a, linked by the
 # MPI programs only.  Included by the top-level Makefile.
 #
-#   make mpi-test   air3D and the 6-D double integrators on 1-4 processes,
-#                   each result file compared byte for byte with the
+#   make mpi-test   hj_mpi's unit tests (mpi/tests/test_mpi.c) and air3D
+#                   and the 6-D double integrators on 1-4 processes, each
+#                   result file compared byte for byte with the
 #                   single-process library's (mpi/test-mpi.sh)
 #   make mpi-bench  per-step time, communication fraction and weak scaling
 #                   at 1, 2, 4 processes, and the scaling model for 64 and
@@ -29,9 +30,15 @@ $(MPI_BIN)/mpi_reach: $(BUILD)/obj/mpi/mpi_reach.o $(BUILD)/obj/$(P2)/p2_air3d.o
                       $(MPI_LIB) $(LIB)
 	@mkdir -p $(@D)
 	$(MPICC) $(LDFLAGS) $(filter %.o,$^) $(MPI_LIB) $(LIB) $(LDLIBS) -o $@
+MPI_TEST := $(BUILD)/test/mpi/test_mpi
+$(BUILD)/obj/mpi/tests/%.o: CPPFLAGS += -Icommon/tests
+$(BUILD)/obj/mpi/tests/%.o: | build/.deps-test
+$(MPI_TEST): $(BUILD)/obj/mpi/tests/test_mpi.o $(MPI_LIB) $(LIB)
+	@mkdir -p $(@D)
+	$(MPICC) $(LDFLAGS) $(filter %.o,$^) $(MPI_LIB) $(LIB) $(TESTLIBS) $(LDLIBS) -o $@
 mpi: $(MPI_PROGS)
-mpi-test: $(MPI_PROGS)
-	mpi/test-mpi.sh $(MPI_BIN)/mpi_reach $(BUILD)/mpi-test
+mpi-test: $(MPI_PROGS) $(MPI_TEST)
+	mpi/test-mpi.sh $(MPI_BIN)/mpi_reach $(BUILD)/mpi-test $(MPI_TEST)
 mpi-bench: $(MPI_PROGS)
 	mpi/bench-mpi.sh $(MPI_BIN)/mpi_reach $(RESULTS)/mpi
 BENCHES += mpi-bench

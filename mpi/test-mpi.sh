@@ -1,8 +1,10 @@
 #!/bin/bash
-# test-mpi.sh PROG DIR -- the MPI runs against the single-process library.
+# test-mpi.sh PROG DIR [UNIT] -- the MPI runs against the single-process
+# library.  UNIT (hj_mpi's cmocka tests: halo fill against the undivided
+# grid, row-ordered sums, MPI-IO files) runs first on 1, 2, 3, 4 processes.
 #
 # For air3D (NX = 26, t = 2.8: about 185 steps) and the 6-D double
-# integrators (5^4 x 9^2 nodes, tau = 0.2), run the undivided library
+# integrators (5^4 x 9^2 nodes, tau = 0.1: 3 steps), run the undivided library
 # (--serial, two OpenMP threads) and then 1, 2, 3, 4 processes (one
 # thread each; oversubscribed on a 2-core machine): every result file must
 # equal the reference byte for byte, and so must the printed norms and set
@@ -10,12 +12,22 @@
 # across processes) and along y alone; the 6-D case along the default two
 # outermost axes.  Bad decompositions must fail with one message.
 set -u
-prog=$1 dir=$2
+prog=$1 dir=$2 unit=${3:+$(realpath "$3")}
 mkdir -p "$dir"
 run="mpirun --oversubscribe --allow-run-as-root --mca btl self,vader,tcp --mca btl_tcp_if_include lo"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); echo "ok   $*"; }
 bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+
+if [ -n "$unit" ]; then
+    for np in 1 2 3 4; do
+        if (cd "$dir" && OMP_NUM_THREADS=1 $run -np $np "$unit") > "$dir/unit-np$np.log" 2>&1; then
+            ok "hj_mpi unit tests on $np process(es): $(grep -c '\[       OK \]' "$dir/unit-np$np.log") passed"
+        else
+            bad "hj_mpi unit tests on $np process(es) (see $dir/unit-np$np.log)"
+        fi
+    done
+fi
 # The columns that must not depend on the decomposition: nodes, steps,
 # max, avg, rms, negative.
 numbers() { cut -f4,5,11-14 "$1"; }
@@ -45,11 +57,11 @@ check_case() { # name args... ; then the runs as "np split"
 }
 
 check_case air3d "--case air3d --N 26" vtk "1 " "2 " "3 " "4 " "2 2" "3 2" "4 2" "2 1"
-check_case di6 "--case di6 --N 5 --tmax 0.2" raw "1 " "2 " "3 " "4 "
+check_case di6 "--case di6 --N 5 --tmax 0.1" raw "1 " "2 " "3 " "4 "
 
 # Refused decompositions: axis 0 holds the rows; blocks thinner than the
 # ghost width (9 nodes over 4 processes along one axis).
-for args in "--case air3d --split 0" "--case di6 --N 5 --tmax 0.2 --split 5"; do
+for args in "--case air3d --split 0" "--case di6 --N 5 --tmax 0.1 --split 5"; do
     np=2; [ "${args##*split }" = 5 ] && np=4
     if $run -np $np $prog $args > /dev/null 2> "$dir/refused.err"; then
         bad "refused: '$args' on $np processes ran"
