@@ -65,7 +65,10 @@ void hj_mpi_stats_reset(hj_mpi *m);
 
 /* The global sum of local per-row values part[0..local.rows-1] (row r of
  * the local grid, as hj_ls_row numbers them), added in global row order
- * on rank 0 and broadcast: the same bits on every process count. */
+ * on rank 0 and broadcast: the same bits on every process count.  Rank 0
+ * holds one double and one index per global row (prod_{d>0} N[d]): fine
+ * up to some 1e8 rows; a 100^6 grid (1e10 rows) would need the partials
+ * combined by a tree of fixed shape over row blocks instead. */
 int hj_mpi_rowsum(hj_mpi *m, const double *part, double *sum, hj_error *err);
 
 /* Maximum, average and root mean square of |a - b| (b may be NULL) over

@@ -176,7 +176,13 @@ int main(int argc, char **argv)
     hj_ls_grid global;
     if (grid_of(&rp, &global, &err)) fail(wrank, &err);
     hj_mpi m;
-    if (hj_mpi_init(&m, MPI_COMM_WORLD, &global, nsplit, axes, &err)) fail(wrank, &err);
+    /* A refused decomposition is refused on every process alike: one
+     * message, the usage exit status. */
+    if (hj_mpi_init(&m, MPI_COMM_WORLD, &global, nsplit, axes, &err)) {
+        if (wrank == 0) fprintf(stderr, "%s: %s\n", PROG, err.msg);
+        MPI_Finalize();
+        return HJ_EXIT_USAGE;
+    }
     /* --serial: the undivided grid without hooks (its layout is the local
      * grid's on one process, so the writer takes the array as it is). */
     const hj_ls_grid *g = serial ? &m.global : &m.local;
