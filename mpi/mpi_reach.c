@@ -55,6 +55,7 @@ typedef struct {
     double tmax;
     int acc;
     int first;     /* di6: first order in space and time */
+    int toolbox;   /* air3d: the toolbox's CFL rule and grid-wide WENO epsilon */
 } run_par;
 
 static int grid_of(const run_par *rp, hj_ls_grid *g, hj_error *err)
@@ -75,6 +76,7 @@ static int solve(const run_par *rp, const hj_ls_grid *global, const hj_ls_grid *
     if (rp->which == 0) {
         p2_air3d_par p;
         p2_air3d_defaults(&p);
+        if (rp->toolbox) p.cfl_rule = HJ_LS_CFL_TOOLBOX, p.weno_eps = HJ_LS_WENO_EPS_GRID;
         int rc = p2_air3d_target_block(global, g, &p, phi, err);
         if (rc) return rc;
         const double ts[2] = {0, rp->tmax};
@@ -111,7 +113,7 @@ int main(int argc, char **argv)
     MPI_Comm_size(MPI_COMM_WORLD, &wsize);
     static const char *const cases[] = {"air3d", "di6", NULL};
     static const char *const accs[] = {"low", "medium", "high", "veryHigh", NULL};
-    run_par rp = {0, 0, 0, 0, 0, 1, 0};
+    run_par rp = {0, 0, 0, 0, 0, 1, 0, 0};
     int serial = 0, header = 0, nsplit = 0;
     long split[HJ_LS_MAXDIM];
     const char *out = NULL;
@@ -126,6 +128,8 @@ int main(int argc, char **argv)
          .help = "di6: nodes on axis 5 (weak scaling: grows with the processes)", .dflt = "--Nsplit"},
         {.name = "--first-order", .type = HJ_OPT_FLAG, .value = &rp.first,
          .help = "di6: first order upwind differences and forward Euler (default ENO2, RK2)"},
+        {.name = "--toolbox-rules", .type = HJ_OPT_FLAG, .value = &rp.toolbox,
+         .help = "air3d: the toolbox's CFL rule (per-dimension maxima) and grid-wide WENO5 epsilon"},
         {.name = "--tmax", .type = HJ_OPT_DOUBLE, .value = &rp.tmax, .min = 0, .max = 1000, .metavar = "T",
          .help = "horizon (default: air3d 2.8, di6 0.5)", .dflt = "per case"},
         {.name = "--accuracy", .type = HJ_OPT_CHOICE, .value = &rp.acc, .choices = accs,

@@ -10,7 +10,9 @@
 # equal the reference byte for byte, and so must the printed norms and set
 # size (row-ordered sums).  air3D is also split along psi alone (periodic
 # across processes) and along y alone; the 6-D case along the default two
-# outermost axes.  Bad decompositions must fail with one message.
+# outermost axes; air3D at accuracy high under the toolbox's CFL rule and
+# WENO5 epsilon on 3 and 4 processes.  Bad decompositions must fail with
+# one message.
 set -u
 prog=$1 dir=$2 unit=${3:+$(realpath "$3")}
 mkdir -p "$dir"
@@ -57,6 +59,9 @@ check_case() { # name args... ; then the runs as "np split"
 }
 
 check_case air3d "--case air3d --N 26" vtk "1 " "2 " "3 " "4 " "2 2" "3 2" "4 2" "2 1"
+# The toolbox's CFL rule (per-dimension maxima) and grid-wide WENO5
+# epsilon: two more global reductions.
+check_case air3d-toolbox "--case air3d --N 26 --tmax 0.5 --accuracy high --toolbox-rules" vtk "3 " "4 2"
 check_case di6 "--case di6 --N 5 --tmax 0.1" raw "1 " "2 " "3 " "4 "
 
 # Refused decompositions: axis 0 holds the rows; blocks thinner than the
