@@ -98,9 +98,22 @@ static int solve(const run_par *rp, const hj_ls_grid *global, const hj_ls_grid *
     return rc;
 }
 
+/* A usage error, the same on every process: one message (control bytes
+ * escaped by hj_cli_fail) from rank 0, the usage exit status. */
+static _Noreturn void usage_fail(int rank, const char *msg)
+{
+    MPI_Finalize();
+    if (rank == 0) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", msg);
+    exit(HJ_EXIT_USAGE);
+}
+
 static _Noreturn void fail(int rank, const hj_error *err)
 {
-    fprintf(stderr, "%s: rank %d: %s\n", PROG, rank, err->msg);
+    char msg[sizeof err->msg + 32];
+    snprintf(msg, sizeof msg, "rank %d: %s", rank, err->msg);
+    for (char *p = msg; *p; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f) *p = '?'; /* one line */
+    fprintf(stderr, "%s: %s\n", PROG, msg);
     MPI_Abort(MPI_COMM_WORLD, HJ_EXIT_RUN);
     exit(HJ_EXIT_RUN);
 }
@@ -147,11 +160,7 @@ int main(int argc, char **argv)
                         (int)(sizeof opts / sizeof opts[0]), NULL};
     int help = 0;
     hj_error err;
-    if (hj_cli_parse(&spec, argc, argv, &help, &err)) {
-        if (wrank == 0) fprintf(stderr, "%s: %s\n", PROG, err.msg);
-        MPI_Finalize();
-        return HJ_EXIT_USAGE;
-    }
+    if (hj_cli_parse(&spec, argc, argv, &help, &err)) usage_fail(wrank, err.msg);
     if (help) {
         if (wrank == 0) {
             if (help == HJ_CLI_LIST) hj_cli_list(&spec, stdout);
@@ -169,11 +178,7 @@ int main(int argc, char **argv)
     else if (rp.which == 1 && (rp.N < 2 || rp.nsplit_n < 2 || rp.n5 == 1)) bad = "di6 needs at least 2 nodes per axis";
     else if (out && !(strlen(out) > 4 && (!strcmp(out + strlen(out) - 4, ".vtk") || !strcmp(out + strlen(out) - 4, ".raw"))))
         bad = "--out must end in .vtk or .raw";
-    if (bad) {
-        if (wrank == 0) fprintf(stderr, "%s: %s\n", PROG, bad);
-        MPI_Finalize();
-        return HJ_EXIT_USAGE;
-    }
+    if (bad) usage_fail(wrank, bad);
     int axes[HJ_LS_MAXDIM];
     for (int k = 0; k < nsplit; k++) axes[k] = (int)split[k];
 
@@ -182,11 +187,7 @@ int main(int argc, char **argv)
     hj_mpi m;
     /* A refused decomposition is refused on every process alike: one
      * message, the usage exit status. */
-    if (hj_mpi_init(&m, MPI_COMM_WORLD, &global, nsplit, axes, &err)) {
-        if (wrank == 0) fprintf(stderr, "%s: %s\n", PROG, err.msg);
-        MPI_Finalize();
-        return HJ_EXIT_USAGE;
-    }
+    if (hj_mpi_init(&m, MPI_COMM_WORLD, &global, nsplit, axes, &err)) usage_fail(wrank, err.msg);
     /* --serial: the undivided grid without hooks (its layout is the local
      * grid's on one process, so the writer takes the array as it is). */
     const hj_ls_grid *g = serial ? &m.global : &m.local;
