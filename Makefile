@@ -13,7 +13,9 @@
 #                    `make check QUICK=1`, then `make reliability` (bad
 #                    command lines, output safety, signals, short fuzzing:
 #                    tests/rules.mk) and its program tests again against
-#                    the sanitizer build
+#                    the sanitizer build; with OpenMPI (scripts/ensure-deps
+#                    mpi), the kernel over MPI on 1-4 processes, bitwise
+#                    against the single-process library (mpi/rules.mk)
 #   make fuzz        each fuzz target for FUZZ_SECONDS (300)
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
@@ -136,6 +138,7 @@ include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 include studies/reach/rules.mk
 include tests/rules.mk
+include mpi/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
@@ -191,6 +194,8 @@ test:
 	$(MAKE) --no-print-directory QUICK=1 check
 	$(MAKE) --no-print-directory reliability
 	$(MAKE) --no-print-directory SAN=1 reliability-programs
+	@if scripts/ensure-deps mpi; then $(MAKE) --no-print-directory mpi-test; \
+	 else echo "make test: OpenMPI not installed, the MPI tests skipped"; fi
 
 # The examples as a user builds them: libhj installed into a temporary
 # prefix, every flag from `pkg-config --cflags --libs hj`, run against the

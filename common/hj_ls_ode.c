@@ -95,6 +95,7 @@ static double blowup_scale(const hj_ls_grid *g, const double *y)
             m = av > m ? av : m;
         }
     }
+    hj_ls_grid_reduce(g, &m, 1, HJ_LS_REDUCE_MAX);
     const double diam = sqrt(diam2);
     return m > diam ? m : diam;
 }
@@ -168,6 +169,11 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                     st.cfl_violations += b < dt / o.factor_cfl;
                     bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f, &amax);
                 }
+            }
+            if (g->dist) {
+                double v[2] = {amax, bad};
+                hj_ls_grid_reduce(g, v, 2, HJ_LS_REDUCE_MAX);
+                amax = v[0], bad = v[1] != 0;
             }
             t = last ? tk : t + dt;
             st.steps++;

@@ -114,6 +114,14 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             len += snprintf(pos + len, sizeof pos - (size_t)len, "%s%g", d ? ", " : "", x[d]);
         return hj_error_set(err, bad_code, "%s returned a non-finite value at x = (%s), t = %g", what, pos, t);
     }
+    {
+        /* A distributed grid: the largest over all blocks. */
+        double v[HJ_LS_MAXDIM + 2] = {m, nan_seen};
+        for (int d = 0; d < g->dim; d++) v[2 + d] = dm[d];
+        hj_ls_grid_reduce(g, v, g->dim + 2, HJ_LS_REDUCE_MAX);
+        m = v[0], nan_seen = v[1] != 0;
+        for (int d = 0; d < g->dim; d++) dm[d] = v[2 + d];
+    }
     if (nan_seen || m == INFINITY)
         return hj_error_set(err, HJ_ENONFINITE, "%s: non-finite CFL bound at t = %g", what, t);
     *maxinv = m;
@@ -161,6 +169,7 @@ static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y,
 {
     const int grid = mode == HJ_LS_WENO_EPS_GRID && (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B);
     for (int d = 0; d < g->dim; d++) eps[d] = grid ? hj_ls_weno_eps_grid(g, y, d) : -1;
+    if (grid) hj_ls_grid_reduce(g, eps, g->dim, HJ_LS_REDUCE_MAX);
 }
 
 /* ---- convection ------------------------------------------------------ */
@@ -659,6 +668,8 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
             free(rc.ws);
         }
         if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the Lax-Friedrichs workspace");
+        hj_ls_grid_reduce(g, ps.gmin, g->dim, HJ_LS_REDUCE_MIN);
+        hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
     int rc = for_rows(g, (size_t)(7 * g->dim + HJ_LS_ROW_WORK + 4) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
