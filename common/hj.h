@@ -51,6 +51,7 @@
  * scheme, front errors, the minimal time function */
 #include "hj_band.h"
 #include "hj_ub.h"
+#include "hj_ub_dense.h"
 #include "hj_front.h"
 #include "hj_mintime.h"
 
