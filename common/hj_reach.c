@@ -344,7 +344,7 @@ static void ls_ham_row(double tau, const hj_ls_row_info *row, const double *phi,
     const ham_ctx *h = ctx;
     const hj_reach_dyn *s = h->dyn;
     const int nx = s->nx;
-    row_slot *sl = slot_of(h);
+    row_slot *sl = row->n <= h->row_n ? slot_of(h) : NULL;
     double x[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
     memcpy(x, row->x, sizeof(double) * (size_t)nx);
     for (long j = 0; j < row->n; j++) {
@@ -363,7 +363,7 @@ static void ls_partial_row(double tau, const hj_ls_row_info *row, const double *
     (void)pmin, (void)pmax;
     const ham_ctx *h = ctx;
     const row_slot *sl = slot_of(h);
-    if (sl && sl->valid && sl->tau == tau && sl->k == row->k) {
+    if (sl && sl->valid && sl->tau == tau && sl->k == row->k && row->n <= h->row_n) {
         memcpy(A, sl->alpha + (size_t)d * (size_t)h->row_n, sizeof(double) * (size_t)row->n);
         return;
     }
