@@ -13,7 +13,9 @@
 #                    `make check QUICK=1`, then `make reliability` (bad
 #                    command lines, output safety, signals, short fuzzing:
 #                    tests/rules.mk) and its program tests again against
-#                    the sanitizer build
+#                    the sanitizer build; with OpenMPI (scripts/ensure-deps
+#                    mpi), the kernel over MPI on 1-4 processes, bitwise
+#                    against the single-process library (mpi/rules.mk)
 #   make fuzz        each fuzz target for FUZZ_SECONDS (300)
 #   make check       compare every published cell with the computed one;
 #                    fails when a cell is worse than its accepted verdict
@@ -26,7 +28,7 @@
 # build/san/.  Dependencies (Debian packages) are installed on first use by
 # scripts/ensure-deps, by group: lib (Ceres) for the library and programs,
 # test (cmocka, pkg-config) for the tests, repro (gnuplot, cmark) for
-# figures and the report.
+# figures and the report, bench (scikit-fmm) for `make bench`.
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -64,6 +66,9 @@ DEPS_GROUPS += test
 endif
 ifneq ($(filter reproduce report report-now paper1 paper2 paper3 bench test check,$(MAKECMDGOALS)),)
 DEPS_GROUPS += repro
+endif
+ifneq ($(filter bench bench-eikonal,$(MAKECMDGOALS)),)
+DEPS_GROUPS += bench
 endif
 DEPS_OK := $(DEPS_GROUPS:%=build/.deps-%)
 
@@ -119,6 +124,9 @@ $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 # parallel over rows like the kernel.
 $(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o: CFLAGS += -fopenmp -O3
 $(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
+# The Eikonal sweeps run hyperplanes in parallel (bitwise thread-independent).
+$(BUILD)/obj/common/hj_eik.o $(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/tests/test_eik.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
 $(BUILD)/obj/common/tests/test_hjcheck.o $(BUILD)/obj/common/tests/test_hjtime.o: CPPFLAGS += -DHJ_BIN_DIR='"$(BUILD)/bin"'
@@ -130,6 +138,7 @@ include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 include studies/reach/rules.mk
 include tests/rules.mk
+include mpi/rules.mk
 
 .PHONY: all lib install deps reproduce test unit examples check report paper1 paper2 paper3 bench clean memcheck
 
@@ -185,6 +194,8 @@ test:
 	$(MAKE) --no-print-directory QUICK=1 check
 	$(MAKE) --no-print-directory reliability
 	$(MAKE) --no-print-directory SAN=1 reliability-programs
+	@if scripts/ensure-deps mpi; then $(MAKE) --no-print-directory mpi-test; \
+	 else echo "make test: OpenMPI not installed, the MPI tests skipped"; fi
 
 # The examples as a user builds them: libhj installed into a temporary
 # prefix, every flag from `pkg-config --cflags --libs hj`, run against the

@@ -20,10 +20,13 @@
 #include "hj_io.h"
 #include "hj_cli.h"
 
-/* Fast sweeping for the Eikonal equation (paper 1): the solver, speed
+/* Fast sweeping for the Eikonal equation: paper 1's solver, the general
+ * solver (hj_eik: 2-D/3-D, orders 1/3/5, factored point sources), speed
  * maps read from files, inflow curves */
 #include "hj_fsm.h"
+#include "hj_eik.h"
 #include "hj_map.h"
+#include "hj_vol.h"
 #include "hj_curve.h"
 
 /* The level set kernel (paper 2) */

@@ -2,6 +2,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 const char *hj_strerror(int code)
 {
@@ -36,4 +37,20 @@ void hj_error_clear(hj_error *err)
         err->code = HJ_OK;
         err->msg[0] = '\0';
     }
+}
+
+const char *hj_error_quote(const char *s, size_t n, char *buf, size_t cap)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        const unsigned char c = (unsigned char)s[i];
+        if (k + 8 >= cap) { /* each byte takes at most 4: "..." fits */
+            strcpy(buf + k, "...");
+            return buf;
+        }
+        if (c >= 0x20 && c < 0x7f && c != '\\') buf[k++] = (char)c;
+        else k += (size_t)snprintf(buf + k, cap - k, c == '\\' ? "\\\\" : "\\x%02x", c);
+    }
+    buf[k] = '\0';
+    return buf;
 }

@@ -37,6 +37,12 @@ int hj_error_set(hj_error *err, int code, const char *fmt, ...)
 #endif
     ;
 
+/* What a message quotes from a file, in buf (cap >= 8): printable ASCII
+ * as it is, every other byte as \xHH and a backslash as \\ (a file may
+ * hold anything; a message is one line of text), cut with "..." to fit.
+ * Returns buf. */
+const char *hj_error_quote(const char *s, size_t n, char *buf, size_t cap);
+
 /* Reset err to HJ_OK with an empty message (err may be NULL). */
 void hj_error_clear(hj_error *err);
 

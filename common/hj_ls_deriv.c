@@ -26,6 +26,14 @@ const char *hj_ls_scheme_name(int scheme)
 
 int hj_ls_scheme_order(int scheme) { return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? orders[scheme] : 0; }
 
+/* AVX2 clone where the CPU has it (no FMA: results are bitwise the same
+ * as the baseline SSE2 code). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+#define HJ_LS_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define HJ_LS_CLONES
+#endif
+
 /* D[k][i] = D1_{i+k+1/2} for k = kmin..kmax, row k + 3 of w. */
 static void first_differences(const double *restrict p, ptrdiff_t s, long n, double dx, double *restrict w, int kmin,
                               int kmax)
@@ -52,6 +60,7 @@ static inline double sel(int c, double a, double b)
     return r;
 }
 
+HJ_LS_CLONES
 void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx, int k, double *D)
 {
     const double inv = 1.0 / dx;
@@ -123,14 +132,6 @@ static inline double weno3(double v1, double v2, double v3)
     const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), \
                  e2p1 = 0.5 * (p1 - z0), e2p2 = 0.5 * (p2 - p1);                     \
     const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20, f3p1 = e2p2 - e2p1;
-
-/* AVX2 clone where the CPU has it (no FMA: results are bitwise the same
- * as the baseline SSE2 code). */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-#define HJ_LS_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define HJ_LS_CLONES
-#endif
 
 void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double dx, double *dl, double *dr, double *w)
 {

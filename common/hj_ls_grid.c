@@ -39,6 +39,8 @@ int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *m
         g->total *= (size_t)g->ext[d];
         g->nodes *= (size_t)N[d];
     }
+    for (int d = 0; d < HJ_LS_MAXDIM; d++) g->origin[d] = 0;
+    g->dist = NULL;
     g->offset = 0;
     for (int d = 0; d < dim; d++) g->offset += (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
     g->rows = g->nodes / (size_t)N[0];
@@ -121,7 +123,7 @@ size_t hj_ls_index(const hj_ls_grid *g, const long *i)
 
 void hj_ls_coord(const hj_ls_grid *g, const long *i, double *x)
 {
-    for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)i[d] * g->dx[d];
+    for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)(i[d] + g->origin[d]) * g->dx[d];
 }
 
 size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i)
@@ -186,7 +188,13 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a)
             }
             fill_line(a + k, g->stride[d], g->N[d], g->dx[d], &g->bc[d]);
         }
+        if (g->dist) g->dist->halo(g, a, d, g->dist->ctx);
     }
+}
+
+void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op)
+{
+    if (g->dist) g->dist->reduce(v, n, op, g->dist->ctx);
 }
 
 void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx)

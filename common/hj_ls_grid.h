@@ -45,6 +45,8 @@ typedef struct {
     double lo, hi; /* Dirichlet values or Neumann outward derivatives */
 } hj_ls_bc;
 
+struct hj_ls_dist;
+
 typedef struct {
     int dim;
     long N[HJ_LS_MAXDIM];
@@ -56,7 +58,33 @@ typedef struct {
     size_t nodes;                  /* interior nodes, prod N */
     size_t offset;                 /* index of interior node (0, ..., 0) */
     size_t rows;                   /* interior rows along dimension 0 */
+    /* A block of a grid distributed over processes (hj_mpi.h): origin[d]
+     * is the global index of local node 0 (coordinates min + (i + origin)
+     * dx keep the global grid's bits), dist fills the ghosts of faces
+     * shared with a neighbouring block and makes per-block maxima and
+     * minima global.  Single process: origin 0, dist NULL (grid init). */
+    long origin[HJ_LS_MAXDIM];
+    const struct hj_ls_dist *dist;
 } hj_ls_grid;
+
+/* The hooks of a distributed grid.  halo(g, a, d, ctx) overwrites the
+ * ghosts of dimension d on faces shared with a neighbour; it is called by
+ * hj_ls_fill_ghosts after the boundary conditions of dimension d are
+ * applied, dimension by dimension, so corner ghosts are those of the
+ * undivided grid.  reduce(v, n, op, ctx) replaces v[0..n-1] by the
+ * maximum (HJ_LS_REDUCE_MAX) or minimum over all blocks: exact in any
+ * order, so the CFL bound, Lax-Friedrichs ranges and blow-up and
+ * convergence tests keep the bits of the undivided grid. */
+enum { HJ_LS_REDUCE_MAX, HJ_LS_REDUCE_MIN };
+typedef struct hj_ls_dist {
+    void (*halo)(const hj_ls_grid *g, double *a, int d, void *ctx);
+    void (*reduce)(double *v, int n, int op, void *ctx);
+    void *ctx;
+} hj_ls_dist;
+
+/* v[0..n-1] combined over the blocks of a distributed grid (no-op on an
+ * undivided grid). */
+void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op);
 
 /* Grid with N[d] >= 2 nodes from min[d] to max[d] > min[d].  Fails with
  * HJ_EINVAL for a bad dimension, bound or boundary condition, and with

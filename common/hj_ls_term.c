@@ -114,6 +114,14 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             len += snprintf(pos + len, sizeof pos - (size_t)len, "%s%g", d ? ", " : "", x[d]);
         return hj_error_set(err, bad_code, "%s returned a non-finite value at x = (%s), t = %g", what, pos, t);
     }
+    {
+        /* A distributed grid: the largest over all blocks. */
+        double v[HJ_LS_MAXDIM + 2] = {m, nan_seen};
+        for (int d = 0; d < g->dim; d++) v[2 + d] = dm[d];
+        hj_ls_grid_reduce(g, v, g->dim + 2, HJ_LS_REDUCE_MAX);
+        m = v[0], nan_seen = v[1] != 0;
+        for (int d = 0; d < g->dim; d++) dm[d] = v[2 + d];
+    }
     if (nan_seen || m == INFINITY)
         return hj_error_set(err, HJ_ENONFINITE, "%s: non-finite CFL bound at t = %g", what, t);
     *maxinv = m;
@@ -161,6 +169,7 @@ static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y,
 {
     const int grid = mode == HJ_LS_WENO_EPS_GRID && (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B);
     for (int d = 0; d < g->dim; d++) eps[d] = grid ? hj_ls_weno_eps_grid(g, y, d) : -1;
+    if (grid) hj_ls_grid_reduce(g, eps, g->dim, HJ_LS_REDUCE_MAX);
 }
 
 /* ---- convection ------------------------------------------------------ */
@@ -180,14 +189,16 @@ typedef struct {
     double eps[HJ_LS_MAXDIM];
 } conv_pass;
 
+HJ_LS_TERM_CLONES
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const conv_pass *ps = term;
     const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    double *acc = rc->ws, *cfl = acc + n, *v = cfl + n, *dl = v + n, *w = dl + n;
-    for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
+    /* acc is the row of ydot itself (no copy at the end) */
+    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *w = dl + n;
+    int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
         if (c->velocity_fn || c->velocity_array[d]) {
             if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
@@ -221,18 +232,24 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
         } else
             hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
         const double idx = 1 / g->dx[d];
-        for (long j = 0; j < n; j++) {
-            acc[j] -= v[j] * dl[j];
-            cfl[j] += fabs(v[j]) * idx;
-        }
+        if (first) /* 0 - x and 0 + x: the bits of accumulating from zero */
+            for (long j = 0; j < n; j++) {
+                acc[j] = 0.0 - v[j] * dl[j];
+                cfl[j] = 0.0 + fabs(v[j]) * idx;
+            }
+        else
+            for (long j = 0; j < n; j++) {
+                acc[j] -= v[j] * dl[j];
+                cfl[j] += fabs(v[j]) * idx;
+            }
+        first = 0;
     }
+    if (first)
+        for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
     /* Elementwise running maximum (no reduction chain in the row loop); a
      * NaN or infinite velocity shows up there as a non-finite bound. */
-    double *out = ydot + rc->k, *tm = rc->tmax;
-    for (long j = 0; j < n; j++) {
-        out[j] = acc[j];
-        tm[j] = (cfl[j] > tm[j] || cfl[j] != cfl[j]) ? cfl[j] : tm[j];
-    }
+    double *tm = rc->tmax;
+    for (long j = 0; j < n; j++) tm[j] = (cfl[j] > tm[j] || cfl[j] != cfl[j]) ? cfl[j] : tm[j];
     (void)bad;
     *inv = 0;
     return HJ_OK;
@@ -651,6 +668,8 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
             free(rc.ws);
         }
         if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the Lax-Friedrichs workspace");
+        hj_ls_grid_reduce(g, ps.gmin, g->dim, HJ_LS_REDUCE_MIN);
+        hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
     int rc = for_rows(g, (size_t)(7 * g->dim + HJ_LS_ROW_WORK + 4) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,

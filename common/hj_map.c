@@ -1,6 +1,7 @@
 /* hj_map.c -- slowness maps from grid files and their bilinear interpolation
  * (see hj_map.h). */
 #include "hj_map.h"
+#include "hj_vol.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -46,93 +47,14 @@ static void flip_rows(hj_map *m)
         }
 }
 
-/* What a message quotes from a file, in buf: printable ASCII as it is,
- * every other byte as \xHH and a backslash as \\ (a file may hold
- * anything; a message is one line of text), cut with "..." to fit. */
-static const char *quote(const char *s, size_t n, char *buf, size_t cap)
-{
-    size_t k = 0;
-    for (size_t i = 0; i < n; i++) {
-        const unsigned char c = (unsigned char)s[i];
-        if (k + 8 >= cap) { /* each byte takes at most 4: "..." fits */
-            strcpy(buf + k, "...");
-            return buf;
-        }
-        if (c >= 0x20 && c < 0x7f && c != '\\') buf[k++] = (char)c;
-        else k += (size_t)snprintf(buf + k, cap - k, c == '\\' ? "\\\\" : "\\x%02x", c);
-    }
-    buf[k] = '\0';
-    return buf;
-}
-
 int hj_map_read_text(hj_map *m, const char *path, hj_error *err)
 {
-    FILE *f = fopen(path, "r");
-    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
-    size_t cap = 1024, n = 0;
-    double *v = malloc(cap * sizeof *v);
-    int rows = 0, cols = -1, c, rc = HJ_OK;
-    char tok[128], q[64];
-    int tl = 0, incount = 0;
-    long line = 1, col = 0, tcol = 0; /* tcol: column of the token's first byte */
-    if (!v) { fclose(f); return hj_error_set(err, HJ_ENOMEM, "out of memory"); }
-    for (;;) {
-        c = fgetc(f);
-        if (c != EOF) col++;
-        if (c == EOF || isspace(c)) {
-            if (tl > 0) {
-                tok[tl] = '\0';
-                char *end;
-                double x = strtod(tok, &end);
-                /* end short of the token: a letter, or a NUL byte in it */
-                if (end != tok + tl) {
-                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number", path, line, tcol,
-                                      quote(tok, (size_t)tl, q, sizeof q));
-                    break;
-                }
-                if (!isfinite(x) || x < 0) {
-                    rc = hj_error_set(err, HJ_ENONFINITE, "%s:%ld:%ld: value %s must be finite and >= 0", path, line,
-                                      tcol, quote(tok, (size_t)tl, q, sizeof q));
-                    break;
-                }
-                if (n == cap) {
-                    double *nv = realloc(v, 2 * cap * sizeof *v);
-                    if (!nv) { rc = hj_error_set(err, HJ_ENOMEM, "out of memory reading %s", path); break; }
-                    v = nv;
-                    cap *= 2;
-                }
-                v[n++] = x;
-                incount++;
-                tl = 0;
-            }
-            if (c == '\n' || c == EOF) {
-                if (incount > 0) {
-                    if (cols < 0) cols = incount;
-                    else if (incount != cols) { rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: %d values, previous rows have %d", path, line, incount, cols); break; }
-                    rows++;
-                }
-                incount = 0;
-                line++;
-                col = 0;
-            }
-            if (c == EOF) break;
-        } else {
-            if (tl == 0) tcol = col;
-            if (tl >= (int)sizeof tok - 1) {
-                rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: a token longer than %d bytes: '%s'", path, line, tcol,
-                                  (int)sizeof tok - 1, quote(tok, (size_t)tl, q, sizeof q));
-                break;
-            }
-            tok[tl++] = (char)c;
-        }
-    }
-    fclose(f);
-    if (rc == HJ_OK && (rows < 2 || cols < 2)) rc = hj_error_set(err, HJ_EFORMAT, "%s: need at least 2 x 2 values", path);
-    if (rc) { free(v); return rc; }
-    m->mx = cols;
-    m->my = rows;
-    m->v = v;
-    flip_rows(m);
+    hj_vol vol;
+    const int rc = hj_vol_read_text(&vol, path, 0, err);
+    if (rc) return rc;
+    m->mx = (int)vol.n[0];
+    m->my = (int)vol.n[1];
+    m->v = vol.v; /* rows already bottom first */
     default_rectangle(m);
     return HJ_OK;
 }
@@ -195,10 +117,10 @@ static int pgm_number(pgm_in *in, const char *what, long lo, long hi, long *out,
     }
     if (!digits)
         return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is '%s%s', not a whole number", in->path, line, col,
-                            what, quote(tok, n, q, sizeof q), longer ? "..." : "");
+                            what, hj_error_quote(tok, n, q, sizeof q), longer ? "..." : "");
     if (v < lo || v > hi)
         return hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: the %s is %s%s, outside %ld..%ld", in->path, line, col, what,
-                            quote(tok, n, q, sizeof q), longer ? "..." : "", lo, hi);
+                            hj_error_quote(tok, n, q, sizeof q), longer ? "..." : "", lo, hi);
     *out = v;
     return HJ_OK;
 }
@@ -216,7 +138,7 @@ int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_er
     if (nm < 2 || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '5') || (c != '#' && !isspace(c))) {
         fclose(f);
         return hj_error_set(err, HJ_EFORMAT, "%s:1:1: not a PGM image: it starts with '%s', not P2 or P5", path,
-                            quote(magic, (size_t)nm, q, sizeof q));
+                            hj_error_quote(magic, (size_t)nm, q, sizeof q));
     }
     if (c == '#') while (c != '\n' && c != EOF) c = pgm_getc(&in);
     const int plain = magic[1] == '2';
@@ -284,8 +206,9 @@ int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_er
 
 int hj_map_read(hj_map *m, const char *path, double fmin, double fmax, hj_error *err)
 {
-    size_t len = strlen(path);
-    int is_pgm = len > 4 && !strcmp(path + len - 4, ".pgm");
+    int is_pgm = 0;
+    const int rc = hj_vol_is_pgm(path, &is_pgm, err);
+    if (rc) return rc;
     return is_pgm ? hj_map_read_pgm(m, path, fmin, fmax, err) : hj_map_read_text(m, path, err);
 }
 

@@ -44,7 +44,9 @@ double hj_map_eval(double x, double y, void *ctx);
  * non-finite text value, HJ_ENOMEM. */
 int hj_map_read_text(hj_map *m, const char *path, hj_error *err);
 int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
-/* hj_map_read_pgm for a name ending in ".pgm", else hj_map_read_text. */
+/* The format told by the content, not the name (hj_vol_is_pgm):
+ * hj_map_read_pgm for a file starting with "P2" or "P5" and white space,
+ * else hj_map_read_text. */
 int hj_map_read(hj_map *m, const char *path, double fmin, double fmax, hj_error *err);
 
 /* Speeds to slownesses: every value v becomes 1 / v.  HJ_EINVAL naming

@@ -467,6 +467,11 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
         change = rc > change ? rc : change;
         bad |= rb;
     }
+    if (g->dist) {
+        double v[2] = {change, bad};
+        hj_ls_grid_reduce(g, v, 2, HJ_LS_REDUCE_MAX);
+        change = v[0], bad = v[1] != 0;
+    }
     if (bad) return hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
     c->change = change / dt;
     c->tau_prev = tau;

@@ -3,7 +3,8 @@
 
 P1 := paper1_fastsweeping
 P1_EXAMPLES := example1 example2 example3 example4
-P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal $(BUILD)/bin/$(P1)/bench_fsm
+P1_BINS := $(P1_EXAMPLES:%=$(BUILD)/bin/$(P1)/%) $(BUILD)/bin/$(P1)/eikonal $(BUILD)/bin/$(P1)/bench_fsm \
+           $(BUILD)/bin/$(P1)/bench_eik $(BUILD)/bin/$(P1)/eik_convergence
 P1_LIBOBJ := $(BUILD)/obj/$(P1)/p1_study.o
 $(P1_BINS): $(P1_LIBOBJ)
 $(BUILD)/obj/$(P1)/%.o: CPPFLAGS += -I$(P1)
@@ -87,3 +88,29 @@ $(BUILD)/test/$(P1)/tests/test_cli: | $(P1_BINS)
 BENCHES += bench-paper1
 bench-paper1: $(BUILD)/bin/$(P1)/bench_fsm
 	$< --N 640 --out-dir results/paper1
+
+# The Eikonal solver against scikit-fmm (Debian's python3-scikit-fmm), one
+# process at a time, one thread each: CPU ratios at equal N and at equal
+# accuracy, see bench_eik.c.  The peer runs first; its table feeds ours.
+.PHONY: bench-eikonal
+BENCHES += bench-eikonal
+bench-eikonal: $(BUILD)/bin/$(P1)/bench_eik
+	@mkdir -p results/bench
+	OMP_NUM_THREADS=1 /usr/bin/python3 $(P1)/bench_skfmm.py results/bench/skfmm.tsv 200,400,800,1600 100,200
+	OMP_NUM_THREADS=1 $< --sizes 25,50,100,200,400,800,1600 --max-high 400 --sizes3 25,50,100 --sizes3-order1 200 \
+	    --peer results/bench/skfmm.tsv --out-dir results/bench
+
+# The general Eikonal solver (common/hj_eik) beyond paper 1: convergence of
+# orders 1, 3, 5 in 2-D and 3-D; its fitted orders are checked against the
+# design orders (paper1_fastsweeping/eik/reference/) as the check "eik".
+EIK := $(P1)/eik
+EIK_OUT := $(RESULTS)/eik
+EIK_RESULTS := $(EIK_OUT)/eik_convergence.tsv $(EIK_OUT)/eik_orders.tsv
+$(EIK_OUT)/eik_orders.tsv: $(EIK_OUT)/eik_convergence.tsv
+$(EIK_OUT)/eik_convergence.tsv: $(BUILD)/bin/$(P1)/eik_convergence | $(HJTIME)
+	@mkdir -p $(@D)
+	$(call hj_timed,$(@D),eik_convergence) $< $(QUICKFLAG) --out-dir $(@D)
+CHECK_PAPERS += eik=$(EIK)
+CHECK_INPUTS += $(EIK_RESULTS)
+REPORT_INPUTS += $(EIK_RESULTS) $(EIK)/report.tsv $(EIK)/overview.md $(wildcard $(EIK)/notes/*.md) $(P1)/eik_convergence.c
+paper1: $(EIK_RESULTS)

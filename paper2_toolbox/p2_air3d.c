@@ -31,11 +31,17 @@ int p2_air3d_grid(long Nx, hj_ls_grid *g, hj_error *err)
  * asymmetry that the ENO stencil choices can amplify). */
 int p2_air3d_target(const hj_ls_grid *g, const p2_air3d_par *p, double *phi, hj_error *err)
 {
+    return p2_air3d_target_block(g, g, p, phi, err);
+}
+
+int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2_air3d_par *p, double *phi,
+                          hj_error *err)
+{
     if (g->dim != 3 || p->r <= 0) return hj_error_set(err, HJ_EINVAL, "air3D target: a 3-D grid and r > 0 are needed");
     for (size_t r = 0; r < g->rows; r++) {
         long i[3] = {0, 0, 0};
         const size_t k = hj_ls_row(g, r, i);
-        const double y = ((double)i[1] - 0.5 * (double)(g->N[1] - 1)) * g->dx[1];
+        const double y = ((double)(i[1] + g->origin[1]) - 0.5 * (double)(global->N[1] - 1)) * g->dx[1];
         for (long a = 0; a < g->N[0]; a++) {
             const double x = g->min[0] + (double)a * g->dx[0];
             phi[k + (size_t)a] = sqrt(x * x + y * y) - p->r;
@@ -91,17 +97,26 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
                    double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
+    return p2_air3d_solve_block(g, g, p, acc, diss, ts, nt, phi, out, out_ctx, stats, err);
+}
+
+int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss,
+                         const double *ts, int nt, double *phi, hj_ls_output_fn out, void *out_ctx,
+                         hj_ls_ode_stats *stats, hj_error *err)
+{
     cb_ctx c = {p, NULL, NULL, NULL};
-    const long n3 = g->N[2], n2 = g->N[1];
-    c.cs = malloc(sizeof(double) * (size_t)(2 * n3 + n2));
-    if (!c.cs) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
-    c.sn = c.cs + n3, c.ys = c.sn + n3;
+    const long n3 = global->N[2], n2 = global->N[1];
+    double *tab = malloc(sizeof(double) * (size_t)(2 * n3 + n2));
+    if (!tab) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
+    double *cs = tab, *sn = cs + n3, *ys = sn + n3;
     for (long k = 0; k <= n3 / 2; k++) {
         const double a = 2 * HJ_PI * (double)k / (double)n3;
-        c.cs[k] = cos(a), c.sn[k] = k == 0 || 2 * k == n3 ? 0.0 : sin(a);
-        if (k) c.cs[n3 - k] = c.cs[k], c.sn[n3 - k] = -c.sn[k];
+        cs[k] = cos(a), sn[k] = k == 0 || 2 * k == n3 ? 0.0 : sin(a);
+        if (k) cs[n3 - k] = cs[k], sn[n3 - k] = -sn[k];
     }
-    for (long j = 0; j < n2; j++) c.ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
+    for (long j = 0; j < n2; j++) ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
+    /* The callbacks index the tables by the block's node index. */
+    c.cs = cs + g->origin[2], c.sn = sn + g->origin[2], c.ys = ys + g->origin[1];
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, NULL, NULL, &c);
     lf.ham_row = ham_row;
@@ -111,7 +126,7 @@ int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss
     lf.work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(g)); /* optional: NULL recomputes */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
     free(lf.work);
-    free(c.cs);
+    free(tab);
     return rc;
 }
 

@@ -45,6 +45,14 @@ int p2_air3d_target(const hj_ls_grid *g, const p2_air3d_par *p, double *phi, hj_
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
                    double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
 
+/* The same on a block g of the global grid (hj_mpi.h: g->origin is the
+ * global index of the block's first node); g = global for the whole. */
+int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2_air3d_par *p, double *phi,
+                          hj_error *err);
+int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss,
+                         const double *ts, int nt, double *phi, hj_ls_output_fn out, void *out_ctx,
+                         hj_ls_ode_stats *stats, hj_error *err);
+
 /* max |phi(x, y, psi) - phi(x, -y, -psi)| over the nodes (0 for an exactly
  * symmetric result: the game is symmetric under y -> -y, psi -> -psi,
  * a -> -a, b -> -b); *flips (may be NULL) receives the number of nodes

@@ -11,14 +11,19 @@ void p2_flow_velocity(double t, const double *x, double dx0, long n, int d, doub
     (void)t;
     const p2_flow *f = ctx;
     const double s = f->reversed ? -1.0 : 1.0;
+    /* x read once into locals: v might alias x for the compiler, which
+     * would otherwise reload it per node and not vectorise the loops */
     if (!f->linear) {
-        for (long j = 0; j < n; j++) v[j] = d == 0 ? 2 * s : 0;
+        const double c = d == 0 ? 2 * s : 0;
+        for (long j = 0; j < n; j++) v[j] = c;
     } else if (f->dim < 2) {
         for (long j = 0; j < n; j++) v[j] = 0;
     } else if (d == 0) {
-        for (long j = 0; j < n; j++) v[j] = s * 2 * HJ_PI * x[1];
+        const double c = s * 2 * HJ_PI * x[1];
+        for (long j = 0; j < n; j++) v[j] = c;
     } else if (d == 1) {
-        for (long j = 0; j < n; j++) v[j] = -s * 2 * HJ_PI * (x[0] + (double)j * dx0);
+        const double c = -s * 2 * HJ_PI, x0 = x[0];
+        for (long j = 0; j < n; j++) v[j] = c * (x0 + (double)j * dx0);
     } else {
         for (long j = 0; j < n; j++) v[j] = 0;
     }

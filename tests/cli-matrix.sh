@@ -29,6 +29,17 @@ conflicts=(
     'eikonal|--speed s.txt --slowness f.txt --source 0,0'
     'eikonal|--speed-const 1 --slowness-const 1 --source 0,0'
     'eikonal|--speed s.txt --speed-const 1 --source 0,0'
+    'eikonal|--speed-const 1'
+    'eikonal|--speed-const 1 --source 2,0.5'
+    'eikonal|--speed-const 1 --source 0.5,0.5 --source 0.5,0.5,1'
+    'eikonal|--speed-const 1 --source 0.5'
+    'eikonal|--speed-const 1 --domain 0,1,0,1,0,1 --N 8 --source 0.5,0.5'
+    'eikonal|--speed-const 1 --domain 0,1,0,1,0,1 --N 8 --source 0,0,0 --format matrix'
+    'eikonal|--speed-const 1 --domain 1,0,0,1 --source 0,0'
+    'eikonal|--speed-const 1 --raw 4,4 --source 0,0'
+    'eikonal|--speed s.txt --raw 4 --source 0,0'
+    'eikonal|--speed s.txt --N 10 --source 0,0'
+    'eikonal|--speed-const 1 --source 0,0 --format vtk --out -'
 )
 
 shopt -s nullglob dotglob

@@ -31,6 +31,7 @@ progs=(
     "example1|table3.1.tsv|1|$bin/paper1_fastsweeping/example1 --sizes 8 --grid-N 80 --out-dir @D"
     "fig21_shapes|fig21_1d.tsv|1|$bin/paper2_toolbox/fig21_shapes --out-dir @D"
     "hjtime|t.tsv|1|$bin/common/tools/hjtime @D/t.tsv label -- true"
+    "eikonal-vtk|T.vtk|0|$bin/paper1_fastsweeping/eikonal --speed-const 1 --domain 0,1,0,1,0,1 --N 24 --source 0,0,0 --out @D/T.vtk"
 )
 
 # run LABEL DIR CMD: run CMD (@D replaced by DIR) in $work/cwd; sets $why
@@ -152,10 +153,11 @@ for p in "${progs[@]}"; do
     fi
 done
 
-# A disk that fills while the outputs are written: eikonal's 250 KB grid,
+# A disk that fills while the outputs are written: eikonal's 250 KB grid
+# and 170 KB VTK volume,
 # and fig21_shapes, whose pair of 3-D files meets the end of 2 MiB.
 # The output being written then must not appear under its final name.
-for c in "eikonal|64k|phi.tsv|${progs[0]#*|*|*|}" "fig21_shapes|2m|fig21_3d.dat|${progs[2]#*|*|*|}"; do
+for c in "eikonal|64k|phi.tsv|${progs[0]#*|*|*|}" "eikonal-vtk|64k|T.vtk|${progs[4]#*|*|*|}" "fig21_shapes|2m|fig21_3d.dat|${progs[2]#*|*|*|}"; do
     IFS='|' read -r label size partial cmd <<<"$c"
     fresh
     if mount -t tmpfs -o "size=$size" tmpfs "$d" 2>/dev/null; then

@@ -9,7 +9,7 @@
 FUZZ_CC := clang
 FUZZ_FLAGS := -std=c11 -g -O1 -Wall -Wextra -Werror -Icommon -D_POSIX_C_SOURCE=200809L \
   -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-FUZZ_TARGETS := map_pgm map_text table mintime cli
+FUZZ_TARGETS := map_pgm map_text vol table mintime cli
 FUZZ_BINS := $(FUZZ_TARGETS:%=build/fuzz/fuzz_%)
 FUZZ_SECONDS ?= 300
 FUZZ_QUICK_SECONDS ?= 8
@@ -19,8 +19,9 @@ build/fuzz/fuzz_$(1): tests/fuzz/fuzz_$(1).c tests/fuzz/fuzz_file.h $(2) $(COMMO
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) $$(FUZZ_FLAGS) $$(filter %.c,$$^) -o $$@ -lm
 endef
-$(eval $(call fuzz_target,map_pgm,common/hj_map.c common/hj_error.c))
-$(eval $(call fuzz_target,map_text,common/hj_map.c common/hj_error.c))
+$(eval $(call fuzz_target,map_pgm,common/hj_map.c common/hj_vol.c common/hj_io.c common/hj_error.c))
+$(eval $(call fuzz_target,map_text,common/hj_map.c common/hj_vol.c common/hj_io.c common/hj_error.c))
+$(eval $(call fuzz_target,vol,common/hj_vol.c common/hj_map.c common/hj_io.c common/hj_error.c))
 $(eval $(call fuzz_target,table,common/hj_io.c common/hj_compare.c common/hj_error.c))
 $(eval $(call fuzz_target,mintime,common/hj_mintime.c common/hj_error.c))
 $(eval $(call fuzz_target,cli,common/hj_cli.c common/hj_io.c common/hj_ls_accuracy.c common/hj_error.c))

@@ -187,6 +187,69 @@ static void counts(void **state)
     hj_ls_free(a), hj_ls_free(b);
 }
 
+/* The hooks of a distributed block: origin shifts the coordinates (the
+ * global grid's bits), halo runs after each dimension's boundary
+ * condition (it sees dimension d's ghosts filled), reduce goes through
+ * hj_ls_grid_reduce, which is a no-op on an undivided grid. */
+typedef struct {
+    int calls[2];
+    double seen_ghost; /* a ghost of dimension d when halo(d) ran */
+} fake_dist;
+
+static void fake_halo(const hj_ls_grid *g, double *a, int d, void *ctx)
+{
+    fake_dist *f = ctx;
+    f->calls[d]++;
+    const long i[2] = {d == 0 ? -1 : 0, d == 1 ? -1 : 0};
+    f->seen_ghost = a[hj_ls_index(g, i)];
+    a[hj_ls_index(g, i)] = 100 + d; /* the exchange overrides the boundary condition */
+}
+
+static void fake_reduce(double *v, int n, int op, void *ctx)
+{
+    (void)ctx;
+    for (int k = 0; k < n; k++) v[k] = op == HJ_LS_REDUCE_MAX ? 7 : -7;
+}
+
+static void dist_hooks(void **state)
+{
+    (void)state;
+    hj_ls_grid g, w;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_DIRICHLET, 5, 5}, {HJ_LS_BC_DIRICHLET, 6, 6}};
+    const double lo[2] = {-1, 0.1}, hi[2] = {1, 0.7};
+    assert_int_equal(hj_ls_grid_init(&g, 2, lo, hi, (const long[]){5, 7}, bc, NULL), 0);
+    assert_int_equal(hj_ls_grid_init(&w, 2, lo, hi, (const long[]){5, 13}, bc, NULL), 0);
+    assert_null(g.dist);
+    assert_true(g.origin[0] == 0 && g.origin[1] == 0);
+    double v[2] = {1, 2};
+    hj_ls_grid_reduce(&g, v, 2, HJ_LS_REDUCE_MAX);
+    assert_true(v[0] == 1 && v[1] == 2);
+    /* g as the block of w holding w's nodes 6..12 along dimension 1: the
+     * same coordinate bits as w's. */
+    g.dx[1] = w.dx[1];
+    g.origin[1] = 6;
+    for (long j = 0; j < 7; j++) {
+        double x[2], y[2];
+        hj_ls_coord(&g, (const long[]){2, j}, x);
+        hj_ls_coord(&w, (const long[]){2, j + 6}, y);
+        assert_memory_equal(x, y, sizeof x);
+    }
+    fake_dist f = {{0, 0}, 0};
+    const hj_ls_dist dist = {fake_halo, fake_reduce, &f};
+    g.dist = &dist;
+    double *a = hj_ls_alloc(&g);
+    assert_non_null(a);
+    hj_ls_fill_ghosts(&g, a);
+    assert_int_equal(f.calls[0], 1);
+    assert_int_equal(f.calls[1], 1);
+    assert_true(f.seen_ghost == 6); /* dimension 1's Dirichlet value was in place */
+    assert_true(a[hj_ls_index(&g, (const long[]){-1, 0})] == 100);
+    assert_true(a[hj_ls_index(&g, (const long[]){0, -1})] == 101);
+    hj_ls_grid_reduce(&g, v, 2, HJ_LS_REDUCE_MIN);
+    assert_true(v[0] == -7 && v[1] == -7);
+    hj_ls_free(a);
+}
+
 /* 64-bit sizes: a 2000 x 2000 x 1000 grid (4e9 nodes, above 2^31 and
  * 2^32) is laid out without overflow and not allocated. */
 static void layout_64bit(void **state)
@@ -236,6 +299,6 @@ static void period_grid(void **state)
                      HJ_EINVAL);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

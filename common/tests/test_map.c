@@ -55,6 +55,15 @@ static void pgm_maps(void **state)
     const double p2v[4] = {2, 1.5, 1, 3}; /* f = 1 + 2 v / 4, bottom row first */
     for (int k = 0; k < 4; k++) assert_true(m.v[k] == p2v[k]);
     hj_map_free(&m);
+    /* the format by content: an upper-case suffix, no suffix, text named .pgm */
+    assert_int_equal(hj_map_read(&m, write_file("A.PGM", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    assert_true(m.v[0] == 2);
+    hj_map_free(&m);
+    assert_int_equal(hj_map_read(&m, write_file("image", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    hj_map_free(&m);
+    assert_int_equal(hj_map_read(&m, write_file("t.pgm", "7 8\n9 6\n", 8), 1, 3, NULL), HJ_OK);
+    assert_true(m.v[0] == 9);
+    hj_map_free(&m);
     const unsigned char p5[] = {'P', '5', '\n', '2', ' ', '2', '\n', '2', '5', '5', '\n', 0, 255, 51, 102};
     assert_int_equal(hj_map_read_pgm(&m, write_file("b.pgm", p5, sizeof p5), 0, 1, NULL), HJ_OK);
     assert_close(m.v[0], 0.2, 1e-15, 0);

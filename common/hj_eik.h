@@ -1,0 +1,74 @@
+/* hj_eik.h -- fast sweeping for the Eikonal equation |grad T| = f in 2-D
+ * and 3-D, for users' problems: orders 1, 3 and 5, point sources at full
+ * order (factored near the sources), obstacles, several sources, dx != dy,
+ * a scale-free stopping rule.  (Paper 1's own solver, with its inflow
+ * treatments, stays in hj_fsm.h.)
+ *
+ * f is the slowness (1 / speed), f > 0 where the front may pass; nodes
+ * with obstacle[i] != 0 are never crossed (T = +INFINITY there).
+ *
+ * Grid: g->n[d] nodes along dimension d (d < dim), node i_d at
+ * x0[d] + i_d dx[d]; arrays are x-fastest: idx = i0 + n0 (i1 + n1 i2).
+ *
+ * THIS FILE IS THE CONTRACT BETWEEN THE SOLVER AND ITS CLIENTS: fields may
+ * be added; the names below are not renamed.
+ */
+#ifndef HJ_EIK_H
+#define HJ_EIK_H
+
+#include <stddef.h>
+#include "hj_error.h"
+
+typedef struct {
+    int dim;        /* 2 or 3 */
+    long n[3];      /* nodes per dimension (n[2] = 1 when dim = 2) */
+    double x0[3];   /* coordinates of node 0 */
+    double dx[3];   /* spacing per dimension, > 0 */
+} hj_eik_grid;
+
+/* A point source anywhere in the domain (not only at nodes). */
+typedef struct {
+    double x[3];
+    double t0;      /* travel time at the source, usually 0 */
+} hj_eik_source;
+
+typedef struct {
+    int order;          /* 1, 3 or 5 (default 3) */
+    int factored;       /* 1 (default): T = T0 tau near point sources */
+    double tol;         /* stop when max |T_new - T_old| <= tol * scale,
+                         * scale = max finite |T|; default 1e-10 */
+    long max_iter;      /* full iterations (2^dim sweeps each), default 1000 */
+    /* Called after each full iteration (NULL: none). */
+    void (*progress)(long iter, double change, void *ctx);
+    void *progress_ctx;
+    long parallel_min;  /* hyperplanes of at least this many nodes are
+                         * swept by all OpenMP threads (0: 4096); the
+                         * result is the same for any thread count */
+} hj_eik_options;
+
+typedef struct {
+    long iterations;
+    double change;      /* last max change / scale */
+    int converged;
+    size_t unreachable; /* nodes left at +INFINITY outside obstacles */
+    long fo_iterations; /* iterations of the first order start (included
+                         * in iterations) */
+    size_t updates;     /* local solves done (active nodes only) */
+} hj_eik_stats;
+
+hj_eik_options hj_eik_default_options(void);
+
+/* Solve.  f: slowness per node (NULL: constant f_const); obstacle: NULL or
+ * a mask; src/nsrc: point sources; fixed: NULL or per node a value to hold
+ * (NaN: free), e.g. boundary data along a curve.  T (caller-owned, one
+ * double per node) receives the solution.  On HJ_ENOCONV T holds the last
+ * iterate and st says how far it got.  Bad input (f <= 0 or non-finite
+ * outside obstacles, a source in an obstacle or outside the grid, no
+ * source and no fixed node, ...) gives HJ_EINVAL with a message before any
+ * sweep. */
+int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
+                 const unsigned char *obstacle, const hj_eik_source *src, int nsrc,
+                 const double *fixed, const hj_eik_options *opt, double *T,
+                 hj_eik_stats *st, hj_error *err);
+
+#endif

@@ -1,0 +1,93 @@
+/* hj_mpi.h -- the level set kernel on a block decomposition over MPI.
+ *
+ * A global grid (hj_ls_grid) is cut into blocks along the axes the user
+ * chooses by an MPI Cartesian topology (MPI_Cart_create).  Each process
+ * holds one block as a grid of its own (the local grid: the global min,
+ * max and dx, its own N, origin = global index of its first node) and runs
+ * the unchanged kernel (terms, integrators, hj_reach) on it.  The local
+ * grid's hooks (hj_ls_dist, hj_ls_grid.h) make the kernel distributed:
+ *   - ghost fill: after the boundary conditions of dimension d, the
+ *     HJ_LS_GHOST layers of each face shared with a neighbour are
+ *     exchanged (one MPI_Sendrecv per direction), over the full ghosted
+ *     extent of the other dimensions, so corners match the undivided grid;
+ *     periodic dimensions wrap across processes;
+ *   - maxima and minima (the CFL bound, Lax-Friedrichs ranges, WENO
+ *     epsilons, blow-up and convergence tests) by MPI_Allreduce, exact in
+ *     any order.
+ * Every node of the result is then bitwise the one of the single-process
+ * library, for any number of processes and any split.
+ *
+ * Sums (norms, set measures) are the one kind of global quantity whose
+ * bits depend on the order: hj_mpi_rowsum adds per-row partials in global
+ * row order on one process, so every process count gives the same bits.
+ *
+ * Dimension 0 (contiguous, the kernel's rows) is never split.  Every
+ * split axis needs at least HJ_LS_GHOST nodes per block.  Errors are
+ * returned (hj_error.h); an error inside the kernel on one process leaves
+ * the others waiting in a collective, so a program ends the run with
+ * MPI_Abort on any error.
+ */
+#ifndef HJ_MPI_H
+#define HJ_MPI_H
+
+#include <mpi.h>
+
+#include "hj_error.h"
+#include "hj_ls_grid.h"
+
+typedef struct {
+    MPI_Comm comm;                 /* the Cartesian communicator */
+    int rank, size;
+    int nsplit, axes[HJ_LS_MAXDIM]; /* the split axes */
+    int p[HJ_LS_MAXDIM];           /* processes along each dimension */
+    int coord[HJ_LS_MAXDIM];       /* this block's position */
+    int lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM]; /* neighbour ranks (MPI_PROC_NULL at an outer face) */
+    hj_ls_grid global, local;
+    hj_ls_dist dist;
+    double *buf;                   /* halo pack buffers (4 slabs) */
+    size_t slab_max;
+    /* Communication statistics since init (or hj_mpi_stats_reset). */
+    double halo_seconds, reduce_seconds;
+    double halo_bytes;             /* bytes sent by this process */
+    long halo_calls, reduce_calls;
+} hj_mpi;
+
+/* Decompose global over the processes of comm along the nsplit axes
+ * (each in 1..dim-1, distinct; nsplit = 0 takes the default: the two
+ * outermost axes for dim >= 3, the outermost for dim 2).  Block sizes
+ * differ by at most one node, the larger blocks first.  m->local is the
+ * grid to run the kernel on; m must not move while it is used.  HJ_EINVAL
+ * for a bad axis, a 1-D grid with more than one process, or a block
+ * thinner than HJ_LS_GHOST; HJ_ENOMEM. */
+int hj_mpi_init(hj_mpi *m, MPI_Comm comm, const hj_ls_grid *global, int nsplit, const int *axes, hj_error *err);
+void hj_mpi_free(hj_mpi *m);
+void hj_mpi_stats_reset(hj_mpi *m);
+
+/* The global sum of local per-row values part[0..local.rows-1] (row r of
+ * the local grid, as hj_ls_row numbers them), added in global row order
+ * on rank 0 and broadcast: the same bits on every process count.  Rank 0
+ * holds one double and one index per global row (prod_{d>0} N[d]): fine
+ * up to some 1e8 rows; a 100^6 grid (1e10 rows) would need the partials
+ * combined by a tree of fixed shape over row blocks instead. */
+int hj_mpi_rowsum(hj_mpi *m, const double *part, double *sum, hj_error *err);
+
+/* Maximum, average and root mean square of |a - b| (b may be NULL) over
+ * the global grid: the maximum by MPI_MAX, the sums by hj_mpi_rowsum of
+ * per-row sums (each row added in node order). */
+int hj_mpi_norms(hj_mpi *m, const double *a, const double *b, double *max, double *avg, double *rms, hj_error *err);
+
+/* The global number of nodes with a < 0 (an exact integer sum; the set's
+ * measure is this count times the cell volume). */
+long hj_mpi_count_negative(hj_mpi *m, const double *a);
+
+/* Write the field a (on m->local) to path as one file by MPI-IO, written
+ * under a temporary name and renamed by rank 0 when complete:
+ *   dim <= 3: legacy VTK, BINARY STRUCTURED_POINTS (big-endian doubles,
+ *             ParaView and VisIt read it), one SCALARS field named name;
+ *   any dim:  ".raw" if path ends so: a one-line text header
+ *             "# hj raw float64 little-endian dims N0 N1 ...\n", then the
+ *             global interior nodes, dimension 0 fastest.
+ * Collective.  HJ_EIO on an MPI-IO failure. */
+int hj_mpi_write(hj_mpi *m, const char *path, const char *name, const double *a, hj_error *err);
+
+#endif
