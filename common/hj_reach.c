@@ -9,6 +9,10 @@
 
 #include "hj_ls_measure.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 void hj_reach_dyn_init(hj_reach_dyn *s, int nx, hj_reach_vec_fn f, void *ctx)
 {
     memset(s, 0, sizeof *s);
@@ -195,9 +199,19 @@ void hj_reach_dyn_eval(const hj_reach_dyn *s, double t, const double *x, const d
  * kernel's callbacks is a struct holding the system and the horizon, so
  * that the system sees the forward time t = T - tau. */
 typedef struct {
+    int valid;
+    double tau;
+    size_t k;      /* the row's offset (hj_ls_row_info) */
+    double *alpha; /* nx x row_n */
+} row_slot;
+
+typedef struct {
     const hj_reach_dyn *dyn;
     double T;
     unsigned long id; /* this solve's number, for the cache of ls_partial */
+    row_slot *slots;  /* one per thread, for the batched callbacks */
+    int nslots;
+    long row_n;
 } ham_ctx;
 
 static _Atomic unsigned long solve_count;
@@ -265,6 +279,104 @@ static double ls_partial(double tau, const double *x, const double *pmin, const 
     return cache.alpha[d];
 }
 
+/* ---- batched rows (hj_ls_ham_row_fn, hj_ls_partial_row_fn).  The kernel
+ * calls ham_row for a row, then partial_row for d = 0 .. nx-1 of the same
+ * row on the same thread: ham_row evaluates f and G (H) once per node,
+ * computes the Hamiltonian and every alpha_d from them, and keeps the
+ * alphas in its thread's slice of the row buffer for the partial_row
+ * calls.  The arithmetic is that of hj_reach_hamiltonian and partials,
+ * operation for operation, so both paths give the same bits. */
+
+/* -H and alpha[0..nx-1] at one node, from one evaluation of f, G and H. */
+static double node_ham_partials(const hj_reach_dyn *s, double t, const double *x, const double *p, double *alpha)
+{
+    double fx[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], q[HJ_REACH_MAXIN], c[HJ_REACH_MAXIN],
+           w[HJ_REACH_MAXIN], h = 0;
+    if (s->f) {
+        s->f(t, x, fx, s->ctx);
+        for (int i = 0; i < s->nx; i++) h += p[i] * fx[i];
+    }
+    const hj_reach_input *in[2] = {&s->u, &s->d};
+    const hj_reach_vec_fn mf[2] = {s->G, s->H};
+    for (int k = 0; k < 2; k++) {
+        const int n = in[k]->n;
+        if (n == 0) continue;
+        mf[k](t, x, M, s->ctx);
+        mat_tp(M, s->nx, n, p, q);
+        h += input_opt(in[k], q, NULL);
+        centre(in[k], c, w);
+        for (int d = 0; d < s->nx; d++) {
+            double n2 = 0;
+            for (int j = 0; j < n; j++) {
+                const double m = M[d * n + j];
+                fx[d] += m * c[j];
+                if (in[k]->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
+                else n2 += m * m;
+            }
+            if (in[k]->shape == HJ_REACH_BALL) b[d] += in[k]->r * sqrt(n2);
+        }
+    }
+    for (int d = 0; d < s->nx; d++) alpha[d] = fabs(fx[d]) + b[d];
+    return -h;
+}
+
+static int thread_id(void)
+{
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
+/* This thread's slice of the row buffer (nx x n alphas and the key of the
+ * row they belong to), or NULL where the buffer has no slice for it. */
+static row_slot *slot_of(const ham_ctx *h)
+{
+    const int tid = thread_id();
+    return h->slots && tid < h->nslots ? &h->slots[tid] : NULL;
+}
+
+static void ls_ham_row(double tau, const hj_ls_row_info *row, const double *phi, const double *const *P, double *H,
+                       void *ctx)
+{
+    (void)phi;
+    const ham_ctx *h = ctx;
+    const hj_reach_dyn *s = h->dyn;
+    const int nx = s->nx;
+    row_slot *sl = row->n <= h->row_n ? slot_of(h) : NULL;
+    double x[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
+    memcpy(x, row->x, sizeof(double) * (size_t)nx);
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        for (int d = 0; d < nx; d++) p[d] = P[d][j];
+        H[j] = node_ham_partials(s, h->T - tau, x, p, alpha);
+        if (sl)
+            for (int d = 0; d < nx; d++) sl->alpha[(size_t)d * (size_t)h->row_n + (size_t)j] = alpha[d];
+    }
+    if (sl) sl->tau = tau, sl->k = row->k, sl->valid = 1;
+}
+
+static void ls_partial_row(double tau, const hj_ls_row_info *row, const double *const *pmin,
+                           const double *const *pmax, int d, double *A, void *ctx)
+{
+    (void)pmin, (void)pmax;
+    const ham_ctx *h = ctx;
+    const row_slot *sl = slot_of(h);
+    if (sl && sl->valid && sl->tau == tau && sl->k == row->k && row->n <= h->row_n) {
+        memcpy(A, sl->alpha + (size_t)d * (size_t)h->row_n, sizeof(double) * (size_t)row->n);
+        return;
+    }
+    /* Not after ham_row on this row: node by node, as ls_partial. */
+    double x[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
+    memcpy(x, row->x, sizeof(double) * (size_t)h->dyn->nx);
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        partials(h->dyn, h->T - tau, x, alpha);
+        A[j] = alpha[d];
+    }
+}
+
 double hj_reach_ls_ham(double t, const double *x, double phi, const double *p, void *ctx)
 {
     (void)phi;
@@ -288,6 +400,7 @@ void hj_reach_problem_init(hj_reach_problem *pb, const hj_ls_grid *g, const hj_r
     pb->order = 2;
     pb->dissipation = HJ_LS_LLF;
     pb->factor_cfl = 0.5;
+    pb->keep_derivs = 1;
 }
 
 static int set_given(const hj_reach_set *s) { return s->fn || s->array; }
@@ -431,16 +544,40 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
             phi[k] = pc.prev[k] = v;
         }
     }
-    ham_ctx hc = {pb->dyn, T, ++solve_count};
+    ham_ctx hc = {pb->dyn, T, ++solve_count, NULL, 0, g->N[0]};
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, pb->scheme, pb->dissipation, ls_ham, ls_partial, &hc);
+    double *alphas = NULL, *derivs = NULL;
+    int have_sum = 0;
+    if (!pb->per_node) {
+#ifdef _OPENMP
+        hc.nslots = omp_get_max_threads();
+#else
+        hc.nslots = 1;
+#endif
+        hc.slots = calloc((size_t)hc.nslots, sizeof *hc.slots);
+        alphas = malloc(sizeof(double) * (size_t)hc.nslots * (size_t)g->dim * (size_t)g->N[0]);
+        if (!hc.slots || !alphas) {
+            rc = hj_error_set(err, HJ_ENOMEM, "reach: out of memory for the row buffers");
+            goto done;
+        }
+        for (int i = 0; i < hc.nslots; i++) hc.slots[i].alpha = alphas + (size_t)i * (size_t)g->dim * (size_t)g->N[0];
+        lf.ham_row = ls_ham_row;
+        lf.partial_row = ls_partial_row;
+    }
+    if (pb->keep_derivs && pb->dissipation != HJ_LS_LLLF) {
+        if (!(derivs = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(g)))) {
+            rc = hj_error_set(err, HJ_ENOMEM, "reach: out of memory for the derivative cache");
+            goto done;
+        }
+        lf.work = derivs;
+    }
     hj_ls_discount disc;
     hj_ls_discount_init(&disc, g);
     disc.lambda.value = pb->discount;
     hj_ls_sum sum;
     const hj_ls_term *terms[2] = {&lf.base, &disc.base};
     const hj_ls_term *term = &lf.base;
-    int have_sum = 0;
     if (pb->discount > 0) {
         if ((rc = hj_ls_sum_init(&sum, g, terms, 2, err))) goto done;
         have_sum = 1;
@@ -459,6 +596,9 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     if (rc == HJ_OK) hj_ls_fill_ghosts(g, phi);
 done:
     if (have_sum) hj_ls_sum_free(&sum);
+    free(derivs);
+    free(alphas);
+    free(hc.slots);
     hj_ls_free(pc.prev);
     if (stats) {
         stats->steps = pc.steps;

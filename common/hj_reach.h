@@ -137,6 +137,13 @@ typedef struct {
     int order;            /* RK order 1..3, default 2 */
     int dissipation;      /* default HJ_LS_LLF */
     double factor_cfl;    /* default 0.5 */
+    int per_node;         /* 1: the kernel's per-node callbacks; 0 (default):
+                           * batched rows, f and G evaluated once per node
+                           * for H and every alpha_d (same bits) */
+    int keep_derivs;      /* 1 (default): GLF and LLF keep the one-sided
+                           * derivatives of their range pass for the update
+                           * (hj_ls_lax_friedrichs_work_size doubles, 2 nx
+                           * per node; same bits); 0 computes them twice */
 } hj_reach_problem;
 
 /* Defaults above for grid g and system s (target and horizon to set). */

@@ -140,7 +140,7 @@ md=$tmp/report.md
     printf '\n## Summary of `make check`\n\n```\n'
     cat "$res/check-summary.txt"
     printf '```\n\n'
-    for entry in paper1:paper1_fastsweeping eik:paper1_fastsweeping/eik paper2:paper2_toolbox paper3:paper3_ultrabee; do
+    for entry in paper1:paper1_fastsweeping eik:paper1_fastsweeping/eik paper2:paper2_toolbox paper3:paper3_ultrabee reach:studies/reach; do
         name=${entry%%:*} dir=${entry#*:}
         [ -f "$dir/report.tsv" ] || continue
         if [ -f "$dir/overview.md" ]; then cat "$dir/overview.md"; printf '\n'; fi
@@ -149,9 +149,10 @@ md=$tmp/report.md
             literate "$dir/$src"
             for t in $tables; do
                 [ "$t" = - ] && continue
-                # Paper 2 (and eik) publish almost no numbers: their cells are checked
+                # Paper 2 and eik publish almost no numbers and the
+                # reachability study is not a paper: their cells are checked
                 # against exact values and accepted runs (see the source lines).
-                label=published; case $name in paper2 | eik) label=reference ;; esac
+                label=published; case $name in paper2 | eik | reach) label=reference ;; esac
                 check_table "$res/$name/$t.check.tsv" "$name $t" "$label" "$dir/published/$t.tsv" \
                     "$dir"/reference/{paper,exact,regression,peer}/"$t".tsv
                 fit_table "$res/$name/$t.fit.tsv"

@@ -386,6 +386,104 @@ static void dubins_threads_and_period(void **state)
     hj_ls_free(cyl);
 }
 
+/* The batched row callbacks and the kept derivatives give the bits of the
+ * per-node callbacks: a 4-D system with a drift, a state-dependent control
+ * matrix (box) and a disturbance (ball), an obstacle, the time-to-reach,
+ * each dissipation, and a 3-D Dubins car with a discount (a sum of terms),
+ * on 1 and 2 threads. */
+static void f4(double t, const double *x, double *o, void *c)
+{
+    (void)c;
+    o[0] = x[1], o[1] = -0.3 * x[0] + 0.1 * t, o[2] = x[3], o[3] = 0.2 * x[1] * x[2];
+}
+static void G4(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    const double m[8] = {0, 0, 1, 0.5 * x[0], 0, 0, x[2], 1};
+    memcpy(o, m, sizeof m);
+}
+static void H4(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    const double m[8] = {0.1, 0, 0, 0.2, x[3], 0, 0, 0.3};
+    memcpy(o, m, sizeof m);
+}
+static double ball4(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]) - 0.6;
+}
+static double slab4(double t, const double *x, void *c)
+{
+    (void)c;
+    return fabs(x[0] - 0.8 + 0.2 * t) - 0.15;
+}
+
+/* Solve pb with every (per_node, keep_derivs) and thread count; all must
+ * give the bits of the per-node run without kept derivatives on one thread. */
+static void same_bits_all_paths(hj_reach_problem *pb)
+{
+    const hj_ls_grid *g = pb->grid;
+    double *ref = hj_ls_alloc(g), *rttr = hj_ls_alloc(g), *phi = hj_ls_alloc(g), *ttr = hj_ls_alloc(g);
+    assert_non_null(ref), assert_non_null(rttr), assert_non_null(phi), assert_non_null(ttr);
+    hj_error err;
+    hj_reach_stats st, rst;
+    pb->per_node = 1, pb->keep_derivs = 0;
+    assert_int_equal(hj_reach_solve(pb, ref, rttr, &rst, &err), HJ_OK);
+    assert_true(rst.steps > 2);
+    for (int threads = 1; threads <= 2; threads++)
+        for (int v = 0; v < 4; v++) {
+#ifdef _OPENMP
+            omp_set_num_threads(threads);
+#endif
+            pb->per_node = v & 1, pb->keep_derivs = v >> 1;
+            assert_int_equal(hj_reach_solve(pb, phi, ttr, &st, &err), HJ_OK);
+            assert_int_equal(st.steps, rst.steps);
+            assert_int_equal(hj_ls_count_differ(g, ref, phi), 0);
+            assert_int_equal(hj_ls_count_differ(g, rttr, ttr), 0);
+        }
+    hj_test_one_thread();
+    hj_ls_free(ref), hj_ls_free(rttr), hj_ls_free(phi), hj_ls_free(ttr);
+}
+
+static void batched_rows_same_bits(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    hj_ls_bc bc[4];
+    for (int d = 0; d < 4; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 4, (double[]){-1, -1, -1, -1}, (double[]){1, 1, 1, 1},
+                                     (long[]){11, 9, 8, 7}, bc, NULL),
+                     HJ_OK);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 4, f4, NULL);
+    hj_reach_dyn_control_box(&s, G4, 2, (double[]){-1, -0.5}, (double[]){1, 0.7});
+    hj_reach_dyn_disturbance_ball(&s, H4, 2, (double[]){0.05, 0}, 0.2);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = ball4, pb.obstacle.fn = slab4, pb.horizon = 0.3;
+    const int diss[3] = {HJ_LS_LLF, HJ_LS_GLF, HJ_LS_LLLF};
+    for (int k = 0; k < 3; k++) {
+        pb.dissipation = diss[k];
+        same_bits_all_paths(&pb);
+    }
+    pb.dissipation = HJ_LS_LLF, pb.scheme = HJ_LS_WENO5A, pb.order = 3;
+    same_bits_all_paths(&pb);
+    /* 3-D, periodic heading, a discount: the kernel's sum of terms. */
+    hj_ls_grid g3;
+    const hj_ls_bc bc3[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    assert_int_equal(hj_ls_grid_init_period(&g3, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI},
+                                            (long[]){17, 15, 12}, bc3, NULL),
+                     HJ_OK);
+    hj_reach_dyn s3;
+    hj_reach_dyn_init(&s3, 3, dub_f, NULL);
+    hj_reach_dyn_control_box(&s3, dub_G, 1, (double[]){-1}, (double[]){1});
+    hj_reach_problem p3;
+    hj_reach_problem_init(&p3, &g3, &s3);
+    p3.target.fn = disc, p3.obstacle.fn = box, p3.horizon = 0.5, p3.discount = 0.3;
+    same_bits_all_paths(&p3);
+}
+
 /* Problems refused before any work: no target, a zero horizon, a grid of
  * another dimension, a measure with two periodic dimensions. */
 static void invalid_problems(void **state)
@@ -419,4 +517,5 @@ static void invalid_problems(void **state)
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
-             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(invalid_problems))
+             cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
+             cmocka_unit_test(invalid_problems))

@@ -8,7 +8,13 @@
  *   WENO5/RK3:   node-stage updates per second (nodes x 3 steps / s);
  *   memory:      bytes per interior node of the run's arrays (the value,
  *                the previous value, the integrator's stage and time
- *                derivative: 4 arrays with their ghost layers).
+ *                derivative: 4 arrays with their ghost layers; and the
+ *                one-sided derivatives the Lax-Friedrichs term keeps,
+ *                2 x 6 interior arrays).
+ *
+ * --per-node and --no-keep-derivs run hj_reach's reference paths (the
+ * kernel's per-node callbacks, derivatives computed twice), same bits, to
+ * measure what the batched rows and the kept derivatives gain.
  *
  * Writes bench_reach.tsv in --out-dir, with rates per wall-clock second
  * and per CPU second (all threads): the first moves with the machine's
@@ -44,11 +50,16 @@ int main(int argc, char **argv)
 {
     long N = 11, steps = 3;
     const char *out_dir = ".";
+    int per_node = 0, no_keep = 0;
     hj_cli_opt opts[] = {
         {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 5, .max = 40, .metavar = "N",
          .help = "nodes in each of the 6 dimensions"},
         {.name = "--steps", .type = HJ_OPT_LONG, .value = &steps, .min = 1, .max = 1000, .metavar = "K",
          .help = "time steps of each run"},
+        {.name = "--per-node", .type = HJ_OPT_FLAG, .value = &per_node,
+         .help = "the kernel's per-node callbacks instead of batched rows"},
+        {.name = "--no-keep-derivs", .type = HJ_OPT_FLAG, .value = &no_keep,
+         .help = "compute the one-sided derivatives twice instead of keeping them"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
          .help = "where to write bench_reach.tsv"},
     };
@@ -75,8 +86,9 @@ int main(int argc, char **argv)
     const double dt = 0.5 / (3 * (1.5 + 1.0) / g.dx[0]);
     hj_out o;
     if (hj_out_open(&o, path, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    fprintf(o.fp, "# three double integrators, BRS, %ld^6 = %zu nodes (%zu with ghosts), %ld steps a run\n", N, g.nodes,
-            g.total, steps);
+    fprintf(o.fp, "# three double integrators, BRS, %ld^6 = %zu nodes (%zu with ghosts), %ld steps a run, %s, %s\n", N,
+            g.nodes, g.total, steps, per_node ? "per-node callbacks" : "batched rows",
+            no_keep ? "derivatives computed twice" : "derivatives kept");
     fprintf(o.fp, "scheme\tnodes\tsteps\tstages\tseconds\tupdates_per_s\tcpu_seconds\tupdates_per_cpu_s\tbytes_per_node\n");
     const int scheme[2] = {HJ_LS_UPWIND_FIRST, HJ_LS_WENO5A}, order[2] = {1, 3};
     const char *name[2] = {"first-order-euler", "weno5-rk3"};
@@ -85,6 +97,7 @@ int main(int argc, char **argv)
         hj_reach_problem_init(&pb, &g, &s);
         pb.kind = HJ_REACH_BRS, pb.target.fn = box, pb.scheme = scheme[k], pb.order = order[k];
         pb.horizon = dt * ((double)steps - 0.5);
+        pb.per_node = per_node, pb.keep_derivs = !no_keep;
         hj_reach_stats st;
         hj_progress("%s: %s\n", prog, name[k]);
         const clock_t c0 = clock();
@@ -92,7 +105,8 @@ int main(int argc, char **argv)
         const double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
         const double rate = (double)g.nodes * (double)st.steps * order[k] / st.seconds;
         const double cpu_rate = (double)g.nodes * (double)st.steps * order[k] / cpu;
-        const double bytes = 4.0 * (double)g.total * sizeof(double) / (double)g.nodes;
+        const double kept = pb.keep_derivs ? (double)hj_ls_lax_friedrichs_work_size(&g) : 0;
+        const double bytes = (4.0 * (double)g.total + kept) * sizeof(double) / (double)g.nodes;
         fprintf(o.fp, "%s\t%zu\t%ld\t%d\t%.3f\t%.3e\t%.3f\t%.3e\t%.1f\n", name[k], g.nodes, st.steps, order[k],
                 st.seconds, rate, cpu, cpu_rate, bytes);
         printf("%s: %s %ld^6: %.3e node-stage updates/s (wall), %.3e per CPU second, %.1f bytes per node\n", prog,

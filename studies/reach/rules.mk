@@ -19,7 +19,8 @@ $(eval $(call hj_figure,$(RS),$(RS_OUT),reach,$(RS_DATA)))
 PROGRAMS += $(RS_BIN)/reach_checks $(RS_BIN)/hjreach $(RS_BIN)/bench_reach
 CHECK_PAPERS += reach=$(RS)
 CHECK_INPUTS += $(RS_TABLES:%=$(RS_OUT)/%)
-REPORT_INPUTS += $(RS)/reach_checks.c $(RS_TABLES:%=$(RS_OUT)/%)
+REPORT_INPUTS += $(RS)/reach_checks.c $(RS)/bench_reach.c $(RS_TABLES:%=$(RS_OUT)/%) $(RS)/report.tsv $(RS)/overview.md \
+                 $(wildcard $(RS)/notes/*.md)
 
 .PHONY: reach
 reach: $(RS_TABLES:%=$(RS_OUT)/%) $(RS_OUT)/reach.png
