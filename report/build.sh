@@ -140,7 +140,7 @@ md=$tmp/report.md
     printf '\n## Summary of `make check`\n\n```\n'
     cat "$res/check-summary.txt"
     printf '```\n\n'
-    for entry in paper1:paper1_fastsweeping eik:paper1_fastsweeping/eik paper2:paper2_toolbox paper3:paper3_ultrabee reach:studies/reach; do
+    for entry in paper1:paper1_fastsweeping eik:paper1_fastsweeping/eik paper2:paper2_toolbox paper3:paper3_ultrabee reach:studies/reach mpi:mpi; do
         name=${entry%%:*} dir=${entry#*:}
         [ -f "$dir/report.tsv" ] || continue
         if [ -f "$dir/overview.md" ]; then cat "$dir/overview.md"; printf '\n'; fi
@@ -164,7 +164,7 @@ md=$tmp/report.md
                       if [ ! -f "$dir/notes/$f" ]; then printf '\n**missing note template: %s/notes/%s**\n\n' "$dir" "$f"
                       elif awk -v dir="$res/$name" -f report/note.awk "$dir/notes/$f" > "$tmp/note.md"; then
                           cat "$tmp/note.md"; printf '\n'
-                      elif [[ $src == bench_* ]]; then printf '\n*Not measured yet: `make bench` writes the data of `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
+                      elif [[ $src == bench_* || $name == mpi ]]; then printf '\n*Not measured yet: `make bench` writes the data of `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
                       elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: the data of `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
                       else cat "$tmp/note.md"; printf '\n'; fi ;; # with its **missing: ...** marks
                 *) if [ -f "$res/$name/$f" ]; then
