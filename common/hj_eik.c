@@ -13,6 +13,9 @@
  * source, Luo & Qian 2012) avoids a switch whose radius would have to be
  * tuned and whose seam is itself a source of error; far from the source
  * the factor is a smooth positive weight and costs nothing in accuracy.
+ * The factor first comes from the earliest estimated source; after the
+ * first order phase each node takes the factor of the source whose front
+ * reached it there (a late source can be overtaken: its time is a bound).
  * Taking the factor from the earliest source keeps T0 a good model of T
  * on each source's side of the meeting line; where two owners meet, the
  * neighbour values are converted into the node's own factorisation (T is
@@ -58,7 +61,10 @@
 #endif
 
 enum { GH = 3 };                                  /* ghost layers: WENO5 reaches i +- 3 */
-enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH };
+/* ST_SRC: a node near a point source during the first order phase; its
+ * source's time there is a bound, not a value (a later source can be
+ * overtaken by an earlier one). */
+enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
 {
@@ -84,6 +90,8 @@ typedef struct {
     double x0[3], h[3];
     double *tau, *T0, *fs; /* unknown, factor, slowness (padded) */
     int *own;              /* owning source, -1: none */
+    int *lab;              /* first order phase: the source whose front
+                            * reached the node first (-1: none, fixed data) */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
     src_info *src;
@@ -98,6 +106,7 @@ static void work_free(eik_work *w)
     free(w->T0);
     free(w->fs);
     free(w->own);
+    free(w->lab);
     free(w->state);
     free(w->stamp);
     free(w->src);
@@ -308,11 +317,34 @@ static inline int active(const eik_work *w, long k, int R, int q)
     return 0;
 }
 
+/* The source label of the neighbour with the smallest T: the front that
+ * reached node k (first order phase; neighbours lie on other hyperplanes,
+ * so this does not depend on the thread count). */
+static inline int arrival_label(const eik_work *w, long k)
+{
+    double best = INFINITY;
+    int lab = -1;
+    for (int d = 0; d < w->dim; d++)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            const long nb = k + sgn * w->st[d];
+            const unsigned char sn = w->state[nb];
+            if (sn != ST_FREE && sn != ST_FIXED && sn != ST_SRC) continue;
+            const double t = w->tau[nb];
+            if (!(t < INFINITY)) continue;
+            const double T = src_tb(w, w->own[nb]) + w->T0[nb] * t;
+            if (T < best) {
+                best = T;
+                lab = w->lab[nb];
+            }
+        }
+    return lab;
+}
+
 /* One node of a sweep; returns |change of T|. */
 static inline double visit(eik_work *w, const long ip[3], int order, int q, int first, size_t *nup)
 {
     const long k = ip[0] * w->st[0] + ip[1] * w->st[1] + ip[2] * w->st[2];
-    if (w->state[k] != ST_FREE) return 0;
+    if (w->state[k] != ST_FREE && !(first && w->state[k] == ST_SRC)) return 0;
     if (!active(w, k, order == 1 ? 1 : (order + 1) / 2, q)) return 0;
     double x[3];
     node_x(w, ip, x);
@@ -321,6 +353,7 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
     (*nup)++;
     if (first) {
         if (!(v < old)) return 0;
+        w->lab[k] = arrival_label(w, k);
     } else if (!isfinite(v) || v == old) {
         return 0;
     }
@@ -518,6 +551,41 @@ static double source_time(const eik_work *w, const src_info *s, const double *x)
     return s->t0 + r * (f + r * (0.5 * ge + r * (eHe / 6 - (g2 - ge * ge) / (24 * f))));
 }
 
+/* After the first order phase: a source-region node that kept its
+ * source's time holds it from now on; one reached earlier from elsewhere
+ * (an overtaken late source) becomes free.  With factoring, every node
+ * then takes the factor of the source whose front actually reached it
+ * (its label; a ghost node the label of the nearest grid node), not the
+ * one estimated from the straight-line times, and tau is converted. */
+static void settle_sources(eik_work *w, int factored)
+{
+    const size_t np = w->npad;
+    for (size_t k = 0; k < np; k++)
+        if (w->state[k] == ST_SRC) w->state[k] = w->stamp[k] ? ST_FREE : ST_FIXED;
+    if (!factored) return;
+    for (long c = 0; c < w->P[2]; c++)
+        for (long b = 0; b < w->P[1]; b++)
+            for (long a = 0; a < w->P[0]; a++) {
+                const long ip[3] = {a, b, c}, k = a + w->st[1] * b + w->st[2] * c;
+                long q[3];
+                for (int d = 0; d < 3; d++) {
+                    const long lo = w->G[d], hi = w->n[d] - 1 + w->G[d];
+                    q[d] = ip[d] < lo ? lo : ip[d] > hi ? hi : ip[d];
+                }
+                const int o = w->lab[q[0] + w->st[1] * q[1] + w->st[2] * q[2]];
+                if (o < 0 || o == w->own[k]) continue;
+                double x[3];
+                node_x(w, ip, x);
+                const double T0 = src_T0(w, o, x), t = w->tau[k];
+                if (t < INFINITY) {
+                    const double T = src_tb(w, w->own[k]) + w->T0[k] * t;
+                    w->tau[k] = T0 > 0 ? (T - src_tb(w, o)) / T0 : 1.0;
+                }
+                w->own[k] = o;
+                w->T0[k] = T0;
+            }
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -576,20 +644,22 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     w.T0 = malloc(np * sizeof(double));
     w.fs = malloc(np * sizeof(double));
     w.own = malloc(np * sizeof(int));
+    w.lab = malloc(np * sizeof(int));
     w.state = calloc(np, 1);
     w.stamp = malloc(np * sizeof(int));
     w.src = malloc((size_t)(nsrc > 0 ? nsrc : 1) * sizeof(src_info));
     w.nsrc = nsrc;
-    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.state || !w.stamp || !w.src) {
+    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.lab || !w.state || !w.stamp || !w.src) {
         work_free(&w);
         return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB",
-                            (double)np * (3 * sizeof(double) + 2 * sizeof(int) + 1) / 1e6);
+                            (double)np * (3 * sizeof(double) + 3 * sizeof(int) + 1) / 1e6);
     }
     for (size_t k = 0; k < np; k++) {
         w.tau[k] = INFINITY;
         w.T0[k] = 1;
         w.fs[k] = 0;
         w.own[k] = -1;
+        w.lab[k] = -1;
         w.stamp[k] = 0;
     }
 
@@ -691,6 +761,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                  * order at 3.  A user's fixed value there is kept. */
                 if (w.state[k] == ST_FREE) {
                     double Tbest = INFINITY;
+                    int sbest = -1;
                     for (int s = 0; s < nsrc; s++) {
                         double r2 = 0;
                         int box = 1;
@@ -702,10 +773,14 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                         const double r = sqrt(r2);
                         if (!box && r > hmax * (1 + 1e-12)) continue;
                         const double Tv = source_time(&w, &w.src[s], x);
-                        if (Tv < Tbest) Tbest = Tv;
+                        if (Tv < Tbest) {
+                            Tbest = Tv;
+                            sbest = s;
+                        }
                     }
                     if (Tbest < INFINITY) {
-                        w.state[k] = ST_FIXED;
+                        w.state[k] = ST_SRC;
+                        w.lab[k] = sbest;
                         w.tau[k] = Tbest; /* T for now; tau below */
                     }
                 } else if (w.state[k] == ST_FIXED) {
@@ -721,7 +796,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                     }
                 }
                 w.T0[k] = src_T0(&w, w.own[k], x);
-                if ((w.state[k] == ST_FIXED) && isfinite(w.tau[k]))
+                if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
             }
     w.eps3 = 1e-6;
@@ -743,7 +818,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
         scale = 0;
         for (size_t k = 0; k < np; k++)
-            if (w.state[k] == ST_FREE || w.state[k] == ST_FIXED) {
+            if (w.state[k] == ST_FREE || w.state[k] == ST_FIXED || w.state[k] == ST_SRC) {
                 const double v = fabs(src_tb(&w, w.own[k]) + w.T0[k] * w.tau[k]);
                 if (v < INFINITY && v > scale) scale = v;
             }
@@ -760,6 +835,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             w.state[k] = ST_UNREACH;
             st->unreachable++;
         }
+    settle_sources(&w, factored);
 
     /* Higher order sweeps from the first order solution. */
     if (conv && opt->order > 1) {
