@@ -796,7 +796,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             const double u = (x - w.x0[d]) / w.h[d], tol = 1e-9;
             if (!isfinite(u) || u < -tol || u > (double)(w.n[d] - 1) + tol) {
                 rc = hj_error_set(err, HJ_EINVAL, "source %d: coordinate %g along dimension %d is outside the grid "
-                                                  "[%g, %g]", s, x, d, w.x0[d], w.x0[d] + (double)(w.n[d] - 1) * w.h[d]);
+                                                  "[%g, %g]", s + 1, x, d, w.x0[d], w.x0[d] + (double)(w.n[d] - 1) * w.h[d]);
                 break;
             }
             long i = lround(u);
@@ -804,18 +804,18 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
         if (rc != HJ_OK) break;
         if (!isfinite(src[s].t0)) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g must be finite", s, src[s].t0);
+            rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g must be finite", s + 1, src[s].t0);
             break;
         }
         if (w.state[ip[0] * w.st[0] + ip[1] * w.st[1] + ip[2] * w.st[2]] == ST_OBST) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s, w.src[s].x[0],
+            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s + 1, w.src[s].x[0],
                               w.src[s].x[1], w.src[s].x[2]);
             break;
         }
         w.src[s].t0 = src[s].t0;
         w.src[s].s0 = slowness_at(&w, w.src[s].x);
         if (!(w.src[s].s0 > 0)) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d: no slowness around it (obstacles)", s);
+            rc = hj_error_set(err, HJ_EINVAL, "source %d: no slowness around it (obstacles)", s + 1);
             break;
         }
         source_taylor(&w, &w.src[s], ip);
@@ -943,7 +943,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
-        for (long it = 1; it <= opt->max_iter; it++) {
+        /* max_iter bounds the total, the first order start included */
+        for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
             for (int s = 0; s < nsw; s++, q++) {
                 fill_ghosts(&w, deg, q);

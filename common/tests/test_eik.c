@@ -130,10 +130,10 @@ static void bad_input(void **state)
     assert_non_null(strstr(e.msg, "constant slowness"));
     hj_eik_source out = {{7.5, 1, 0}, 0};
     assert_int_equal(solve_err(&g, f, 0, NULL, &out, 1, NULL, &o, &e), HJ_EINVAL);
-    assert_non_null(strstr(e.msg, "outside the grid"));
+    assert_non_null(strstr(e.msg, "source 1: coordinate"));
     ob[2 * 8 + 3] = 1; /* the node nearest to s: (3, 2) */
     assert_int_equal(solve_err(&g, f, 0, ob, &s, 1, NULL, &o, &e), HJ_EINVAL);
-    assert_non_null(strstr(e.msg, "lies in an obstacle"));
+    assert_non_null(strstr(e.msg, "source 1 at (3.4, 2.25, 0) lies in an obstacle"));
     assert_int_equal(solve_err(&g, f, 0, NULL, NULL, 0, NULL, &o, &e), HJ_EINVAL);
     assert_non_null(strstr(e.msg, "no source and no fixed node"));
     o.order = 2;
@@ -220,6 +220,13 @@ static void noconv_keeps_iterate(void **state)
     assert_false(st.converged);
     assert_true(st.change > 0);
     assert_true(err < 0.01); /* a first order quality iterate, not garbage */
+    /* max_iter bounds the total count, the first order start included */
+    for (long mi = 2; mi <= 12; mi += 5) {
+        lin_error(2, 40, 3, mi, &rc, &st);
+        assert_int_equal(rc, HJ_ENOCONV);
+        if (!(st.iterations <= mi && st.fo_iterations <= st.iterations))
+            fail_msg("max_iter %ld: %ld iterations (%ld first order)", mi, st.iterations, st.fo_iterations);
+    }
 }
 
 /* Order of convergence of the point source in the linear velocity, 2-D:
