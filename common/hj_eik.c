@@ -356,7 +356,9 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
     double v = local_update(w, k, x, order);
     (*nup)++;
     if (first) {
-        if (!(v < old)) return 0;
+        /* a source-region node gives up its source's time only to a
+         * clearly earlier arrival, not to rounding */
+        if (!(v < (w->state[k] == ST_SRC ? old - 1e-12 * fabs(old) : old))) return 0;
         w->lab[k] = arrival_label(w, k);
     } else if (!isfinite(v) || v == old) {
         return 0;
