@@ -13,6 +13,9 @@
  * source, Luo & Qian 2012) avoids a switch whose radius would have to be
  * tuned and whose seam is itself a source of error; far from the source
  * the factor is a smooth positive weight and costs nothing in accuracy.
+ * The factor first comes from the earliest estimated source; after the
+ * first order phase each node takes the factor of the source whose front
+ * reached it there (a late source can be overtaken: its time is a bound).
  * Taking the factor from the earliest source keeps T0 a good model of T
  * on each source's side of the meeting line; where two owners meet, the
  * neighbour values are converted into the node's own factorisation (T is
@@ -41,11 +44,12 @@
  * 2010): exactly in the first order phase, and in the higher order phase
  * when the changes were below a tenth of the stopping threshold.
  *
- * Known limit: where the solution has kinks on a coarse grid (two sources
- * and a wall on 20 x 18 x 16 nodes, in the unit tests), the WENO5
- * iteration can settle into a cycle with changes of about 1e-4 of the
- * solution's scale and ends with HJ_ENOCONV (the last iterate kept); WENO3
- * converges there in 11-15 iterations. */
+ * Kinks.  WENO5 is replaced by WENO3 within 3 nodes of obstacles and of
+ * the lines where two sources' fronts meet, and nodes that their source
+ * cannot see in a straight line are not factored (mark_low,
+ * hide_shadows): without these the WENO5 iteration settled into a cycle
+ * there (changes of 2e-5 to 4e-5 of the solution's scale for 1000
+ * iterations) on a wall with a gap and on two meeting fronts. */
 #include "hj_eik.h"
 
 #include <math.h>
@@ -58,7 +62,10 @@
 #endif
 
 enum { GH = 3 };                                  /* ghost layers: WENO5 reaches i +- 3 */
-enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH };
+/* ST_SRC: a node near a point source during the first order phase; its
+ * source's time there is a bound, not a value (a later source can be
+ * overtaken by an earlier one). */
+enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
 {
@@ -84,6 +91,10 @@ typedef struct {
     double x0[3], h[3];
     double *tau, *T0, *fs; /* unknown, factor, slowness (padded) */
     int *own;              /* owning source, -1: none */
+    unsigned char *low;    /* 1: WENO3 instead of WENO5 (near obstacles and
+                            * where fronts of two sources meet) */
+    int *lab;              /* first order phase: the source whose front
+                            * reached the node first (-1: none, fixed data) */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
     src_info *src;
@@ -98,6 +109,8 @@ static void work_free(eik_work *w)
     free(w->T0);
     free(w->fs);
     free(w->own);
+    free(w->lab);
+    free(w->low);
     free(w->state);
     free(w->stamp);
     free(w->src);
@@ -258,7 +271,7 @@ static double local_update(const eik_work *w, long k, const double *x, int order
         }
         const int side = add_term(w, o, T0, x, d, nl1, nr1, -1, a1, b1, &m1);
         if (order == 1) continue;
-        const int R = order == 5 ? 3 : 2;
+        const int R = order == 5 && !w->low[k] ? 3 : 2;
         double v[7];
         int ok = 1;
         for (int q = -R; q <= R; q++) {
@@ -269,7 +282,7 @@ static double local_update(const eik_work *w, long k, const double *x, int order
             if (q != 0 && w->own[k + q * st] != o) v[q + R] = NAN;
             ok = ok && isfinite(v[q + R]);
         }
-        int ord = order;
+        int ord = R == 3 ? 5 : 3;
         if (!ok && R == 3) { /* WENO5 stencil cut: try WENO3 */
             ok = 1;
             for (int q = 1; q <= 5; q++) ok = ok && isfinite(v[q]);
@@ -308,11 +321,34 @@ static inline int active(const eik_work *w, long k, int R, int q)
     return 0;
 }
 
+/* The source label of the neighbour with the smallest T: the front that
+ * reached node k (first order phase; neighbours lie on other hyperplanes,
+ * so this does not depend on the thread count). */
+static inline int arrival_label(const eik_work *w, long k)
+{
+    double best = INFINITY;
+    int lab = -1;
+    for (int d = 0; d < w->dim; d++)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            const long nb = k + sgn * w->st[d];
+            const unsigned char sn = w->state[nb];
+            if (sn != ST_FREE && sn != ST_FIXED && sn != ST_SRC) continue;
+            const double t = w->tau[nb];
+            if (!(t < INFINITY)) continue;
+            const double T = src_tb(w, w->own[nb]) + w->T0[nb] * t;
+            if (T < best) {
+                best = T;
+                lab = w->lab[nb];
+            }
+        }
+    return lab;
+}
+
 /* One node of a sweep; returns |change of T|. */
 static inline double visit(eik_work *w, const long ip[3], int order, int q, int first, size_t *nup)
 {
     const long k = ip[0] * w->st[0] + ip[1] * w->st[1] + ip[2] * w->st[2];
-    if (w->state[k] != ST_FREE) return 0;
+    if (w->state[k] != ST_FREE && !(first && w->state[k] == ST_SRC)) return 0;
     if (!active(w, k, order == 1 ? 1 : (order + 1) / 2, q)) return 0;
     double x[3];
     node_x(w, ip, x);
@@ -320,7 +356,10 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
     double v = local_update(w, k, x, order);
     (*nup)++;
     if (first) {
-        if (!(v < old)) return 0;
+        /* a source-region node gives up its source's time only to a
+         * clearly earlier arrival, not to rounding */
+        if (!(v < (w->state[k] == ST_SRC ? old - 1e-12 * fabs(old) : old))) return 0;
+        w->lab[k] = arrival_label(w, k);
     } else if (!isfinite(v) || v == old) {
         return 0;
     }
@@ -518,6 +557,124 @@ static double source_time(const eik_work *w, const src_info *s, const double *x)
     return s->t0 + r * (f + r * (0.5 * ge + r * (eHe / 6 - (g2 - ge * ge) / (24 * f))));
 }
 
+/* Is the straight segment from x to y free of obstacle nodes?  Sampled
+ * at a quarter of the smallest spacing; a sample counts its nearest node
+ * (a ray grazing an obstacle corner counts as blocked). */
+static int visible(const eik_work *w, const double *x, const double *y)
+{
+    double len = 0, hmin = w->h[0];
+    for (int d = 0; d < w->dim; d++) {
+        len += (y[d] - x[d]) * (y[d] - x[d]);
+        if (w->h[d] < hmin) hmin = w->h[d];
+    }
+    const long ns = (long)ceil(4 * sqrt(len) / hmin);
+    for (long i = 1; i < ns; i++) {
+        const double t = (double)i / (double)ns;
+        long k = 0;
+        for (int d = 0; d < w->dim; d++) {
+            long j = lround((x[d] + t * (y[d] - x[d]) - w->x0[d]) / w->h[d]);
+            j = j < 0 ? 0 : j > w->n[d] - 1 ? w->n[d] - 1 : j;
+            k += (j + w->G[d]) * w->st[d];
+        }
+        if (w->state[k] == ST_OBST) return 0;
+    }
+    return 1;
+}
+
+/* Nodes that their source cannot see in a straight line (behind an
+ * obstacle, reached by rays bent around its corners) get label -2: no
+ * factor.  There grad T is not along x - s, the factored update's
+ * coefficients T0 / h -/+ p_d become small or change sign, and the
+ * higher order iteration settled into a cycle (the wall example: changes
+ * of 4e-5 of the scale for 1000 iterations at order 5); T itself is
+ * smooth there away from the corners, so the plain scheme keeps the order. */
+static void hide_shadows(eik_work *w)
+{
+    for (long c = w->G[2]; c < w->n[2] + w->G[2]; c++)
+        for (long b = w->G[1]; b < w->n[1] + w->G[1]; b++)
+            for (long a = w->G[0]; a < w->n[0] + w->G[0]; a++) {
+                const long ip[3] = {a, b, c}, k = a + w->st[1] * b + w->st[2] * c;
+                const int o = w->lab[k];
+                if (o < 0 || w->state[k] == ST_FIXED) continue;
+                double x[3];
+                node_x(w, ip, x);
+                if (!visible(w, x, w->src[o].x)) w->lab[k] = -2;
+            }
+}
+
+/* After the first order phase: a source-region node that kept its
+ * source's time holds it from now on; one reached earlier from elsewhere
+ * (an overtaken late source) becomes free.  With factoring, every node
+ * then takes the factor of the source whose front actually reached it
+ * (its label; a ghost node the label of the nearest grid node), not the
+ * one estimated from the straight-line times, and tau is converted. */
+static void settle_sources(eik_work *w, int factored, int has_obst)
+{
+    const size_t np = w->npad;
+    for (size_t k = 0; k < np; k++)
+        if (w->state[k] == ST_SRC) w->state[k] = w->stamp[k] ? ST_FREE : ST_FIXED;
+    if (!factored) return;
+    if (has_obst) hide_shadows(w);
+    for (long c = 0; c < w->P[2]; c++)
+        for (long b = 0; b < w->P[1]; b++)
+            for (long a = 0; a < w->P[0]; a++) {
+                const long ip[3] = {a, b, c}, k = a + w->st[1] * b + w->st[2] * c;
+                long q[3];
+                for (int d = 0; d < 3; d++) {
+                    const long lo = w->G[d], hi = w->n[d] - 1 + w->G[d];
+                    q[d] = ip[d] < lo ? lo : ip[d] > hi ? hi : ip[d];
+                }
+                const int lo = w->lab[q[0] + w->st[1] * q[1] + w->st[2] * q[2]];
+                const int o = lo == -2 ? -1 : lo; /* -2: in a shadow, not factored */
+                if (lo == -1 || o == w->own[k]) continue;
+                double x[3];
+                node_x(w, ip, x);
+                const double T0 = src_T0(w, o, x), t = w->tau[k];
+                if (t < INFINITY) {
+                    const double T = src_tb(w, w->own[k]) + w->T0[k] * t;
+                    w->tau[k] = T0 > 0 ? (T - src_tb(w, o)) / T0 : 1.0;
+                }
+                w->own[k] = o;
+                w->T0[k] = T0;
+            }
+}
+
+/* WENO5 is kept away from obstacles and from the lines where two sources'
+ * fronts meet: a node within 3 nodes (a box, the reach of the WENO5
+ * stencil) of an obstacle or of a node of another owner uses WENO3.  At
+ * these kinks and corners the solution is not smooth, WENO5's weights
+ * kept switching from one iteration to the next and the iteration settled
+ * into a cycle (changes about 1e-5 of the solution's scale, no
+ * convergence) while WENO3 converges; away from them the order stays 5. */
+static void mark_low(eik_work *w)
+{
+    const size_t np = w->npad;
+    for (long c = w->G[2]; c < w->n[2] + w->G[2]; c++)
+        for (long b = w->G[1]; b < w->n[1] + w->G[1]; b++)
+            for (long a = w->G[0]; a < w->n[0] + w->G[0]; a++) {
+                const long k = a + w->st[1] * b + w->st[2] * c;
+                int mark = w->state[k] == ST_OBST;
+                for (int d = 0; d < w->dim && !mark; d++) {
+                    const unsigned char sn = w->state[k + w->st[d]];
+                    mark = sn != ST_GHOST && sn != ST_OBST && w->own[k + w->st[d]] != w->own[k];
+                }
+                w->low[k] = (unsigned char)mark;
+            }
+    /* dilate by 3 nodes along each dimension in turn: a 7^dim box (a
+     * wrap-around at the padded row ends only marks ghost or extra nodes) */
+    unsigned char *tmp = w->low;
+    for (int d = 0; d < w->dim; d++) {
+        const long st = w->st[d];
+        for (size_t k = 0; k < np; k++)
+            if (tmp[k] & 1)
+                for (int r = -3; r <= 3; r++) {
+                    const long kk = (long)k + r * st;
+                    if (kk >= 0 && (size_t)kk < np && !(tmp[kk] & 1)) tmp[kk] |= 2;
+                }
+        for (size_t k = 0; k < np; k++) tmp[k] = tmp[k] ? 1 : 0;
+    }
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -576,20 +733,23 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     w.T0 = malloc(np * sizeof(double));
     w.fs = malloc(np * sizeof(double));
     w.own = malloc(np * sizeof(int));
+    w.lab = malloc(np * sizeof(int));
+    w.low = calloc(np, 1);
     w.state = calloc(np, 1);
     w.stamp = malloc(np * sizeof(int));
     w.src = malloc((size_t)(nsrc > 0 ? nsrc : 1) * sizeof(src_info));
     w.nsrc = nsrc;
-    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.state || !w.stamp || !w.src) {
+    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.lab || !w.low || !w.state || !w.stamp || !w.src) {
         work_free(&w);
         return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB",
-                            (double)np * (3 * sizeof(double) + 2 * sizeof(int) + 1) / 1e6);
+                            (double)np * (3 * sizeof(double) + 3 * sizeof(int) + 2) / 1e6);
     }
     for (size_t k = 0; k < np; k++) {
         w.tau[k] = INFINITY;
         w.T0[k] = 1;
         w.fs[k] = 0;
         w.own[k] = -1;
+        w.lab[k] = -1;
         w.stamp[k] = 0;
     }
 
@@ -638,7 +798,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             const double u = (x - w.x0[d]) / w.h[d], tol = 1e-9;
             if (!isfinite(u) || u < -tol || u > (double)(w.n[d] - 1) + tol) {
                 rc = hj_error_set(err, HJ_EINVAL, "source %d: coordinate %g along dimension %d is outside the grid "
-                                                  "[%g, %g]", s, x, d, w.x0[d], w.x0[d] + (double)(w.n[d] - 1) * w.h[d]);
+                                                  "[%g, %g]", s + 1, x, d, w.x0[d], w.x0[d] + (double)(w.n[d] - 1) * w.h[d]);
                 break;
             }
             long i = lround(u);
@@ -646,18 +806,18 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
         if (rc != HJ_OK) break;
         if (!isfinite(src[s].t0)) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g must be finite", s, src[s].t0);
+            rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g must be finite", s + 1, src[s].t0);
             break;
         }
         if (w.state[ip[0] * w.st[0] + ip[1] * w.st[1] + ip[2] * w.st[2]] == ST_OBST) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s, w.src[s].x[0],
+            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s + 1, w.src[s].x[0],
                               w.src[s].x[1], w.src[s].x[2]);
             break;
         }
         w.src[s].t0 = src[s].t0;
         w.src[s].s0 = slowness_at(&w, w.src[s].x);
         if (!(w.src[s].s0 > 0)) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d: no slowness around it (obstacles)", s);
+            rc = hj_error_set(err, HJ_EINVAL, "source %d: no slowness around it (obstacles)", s + 1);
             break;
         }
         source_taylor(&w, &w.src[s], ip);
@@ -691,6 +851,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                  * order at 3.  A user's fixed value there is kept. */
                 if (w.state[k] == ST_FREE) {
                     double Tbest = INFINITY;
+                    int sbest = -1;
                     for (int s = 0; s < nsrc; s++) {
                         double r2 = 0;
                         int box = 1;
@@ -702,10 +863,14 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                         const double r = sqrt(r2);
                         if (!box && r > hmax * (1 + 1e-12)) continue;
                         const double Tv = source_time(&w, &w.src[s], x);
-                        if (Tv < Tbest) Tbest = Tv;
+                        if (Tv < Tbest) {
+                            Tbest = Tv;
+                            sbest = s;
+                        }
                     }
                     if (Tbest < INFINITY) {
-                        w.state[k] = ST_FIXED;
+                        w.state[k] = ST_SRC;
+                        w.lab[k] = sbest;
                         w.tau[k] = Tbest; /* T for now; tau below */
                     }
                 } else if (w.state[k] == ST_FIXED) {
@@ -721,7 +886,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                     }
                 }
                 w.T0[k] = src_T0(&w, w.own[k], x);
-                if ((w.state[k] == ST_FIXED) && isfinite(w.tau[k]))
+                if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
             }
     w.eps3 = 1e-6;
@@ -743,7 +908,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
         scale = 0;
         for (size_t k = 0; k < np; k++)
-            if (w.state[k] == ST_FREE || w.state[k] == ST_FIXED) {
+            if (w.state[k] == ST_FREE || w.state[k] == ST_FIXED || w.state[k] == ST_SRC) {
                 const double v = fabs(src_tb(&w, w.own[k]) + w.T0[k] * w.tau[k]);
                 if (v < INFINITY && v > scale) scale = v;
             }
@@ -760,6 +925,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             w.state[k] = ST_UNREACH;
             st->unreachable++;
         }
+    settle_sources(&w, factored, obstacle != NULL);
+    if (opt->order == 5) mark_low(&w);
 
     /* Higher order sweeps from the first order solution. */
     if (conv && opt->order > 1) {
@@ -778,7 +945,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
-        for (long it = 1; it <= opt->max_iter; it++) {
+        /* max_iter bounds the total, the first order start included */
+        for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
             for (int s = 0; s < nsw; s++, q++) {
                 fill_ghosts(&w, deg, q);

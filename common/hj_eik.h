@@ -37,7 +37,8 @@ typedef struct {
     int factored;       /* 1 (default): T = T0 tau near point sources */
     double tol;         /* stop when max |T_new - T_old| <= tol * scale,
                          * scale = max finite |T|; default 1e-10 */
-    long max_iter;      /* full iterations (2^dim sweeps each), default 1000 */
+    long max_iter;      /* full iterations (2^dim sweeps each), the first
+                         * order start included; default 1000 */
     /* Called after each full iteration (NULL: none). */
     void (*progress)(long iter, double change, void *ctx);
     void *progress_ctx;
@@ -65,7 +66,7 @@ hj_eik_options hj_eik_default_options(void);
  * iterate and st says how far it got.  Bad input (f <= 0 or non-finite
  * outside obstacles, a source in an obstacle or outside the grid, no
  * source and no fixed node, ...) gives HJ_EINVAL with a message before any
- * sweep. */
+ * sweep.  Messages number the sources from 1. */
 int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
                  const unsigned char *obstacle, const hj_eik_source *src, int nsrc,
                  const double *fixed, const hj_eik_options *opt, double *T,

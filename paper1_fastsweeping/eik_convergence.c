@@ -167,14 +167,14 @@ int main(int argc, char **argv)
     };
     hj_cli_spec spec = {"eik_convergence", "convergence of hj_eik (orders 1, 3, 5; 2-D and 3-D; point sources)", opts,
                         (int)(sizeof opts / sizeof opts[0]),
-                        "Full sizes: 2-D N = 40, 80, 160, 320; 3-D N = 20, 40, 80; obstacle N = 40, 80, 160 against N = 640."};
+                        "Full sizes: 2-D N = 40, 80, 160, 320; 3-D N = 20, 40, 80; obstacle N = 40, 80, 160 against N = 480."};
     hj_cli_parse_or_exit(&spec, argc, argv);
 
     static const long n2_full[] = {40, 80, 160, 320}, n3_full[] = {20, 40, 80}, nob_full[] = {40, 80, 160};
     static const long n2_quick[] = {24, 48, 96}, n3_quick[] = {12, 24}, nob_quick[] = {24, 48};
     const long *n2 = quick ? n2_quick : n2_full, *n3 = quick ? n3_quick : n3_full, *nob = quick ? nob_quick : nob_full;
     const int k2 = quick ? 3 : 4, k3 = quick ? 2 : 3, kob = quick ? 2 : 3;
-    const long Nref = quick ? 192 : 640;
+    const long Nref = quick ? 192 : 480;
 
     char path[4096], fpath[4096];
     hj_error err;
