@@ -272,7 +272,9 @@ static long node_at(const hj_eik_grid *g, const double *x)
 
 int main(int argc, char **argv)
 {
-    const char *speed_file = NULL, *slow_file = NULL, *obst_file = NULL, *out_path = "T.tsv", *pgm_s = "0,1";
+    /* The default output; a 3-D result written as VTK by default goes to T.vtk. */
+    static const char default_out[] = "T.tsv";
+    const char *speed_file = NULL, *slow_file = NULL, *obst_file = NULL, *out_path = default_out, *pgm_s = "0,1";
     const char *dom_s = NULL, *raw_s = NULL, *sources_file = NULL, *poly_file = NULL;
     const char *src_s[MAX_SOURCES];
     double pgm[2] = {0, 1}, dom[6] = {0, 0, 0, 0, 0, 0}, cst = -1, slow_cst = -1;
@@ -327,7 +329,7 @@ int main(int argc, char **argv)
         {.name = "--format", .type = HJ_OPT_CHOICE, .value = &format, .metavar = "F", .choices = format_w,
          .help = "output: auto (tsv in 2-D, vtk in 3-D), tsv (x y [z] T), matrix (2-D), vtk"},
         {.name = "--out", .type = HJ_OPT_STRING, .value = &out_path, .metavar = "FILE",
-         .help = "output file (- for stdout, not for vtk)"},
+         .help = "output file (default T.tsv, T.vtk for a 3-D result written as VTK; - for stdout, not for vtk)"},
     };
     hj_cli_spec spec = {
         .prog = prog,
@@ -456,6 +458,10 @@ int main(int argc, char **argv)
 
     /* ---- sources ---- */
     const int dim = g.dim;
+    /* A 3-D grid is written as VTK unless a format is given: a file, never stdout. */
+    if (!format && dim == 3 && out_path == default_out) out_path = "T.vtk";
+    if (!format && dim == 3 && !strcmp(out_path, "-"))
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "a 3-D result is written as VTK, which needs --out FILE (not stdout); or give --format tsv");
     long npts = 0;
     double *pts = NULL; /* rows of 4: x, y, z, t0 */
     if (sources_file) {

@@ -192,6 +192,7 @@ static void eikonal_bad_files(void **state)
     expect_failure(P1 "eikonal --speed-const 1 --domain 0,1,0,1,0,1 --N 8 --source 0,0", 2,
                    "--source wants X,Y,Z or X,Y,Z,T0");
     expect_failure(P1 "eikonal --speed-const 1 --source 0,0 --format vtk --out -", 2, "--format vtk needs --out FILE");
+    expect_failure(P1 "eikonal --speed examples/data/volume.txt --source 2,2,2 --out -", 2, "a 3-D result is written as VTK");
     /* a speed of 0 is an obstacle: a source on it, and walled-off nodes */
     write_text(path, sizeof path, "zero.txt", "1 1 1\n1 0 1\n1 1 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 1,1", path);
