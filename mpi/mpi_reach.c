@@ -99,12 +99,15 @@ static int solve(const run_par *rp, const hj_ls_grid *global, const hj_ls_grid *
 }
 
 /* A usage error, the same on every process: one message (control bytes
- * escaped by hj_cli_fail) from rank 0, the usage exit status. */
+ * escaped by hj_cli_fail) from rank 0, the usage exit status.  The other
+ * processes end with status 0: mpirun aborts the job at the first non-zero
+ * exit, which could kill rank 0 before its message is out; the job's
+ * status is then rank 0's. */
 static _Noreturn void usage_fail(int rank, const char *msg)
 {
     MPI_Finalize();
     if (rank == 0) hj_cli_fail(PROG, HJ_EXIT_USAGE, "%s", msg);
-    exit(HJ_EXIT_USAGE);
+    exit(0);
 }
 
 static _Noreturn void fail(int rank, const hj_error *err)
