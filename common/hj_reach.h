@@ -157,7 +157,10 @@ typedef struct {
 } hj_reach_stats;
 
 /* Solve: phi (an array on the grid, written) receives the value at tau
- * (forward time T - tau); ttr (may be NULL) the time-to-reach. */
+ * (forward time T - tau); ttr (may be NULL) the time-to-reach; stats may
+ * be NULL.  HJ_EINVAL for a problem that cannot be solved (checked before
+ * any step: no target, zero horizon, dimensions that do not match, ...),
+ * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one

@@ -186,7 +186,7 @@ int main(int argc, char **argv)
         {.name = "--max", .type = HJ_OPT_STRING, .value = &hi_s, .metavar = "A,B,..",
          .help = "upper corner (a periodic dimension: min + period)", .dflt = "the system's"},
         {.name = "--target-centre", .type = HJ_OPT_STRING, .value = &centre_s, .metavar = "X,Y",
-         .help = "centre of the target ball over the first two dimensions", .dflt = "0"},
+         .help = "centre of the target ball over the first two dimensions (the first only for double_integrator: |x - c| <= r)", .dflt = "0"},
         {.name = "--target-radius", .type = HJ_OPT_DOUBLE, .value = &radius, .min = 1e-12, .max = 1e12,
          .metavar = "R", .help = "radius of the target ball"},
         {.name = "--obstacle", .type = HJ_OPT_STRING, .value = &obstacle_s, .metavar = "LO:HI",
