@@ -112,6 +112,8 @@ BENCHES :=
 # with -fopenmp, since libhj holds the kernel.
 LDFLAGS += -fopenmp
 $(BUILD)/obj/common/hj_ls_%.o $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
+# Exact sums (hj_sum): called once per node by the norms and measures.
+$(BUILD)/obj/common/hj_sum.o $(BUILD)/pic/common/hj_sum.o: CFLAGS += -O3
 # The dense Ultra-Bee step likewise (row loops vectorised, rows shared
 # among threads, bitwise the same for any thread count).
 # -fno-trapping-math lets gcc turn its flux selects (== on doubles) into
