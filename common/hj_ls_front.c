@@ -9,7 +9,9 @@
 void hj_ls_front_error(const hj_ls_grid *g, const double *phi, const double *exact, double band, double *max,
                        double *mean)
 {
-    double m = 0, s = 0;
+    double m = 0;
+    hj_sum s; /* exact: the mean does not depend on the order */
+    hj_sum_init(&s);
     long c = 0;
     long idx[HJ_LS_MAXDIM];
     for (size_t r = 0; r < g->rows; r++) {
@@ -19,12 +21,12 @@ void hj_ls_front_error(const hj_ls_grid *g, const double *phi, const double *exa
             if (!(fabs(exact[q]) < band)) continue;
             const double e = fabs(phi[q] - exact[q]);
             m = e > m ? e : m;
-            s += e;
+            hj_sum_add(&s, e);
             c++;
         }
     }
     *max = m;
-    *mean = c ? s / (double)c : 0;
+    *mean = c ? hj_sum_value(&s) / (double)c : 0;
 }
 
 int hj_ls_front_grad_deviation(const hj_ls_grid *g, double *phi, const double *dist, double band, double *work,
@@ -33,7 +35,9 @@ int hj_ls_front_grad_deviation(const hj_ls_grid *g, double *phi, const double *d
     double *gm = hj_ls_alloc(g);
     if (!gm) return hj_error_set(err, HJ_ENOMEM, "gradient deviation: out of memory");
     int rc = hj_ls_gradient_norm(g, phi, work, gm, err);
-    double m = 0, s = 0;
+    double m = 0;
+    hj_sum s; /* exact: the mean does not depend on the order */
+    hj_sum_init(&s);
     long c = 0, idx[HJ_LS_MAXDIM];
     for (size_t r = 0; r < g->rows && !rc; r++) {
         const size_t k = hj_ls_row(g, r, idx);
@@ -42,12 +46,12 @@ int hj_ls_front_grad_deviation(const hj_ls_grid *g, double *phi, const double *d
             if (!(fabs(dist[q]) < band)) continue;
             const double e = fabs(gm[q] - 1);
             m = e > m ? e : m;
-            s += e;
+            hj_sum_add(&s, e);
             c++;
         }
     }
     hj_ls_free(gm);
-    *mean = c ? s / (double)c : 0;
+    *mean = c ? hj_sum_value(&s) / (double)c : 0;
     *max = m;
     return rc;
 }

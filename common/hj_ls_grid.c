@@ -223,22 +223,46 @@ void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src)
     }
 }
 
-void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms)
+void hj_ls_norms_add(const hj_ls_grid *g, const double *a, const double *b, double *max, hj_sum *s1, hj_sum *s2)
 {
-    double m = 0, s1 = 0, s2 = 0;
-    long i[HJ_LS_MAXDIM];
-    for (size_t r = 0; r < g->rows; r++) {
-        const size_t k = hj_ls_row(g, r, i);
-        for (long j = 0; j < g->N[0]; j++) {
-            const double e = fabs(a[k + (size_t)j] - (b ? b[k + (size_t)j] : 0.0));
-            m = e > m ? e : m;
-            s1 += e;
-            s2 += e * e;
+    double m = *max;
+    /* One accumulator pair per thread, merged: exact, so the merge order
+     * does not matter. */
+#pragma omp parallel
+    {
+        hj_sum t1, t2;
+        hj_sum_init(&t1), hj_sum_init(&t2);
+        double tm = 0;
+        long i[HJ_LS_MAXDIM];
+#pragma omp for schedule(static) nowait
+        for (size_t r = 0; r < g->rows; r++) {
+            const size_t k = hj_ls_row(g, r, i);
+            for (long j = 0; j < g->N[0]; j++) {
+                const double e = fabs(a[k + (size_t)j] - (b ? b[k + (size_t)j] : 0.0));
+                tm = e > tm ? e : tm;
+                if (s1) hj_sum_add(&t1, e);
+                if (s2) hj_sum_add(&t2, e * e);
+            }
+        }
+#pragma omp critical(hj_ls_norms_merge)
+        {
+            m = tm > m ? tm : m;
+            if (s1) hj_sum_merge(s1, &t1);
+            if (s2) hj_sum_merge(s2, &t2);
         }
     }
+    *max = m;
+}
+
+void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms)
+{
+    double m = 0;
+    hj_sum s1, s2;
+    hj_sum_init(&s1), hj_sum_init(&s2);
+    hj_ls_norms_add(g, a, b, &m, avg ? &s1 : NULL, rms ? &s2 : NULL);
     if (max) *max = m;
-    if (avg) *avg = s1 / (double)g->nodes;
-    if (rms) *rms = sqrt(s2 / (double)g->nodes);
+    if (avg) *avg = hj_sum_value(&s1) / (double)g->nodes;
+    if (rms) *rms = sqrt(hj_sum_value(&s2) / (double)g->nodes);
 }
 
 static long count_rows(const hj_ls_grid *g, const double *a, const double *b, int differ)

@@ -33,6 +33,7 @@
 #include <stddef.h>
 
 #include "hj_error.h"
+#include "hj_sum.h"
 
 #define HJ_LS_MAXDIM 8
 /* Ghost width: the widest stencil of the kernel (ENO3, WENO5) reaches 3. */
@@ -143,9 +144,15 @@ void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx);
 void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src);
 
 /* Maximum, average and root mean square of |a - b| over interior nodes
- * (b may be NULL for |a|).  Summed in row order: the result does not depend
- * on the number of threads. */
+ * (b may be NULL for |a|).  The sums are exact (hj_sum) and rounded once:
+ * the result does not depend on the number of threads, nor, over MPI
+ * (hj_mpi_norms), on the number of processes. */
 void hj_ls_norms(const hj_ls_grid *g, const double *a, const double *b, double *max, double *avg, double *rms);
+
+/* The parts of hj_ls_norms: *max = max(*max, max |a - b|), and |a - b|
+ * and |a - b|^2 added exactly to s1 and s2 (either may be NULL), over the
+ * interior nodes of g (of a block: the caller combines the blocks). */
+void hj_ls_norms_add(const hj_ls_grid *g, const double *a, const double *b, double *max, hj_sum *s1, hj_sum *s2);
 
 /* Number of interior nodes where b > a (a set that only grows, as under
  * the toolbox's termRestrictUpdate, section 2.6, has phi non-increasing

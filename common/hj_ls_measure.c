@@ -79,29 +79,45 @@ static double cell_fraction(const hj_ls_grid *g, const double *phi, size_t base)
     return sum / np;
 }
 
-int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
+int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err)
 {
     if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
-    /* Cell rows: cells along dimension 0 of the interior rows whose other
-     * indices are all below N - 1. */
-    double *rowsum = calloc(g->rows, sizeof *rowsum);
-    if (!rowsum) return hj_error_set(err, HJ_ENOMEM, "measure: out of memory");
-#pragma omp parallel for schedule(static)
-    for (size_t r = 0; r < g->rows; r++) {
-        long i[HJ_LS_MAXDIM] = {0};
-        const size_t k0 = hj_ls_row(g, r, i);
-        int last = 0;
-        for (int e = 1; e < g->dim; e++) last |= i[e] >= g->N[e] - 1;
-        if (last) continue;
-        double s = 0;
-        for (long a = 0; a + 1 < g->N[0]; a++) s += cell_fraction(g, phi, k0 + (size_t)a);
-        rowsum[r] = s;
+    for (int e = 0; e < g->dim; e++)
+        if (ncell[e] < 0 || ncell[e] > g->N[e])
+            return hj_error_set(err, HJ_EINVAL, "measure: %ld cells along dimension %d of %ld nodes", ncell[e], e,
+                                g->N[e]);
+    /* Cell rows: the cells along dimension 0 of the interior rows whose
+     * other indices are below ncell; one exact accumulator per thread. */
+#pragma omp parallel
+    {
+        hj_sum t;
+        hj_sum_init(&t);
+#pragma omp for schedule(static) nowait
+        for (size_t r = 0; r < g->rows; r++) {
+            long i[HJ_LS_MAXDIM] = {0};
+            const size_t k0 = hj_ls_row(g, r, i);
+            int out = 0;
+            for (int e = 1; e < g->dim; e++) out |= i[e] >= ncell[e];
+            if (out) continue;
+            for (long a = 0; a < ncell[0]; a++) hj_sum_add(&t, cell_fraction(g, phi, k0 + (size_t)a));
+        }
+#pragma omp critical(hj_ls_measure_merge)
+        hj_sum_merge(s, &t);
     }
-    double total = 0, cell = 1;
-    for (size_t r = 0; r < g->rows; r++) total += rowsum[r];
+    return HJ_OK;
+}
+
+int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
+{
+    long ncell[HJ_LS_MAXDIM] = {0};
+    for (int e = 0; e < g->dim && e < HJ_LS_MAXDIM; e++) ncell[e] = g->N[e] - 1;
+    hj_sum s;
+    hj_sum_init(&s);
+    const int rc = hj_ls_measure_add(g, phi, ncell, &s, err);
+    if (rc) return rc;
+    double cell = 1;
     for (int e = 0; e < g->dim; e++) cell *= g->dx[e];
-    free(rowsum);
-    *m = total * cell;
+    *m = hj_sum_value(&s) * cell;
     return HJ_OK;
 }
 

@@ -13,8 +13,9 @@
  * boundary is piecewise linear on the simplices (a half-space, say).
  *
  * Only the interior cells count: the domain is [min, max] (no half cells
- * beyond the outer nodes).  Sums are taken row by row and added in row
- * order, so the result does not depend on the number of threads.
+ * beyond the outer nodes).  The cell fractions are summed exactly
+ * (hj_sum) and rounded once, so the result does not depend on the number
+ * of threads, nor, over MPI (hj_mpi_measure), on the number of processes.
  */
 #ifndef HJ_LS_MEASURE_H
 #define HJ_LS_MEASURE_H
@@ -25,6 +26,14 @@
 /* Fraction of the d-simplex (d = 1, 2, 3) with vertex values v[0..d] on
  * which the linear interpolant is negative. */
 double hj_ls_simplex_fraction(int d, const double *v);
+
+/* The fractions (in [0, 1]) of {phi < 0} in the cells whose lowest
+ * corner i has 0 <= i[d] < ncell[d] <= N[d], added exactly to s.  A cell
+ * at i[d] = N[d] - 1 takes its upper corner from the ghost at N[d], which
+ * must then hold the neighbouring value (a periodic image, or a
+ * neighbouring block's node).  HJ_EINVAL for a dimension above 3 or an
+ * ncell out of range. */
+int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err);
 
 /* Measure of {phi < 0} over the grid's box; *m receives it.  HJ_EINVAL
  * for a grid of dimension above 3. */

@@ -7,6 +7,10 @@
 #include <string.h>
 
 #include "hj_ls_grid.h"
+#include "hj_test_ls.h"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 static hj_ls_grid grid1(int type, double lo, double hi, long n)
 {
@@ -169,6 +173,47 @@ static void norms(void **state)
     hj_ls_free(a);
 }
 
+/* The sums of the norms are exact and rounded once: the average is the
+ * correctly rounded sum of |a - b| (hj_sum_array) over the node count, the
+ * same bits on 1, 2 and 3 threads, on a field whose plain row sums do
+ * depend on the order (terms from 1e-300 to 1e8). */
+static void norms_exact_threads(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 37, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *a = hj_ls_alloc(&g), *e = malloc(sizeof(double) * g.nodes), *e2 = malloc(sizeof(double) * g.nodes);
+    long i[HJ_LS_MAXDIM];
+    size_t n = 0;
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 0; j < g.N[0]; j++, n++) {
+            const double v = ((j * 7 + (long)r * 3) % 5 - 2) * pow(10.0, (double)((j * 13 + (long)r) % 16) - 8) +
+                             (j == 3 ? 1e8 : 0) + (r == 5 ? 1e-300 : 0);
+            a[k + (size_t)j] = v, e[n] = fabs(v), e2[n] = v * v;
+        }
+    }
+    double m[3], avg[3], rms[3];
+    for (int t = 1; t <= 3; t++) {
+#ifdef _OPENMP
+        omp_set_num_threads(t);
+#endif
+        hj_ls_norms(&g, a, NULL, &m[t - 1], &avg[t - 1], &rms[t - 1]);
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    double want_max = 0;
+    for (size_t k = 0; k < n; k++) want_max = e[k] > want_max ? e[k] : want_max;
+    const double want_avg = hj_sum_array(e, (long)n) / (double)g.nodes;
+    const double want_rms = sqrt(hj_sum_array(e2, (long)n) / (double)g.nodes);
+    for (int t = 0; t < 3; t++) {
+        assert_memory_equal(&avg[t], &want_avg, sizeof(double));
+        assert_memory_equal(&rms[t], &want_rms, sizeof(double));
+        assert_true(m[t] == want_max);
+    }
+    free(e), free(e2), hj_ls_free(a);
+}
+
 /* Nodes where b > a, and nodes that differ in any bit (-0 from 0 too);
  * ghost nodes do not count. */
 static void counts(void **state)
@@ -300,5 +345,5 @@ static void period_grid(void **state)
 }
 
 HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
-             cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms),
+             cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

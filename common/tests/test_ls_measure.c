@@ -10,6 +10,9 @@
 #include "hj_ls_measure.h"
 #include "hj_ls_shape.h"
 #include "hj_math.h"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 
 /* dim dimensions of n nodes on [-1, 1], extrapolated away from zero. */
@@ -176,6 +179,44 @@ static void periodic_and_radius(void **state)
     hj_ls_free(s1);
 }
 
+/* The cell fractions are summed exactly: the measure is the correctly
+ * rounded sum of the fractions that hj_ls_measure_add collects, times the
+ * cell, the same bits on 1, 2 and 3 threads; a partial range of cells adds
+ * to the whole like disjoint blocks. */
+static void measure_exact_threads(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(3, 23);
+    double *phi = hj_ls_alloc(&g);
+    const double c[3] = {0.05, -0.1, 0.02};
+    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.55, phi, NULL), HJ_OK);
+    double m[3];
+    for (int t = 1; t <= 3; t++) {
+#ifdef _OPENMP
+        omp_set_num_threads(t);
+#endif
+        assert_int_equal(hj_ls_measure(&g, phi, &m[t - 1], NULL), HJ_OK);
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    assert_memory_equal(&m[0], &m[1], sizeof(double));
+    assert_memory_equal(&m[0], &m[2], sizeof(double));
+    /* The cells with i[2] < 10 and those above, added separately (the
+     * upper part through a pointer offset by 10 planes). */
+    hj_sum lo, hi;
+    hj_sum_init(&lo), hj_sum_init(&hi);
+    hj_ls_grid up = g;
+    up.N[2] = g.N[2] - 10, up.rows = g.rows / (size_t)g.N[2] * (size_t)up.N[2];
+    assert_int_equal(hj_ls_measure_add(&g, phi, (const long[]){22, 22, 10}, &lo, NULL), HJ_OK);
+    assert_int_equal(hj_ls_measure_add(&up, phi + 10 * g.stride[2], (const long[]){22, 22, 12}, &hi, NULL), HJ_OK);
+    hj_sum_merge(&lo, &hi);
+    const double whole = hj_sum_value(&lo) * g.dx[0] * g.dx[1] * g.dx[2];
+    assert_memory_equal(&whole, &m[0], sizeof(double));
+    assert_int_equal(hj_ls_measure_add(&g, phi, (const long[]){22, 24, 10}, &lo, NULL), HJ_EINVAL);
+    hj_ls_free(phi);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -183,6 +224,7 @@ int main(void)
         cmocka_unit_test(measures),
         cmocka_unit_test_setup_teardown(writers, hj_test_mkdir, hj_test_rmdir),
         cmocka_unit_test(periodic_and_radius),
+        cmocka_unit_test(measure_exact_threads),
     };
     return cmocka_run_group_tests_name("hj_ls_measure", tests, NULL, NULL);
 }
