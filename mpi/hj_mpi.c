@@ -150,84 +150,77 @@ void hj_mpi_free(hj_mpi *m)
     if (m->comm != MPI_COMM_NULL) MPI_Comm_free(&m->comm);
 }
 
-/* Global index of local row r (dimension 1 fastest, as hj_ls_row). */
-static long long global_row(const hj_mpi *m, size_t r)
+int hj_mpi_sum(hj_mpi *m, hj_sum *s, double *sum, hj_error *err)
 {
-    const hj_ls_grid *l = &m->local;
-    long long gr = 0, w = 1;
-    for (int d = 1; d < l->dim; d++) {
-        const long i = (long)(r % (size_t)l->N[d]);
-        r /= (size_t)l->N[d];
-        gr += (long long)(i + l->origin[d]) * w;
-        w *= m->global.N[d];
-    }
-    return gr;
+    /* Normalized limbs 0..HJ_SUM_LIMBS-2 are below 2^32: their sum over
+     * the processes stays below size 2^32 < 2^63. */
+    if (m->size >= (1 << 30)) return hj_error_set(err, HJ_EINVAL, "mpi: %d processes overflow the exact sum", m->size);
+    const double t0 = MPI_Wtime();
+    hj_sum_normalize(s);
+    MPI_Allreduce(MPI_IN_PLACE, s->w, HJ_SUM_WORDS, MPI_INT64_T, MPI_SUM, m->comm);
+    s->pending = m->size;
+    hj_sum_normalize(s);
+    m->reduce_calls++;
+    m->reduce_seconds += MPI_Wtime() - t0;
+    if (sum) *sum = hj_sum_value(s);
+    return HJ_OK;
 }
 
 int hj_mpi_rowsum(hj_mpi *m, const double *part, double *sum, hj_error *err)
 {
-    const hj_ls_grid *l = &m->local;
-    if (l->rows > INT_MAX) return hj_error_set(err, HJ_EINVAL, "mpi: more than INT_MAX rows in a block");
-    const int nr = (int)l->rows;
-    int *counts = NULL, *displs = NULL;
-    long long *ids = malloc(sizeof(long long) * (l->rows ? l->rows : 1)), *all_ids = NULL;
-    double *all = NULL, *ordered = NULL;
-    int fail = !ids;
-    if (m->rank == 0) {
-        counts = malloc(sizeof(int) * (size_t)m->size);
-        displs = malloc(sizeof(int) * (size_t)m->size);
-        all_ids = malloc(sizeof(long long) * m->global.rows);
-        all = malloc(sizeof(double) * m->global.rows);
-        ordered = malloc(sizeof(double) * m->global.rows);
-        fail |= !counts || !displs || !all_ids || !all || !ordered;
-    }
-    MPI_Allreduce(MPI_IN_PLACE, &fail, 1, MPI_INT, MPI_LOR, m->comm);
-    double s = 0;
-    if (!fail) {
-        for (size_t r = 0; r < l->rows; r++) ids[r] = global_row(m, r);
-        MPI_Gather(&nr, 1, MPI_INT, counts, 1, MPI_INT, 0, m->comm);
-        if (m->rank == 0)
-            for (int k = 0, o = 0; k < m->size; o += counts[k], k++) displs[k] = o;
-        MPI_Gatherv(ids, nr, MPI_LONG_LONG, all_ids, counts, displs, MPI_LONG_LONG, 0, m->comm);
-        MPI_Gatherv(part, nr, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, m->comm);
-        if (m->rank == 0) {
-            for (size_t k = 0; k < m->global.rows; k++) ordered[all_ids[k]] = all[k];
-            for (size_t k = 0; k < m->global.rows; k++) s += ordered[k];
-        }
-        MPI_Bcast(&s, 1, MPI_DOUBLE, 0, m->comm);
-    }
-    free(ids), free(counts), free(displs), free(all_ids), free(all), free(ordered);
-    if (fail) return hj_error_set(err, HJ_ENOMEM, "mpi: out of memory for the row sums");
-    *sum = s;
-    return HJ_OK;
+    hj_sum s;
+    hj_sum_init(&s);
+    for (size_t r = 0; r < m->local.rows; r++) hj_sum_add(&s, part[r]);
+    return hj_mpi_sum(m, &s, sum, err);
 }
 
 int hj_mpi_norms(hj_mpi *m, const double *a, const double *b, double *max, double *avg, double *rms, hj_error *err)
 {
-    const hj_ls_grid *l = &m->local;
-    double *s1 = malloc(sizeof(double) * (2 * l->rows + 1)), mx = 0;
-    if (!s1) return hj_error_set(err, HJ_ENOMEM, "mpi: out of memory for the norms");
-    double *s2 = s1 + l->rows;
-    long i[HJ_LS_MAXDIM];
-    for (size_t r = 0; r < l->rows; r++) {
-        const size_t k = hj_ls_row(l, r, i);
-        double r1 = 0, r2 = 0;
-        for (long j = 0; j < l->N[0]; j++) {
-            const double e = fabs(a[k + (size_t)j] - (b ? b[k + (size_t)j] : 0.0));
-            mx = e > mx ? e : mx;
-            r1 += e, r2 += e * e;
-        }
-        s1[r] = r1, s2[r] = r2;
-    }
+    /* hj_ls_norms' parts on the block, then combined: the maximum by
+     * MPI_MAX, the exact sums by hj_mpi_sum; the same final operations. */
+    double mx = 0, t1, t2;
+    hj_sum s1, s2;
+    hj_sum_init(&s1), hj_sum_init(&s2);
+    hj_ls_norms_add(&m->local, a, b, &mx, &s1, &s2);
     MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, m->comm);
-    double t1, t2;
-    int rc = hj_mpi_rowsum(m, s1, &t1, err);
-    if (!rc) rc = hj_mpi_rowsum(m, s2, &t2, err);
-    free(s1);
+    int rc = hj_mpi_sum(m, &s1, &t1, err);
+    if (!rc) rc = hj_mpi_sum(m, &s2, &t2, err);
     if (rc) return rc;
     if (max) *max = mx;
     if (avg) *avg = t1 / (double)m->global.nodes;
     if (rms) *rms = sqrt(t2 / (double)m->global.nodes);
+    return HJ_OK;
+}
+
+int hj_mpi_measure(hj_mpi *m, double *phi, int periodic_dim, double *meas, hj_error *err)
+{
+    const hj_ls_grid *l = &m->local, *g = &m->global;
+    /* Checked alike on every process, before the collective ghost fill. */
+    if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
+    if (periodic_dim >= g->dim)
+        return hj_error_set(err, HJ_EINVAL, "measure: periodic dimension %d of a %d-D grid", periodic_dim, g->dim);
+    /* The cells of this block: lowest corner in the block, upper corner a
+     * global node (or, along periodic_dim, the first node's image). */
+    hj_ls_fill_ghosts(l, phi);
+    long ncell[HJ_LS_MAXDIM] = {0};
+    for (int d = 0; d < g->dim; d++) {
+        const long last = g->N[d] - (d == periodic_dim ? 0 : 1) - l->origin[d];
+        ncell[d] = last < l->N[d] ? last : l->N[d];
+    }
+    hj_sum s;
+    hj_sum_init(&s);
+    int rc = hj_ls_measure_add(l, phi, ncell, &s, err);
+    int fail = rc != HJ_OK;
+    MPI_Allreduce(MPI_IN_PLACE, &fail, 1, MPI_INT, MPI_LOR, m->comm);
+    if (fail) return rc ? rc : hj_error_set(err, HJ_EINVAL, "measure: failed on another process");
+    double total;
+    if ((rc = hj_mpi_sum(m, &s, &total, err))) return rc;
+    /* The cell of hj_ls_measure_periodic's extended grid along
+     * periodic_dim: (min + N dx - min) / N, as hj_ls_grid_init computes it. */
+    double cell = 1;
+    for (int d = 0; d < g->dim; d++)
+        cell *= d == periodic_dim ? (g->min[d] + (double)g->N[d] * g->dx[d] - g->min[d]) / (double)g->N[d] : g->dx[d];
+    *meas = total * cell;
     return HJ_OK;
 }
 

@@ -17,9 +17,13 @@
  * Every node of the result is then bitwise the one of the single-process
  * library, for any number of processes and any split.
  *
- * Sums (norms, set measures) are the one kind of global quantity whose
- * bits depend on the order: hj_mpi_rowsum adds per-row partials in global
- * row order on one process, so every process count gives the same bits.
+ * Sums (norms, set measures) are exact (hj_sum.h): each process adds its
+ * nodes into a fixed-point accumulator, the accumulators are added as
+ * integers (MPI_Allreduce of int64 limbs) and the exact total is rounded
+ * once.  So norms and measures are bitwise those of the single-process
+ * library functions (hj_ls_norms, hj_ls_measure_periodic), which sum the
+ * same way, on any number of processes; the cost is one reduction of
+ * HJ_SUM_WORDS (70) integers, whatever the grid size.
  *
  * Dimension 0 (contiguous, the kernel's rows) is never split.  Every
  * split axis needs at least HJ_LS_GHOST nodes per block.  Errors are
@@ -34,6 +38,8 @@
 
 #include "hj_error.h"
 #include "hj_ls_grid.h"
+#include "hj_ls_measure.h"
+#include "hj_sum.h"
 
 typedef struct {
     MPI_Comm comm;                 /* the Cartesian communicator */
@@ -63,18 +69,28 @@ int hj_mpi_init(hj_mpi *m, MPI_Comm comm, const hj_ls_grid *global, int nsplit, 
 void hj_mpi_free(hj_mpi *m);
 void hj_mpi_stats_reset(hj_mpi *m);
 
-/* The global sum of local per-row values part[0..local.rows-1] (row r of
- * the local grid, as hj_ls_row numbers them), added in global row order
- * on rank 0 and broadcast: the same bits on every process count.  Rank 0
- * holds one double and one index per global row (prod_{d>0} N[d]): fine
- * up to some 1e8 rows; a 100^6 grid (1e10 rows) would need the partials
- * combined by a tree of fixed shape over row blocks instead. */
+/* The exact global sum of the accumulators s of all processes: on
+ * return s holds it (normalized) on every process and *sum (if not NULL)
+ * its correctly rounded value.  Collective.  Exact for fewer than 2^30
+ * processes (HJ_EINVAL beyond). */
+int hj_mpi_sum(hj_mpi *m, hj_sum *s, double *sum, hj_error *err);
+
+/* The global sum of local per-row values part[0..local.rows-1], exact and
+ * correctly rounded (hj_mpi_sum): the same bits on every process count
+ * and every split. */
 int hj_mpi_rowsum(hj_mpi *m, const double *part, double *sum, hj_error *err);
 
 /* Maximum, average and root mean square of |a - b| (b may be NULL) over
- * the global grid: the maximum by MPI_MAX, the sums by hj_mpi_rowsum of
- * per-row sums (each row added in node order). */
+ * the global grid: the maximum by MPI_MAX, the sums exact (hj_ls_norms_add
+ * on the block, hj_mpi_sum): bitwise hj_ls_norms of the undivided grid. */
 int hj_mpi_norms(hj_mpi *m, const double *a, const double *b, double *max, double *avg, double *rms, hj_error *err);
+
+/* The measure of {phi < 0} (hj_ls_measure.h) of a grid of dimension 1..3,
+ * a full period along periodic_dim (< 0: none): bitwise
+ * hj_ls_measure_periodic of the undivided grid (so hj_reach_measure).
+ * Refills the ghosts of phi (collective: the cells on a block's upper face
+ * read the neighbour's nodes).  HJ_EINVAL for a dimension above 3. */
+int hj_mpi_measure(hj_mpi *m, double *phi, int periodic_dim, double *meas, hj_error *err);
 
 /* The global number of nodes with a < 0 (an exact integer sum; the set's
  * measure is this count times the cell volume). */

@@ -8,8 +8,9 @@
  * process count must reproduce bit for bit.  Rank 0 prints one TSV line
  * (with --header, the column names first): the run's size, steps, time per
  * step, the communication time and volume per step, and the global norms
- * and set size of the result (row-ordered sums: the same bits on every
- * process count).
+ * and set size and measure of the result (exact sums: with --serial the
+ * single-process library's hj_ls_norms and hj_reach_measure, otherwise
+ * hj_mpi_norms and hj_mpi_measure; the same bits on every process count).
  */
 #include <math.h>
 #include <stdio.h>
@@ -211,23 +212,35 @@ int main(int argc, char **argv)
     double wall = secs;
     MPI_Allreduce(MPI_IN_PLACE, v, 4, MPI_DOUBLE, MPI_SUM, m.comm);
     MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, m.comm);
-    double mx, avg, rms;
-    if (hj_mpi_norms(&m, phi, NULL, &mx, &avg, &rms, &err)) fail(m.rank, &err);
+    /* Norms and measure: the single-process library's functions in
+     * --serial, their MPI counterparts otherwise (exact sums: the same
+     * bits).  The measure of a 6-D set is not computed. */
+    int pdim = -1;
+    for (int d = 0; d < global.dim; d++)
+        if (global.bc[d].type == HJ_LS_BC_PERIODIC) pdim = d;
+    double mx, avg, rms, meas = NAN;
+    if (serial) {
+        hj_ls_norms(g, phi, NULL, &mx, &avg, &rms);
+        if (global.dim <= 3 && hj_reach_measure(g, phi, &meas, &err)) fail(m.rank, &err);
+    } else {
+        if (hj_mpi_norms(&m, phi, NULL, &mx, &avg, &rms, &err)) fail(m.rank, &err);
+        if (global.dim <= 3 && hj_mpi_measure(&m, phi, pdim, &meas, &err)) fail(m.rank, &err);
+    }
     const long neg = hj_mpi_count_negative(&m, phi);
     if (out && hj_mpi_write(&m, out, "phi", phi, &err)) fail(m.rank, &err);
     if (m.rank == 0) {
         if (header)
             printf("case\tranks\tsplit\tnodes\tsteps\tseconds\tstep_ms\tcomm_frac\thalo_frac\thalo_bytes_per_rank_step\t"
-                   "max\tavg\trms\tnegative\n");
+                   "max\tavg\trms\tnegative\tmeasure\n");
         char sp[64] = "none";
         if (!serial && m.size > 1) {
             int len = 0;
             for (int d = 0; d < global.dim; d++)
                 if (m.p[d] > 1) len += snprintf(sp + len, sizeof sp - (size_t)len, "%s%d:%d", len ? "," : "", d, m.p[d]);
         }
-        printf("%s\t%d\t%s\t%zu\t%ld\t%.3f\t%.3f\t%.3f\t%.3f\t%.0f\t%.17g\t%.17g\t%.17g\t%ld\n", cases[rp.which], m.size,
+        printf("%s\t%d\t%s\t%zu\t%ld\t%.3f\t%.3f\t%.3f\t%.3f\t%.0f\t%.17g\t%.17g\t%.17g\t%ld\t%.17g\n", cases[rp.which], m.size,
                serial ? "serial" : sp, global.nodes, steps, wall, 1e3 * wall / (double)(steps ? steps : 1),
-               v[0] / v[2], v[3] / v[2], v[1] / m.size / (double)(steps ? steps : 1), mx, avg, rms, neg);
+               v[0] / v[2], v[3] / v[2], v[1] / m.size / (double)(steps ? steps : 1), mx, avg, rms, neg, meas);
     }
     hj_ls_free(phi);
     hj_mpi_free(&m);

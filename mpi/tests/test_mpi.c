@@ -80,10 +80,77 @@ static void halo_neumann(void **state)
     check_halo(1, (const int[]){1});
 }
 
-/* Norms and row sums: the same bits as per-row sums added in row order on
- * the undivided grid, whatever the process count; the count of negative
- * nodes exact. */
-static void sums(void **state)
+/* A field of wide dynamic range (1e-12 to 1e6): sums in different
+ * orders differ in their last bits. */
+static double wide(const double *x, void *ctx)
+{
+    (void)ctx;
+    const double f = field(x, NULL);
+    return f * pow(10.0, 6 * sin(7 * x[0] + 5 * x[1] + 3 * x[2]) * sin(7 * x[0] + 5 * x[1] + 3 * x[2]) - 6);
+}
+
+/* Norms, measures and row sums over processes: bitwise the single-process
+ * library's functions on the undivided grid (hj_ls_norms, hj_ls_measure,
+ * hj_ls_measure_periodic), for each split; the count of negative nodes
+ * exact. */
+static void check_sums(int nsplit, const int *axes)
+{
+    hj_ls_grid g;
+    grid3(&g);
+    hj_mpi m;
+    hj_error err;
+    assert_int_equal(hj_mpi_init(&m, MPI_COMM_WORLD, &g, nsplit, axes, &err), 0);
+    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&m.local), *c = hj_ls_alloc(&g), *d = hj_ls_alloc(&m.local);
+    hj_ls_fill(&g, a, wide, NULL);
+    hj_ls_fill(&m.local, b, wide, NULL);
+    hj_ls_fill(&g, c, field, NULL);
+    hj_ls_fill(&m.local, d, field, NULL);
+    long neg = 0, i[3];
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, i);
+        for (long j = 0; j < g.N[0]; j++) neg += a[k + (size_t)j] < 0;
+    }
+    double want[3], got[3];
+    hj_ls_norms(&g, a, c, &want[0], &want[1], &want[2]);
+    assert_int_equal(hj_mpi_norms(&m, b, d, &got[0], &got[1], &got[2], &err), 0);
+    assert_memory_equal(got, want, sizeof want);
+    hj_ls_norms(&g, a, NULL, &want[0], &want[1], &want[2]);
+    assert_int_equal(hj_mpi_norms(&m, b, NULL, &got[0], &got[1], &got[2], &err), 0);
+    assert_memory_equal(got, want, sizeof want);
+    assert_int_equal(hj_mpi_count_negative(&m, b), neg);
+    /* Measures: without and with the periodic closure along axis 2. */
+    assert_int_equal(hj_ls_measure(&g, c, &want[0], NULL), 0);
+    assert_int_equal(hj_ls_measure_periodic(&g, c, 2, &want[1], NULL), 0);
+    assert_int_equal(hj_mpi_measure(&m, d, -1, &got[0], &err), 0);
+    assert_int_equal(hj_mpi_measure(&m, d, 2, &got[1], &err), 0);
+    assert_memory_equal(got, want, 2 * sizeof(double));
+    assert_true(want[1] > want[0]);
+    hj_ls_free(a), hj_ls_free(b), hj_ls_free(c), hj_ls_free(d);
+    hj_mpi_free(&m);
+}
+
+static void sums_default(void **state)
+{
+    (void)state;
+    check_sums(0, NULL);
+}
+
+static void sums_periodic(void **state)
+{
+    (void)state;
+    check_sums(1, (const int[]){2});
+}
+
+static void sums_neumann(void **state)
+{
+    (void)state;
+    check_sums(1, (const int[]){1});
+}
+
+/* hj_mpi_sum and hj_mpi_rowsum: adversarial terms spread over the
+ * processes (1e16 on one, -1e16 on another, subnormals, huge cancelling
+ * pairs) give the correctly rounded sum of all terms, on every process. */
+static void exact_reduction(void **state)
 {
     (void)state;
     hj_ls_grid g;
@@ -91,28 +158,31 @@ static void sums(void **state)
     hj_mpi m;
     hj_error err;
     assert_int_equal(hj_mpi_init(&m, MPI_COMM_WORLD, &g, 0, NULL, &err), 0);
-    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&m.local);
-    hj_ls_fill(&g, a, field, NULL);
-    hj_ls_fill(&m.local, b, field, NULL);
-    double s1 = 0, s2 = 0, mx = 0;
-    long neg = 0, i[3];
-    for (size_t r = 0; r < g.rows; r++) {
-        const size_t k = hj_ls_row(&g, r, i);
-        double r1 = 0, r2 = 0;
-        for (long j = 0; j < g.N[0]; j++) {
-            const double e = fabs(a[k + (size_t)j]);
-            r1 += e, r2 += e * e, mx = e > mx ? e : mx, neg += a[k + (size_t)j] < 0;
-        }
-        s1 += r1, s2 += r2;
+    enum { K = 7 };
+    const double terms[K] = {1e16, 1, -1e16, 0x1p-1074, 1e300, -1e300, 0.1};
+    /* Term k goes to process k mod size; every process knows them all. */
+    hj_sum s;
+    hj_sum_init(&s);
+    for (int k = 0; k < K; k++)
+        if (k % m.size == m.rank) hj_sum_add(&s, terms[k]);
+    double got;
+    assert_int_equal(hj_mpi_sum(&m, &s, &got, &err), 0);
+    const double want = hj_sum_array(terms, K); /* 1.1 + 2^-1074, rounded: 1.1 */
+    assert_memory_equal(&got, &want, sizeof want);
+    assert_true(want == 1 + 0.1);
+    /* Row sums: part[r] = the global row index times 0.1, so the total is
+     * the correctly rounded sum over the global rows. */
+    double *part = malloc(sizeof(double) * (m.local.rows + 1)), *all = malloc(sizeof(double) * g.rows);
+    long gi[3];
+    for (size_t r = 0; r < m.local.rows; r++) {
+        hj_ls_row(&m.local, r, gi);
+        part[r] = 0.1 * (double)((gi[1] + m.local.origin[1]) + g.N[1] * (gi[2] + m.local.origin[2]));
     }
-    double m1, avg, rms;
-    assert_int_equal(hj_mpi_norms(&m, b, NULL, &m1, &avg, &rms, &err), 0);
-    const double want_avg = s1 / (double)g.nodes, want_rms = sqrt(s2 / (double)g.nodes);
-    assert_memory_equal(&m1, &mx, sizeof mx);
-    assert_memory_equal(&avg, &want_avg, sizeof avg);
-    assert_memory_equal(&rms, &want_rms, sizeof rms);
-    assert_int_equal(hj_mpi_count_negative(&m, b), neg);
-    hj_ls_free(a), hj_ls_free(b);
+    for (size_t r = 0; r < g.rows; r++) all[r] = 0.1 * (double)r;
+    assert_int_equal(hj_mpi_rowsum(&m, part, &got, &err), 0);
+    const double want_rows = hj_sum_array(all, (long)g.rows);
+    assert_memory_equal(&got, &want_rows, sizeof got);
+    free(part), free(all);
     hj_mpi_free(&m);
 }
 
@@ -194,7 +264,9 @@ int main(int argc, char **argv)
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     if (rank != 0 && !freopen("/dev/null", "w", stdout)) return 1;
     const struct CMUnitTest tests[] = {cmocka_unit_test(halo_default), cmocka_unit_test(halo_periodic),
-                                       cmocka_unit_test(halo_neumann), cmocka_unit_test(sums),
+                                       cmocka_unit_test(halo_neumann), cmocka_unit_test(sums_default),
+                                       cmocka_unit_test(sums_periodic), cmocka_unit_test(sums_neumann),
+                                       cmocka_unit_test(exact_reduction),
                                        cmocka_unit_test(write_files), cmocka_unit_test(refused)};
     int fails = cmocka_run_group_tests_name("hj_mpi", tests, NULL, NULL);
     MPI_Allreduce(MPI_IN_PLACE, &fails, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
