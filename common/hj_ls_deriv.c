@@ -24,6 +24,11 @@ const char *hj_ls_scheme_name(int scheme)
     return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? names[scheme] : NULL;
 }
 
+/* The reach of first_differences(kmin, kmax) below: max(-kmin, kmax + 1). */
+static const int ghosts[HJ_LS_NSCHEMES] = {1, 2, 3, 3, 3, 3, 2};
+
+int hj_ls_scheme_ghost(int scheme) { return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? ghosts[scheme] : HJ_LS_GHOST; }
+
 int hj_ls_scheme_order(int scheme) { return scheme >= 0 && scheme < HJ_LS_NSCHEMES ? orders[scheme] : 0; }
 
 /* AVX2 clone where the CPU has it (no FMA: results are bitwise the same
@@ -330,7 +335,7 @@ int hj_ls_upwind(const hj_ls_grid *g, int scheme, double *data, int d, double *d
     int rc = check_dim(g, d, err);
     if (rc) return rc;
     if (!hj_ls_scheme_name(scheme)) return hj_error_set(err, HJ_EINVAL, "unknown upwind scheme %d", scheme);
-    hj_ls_fill_ghosts(g, data);
+    hj_ls_fill_ghosts_width(g, data, hj_ls_scheme_ghost(scheme));
     const long n = g->N[0];
     int fail = 0;
 #ifdef _OPENMP
@@ -359,7 +364,7 @@ int hj_ls_centered_first(const hj_ls_grid *g, double *data, int d, double *out, 
 {
     int rc = check_dim(g, d, err);
     if (rc) return rc;
-    hj_ls_fill_ghosts(g, data);
+    hj_ls_fill_ghosts_width(g, data, 1); /* centered: one layer (corners included) */
     const ptrdiff_t s = g->stride[d];
     const double f = 0.5 / g->dx[d];
 #ifdef _OPENMP
@@ -380,7 +385,7 @@ int hj_ls_hessian(const hj_ls_grid *g, double *data, int a, int b, double *out, 
     int rc = check_dim(g, a, err);
     if (!rc) rc = check_dim(g, b, err);
     if (rc) return rc;
-    hj_ls_fill_ghosts(g, data);
+    hj_ls_fill_ghosts_width(g, data, 1); /* centered: one layer (corners included) */
     const ptrdiff_t sa = g->stride[a], sb = g->stride[b];
     const double fa = 1 / (g->dx[a] * g->dx[a]), fab = 0.25 / (g->dx[a] * g->dx[b]);
 #ifdef _OPENMP
@@ -403,7 +408,7 @@ int hj_ls_hessian(const hj_ls_grid *g, double *data, int a, int b, double *out, 
 int hj_ls_laplacian(const hj_ls_grid *g, double *data, double *out, hj_error *err)
 {
     (void)err;
-    hj_ls_fill_ghosts(g, data);
+    hj_ls_fill_ghosts_width(g, data, 1); /* centered: one layer (corners included) */
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 32)
 #endif
@@ -448,7 +453,7 @@ void hj_ls_curvature_at(const hj_ls_grid *g, const double *p, double *kappa, dou
 int hj_ls_curvature(const hj_ls_grid *g, double *data, double *kappa, double *grad_mag, hj_error *err)
 {
     (void)err;
-    hj_ls_fill_ghosts(g, data);
+    hj_ls_fill_ghosts_width(g, data, 1); /* centered: one layer (corners included) */
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 32)
 #endif

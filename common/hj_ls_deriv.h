@@ -53,6 +53,11 @@ enum {
     HJ_LS_NSCHEMES
 };
 
+/* The ghost layers a scheme's stencil reads on each side: 1 for first
+ * order, 2 for ENO2 and WENO3, 3 for ENO3 and WENO5 (HJ_LS_GHOST, also
+ * for an unknown scheme).  What a distributed grid exchanges per fill. */
+int hj_ls_scheme_ghost(int scheme);
+
 /* The toolbox name of a scheme ("upwindFirstENO3a", ...), or NULL. */
 const char *hj_ls_scheme_name(int scheme);
 /* Formal order of accuracy on smooth data. */

@@ -170,8 +170,11 @@ static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc 
     }
 }
 
-void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a)
+void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a) { hj_ls_fill_ghosts_width(g, a, HJ_LS_GHOST); }
+
+void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 {
+    width = width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
     for (int d = 0; d < g->dim; d++) {
         /* Lines along d over the full extent of the other dimensions, so
          * that corners take the ghosts already filled in earlier dimensions. */
@@ -188,7 +191,7 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a)
             }
             fill_line(a + k, g->stride[d], g->N[d], g->dx[d], &g->bc[d]);
         }
-        if (g->dist) g->dist->halo(g, a, d, g->dist->ctx);
+        if (g->dist) g->dist->halo(g, a, d, width, g->dist->ctx);
     }
 }
 

@@ -68,17 +68,19 @@ typedef struct {
     const struct hj_ls_dist *dist;
 } hj_ls_grid;
 
-/* The hooks of a distributed grid.  halo(g, a, d, ctx) overwrites the
- * ghosts of dimension d on faces shared with a neighbour; it is called by
- * hj_ls_fill_ghosts after the boundary conditions of dimension d are
- * applied, dimension by dimension, so corner ghosts are those of the
- * undivided grid.  reduce(v, n, op, ctx) replaces v[0..n-1] by the
+/* The hooks of a distributed grid.  halo(g, a, d, width, ctx) overwrites
+ * the width (1..HJ_LS_GHOST) ghost layers of dimension d nearest each face
+ * shared with a neighbour; it is called by hj_ls_fill_ghosts_width after
+ * the boundary conditions of dimension d are applied, dimension by
+ * dimension, so corner ghosts are those of the undivided grid.  Layers
+ * beyond width keep the boundary condition's values there: only a stencil
+ * at most width wide may read them.  reduce(v, n, op, ctx) replaces v[0..n-1] by the
  * maximum (HJ_LS_REDUCE_MAX) or minimum over all blocks: exact in any
  * order, so the CFL bound, Lax-Friedrichs ranges and blow-up and
  * convergence tests keep the bits of the undivided grid. */
 enum { HJ_LS_REDUCE_MAX, HJ_LS_REDUCE_MIN };
 typedef struct hj_ls_dist {
-    void (*halo)(const hj_ls_grid *g, double *a, int d, void *ctx);
+    void (*halo)(const hj_ls_grid *g, double *a, int d, int width, void *ctx);
     void (*reduce)(double *v, int n, int op, void *ctx);
     void *ctx;
 } hj_ls_dist;
@@ -132,6 +134,11 @@ size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i);
 
 /* Fill the ghost layer of a according to the grid's boundary conditions. */
 void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
+
+/* The same for a stencil that reads width (1..HJ_LS_GHOST) ghost layers:
+ * on a distributed grid only those are exchanged with the neighbours (the
+ * boundary conditions fill all layers, as hj_ls_fill_ghosts). */
+void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
 
 /* a(x) = f(x, ctx) at every interior node.  Rows are filled in parallel
  * with OpenMP, so f must be thread-safe (as every callback of the kernel);

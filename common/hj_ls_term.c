@@ -260,7 +260,7 @@ static int convection_eval(const hj_ls_term *term, double t, double *y, double *
     const hj_ls_convection *c = (const hj_ls_convection *)term;
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
-    hj_ls_fill_ghosts(g, y);
+    hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     conv_pass ps;
     ps.c = c;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
@@ -410,7 +410,7 @@ static int godunov_eval(const hj_ls_grid *g, godunov_term *gt, int eps_mode, dou
                         double *bound, const char *what, hj_error *err)
 {
     if (!hj_ls_scheme_name(gt->scheme)) return hj_error_set(err, HJ_EINVAL, "%s: unknown scheme %d", what, gt->scheme);
-    hj_ls_fill_ghosts(g, y);
+    hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(gt->scheme));
     weno_eps(g, eps_mode, gt->scheme, y, gt->eps);
     double m, dm[HJ_LS_MAXDIM];
     int rc = for_rows(g, (size_t)(2 * g->dim + HJ_LS_ROW_WORK + 1) * (size_t)g->N[0], godunov_row, gt, t, y, ydot, &m,
@@ -625,7 +625,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks (per node or per row)");
     if (c->dissipation < HJ_LS_GLF || c->dissipation > HJ_LS_LLLF)
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown dissipation %d", c->dissipation);
-    hj_ls_fill_ghosts(g, y);
+    hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     lf_pass ps;
     ps.lf = c;
     ps.cache = c->dissipation != HJ_LS_LLLF ? c->work : NULL;
@@ -753,7 +753,7 @@ static int point_eval(const point_term *pt, double t, double *y, double *ydot, d
                       hj_error *err)
 {
     const hj_ls_grid *g = pt->grid;
-    hj_ls_fill_ghosts(g, y);
+    hj_ls_fill_ghosts_width(g, y, 1); /* centered second differences (corners included) or none */
     double m;
     int rc = for_rows(g, (size_t)g->N[0], point_row, pt, t, y, ydot, &m, NULL, what, err);
     if (rc) return rc;

@@ -9,14 +9,13 @@
 #include <string.h>
 #include <unistd.h>
 
-/* Copy HJ_LS_GHOST layers of dimension d starting at ghosted index L
- * (0 = the first low ghost) between a and a packed slab: the layers span
- * the full ghosted extent of the other dimensions, in chunks of
- * HJ_LS_GHOST stride[d] contiguous doubles, one per index of the
- * dimensions above d. */
-static void slab_copy(const hj_ls_grid *g, double *a, int d, long L, double *buf, int pack)
+/* Copy w layers of dimension d starting at ghosted index L (0 = the
+ * outermost low ghost) between a and a packed slab: the layers span the
+ * full ghosted extent of the other dimensions, in chunks of w stride[d]
+ * contiguous doubles, one per index of the dimensions above d. */
+static void slab_copy(const hj_ls_grid *g, double *a, int d, long L, long w, double *buf, int pack)
 {
-    const size_t chunk = (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
+    const size_t chunk = (size_t)w * (size_t)g->stride[d];
     const size_t step = (size_t)g->stride[d] * (size_t)g->ext[d];
     const size_t nouter = g->total / step;
     for (size_t o = 0; o < nouter; o++) {
@@ -26,24 +25,28 @@ static void slab_copy(const hj_ls_grid *g, double *a, int d, long L, double *buf
     }
 }
 
-static void halo(const hj_ls_grid *g, double *a, int d, void *ctx)
+/* The width layers nearest each shared face of dimension d: as many as
+ * the stencil about to run reads (hj_ls_fill_ghosts_width). */
+static void halo(const hj_ls_grid *g, double *a, int d, int width, void *ctx)
 {
     hj_mpi *m = ctx;
     if (m->p[d] < 2) return; /* undivided: the boundary condition (or periodic wrap) holds */
     const double t0 = MPI_Wtime();
-    const long n = g->N[d], G = HJ_LS_GHOST;
-    const size_t len = (size_t)G * g->total / (size_t)g->ext[d];
+    const long n = g->N[d], G = HJ_LS_GHOST, w = width < 1 ? 1 : width > G ? G : width;
+    const size_t len = (size_t)w * g->total / (size_t)g->ext[d];
     double *sbuf = m->buf, *rbuf = m->buf + m->slab_max;
-    /* Low interior layers to the low neighbour; its high ghosts are ours. */
-    slab_copy(g, a, d, G, sbuf, 1);
+    /* The first w interior layers to the low neighbour; its next-to-face
+     * high ghosts are ours. */
+    slab_copy(g, a, d, G, w, sbuf, 1);
     MPI_Sendrecv(sbuf, (int)len, MPI_DOUBLE, m->lo[d], 2 * d, rbuf, (int)len, MPI_DOUBLE, m->hi[d], 2 * d, m->comm,
                  MPI_STATUS_IGNORE);
-    if (m->hi[d] != MPI_PROC_NULL) slab_copy(g, a, d, G + n, rbuf, 0);
-    /* High interior layers to the high neighbour, into its low ghosts. */
-    slab_copy(g, a, d, n, sbuf, 1);
+    if (m->hi[d] != MPI_PROC_NULL) slab_copy(g, a, d, G + n, w, rbuf, 0);
+    /* The last w interior layers to the high neighbour, into its low
+     * ghosts next to the face. */
+    slab_copy(g, a, d, G + n - w, w, sbuf, 1);
     MPI_Sendrecv(sbuf, (int)len, MPI_DOUBLE, m->hi[d], 2 * d + 1, rbuf, (int)len, MPI_DOUBLE, m->lo[d], 2 * d + 1,
                  m->comm, MPI_STATUS_IGNORE);
-    if (m->lo[d] != MPI_PROC_NULL) slab_copy(g, a, d, 0, rbuf, 0);
+    if (m->lo[d] != MPI_PROC_NULL) slab_copy(g, a, d, G - w, w, rbuf, 0);
     m->halo_bytes += (double)len * sizeof(double) * ((m->lo[d] != MPI_PROC_NULL) + (m->hi[d] != MPI_PROC_NULL));
     m->halo_calls++;
     m->halo_seconds += MPI_Wtime() - t0;

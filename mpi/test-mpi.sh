@@ -1,18 +1,19 @@
 #!/bin/bash
 # test-mpi.sh PROG DIR [UNIT] -- the MPI runs against the single-process
 # library.  UNIT (hj_mpi's cmocka tests: halo fill against the undivided
-# grid, row-ordered sums, MPI-IO files) runs first on 1, 2, 3, 4 processes.
+# grid for halo widths 1-3, exact sums against the library's norms and
+# measures, MPI-IO files) runs first on 1, 2, 3, 4 processes.
 #
 # For air3D (NX = 26, t = 2.8: about 185 steps) and the 6-D double
 # integrators (5^4 x 9^2 nodes, tau = 0.1: 3 steps), run the undivided library
 # (--serial, two OpenMP threads) and then 1, 2, 3, 4 processes (one
 # thread each; oversubscribed on a 2-core machine): every result file must
 # equal the reference byte for byte, and so must the printed norms and set
-# size (row-ordered sums).  air3D is also split along psi alone (periodic
+# size and measure (exact sums).  air3D is also split along psi alone (periodic
 # across processes) and along y alone; the 6-D case along the default two
 # outermost axes; air3D at accuracy high under the toolbox's CFL rule and
-# WENO5 epsilon on 3 and 4 processes.  Bad decompositions must fail with
-# one message.
+# WENO5 epsilon on 3 and 4 processes; first order (halo 1 layer wide) and
+# WENO5 (3 layers) runs.  Bad decompositions must fail with one message.
 set -u
 prog=$1 dir=$2 unit=${3:+$(realpath "$3")}
 mkdir -p "$dir"
@@ -64,6 +65,12 @@ check_case air3d "--case air3d --N 26" vtk "1 " "2 " "3 " "4 " "2 2" "3 2" "4 2"
 # epsilon: two more global reductions.
 check_case air3d-toolbox "--case air3d --N 26 --tmax 0.5 --accuracy high --toolbox-rules" vtk "3 " "4 2"
 check_case di6 "--case di6 --N 5 --tmax 0.1" raw "1 " "2 " "3 " "4 "
+# The halo is as wide as the stencil: 1 layer for first order (di6
+# --first-order, air3D low), 2 for ENO2 (di6 and air3D above), 3 for ENO3
+# (air3D high above) and WENO5 (air3D veryHigh).
+check_case di6-first "--case di6 --N 5 --tmax 0.1 --first-order" raw "2 " "4 "
+check_case air3d-first "--case air3d --N 26 --tmax 0.5 --accuracy low" vtk "3 " "4 2"
+check_case air3d-weno5 "--case air3d --N 26 --tmax 0.3 --accuracy veryHigh" vtk "2 " "4 2"
 
 # Refused decompositions: axis 0 holds the rows; blocks thinner than the
 # ghost width (9 nodes over 4 processes along one axis).

@@ -239,12 +239,14 @@ static void counts(void **state)
 typedef struct {
     int calls[2];
     double seen_ghost; /* a ghost of dimension d when halo(d) ran */
+    int width;         /* the width asked for */
 } fake_dist;
 
-static void fake_halo(const hj_ls_grid *g, double *a, int d, void *ctx)
+static void fake_halo(const hj_ls_grid *g, double *a, int d, int width, void *ctx)
 {
     fake_dist *f = ctx;
     f->calls[d]++;
+    f->width = width;
     const long i[2] = {d == 0 ? -1 : 0, d == 1 ? -1 : 0};
     f->seen_ghost = a[hj_ls_index(g, i)];
     a[hj_ls_index(g, i)] = 100 + d; /* the exchange overrides the boundary condition */
@@ -279,7 +281,7 @@ static void dist_hooks(void **state)
         hj_ls_coord(&w, (const long[]){2, j + 6}, y);
         assert_memory_equal(x, y, sizeof x);
     }
-    fake_dist f = {{0, 0}, 0};
+    fake_dist f = {{0, 0}, 0, 0};
     const hj_ls_dist dist = {fake_halo, fake_reduce, &f};
     g.dist = &dist;
     double *a = hj_ls_alloc(&g);
@@ -290,6 +292,14 @@ static void dist_hooks(void **state)
     assert_true(f.seen_ghost == 6); /* dimension 1's Dirichlet value was in place */
     assert_true(a[hj_ls_index(&g, (const long[]){-1, 0})] == 100);
     assert_true(a[hj_ls_index(&g, (const long[]){0, -1})] == 101);
+    assert_int_equal(f.width, HJ_LS_GHOST);
+    /* The width passes to the hook, clamped to 1..HJ_LS_GHOST. */
+    hj_ls_fill_ghosts_width(&g, a, 2);
+    assert_int_equal(f.width, 2);
+    hj_ls_fill_ghosts_width(&g, a, 0);
+    assert_int_equal(f.width, 1);
+    hj_ls_fill_ghosts_width(&g, a, 9);
+    assert_int_equal(f.width, HJ_LS_GHOST);
     hj_ls_grid_reduce(&g, v, 2, HJ_LS_REDUCE_MIN);
     assert_true(v[0] == -7 && v[1] == -7);
     hj_ls_free(a);

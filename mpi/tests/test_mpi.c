@@ -28,9 +28,11 @@ static double field(const double *x, void *ctx)
     return sin(3 * x[0] + 1) * cos(2 * x[1]) + 0.3 * sin(2.1 * x[2]) - 0.1;
 }
 
-/* Every ghosted node of the block after hj_ls_fill_ghosts (halo exchange
- * and outer boundary conditions, corners included) equals the undivided
- * grid's node at the same global index, bit for bit. */
+/* Every ghosted node of the block within w layers of the interior after
+ * hj_ls_fill_ghosts_width(w) (halo exchange and outer boundary
+ * conditions, corners included) equals the undivided grid's node at the
+ * same global index, bit for bit, for w = 1, 2, 3; and the halo volume is
+ * w times that of one layer. */
 static void check_halo(int nsplit, const int *axes)
 {
     hj_ls_grid g;
@@ -44,19 +46,25 @@ static void check_halo(int nsplit, const int *axes)
     assert_non_null(b);
     hj_ls_fill(&g, a, field, NULL);
     hj_ls_fill_ghosts(&g, a);
-    hj_ls_fill(l, b, field, NULL);
-    hj_ls_fill_ghosts(l, b);
-    long bad = 0;
-    long i[3];
-    for (i[2] = -HJ_LS_GHOST; i[2] < l->N[2] + HJ_LS_GHOST; i[2]++)
-        for (i[1] = -HJ_LS_GHOST; i[1] < l->N[1] + HJ_LS_GHOST; i[1]++)
-            for (i[0] = -HJ_LS_GHOST; i[0] < l->N[0] + HJ_LS_GHOST; i[0]++) {
-                const long gi[3] = {i[0] + l->origin[0], i[1] + l->origin[1], i[2] + l->origin[2]};
-                const double x = b[hj_ls_index(l, i)], y = a[hj_ls_index(&g, gi)];
-                bad += memcmp(&x, &y, sizeof x) != 0;
-            }
-    MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-    assert_int_equal(bad, 0);
+    double bytes1 = 0;
+    for (int w = 1; w <= HJ_LS_GHOST; w++) {
+        hj_ls_fill(l, b, field, NULL); /* ghosts back to zero */
+        hj_mpi_stats_reset(&m);
+        hj_ls_fill_ghosts_width(l, b, w);
+        if (w == 1) bytes1 = m.halo_bytes;
+        assert_true(m.halo_bytes == w * bytes1);
+        long bad = 0;
+        long i[3];
+        for (i[2] = -w; i[2] < l->N[2] + w; i[2]++)
+            for (i[1] = -w; i[1] < l->N[1] + w; i[1]++)
+                for (i[0] = -w; i[0] < l->N[0] + w; i[0]++) {
+                    const long gi[3] = {i[0] + l->origin[0], i[1] + l->origin[1], i[2] + l->origin[2]};
+                    const double x = b[hj_ls_index(l, i)], y = a[hj_ls_index(&g, gi)];
+                    bad += memcmp(&x, &y, sizeof x) != 0;
+                }
+        MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+        assert_int_equal(bad, 0);
+    }
     hj_ls_free(a), hj_ls_free(b);
     hj_mpi_free(&m);
 }
