@@ -5,7 +5,9 @@
  * and reinitTest (sections 2.2.1, 2.7.3: |grad phi| = 1, equation (4),
  * and how far reinitialization shifted the front).
  *
- * Sums are serial, in row order.  Nothing here prints or exits.
+ * Means over grid nodes are exact sums (hj_sum.h), rounded once; the mean
+ * distance of crossings is summed in crossing order.  Nothing here prints
+ * or exits.
  */
 #ifndef HJ_LS_FRONT_H
 #define HJ_LS_FRONT_H

@@ -58,7 +58,7 @@ int hj_ls_signed_distance(const hj_ls_grid *g, double *data, double t_max, doubl
         t = st.t;
         n++;
         double avg;
-        hj_ls_norms(g, data, prev, NULL, &avg, NULL); /* row order: thread independent */
+        hj_ls_norms(g, data, prev, NULL, &avg, NULL); /* exact sum: thread independent */
         done = avg < error_max * h;
     }
     hj_ls_free(initial), hj_ls_free(prev);
