@@ -34,15 +34,17 @@ void hj_sum_add(hj_sum *s, double x)
         s->w[frac ? HJ_SUM_NAN : bits >> 63 ? HJ_SUM_NINF : HJ_SUM_PINF]++;
         return;
     }
-    if (E == 0 && frac == 0) return; /* +-0 */
     /* x = +-m 2^(p - 1074), m < 2^53: m 2^(p mod 32) in three 32-bit
-     * pieces at limb p / 32. */
+     * pieces at limb p / 32 (+-0 adds zeros).  The sign without a branch:
+     * (v ^ neg) - neg is v or -v. */
     const uint64_t m = E ? frac | (uint64_t)1 << 52 : frac;
     const int p = E ? E - 1 : 0, i = p >> 5, sh = p & 31;
     const uint64_t rest = m >> (32 - sh);
+    const int64_t neg = -(int64_t)(bits >> 63);
     const int64_t p0 = (int64_t)((m << sh) & MASK32), p1 = (int64_t)(rest & MASK32), p2 = (int64_t)(rest >> 32);
-    if (bits >> 63) s->w[i] -= p0, s->w[i + 1] -= p1, s->w[i + 2] -= p2;
-    else s->w[i] += p0, s->w[i + 1] += p1, s->w[i + 2] += p2;
+    s->w[i] += (p0 ^ neg) - neg;
+    s->w[i + 1] += (p1 ^ neg) - neg;
+    s->w[i + 2] += (p2 ^ neg) - neg;
     if (++s->pending >= PENDING_MAX) hj_sum_normalize(s);
 }
 
