@@ -114,10 +114,15 @@ static void check_sums(int nsplit, const int *axes)
     hj_ls_fill(&g, c, field, NULL);
     hj_ls_fill(&m.local, d, field, NULL);
     long neg = 0, i[3];
+    double fwd = 0, bwd = 0; /* plain sums of |a| in node order and reversed */
     for (size_t r = 0; r < g.rows; r++) {
-        const size_t k = hj_ls_row(&g, r, i);
-        for (long j = 0; j < g.N[0]; j++) neg += a[k + (size_t)j] < 0;
+        const size_t k = hj_ls_row(&g, r, i), kb = hj_ls_row(&g, g.rows - 1 - r, i);
+        for (long j = 0; j < g.N[0]; j++) {
+            neg += a[k + (size_t)j] < 0;
+            fwd += fabs(a[k + (size_t)j]), bwd += fabs(a[kb + (size_t)(g.N[0] - 1 - j)]);
+        }
     }
+    assert_true(fwd != bwd); /* the order matters for a plain sum of this field */
     double want[3], got[3];
     hj_ls_norms(&g, a, c, &want[0], &want[1], &want[2]);
     assert_int_equal(hj_mpi_norms(&m, b, d, &got[0], &got[1], &got[2], &err), 0);
