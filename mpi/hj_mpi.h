@@ -7,10 +7,13 @@
  * the unchanged kernel (terms, integrators, hj_reach) on it.  The local
  * grid's hooks (hj_ls_dist, hj_ls_grid.h) make the kernel distributed:
  *   - ghost fill: after the boundary conditions of dimension d, the
- *     HJ_LS_GHOST layers of each face shared with a neighbour are
- *     exchanged (one MPI_Sendrecv per direction), over the full ghosted
- *     extent of the other dimensions, so corners match the undivided grid;
- *     periodic dimensions wrap across processes;
+ *     layers of each face shared with a neighbour that the stencil about
+ *     to run reads (hj_ls_fill_ghosts_width: 1 for first order and
+ *     centred terms, 2 for ENO2 and WENO3, 3 = HJ_LS_GHOST for ENO3, WENO5
+ *     and a plain hj_ls_fill_ghosts) are exchanged (one MPI_Sendrecv per
+ *     direction), over the full ghosted extent of the other dimensions, so
+ *     corners match the undivided grid; periodic dimensions wrap across
+ *     processes; halo_bytes counts what was sent;
  *   - maxima and minima (the CFL bound, Lax-Friedrichs ranges, WENO
  *     epsilons, blow-up and convergence tests) by MPI_Allreduce, exact in
  *     any order.
