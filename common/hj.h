@@ -19,6 +19,7 @@
 #include "hj_sys.h"
 #include "hj_io.h"
 #include "hj_cli.h"
+#include "hj_sum.h"
 
 /* Fast sweeping for the Eikonal equation: paper 1's solver, the general
  * solver (hj_eik: 2-D/3-D, orders 1/3/5, factored point sources), speed
