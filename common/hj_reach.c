@@ -499,6 +499,8 @@ static int check_problem(const hj_reach_problem *pb, hj_error *err)
     if (!(pb->discount >= 0) || !isfinite(pb->discount))
         return hj_error_set(err, HJ_EINVAL, "reach: the discount must be finite and >= 0, got %g", pb->discount);
     if (!(pb->conv_tol >= 0)) return hj_error_set(err, HJ_EINVAL, "reach: the convergence tolerance must be >= 0");
+    if (!(pb->factor_cfl > 0) || !isfinite(pb->factor_cfl))
+        return hj_error_set(err, HJ_EINVAL, "reach: the CFL factor must be positive and finite, got %g", pb->factor_cfl);
     return HJ_OK;
 }
 
@@ -513,6 +515,11 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
 {
     int rc = check_problem(pb, err);
     if (rc) return rc;
+    if (hj_reach_fused_applies(pb)) return hj_reach_solve_fused(pb, phi, ttr, stats, err);
+    if (pb->compact)
+        return hj_error_set(err, HJ_EINVAL,
+                            "reach: compact arrays need the fused path (first order upwinding, forward Euler, no "
+                            "discount, undivided grid, general and per_node 0)");
     const double start = wall();
     const hj_ls_grid *g = pb->grid;
     /* With an infinite horizon the sets are static: T only shifts time. */
@@ -605,6 +612,13 @@ done:
         stats->tau = pc.tau_prev;
         stats->converged = pc.converged;
         stats->seconds = wall() - start;
+        /* prev, the integrator's time derivative and stage, the kept
+         * derivatives, the row buffers */
+        stats->bytes = sizeof(double) * ((2 + (pb->order > 1)) * g->total +
+                                         (pb->keep_derivs && pb->dissipation != HJ_LS_LLLF
+                                              ? hj_ls_lax_friedrichs_work_size(g)
+                                              : 0) +
+                                         (size_t)hc.nslots * (size_t)g->dim * (size_t)g->N[0]);
     }
     return rc;
 }

@@ -79,6 +79,9 @@ typedef struct {
     hj_reach_vec_fn H;      /* disturbance matrix (needed when d.n > 0) */
     hj_reach_input u, d;
     void *ctx;
+    int G_const, H_const; /* 1: G (H) depends on neither t nor x, so the
+                           * fused path (below) evaluates it once per solve
+                           * and skips its zero entries (same bits) */
 } hj_reach_dyn;
 
 /* Zero inputs, no callbacks. */
@@ -144,6 +147,15 @@ typedef struct {
                            * derivatives of their range pass for the update
                            * (hj_ls_lax_friedrichs_work_size doubles, 2 nx
                            * per node; same bits); 0 computes them twice */
+    int general;          /* 1: always the general path (the kernel's
+                           * hj_ls_lax_friedrichs and hj_ls_ode), for
+                           * comparison; 0 (default): the fused path where
+                           * it applies (hj_reach_fused_applies) */
+    int compact;          /* 1: phi, ttr and the target and obstacle arrays
+                           * hold the interior nodes only (g->nodes doubles,
+                           * dimension 0 fastest, no ghost layers); needs
+                           * the fused path.  0 (default): arrays on the
+                           * grid (hj_ls_alloc) */
 } hj_reach_problem;
 
 /* Defaults above for grid g and system s (target and horizon to set). */
@@ -154,6 +166,8 @@ typedef struct {
     double tau;    /* backward time reached (T, or less when converged) */
     int converged; /* the convergence stop ended the run */
     double seconds;
+    size_t bytes;  /* the solver's own arrays and row buffers (the
+                    * caller's phi and ttr not counted) */
 } hj_reach_stats;
 
 /* Solve: phi (an array on the grid, written) receives the value at tau
@@ -162,6 +176,26 @@ typedef struct {
  * any step: no target, zero horizon, dimensions that do not match, ...),
  * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
+
+/* The fused first order path, which hj_reach_solve takes by itself when
+ * it applies: scheme HJ_LS_UPWIND_FIRST, order 1 (forward Euler), no
+ * discount, per_node and general 0, an undivided grid (any dissipation:
+ * the partial bounds of a control-affine system do not depend on the
+ * gradient, so GLF, LLF and LLLF coincide).  Per row of dimension 0 one
+ * pass computes the one-sided differences, f and G (H) at each node, the
+ * Hamiltonian, the bounds, the dissipation and the time derivative; a
+ * second streaming pass takes the Euler step and applies the target and
+ * obstacle.  Its state is two interior-sized arrays (one when compact:
+ * the caller's phi is the other); the ghost values the first order
+ * stencil reads, face ghosts only, are made per row from the boundary
+ * conditions.  Same arithmetic, in the same order, as the general path:
+ * the same bits, for any number of OpenMP threads.
+ * hj_reach_solve_fused: HJ_EINVAL where the path does not apply, else as
+ * hj_reach_solve (which it is called by).  hj_reach_fused_bytes: the bytes
+ * it allocates for grid g with `threads` threads. */
+int hj_reach_fused_applies(const hj_reach_problem *pb);
+int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
+size_t hj_reach_fused_bytes(const hj_ls_grid *g, int compact, int threads);
 
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
  * periodic dimension, which counts a full period (hj_ls_measure_periodic). */

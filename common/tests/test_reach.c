@@ -484,6 +484,164 @@ static void batched_rows_same_bits(void **state)
     same_bits_all_paths(&p3);
 }
 
+/* The fused first order path (hj_reach_solve_fused) against the general
+ * path (pb->general = 1) on one thread: the same steps and bits of the
+ * value and the time-to-reach on 1 and 2 threads, and again with compact
+ * (interior-only) arrays, for the problem pb as given (its scheme set to
+ * first order upwinding, forward Euler).  tgt: when not NULL, the target
+ * as an array on the grid, also given compact. */
+static void fused_same_bits(hj_reach_problem *pb, const double *tgt)
+{
+    const hj_ls_grid *g = pb->grid;
+    double *ref = hj_ls_alloc(g), *rttr = hj_ls_alloc(g), *phi = hj_ls_alloc(g), *ttr = hj_ls_alloc(g);
+    double *cphi = malloc(sizeof(double) * g->nodes), *cttr = malloc(sizeof(double) * g->nodes);
+    double *ctgt = malloc(sizeof(double) * g->nodes);
+    assert_non_null(ref), assert_non_null(rttr), assert_non_null(phi), assert_non_null(ttr);
+    assert_non_null(cphi), assert_non_null(cttr), assert_non_null(ctgt);
+    hj_error err;
+    hj_reach_stats st, rst;
+    pb->scheme = HJ_LS_UPWIND_FIRST, pb->order = 1, pb->compact = 0;
+    assert_true(hj_reach_fused_applies(pb));
+    pb->general = 1;
+    assert_false(hj_reach_fused_applies(pb));
+    if (tgt) pb->target.array = tgt;
+    assert_int_equal(hj_reach_solve(pb, ref, rttr, &rst, &err), HJ_OK);
+    assert_true(rst.steps > 2);
+    pb->general = 0;
+    for (int threads = 1; threads <= 2; threads++)
+        for (int compact = 0; compact < 2; compact++) {
+#ifdef _OPENMP
+            omp_set_num_threads(threads);
+#endif
+            pb->compact = compact;
+            if (tgt && compact)
+                for (size_t r = 0; r < g->rows; r++) {
+                    long i[HJ_LS_MAXDIM];
+                    const size_t k = hj_ls_row(g, r, i);
+                    memcpy(ctgt + r * (size_t)g->N[0], tgt + k, sizeof(double) * (size_t)g->N[0]);
+                }
+            if (tgt) pb->target.array = compact ? ctgt : tgt;
+            assert_int_equal(hj_reach_solve(pb, compact ? cphi : phi, compact ? cttr : ttr, &st, &err), HJ_OK);
+            assert_int_equal(st.steps, rst.steps);
+            assert_true(st.tau == rst.tau);
+            assert_true(st.bytes < rst.bytes);
+            if (compact) /* back to the grid's layout for the comparison */
+                for (size_t r = 0; r < g->rows; r++) {
+                    long i[HJ_LS_MAXDIM];
+                    const size_t k = hj_ls_row(g, r, i), kc = r * (size_t)g->N[0];
+                    memcpy(phi + k, cphi + kc, sizeof(double) * (size_t)g->N[0]);
+                    memcpy(ttr + k, cttr + kc, sizeof(double) * (size_t)g->N[0]);
+                }
+            assert_int_equal(hj_ls_count_differ(g, ref, phi), 0);
+            assert_int_equal(hj_ls_count_differ(g, rttr, ttr), 0);
+            if (!compact) assert_int_equal(memcmp(ref, phi, sizeof(double) * g->total), 0); /* ghosts too */
+        }
+    hj_test_one_thread();
+    pb->compact = 0;
+    hj_ls_free(ref), hj_ls_free(rttr), hj_ls_free(phi), hj_ls_free(ttr);
+    free(cphi), free(cttr), free(ctgt);
+}
+
+/* Three double integrators: f = (v0, 0, v1, 0, v2, 0), G constant. */
+static void f6(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    for (int k = 0; k < 6; k += 2) o[k] = x[k + 1], o[k + 1] = 0;
+}
+static void G6(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    for (int q = 0; q < 18; q++) o[q] = q == 3 || q == 10 || q == 17;
+}
+
+static void fused_path_same_bits(void **state)
+{
+    (void)state;
+    /* 4-D: drift, state-dependent control (box) and disturbance (ball)
+     * matrices, a moving obstacle, a tube, each dissipation. */
+    hj_ls_grid g;
+    hj_ls_bc bc[6];
+    for (int d = 0; d < 6; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 4, (double[]){-1, -1, -1, -1}, (double[]){1, 1, 1, 1},
+                                     (long[]){11, 9, 8, 7}, bc, NULL),
+                     HJ_OK);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 4, f4, NULL);
+    hj_reach_dyn_control_box(&s, G4, 2, (double[]){-1, -0.5}, (double[]){1, 0.7});
+    hj_reach_dyn_disturbance_ball(&s, H4, 2, (double[]){0.05, 0}, 0.2);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = ball4, pb.obstacle.fn = slab4, pb.horizon = 0.3;
+    const int diss[3] = {HJ_LS_LLF, HJ_LS_GLF, HJ_LS_LLLF};
+    for (int k = 0; k < 3; k++) {
+        pb.dissipation = diss[k];
+        fused_same_bits(&pb, NULL);
+    }
+    /* 3-D Dubins car, constant G, every boundary condition on some face,
+     * a set (BRS) and a tube with a convergence stop. */
+    const hj_ls_bc bcs[2][3] = {
+        {{HJ_LS_BC_EXTRAP_TOWARD, 0, 0}, {HJ_LS_BC_NEUMANN, 0.3, -0.2}, {HJ_LS_BC_PERIODIC, 0, 0}},
+        {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_DIRICHLET, 1, 2}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}}};
+    for (int b = 0; b < 2; b++) {
+        hj_ls_grid g3;
+        assert_int_equal(hj_ls_grid_init_period(&g3, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI},
+                                                (long[]){17, 15, 12}, bcs[b], NULL),
+                         HJ_OK);
+        hj_reach_dyn s3;
+        hj_reach_dyn_init(&s3, 3, dub_f, NULL);
+        hj_reach_dyn_control_box(&s3, dub_G, 1, (double[]){-1}, (double[]){1});
+        s3.G_const = 1;
+        hj_reach_problem p3;
+        hj_reach_problem_init(&p3, &g3, &s3);
+        p3.target.fn = disc, p3.obstacle.fn = box, p3.horizon = 0.5;
+        p3.kind = b ? HJ_REACH_BRT : HJ_REACH_BRS;
+        fused_same_bits(&p3, NULL);
+        if (b) {
+            p3.horizon = INFINITY, p3.conv_tol = 0.5;
+            fused_same_bits(&p3, NULL);
+        }
+    }
+    /* 6-D: three double integrators, the target as an array. */
+    hj_ls_grid g6;
+    double lo[6], hi[6];
+    long N[6];
+    for (int d = 0; d < 6; d++) lo[d] = -1.5, hi[d] = 1.5, N[d] = 5 + d % 2;
+    assert_int_equal(hj_ls_grid_init(&g6, 6, lo, hi, N, bc, NULL), HJ_OK);
+    double *tgt = hj_ls_alloc(&g6);
+    assert_non_null(tgt);
+    for (size_t r = 0; r < g6.rows; r++) {
+        long i[6];
+        double x[6];
+        const size_t k = hj_ls_row(&g6, r, i);
+        for (long j = 0; j < g6.N[0]; j++) {
+            i[0] = j;
+            hj_ls_coord(&g6, i, x);
+            double m = -INFINITY;
+            for (int d = 0; d < 6; d++) m = fmax(m, fabs(x[d]) - 0.5);
+            tgt[k + (size_t)j] = m;
+        }
+    }
+    hj_reach_dyn s6;
+    hj_reach_dyn_init(&s6, 6, f6, NULL);
+    hj_reach_dyn_control_box(&s6, G6, 3, (double[]){-1, -1, -1}, (double[]){1, 1, 1});
+    for (int c = 0; c < 2; c++) {
+        s6.G_const = c;
+        hj_reach_problem p6;
+        hj_reach_problem_init(&p6, &g6, &s6);
+        p6.kind = HJ_REACH_BRS, p6.horizon = 0.4;
+        fused_same_bits(&p6, tgt);
+    }
+    hj_ls_free(tgt);
+    /* Compact arrays need the fused path. */
+    double *phi = malloc(sizeof(double) * g.nodes);
+    hj_error err;
+    pb.compact = 1, pb.scheme = HJ_LS_ENO2, pb.order = 2;
+    assert_false(hj_reach_fused_applies(&pb));
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    free(phi);
+}
+
 /* Problems refused before any work: no target, a zero horizon, a grid of
  * another dimension, a measure with two periodic dimensions. */
 static void invalid_problems(void **state)
@@ -518,4 +676,5 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
+             cmocka_unit_test(fused_path_same_bits),
              cmocka_unit_test(invalid_problems))
