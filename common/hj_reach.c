@@ -92,6 +92,7 @@ int hj_reach_dyn_check(const hj_reach_dyn *s, hj_error *err)
 {
     if (s->nx < 1 || s->nx > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "dynamics: state dimension %d, must be 1..%d", s->nx, HJ_LS_MAXDIM);
+    if (s->f_row && !s->f) return hj_error_set(err, HJ_EINVAL, "dynamics: f_row given without f");
     int rc = check_input(&s->u, "control", s->G != NULL, err);
     return rc ? rc : check_input(&s->d, "disturbance", s->H != NULL, err);
 }

@@ -71,6 +71,9 @@ typedef struct {
 
 /* f: fx[0..nx-1]; G, H: nx x n matrices, row major (g[i * n + j]). */
 typedef void (*hj_reach_vec_fn)(double t, const double *x, double *out, void *ctx);
+/* f over a row of n nodes along dimension 0 (node j at x with x[0] + j dx0
+ * in place of x[0]): out[i * n + j] = f_i at node j. */
+typedef void (*hj_reach_row_fn)(double t, const double *x, double dx0, long n, double *out, void *ctx);
 
 typedef struct {
     int nx;                 /* state dimension, that of the grid */
@@ -79,6 +82,10 @@ typedef struct {
     hj_reach_vec_fn H;      /* disturbance matrix (needed when d.n > 0) */
     hj_reach_input u, d;
     void *ctx;
+    hj_reach_row_fn f_row; /* optional: f batched over a row, used by the
+                            * fused path; must give the bits of f, which
+                            * stays needed (the general path, the
+                            * per-node functions) */
     int G_const, H_const; /* 1: G (H) depends on neither t nor x, so the
                            * fused path (below) evaluates it once per solve
                            * and skips its zero entries (same bits) */

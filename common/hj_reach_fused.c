@@ -38,6 +38,24 @@
 
 #define MATMAX (HJ_LS_MAXDIM * HJ_REACH_MAXIN)
 
+/* AVX-512 and AVX2 clones of the row pipeline where the CPU has them
+ * (-std=c11 contracts no multiply-add: the bits are the SSE2 code's), and
+ * vector reductions without -ffast-math ("omp simd": the lane order is
+ * fixed at compile time, and max and & are exact in any order). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
+#define CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define CLONES
+#endif
+#ifdef _OPENMP
+#define SIMD_REDUCE(...) _Pragma(STR(omp simd reduction(__VA_ARGS__)))
+#define SIMD_REDUCE2(a, b) _Pragma(STR(omp simd reduction(a) reduction(b)))
+#else
+#define SIMD_REDUCE(...)
+#define SIMD_REDUCE2(a, b)
+#endif
+#define STR(x) #x
+
 /* One player's input set as the node loop uses it. */
 typedef struct {
     int n;      /* inputs, 0: no player */
@@ -58,6 +76,7 @@ typedef struct {
 typedef struct {
     int nx;
     hj_reach_vec_fn f;
+    hj_reach_row_fn f_row;
     void *ctx;
     player in[2];
     int b_const;              /* every matrix constant: b below is final */
@@ -81,7 +100,7 @@ static void add_bounds(const player *P, int nx, const double *M, double *b)
 static void fused_dyn_init(fused_dyn *F, const hj_reach_dyn *s, double t0)
 {
     memset(F, 0, sizeof *F);
-    F->nx = s->nx, F->f = s->f, F->ctx = s->ctx;
+    F->nx = s->nx, F->f = s->f, F->f_row = s->f_row, F->ctx = s->ctx;
     const hj_reach_input *in[2] = {&s->u, &s->d};
     const hj_reach_vec_fn mf[2] = {s->G, s->H};
     const int cn[2] = {s->G_const, s->H_const};
@@ -122,57 +141,159 @@ static void fused_dyn_init(fused_dyn *F, const hj_reach_dyn *s, double t0)
             if (F->in[k].n) add_bounds(&F->in[k], s->nx, F->in[k].M, F->b);
 }
 
-/* -H(t, x, p) and alpha[0..nx-1]: hj_reach.c's node_ham_partials. */
-static inline double node_ham(const fused_dyn *F, double t, const double *x, const double *p, double *alpha)
+/* Player P's part of -H and of the bounds at one node, for a matrix
+ * that is not constant (hj_reach.c's node_ham_partials): h, fx and b
+ * updated. */
+static void node_player(const player *P, int nx, double t, const double *x, const double *p, double *h, double *fx,
+                        double *b, void *ctx)
+{
+    double M[MATMAX], q[HJ_REACH_MAXIN];
+    const int n = P->n;
+    P->fn(t, x, M, ctx);
+    for (int j = 0; j < n; j++) q[j] = 0;
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < n; j++) q[j] += M[i * n + j] * p[i];
+    double val = 0;
+    if (P->box)
+        for (int j = 0; j < n; j++) {
+            const double aq = fabs(q[j]);
+            val += q[j] * P->c[j] + P->sg * aq * P->w[j];
+        }
+    else {
+        double n2 = 0;
+        for (int j = 0; j < n; j++) val += q[j] * P->c[j], n2 += q[j] * q[j];
+        val += P->sg * P->r * sqrt(n2);
+    }
+    *h += val;
+    for (int d = 0; d < nx; d++)
+        for (int j = 0; j < n; j++) fx[d] += M[d * n + j] * P->c[j];
+    add_bounds(P, nx, M, b);
+}
+
+/* Row buffers of one thread, n = N[0]. */
+typedef struct {
+    double *pad;       /* n + 2: the row and its ghosts along dimension 0 */
+    double *gr;        /* 2 dim n: ghost rows of the faces */
+    double *L, *R, *P; /* dim n each: one-sided differences, their mean */
+    double *FX, *B;    /* dim n: f + G c_u + H c_d, the input bounds */
+    double *Q;         /* HJ_REACH_MAXIN n: G^T p (or H^T p) */
+    double *h, *val, *n2, *DS, *S;
+} row_bufs;
+
+static size_t row_work(const hj_ls_grid *g)
+{
+    return (size_t)g->N[0] + 2 + (size_t)(7 * g->dim + HJ_REACH_MAXIN + 5) * (size_t)g->N[0];
+}
+
+static void row_bufs_init(row_bufs *w, double *ws, const hj_ls_grid *g)
+{
+    const size_t n = (size_t)g->N[0], dn = (size_t)g->dim * n;
+    w->pad = ws, w->gr = ws + n + 2;
+    w->L = w->gr + 2 * dn, w->R = w->L + dn, w->P = w->R + dn, w->FX = w->P + dn, w->B = w->FX + dn;
+    w->Q = w->B + dn;
+    w->h = w->Q + HJ_REACH_MAXIN * n, w->val = w->h + n, w->n2 = w->val + n, w->DS = w->n2 + n, w->S = w->DS + n;
+}
+
+/* -H and alpha_d over a row, in vector loops over the row (the per-node
+ * sums in node_player's order): h[j] = H at node j (the sign flipped
+ * below), FX and B as alpha_d = |FX| + B needs them. */
+static void row_ham(const fused_dyn *F, double t, const double *rx, double dx0, long n, row_bufs *w, int *b_rows)
 {
     const int nx = F->nx;
-    double fx[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, h = 0, Mloc[MATMAX];
+    double *h = w->h;
+    for (long j = 0; j < n; j++) h[j] = 0;
     if (F->f) {
-        F->f(t, x, fx, F->ctx);
-        for (int i = 0; i < nx; i++) h += p[i] * fx[i];
-    }
+        if (F->f_row) F->f_row(t, rx, dx0, n, w->FX, F->ctx);
+        else {
+            double x[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM];
+            memcpy(x, rx, sizeof(double) * (size_t)nx);
+            for (long j = 0; j < n; j++) {
+                x[0] = rx[0] + (double)j * dx0;
+                F->f(t, x, fx, F->ctx);
+                for (int i = 0; i < nx; i++) w->FX[(size_t)i * (size_t)n + (size_t)j] = fx[i];
+            }
+        }
+        for (int i = 0; i < nx; i++) {
+            const double *p = w->P + (size_t)i * (size_t)n, *fi = w->FX + (size_t)i * (size_t)n;
+            for (long j = 0; j < n; j++) h[j] += p[j] * fi[j];
+        }
+    } else
+        for (size_t k = 0; k < (size_t)nx * (size_t)n; k++) w->FX[k] = 0;
+    *b_rows = !F->b_const;
+    if (*b_rows)
+        for (size_t k = 0; k < (size_t)nx * (size_t)n; k++) w->B[k] = 0;
     for (int k = 0; k < 2; k++) {
         const player *P = &F->in[k];
-        const int n = P->n;
-        if (n == 0) continue;
-        double q[HJ_REACH_MAXIN];
-        const double *M = P->M;
-        if (P->cnst)
-            for (int j = 0; j < n; j++) {
-                double a = 0;
-                for (int e = 0; e < P->nq[j]; e++) a += P->qm[j][e] * p[P->qi[j][e]];
-                q[j] = a;
+        if (P->n == 0) continue;
+        if (!P->cnst) {
+            /* node by node through the matrix callback */
+            double x[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM], b[HJ_LS_MAXDIM];
+            memcpy(x, rx, sizeof(double) * (size_t)nx);
+            for (long j = 0; j < n; j++) {
+                x[0] = rx[0] + (double)j * dx0;
+                for (int i = 0; i < nx; i++) {
+                    const size_t q = (size_t)i * (size_t)n + (size_t)j;
+                    p[i] = w->P[q], fx[i] = w->FX[q], b[i] = w->B[q];
+                }
+                node_player(P, nx, t, x, p, &h[j], fx, b, F->ctx);
+                for (int i = 0; i < nx; i++) {
+                    const size_t q = (size_t)i * (size_t)n + (size_t)j;
+                    w->FX[q] = fx[i], w->B[q] = b[i];
+                }
             }
-        else {
-            P->fn(t, x, Mloc, F->ctx);
-            M = Mloc;
-            for (int j = 0; j < n; j++) q[j] = 0;
-            for (int i = 0; i < nx; i++)
-                for (int j = 0; j < n; j++) q[j] += M[i * n + j] * p[i];
+            continue;
         }
-        double val = 0;
-        if (P->box)
-            for (int j = 0; j < n; j++) {
-                const double aq = fabs(q[j]);
-                val += q[j] * P->c[j] + P->sg * aq * P->w[j];
+        /* constant matrix: q_jj = sum of its nonzero M_i,jj p_i */
+        for (int jj = 0; jj < P->n; jj++) {
+            double *q = w->Q + (size_t)jj * (size_t)n;
+            for (long j = 0; j < n; j++) q[j] = 0;
+            for (int e = 0; e < P->nq[jj]; e++) {
+                const double m = P->qm[jj][e], *p = w->P + (size_t)P->qi[jj][e] * (size_t)n;
+                for (long j = 0; j < n; j++) q[j] += m * p[j];
             }
-        else {
-            double n2 = 0;
-            for (int j = 0; j < n; j++) val += q[j] * P->c[j], n2 += q[j] * q[j];
-            val += P->sg * P->r * sqrt(n2);
         }
-        h += val;
-        if (P->cnst)
-            for (int d = 0; d < nx; d++)
-                for (int e = 0; e < P->nf[d]; e++) fx[d] += P->fc[d][e];
-        else
-            for (int d = 0; d < nx; d++)
-                for (int j = 0; j < n; j++) fx[d] += M[d * n + j] * P->c[j];
-        if (!F->b_const) add_bounds(P, nx, M, b);
+        double *val = w->val, *n2 = w->n2;
+        for (long j = 0; j < n; j++) val[j] = 0, n2[j] = 0;
+        for (int jj = 0; jj < P->n; jj++) {
+            const double *q = w->Q + (size_t)jj * (size_t)n, c = P->c[jj], sw = P->sg, wj = P->w[jj];
+            if (P->box)
+                for (long j = 0; j < n; j++) {
+                    const double aq = fabs(q[j]);
+                    val[j] += q[j] * c + sw * aq * wj;
+                }
+            else
+                for (long j = 0; j < n; j++) val[j] += q[j] * c, n2[j] += q[j] * q[j];
+        }
+        if (!P->box) {
+            const double sr = P->sg * P->r;
+            for (long j = 0; j < n; j++) val[j] += sr * sqrt(n2[j]);
+        }
+        for (long j = 0; j < n; j++) h[j] += val[j];
+        for (int d = 0; d < nx; d++) {
+            double *fd = w->FX + (size_t)d * (size_t)n;
+            for (int e = 0; e < P->nf[d]; e++) {
+                const double pc = P->fc[d][e];
+                for (long j = 0; j < n; j++) fd[j] += pc;
+            }
+        }
+        if (*b_rows) /* the bounds of a constant matrix, added per row */
+            for (int d = 0; d < nx; d++) {
+                double *B = w->B + (size_t)d * (size_t)n;
+                double nn = 0;
+                for (int jj = 0; jj < P->n; jj++) {
+                    const double m = P->M[d * P->n + jj];
+                    if (P->box) {
+                        const double a = fabs(m) * P->w[jj];
+                        for (long j = 0; j < n; j++) B[j] += a;
+                    } else
+                        nn += m * m;
+                }
+                if (!P->box) {
+                    const double a = P->r * sqrt(nn);
+                    for (long j = 0; j < n; j++) B[j] += a;
+                }
+            }
     }
-    const double *bb = F->b_const ? F->b : b;
-    for (int d = 0; d < nx; d++) alpha[d] = fabs(fx[d]) + bb[d];
-    return -h;
 }
 
 /* The ghost node at distance 1 beyond the face: hj_ls_grid.c's fill_line
@@ -200,81 +321,103 @@ typedef struct {
     double T;
 } fused;
 
-/* Per thread: the row with its two ghosts along dimension 0, and the
- * ghost rows of the faces of the other dimensions. */
-static size_t row_work(const hj_ls_grid *g) { return (size_t)g->N[0] + 2 + 2 * (size_t)g->dim * (size_t)g->N[0]; }
-
 /* One row of ydot = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d)/2)
  * into out; *inv = max_j sum_d alpha_d / dx_d; the first node with a
  * non-finite H or alpha in *bad (-1: none). */
-static void row_ydot(const fused *fs, double tau, const double *y, size_t r, double *out, double *ws, double *inv,
+CLONES
+static void row_ydot(const fused *fs, double tau, const double *y, size_t r, double *out, row_bufs *w, double *inv,
                      long *bad)
 {
     const hj_ls_grid *g = fs->g;
     const int dim = g->dim;
     const long n = g->N[0];
     long idx[HJ_LS_MAXDIM];
-    double x[HJ_LS_MAXDIM], rx[HJ_LS_MAXDIM], idx_inv[HJ_LS_MAXDIM];
+    double rx[HJ_LS_MAXDIM];
     hj_ls_row(g, r, idx);
     hj_ls_coord(g, idx, rx);
-    memcpy(x, rx, sizeof x);
-    const size_t k0 = r * (size_t)n;
-    const double *row = y + k0;
-    /* dimension 0: row with its ghosts, pad[j + 1] = node j */
-    double *pad = ws, *gr = ws + n + 2;
+    const double *row = y + r * (size_t)n;
+    /* dimension 0: the row with its ghosts, pad[j + 1] = node j */
+    double *pad = w->pad;
+    const int per0 = g->bc[0].type == HJ_LS_BC_PERIODIC;
     memcpy(pad + 1, row, sizeof(double) * (size_t)n);
-    pad[0] = ghost(&g->bc[0], 0, row[0], g->bc[0].type == HJ_LS_BC_PERIODIC ? row[n - 1] : row[1], g->dx[0]);
-    pad[n + 1] = ghost(&g->bc[0], 1, row[n - 1], g->bc[0].type == HJ_LS_BC_PERIODIC ? row[0] : row[n - 2], g->dx[0]);
+    pad[0] = ghost(&g->bc[0], 0, row[0], per0 ? row[n - 1] : row[1], g->dx[0]);
+    pad[n + 1] = ghost(&g->bc[0], 1, row[n - 1], per0 ? row[0] : row[n - 2], g->dx[0]);
+    {
+        const double inv0 = 1.0 / g->dx[0];
+        double *L = w->L, *R = w->R, *P = w->P;
+        for (long j = 0; j < n; j++) {
+            L[j] = (pad[j + 1] - pad[j]) * inv0;
+            R[j] = (pad[j + 2] - pad[j + 1]) * inv0;
+            P[j] = 0.5 * (L[j] + R[j]);
+        }
+    }
     /* other dimensions: the neighbouring rows, or ghost rows at a face */
-    const double *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
-    for (int d = 0; d < dim; d++) idx_inv[d] = 1.0 / g->dx[d];
     for (int d = 1; d < dim; d++) {
         const size_t s = fs->cs[d], span = s * (size_t)(g->N[d] - 1);
         const int per = g->bc[d].type == HJ_LS_BC_PERIODIC;
-        if (idx[d] > 0) lo[d] = row - s;
-        else if (per) lo[d] = row + span;
+        const double *lo, *hi;
+        if (idx[d] > 0) lo = row - s;
+        else if (per) lo = row + span;
         else {
-            double *q = gr + (size_t)(2 * d) * (size_t)n;
+            double *q = w->gr + (size_t)(2 * d) * (size_t)n;
             const double *in = row + s;
             for (long j = 0; j < n; j++) q[j] = ghost(&g->bc[d], 0, row[j], in[j], g->dx[d]);
-            lo[d] = q;
+            lo = q;
         }
-        if (idx[d] < g->N[d] - 1) hi[d] = row + s;
-        else if (per) hi[d] = row - span;
+        if (idx[d] < g->N[d] - 1) hi = row + s;
+        else if (per) hi = row - span;
         else {
-            double *q = gr + (size_t)(2 * d + 1) * (size_t)n;
+            double *q = w->gr + (size_t)(2 * d + 1) * (size_t)n;
             const double *in = row - s;
             for (long j = 0; j < n; j++) q[j] = ghost(&g->bc[d], 1, row[j], in[j], g->dx[d]);
-            hi[d] = q;
+            hi = q;
+        }
+        const double invd = 1.0 / g->dx[d];
+        double *L = w->L + (size_t)d * (size_t)n, *R = w->R + (size_t)d * (size_t)n, *P = w->P + (size_t)d * (size_t)n;
+        for (long j = 0; j < n; j++) {
+            L[j] = (row[j] - lo[j]) * invd;
+            R[j] = (hi[j] - row[j]) * invd;
+            P[j] = 0.5 * (L[j] + R[j]);
         }
     }
-    const double t = fs->T - tau;
+    int b_rows;
+    row_ham(fs->F, fs->T - tau, rx, g->dx[0], n, w, &b_rows);
+    /* dissipation, CFL sum, finiteness, the time derivative */
+    double *DS = w->DS, *S = w->S, *h = w->h;
+    int fin_any = 1;
+    for (long j = 0; j < n; j++) DS[j] = 0, S[j] = 0;
+    for (int d = 0; d < dim; d++) {
+        const size_t o = (size_t)d * (size_t)n;
+        const double *FX = w->FX + o, *L = w->L + o, *R = w->R + o, dx = g->dx[d];
+        const double bc = fs->F->b[d], *B = w->B + o;
+        SIMD_REDUCE(& : fin_any)
+        for (long j = 0; j < n; j++) {
+            const double alpha = fabs(FX[j]) + (b_rows ? B[j] : bc);
+            const double a = fabs(alpha);
+            fin_any &= alpha - alpha == 0;
+            DS[j] += a * 0.5 * (R[j] - L[j]);
+            S[j] += a / dx;
+        }
+    }
     double m = 0;
-    long b = -1;
+    SIMD_REDUCE2(& : fin_any, max : m)
     for (long j = 0; j < n; j++) {
-        double l[HJ_LS_MAXDIM], rr[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], alpha[HJ_LS_MAXDIM];
-        const double v = row[j];
-        l[0] = (v - pad[j]) * idx_inv[0];
-        rr[0] = (pad[j + 2] - v) * idx_inv[0];
-        for (int d = 1; d < dim; d++) {
-            l[d] = (v - lo[d][j]) * idx_inv[d];
-            rr[d] = (hi[d][j] - v) * idx_inv[d];
-        }
-        for (int d = 0; d < dim; d++) p[d] = 0.5 * (l[d] + rr[d]);
-        x[0] = rx[0] + (double)j * g->dx[0];
-        const double H = node_ham(fs->F, t, x, p, alpha);
-        double DS = 0, S = 0;
-        int fin = H - H == 0;
-        for (int d = 0; d < dim; d++) {
-            const double a = fabs(alpha[d]);
-            fin &= alpha[d] - alpha[d] == 0;
-            DS += a * 0.5 * (rr[d] - l[d]);
-            S += a / g->dx[d];
-        }
-        if (!fin && b < 0) b = j;
-        out[j] = -(H - DS);
-        m = S > m || S != S ? S : m;
+        const double H = -h[j];
+        fin_any &= H - H == 0;
+        out[j] = -(H - DS[j]);
+        m = S[j] > m ? S[j] : m;
     }
+    long b = -1;
+    if (!fin_any) /* the first bad node, as the general path names it */
+        for (long j = 0; j < n && b < 0; j++) {
+            int ok = h[j] - h[j] == 0;
+            for (int d = 0; d < dim; d++) {
+                const size_t q = (size_t)d * (size_t)n + (size_t)j;
+                const double alpha = fabs(w->FX[q]) + (b_rows ? w->B[q] : fs->F->b[d]);
+                ok &= alpha - alpha == 0;
+            }
+            if (!ok) b = j;
+        }
     *inv = m;
     *bad = b;
 }
@@ -393,8 +536,10 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
 #endif
         {
             double *ws = malloc(sizeof(double) * wsz);
+            row_bufs w;
             if (!ws) nomem = 1;
             else {
+                row_bufs_init(&w, ws, g);
                 int nan_seen = 0;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
@@ -402,7 +547,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
                 for (size_t r = 0; r < g->rows; r++) {
                     double inv;
                     long bj;
-                    row_ydot(&fs, tau, y, r, next + r * (size_t)n, ws, &inv, &bj);
+                    row_ydot(&fs, tau, y, r, next + r * (size_t)n, &w, &inv, &bj);
                     if (bj >= 0) {
 #ifdef _OPENMP
 #pragma omp critical(hj_reach_fused_bad)

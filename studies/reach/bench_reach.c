@@ -16,7 +16,8 @@
  *
  * First order runs twice, back to back: the general path (the kernel's
  * Lax-Friedrichs term and integrator, pb.general = 1) and the fused path
- * hj_reach_solve takes by itself (compact arrays, G declared constant),
+ * hj_reach_solve takes by itself (compact arrays, G declared constant, f
+ * batched over rows),
  * and prints the ratio of their rates; the two values are compared
  * bitwise (nodes that differ: 0 expected).  WENO5/RK3 has the general
  * path only.  --per-node and --no-keep-derivs run hj_reach's reference
@@ -41,6 +42,13 @@ static void f(double t, const double *x, double *o, void *c)
     (void)t, (void)c;
     for (int k = 0; k < 6; k += 2) o[k] = x[k + 1], o[k + 1] = 0;
 }
+/* f over a row: every component is constant along dimension 0. */
+static void f_row(double t, const double *x, double dx0, long n, double *o, void *c)
+{
+    (void)t, (void)dx0, (void)c;
+    for (int k = 0; k < 6; k += 2)
+        for (long j = 0; j < n; j++) o[k * n + j] = x[k + 1], o[(k + 1) * n + j] = 0;
+}
 static void G(double t, const double *x, double *o, void *c)
 {
     (void)t, (void)x, (void)c;
@@ -50,7 +58,10 @@ static double box(double t, const double *x, void *c)
 {
     (void)t, (void)c;
     double m = -INFINITY;
-    for (int k = 0; k < 6; k++) m = fmax(m, fabs(x[k]) - 0.5);
+    for (int k = 0; k < 6; k++) {
+        const double v = fabs(x[k]) - 0.5;
+        m = v > m ? v : m;
+    }
     return m;
 }
 
@@ -88,8 +99,10 @@ int main(int argc, char **argv)
 {
     long N = 11, steps = 3;
     const char *out_dir = ".";
-    int per_node = 0, no_keep = 0;
+    int per_node = 0, no_keep = 0, fused_only = 0;
     hj_cli_opt opts[] = {
+        {.name = "--fused-only", .type = HJ_OPT_FLAG, .value = &fused_only,
+         .help = "run the fused first order path only (for profiling)"},
         {.name = "--N", .type = HJ_OPT_LONG, .value = &N, .min = 5, .max = 40, .metavar = "N",
          .help = "nodes in each of the 6 dimensions"},
         {.name = "--steps", .type = HJ_OPT_LONG, .value = &steps, .min = 1, .max = 1000, .metavar = "K",
@@ -117,7 +130,7 @@ int main(int argc, char **argv)
     hj_reach_dyn s;
     hj_reach_dyn_init(&s, 6, f, NULL);
     hj_reach_dyn_control_box(&s, G, 3, (double[]){-1, -1, -1}, (double[]){1, 1, 1});
-    s.G_const = 1;
+    s.G_const = 1, s.f_row = f_row;
     double *phi = hj_ls_alloc(&g), *cphi = malloc(sizeof(double) * g.nodes);
     if (!phi || !cphi) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for %zu nodes", g.nodes);
     /* The CFL step of this system: sum_d alpha_d / dx_d with |v| <= 1.5
@@ -133,10 +146,10 @@ int main(int argc, char **argv)
                   "bytes_per_node\n");
     const int scheme[2] = {HJ_LS_UPWIND_FIRST, HJ_LS_WENO5A}, order[2] = {1, 3};
     const char *name[2] = {"first-order-euler", "weno5-rk3"};
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < (fused_only ? 1 : 2); k++) {
         run_result r[2];
         const int paths = k == 0 ? 2 : 1; /* general, then fused */
-        for (int q = 0; q < paths; q++) {
+        for (int q = fused_only; q < paths; q++) {
             hj_progress("%s: %s, %s path\n", prog, name[k], q ? "fused" : "general");
             r[q] = run(&g, &s, scheme[k], order[k], q == 0, per_node, no_keep, horizon, q ? cphi : phi);
             fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.3f\t%.3e\t%.3f\t%.3e\t%.1f\n", name[k], q ? "fused" : "general",
@@ -144,7 +157,7 @@ int main(int argc, char **argv)
             printf("%s: %s %ld^6, %s path: %.3e node-stage updates/s (wall), %.3e per CPU second, %.1f bytes per "
                    "node\n", prog, name[k], N, q ? "fused" : "general", r[q].rate, r[q].cpu_rate, r[q].bytes);
         }
-        if (paths == 2) {
+        if (paths == 2 && !fused_only) {
             long differ = 0;
             for (size_t row = 0; row < g.rows; row++) {
                 long i[6];
