@@ -170,47 +170,125 @@ static void node_player(const player *P, int nx, double t, const double *x, cons
     add_bounds(P, nx, M, b);
 }
 
-/* Row buffers of one thread, n = N[0]. */
-typedef struct {
-    double *pad;       /* n + 2: the row and its ghosts along dimension 0 */
-    double *gr;        /* 2 dim n: ghost rows of the faces */
-    double *L, *R, *P; /* dim n each: one-sided differences, their mean */
-    double *FX, *B;    /* dim n: f + G c_u + H c_d, the input bounds */
-    double *Q;         /* HJ_REACH_MAXIN n: G^T p (or H^T p) */
-    double *h, *val, *n2, *DS, *S;
-} row_bufs;
-
-static size_t row_work(const hj_ls_grid *g)
+/* The ghost node at distance 1 beyond the face: hj_ls_grid.c's fill_line
+ * for k = 1, from the boundary value v and its inward neighbour w (the
+ * opposite boundary value for a periodic dimension). */
+static inline double ghost(const hj_ls_bc *bc, int hi, double v, double w, double dx)
 {
-    return (size_t)g->N[0] + 2 + (size_t)(7 * g->dim + HJ_REACH_MAXIN + 5) * (size_t)g->N[0];
+    switch (bc->type) {
+    case HJ_LS_BC_PERIODIC: return w;
+    case HJ_LS_BC_DIRICHLET: return hi ? bc->hi : bc->lo;
+    case HJ_LS_BC_NEUMANN: return v + (double)1 * dx * (hi ? bc->hi : bc->lo);
+    default: {
+        const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
+        const double sv = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+        return v + (double)1 * dir * sv * fabs(v - w);
+    }
+    }
 }
 
-static void row_bufs_init(row_bufs *w, double *ws, const hj_ls_grid *g)
+typedef struct {
+    const hj_reach_problem *pb;
+    const fused_dyn *F;
+    const hj_ls_grid *g;
+    size_t cs[HJ_LS_MAXDIM]; /* strides of the interior-only layout */
+    double T;
+    long rows_per_block;     /* consecutive rows of a plane (dimensions 0, 1) */
+    long blocks_per_plane;
+    size_t blocks;
+    long block_nodes;        /* the most nodes of a block */
+} fused;
+
+/* Blocks: runs of consecutive rows of one plane of dimensions 0 and 1, so
+ * that the vector loops run over about BLOCK_NODES nodes even where rows
+ * are short (6-D grids), while a block's buffers stay in cache. */
+#define BLOCK_NODES 512
+
+static void blocks_init(fused *fs)
 {
-    const size_t n = (size_t)g->N[0], dn = (size_t)g->dim * n;
-    w->pad = ws, w->gr = ws + n + 2;
-    w->L = w->gr + 2 * dn, w->R = w->L + dn, w->P = w->R + dn, w->FX = w->P + dn, w->B = w->FX + dn;
+    const hj_ls_grid *g = fs->g;
+    const long n0 = g->N[0], n1 = g->dim > 1 ? g->N[1] : 1;
+    long rpb = BLOCK_NODES / n0;
+    rpb = rpb < 1 ? 1 : rpb > n1 ? n1 : rpb;
+    fs->rows_per_block = rpb;
+    fs->blocks_per_plane = (n1 + rpb - 1) / rpb;
+    fs->blocks = g->rows / (size_t)n1 * (size_t)fs->blocks_per_plane;
+    fs->block_nodes = rpb * n0;
+}
+
+/* Block b: its first row and number of rows. */
+static void block_rows(const fused *fs, size_t b, size_t *r0, long *nrows)
+{
+    const long n1 = fs->g->dim > 1 ? fs->g->N[1] : 1;
+    const size_t plane = b / (size_t)fs->blocks_per_plane;
+    const long first = (long)(b % (size_t)fs->blocks_per_plane) * fs->rows_per_block;
+    *r0 = plane * (size_t)n1 + (size_t)first;
+    *nrows = n1 - first < fs->rows_per_block ? n1 - first : fs->rows_per_block;
+}
+
+/* Buffers of one thread for a block of up to nb nodes. */
+typedef struct {
+    double *gl, *gh;   /* nb: ghost values of a face */
+    double *L, *R, *P; /* dim nb each: one-sided differences, their mean */
+    double *FX, *B;    /* dim nb: f + G c_u + H c_d, the input bounds */
+    double *Q;         /* HJ_REACH_MAXIN nb: G^T p (or H^T p) */
+    double *h, *val, *n2, *DS, *S;
+    double *frow;      /* dim N[0]: f_row's output for one row */
+} block_bufs;
+
+static size_t block_work(const hj_ls_grid *g, long nb)
+{
+    return (size_t)(7 * g->dim + HJ_REACH_MAXIN + 7) * (size_t)nb + (size_t)g->dim * (size_t)g->N[0];
+}
+
+static void block_bufs_init(block_bufs *w, double *ws, const hj_ls_grid *g, long nb)
+{
+    const size_t n = (size_t)nb, dn = (size_t)g->dim * n;
+    w->gl = ws, w->gh = ws + n;
+    w->L = w->gh + n, w->R = w->L + dn, w->P = w->R + dn, w->FX = w->P + dn, w->B = w->FX + dn;
     w->Q = w->B + dn;
     w->h = w->Q + HJ_REACH_MAXIN * n, w->val = w->h + n, w->n2 = w->val + n, w->DS = w->n2 + n, w->S = w->DS + n;
+    w->frow = w->S + n;
 }
 
-/* -H and alpha_d over a row, in vector loops over the row (the per-node
- * sums in node_player's order): h[j] = H at node j (the sign flipped
- * below), FX and B as alpha_d = |FX| + B needs them. */
-static void row_ham(const fused_dyn *F, double t, const double *rx, double dx0, long n, row_bufs *w, int *b_rows)
+/* Coordinates of the first node of row r0 + q (q < rows of its block). */
+static void row_x(const hj_ls_grid *g, const long *idx0, long q, double *x)
+{
+    long idx[HJ_LS_MAXDIM];
+    memcpy(idx, idx0, sizeof(long) * (size_t)g->dim);
+    if (g->dim > 1) idx[1] += q;
+    hj_ls_coord(g, idx, x);
+}
+
+/* -H and alpha_d over a block of nrows rows from the row of index idx0,
+ * in vector loops over the block (the per-node sums in node_player's
+ * order): h = H at each node (the sign flipped by the caller), FX and B
+ * as alpha_d = |FX| + B needs them. */
+static void block_ham(const fused_dyn *F, double t, const hj_ls_grid *g, const long *idx0, long nrows, block_bufs *w,
+                      int *b_rows)
 {
     const int nx = F->nx;
+    const long n0 = g->N[0], n = n0 * nrows;
+    const double dx0 = g->dx[0];
     double *h = w->h;
     for (long j = 0; j < n; j++) h[j] = 0;
     if (F->f) {
-        if (F->f_row) F->f_row(t, rx, dx0, n, w->FX, F->ctx);
-        else {
-            double x[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM];
-            memcpy(x, rx, sizeof(double) * (size_t)nx);
-            for (long j = 0; j < n; j++) {
-                x[0] = rx[0] + (double)j * dx0;
-                F->f(t, x, fx, F->ctx);
-                for (int i = 0; i < nx; i++) w->FX[(size_t)i * (size_t)n + (size_t)j] = fx[i];
+        for (long q = 0; q < nrows; q++) {
+            double x[HJ_LS_MAXDIM], rx[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM];
+            row_x(g, idx0, q, rx);
+            const size_t o = (size_t)q * (size_t)n0;
+            if (F->f_row) {
+                F->f_row(t, rx, dx0, n0, w->frow, F->ctx);
+                for (int i = 0; i < nx; i++)
+                    memcpy(w->FX + (size_t)i * (size_t)n + o, w->frow + (size_t)i * (size_t)n0,
+                           sizeof(double) * (size_t)n0);
+            } else {
+                memcpy(x, rx, sizeof(double) * (size_t)nx);
+                for (long j = 0; j < n0; j++) {
+                    x[0] = rx[0] + (double)j * dx0;
+                    F->f(t, x, fx, F->ctx);
+                    for (int i = 0; i < nx; i++) w->FX[(size_t)i * (size_t)n + o + (size_t)j] = fx[i];
+                }
             }
         }
         for (int i = 0; i < nx; i++) {
@@ -227,18 +305,22 @@ static void row_ham(const fused_dyn *F, double t, const double *rx, double dx0, 
         if (P->n == 0) continue;
         if (!P->cnst) {
             /* node by node through the matrix callback */
-            double x[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM], b[HJ_LS_MAXDIM];
-            memcpy(x, rx, sizeof(double) * (size_t)nx);
-            for (long j = 0; j < n; j++) {
-                x[0] = rx[0] + (double)j * dx0;
-                for (int i = 0; i < nx; i++) {
-                    const size_t q = (size_t)i * (size_t)n + (size_t)j;
-                    p[i] = w->P[q], fx[i] = w->FX[q], b[i] = w->B[q];
-                }
-                node_player(P, nx, t, x, p, &h[j], fx, b, F->ctx);
-                for (int i = 0; i < nx; i++) {
-                    const size_t q = (size_t)i * (size_t)n + (size_t)j;
-                    w->FX[q] = fx[i], w->B[q] = b[i];
+            for (long q = 0; q < nrows; q++) {
+                double x[HJ_LS_MAXDIM], rx[HJ_LS_MAXDIM], p[HJ_LS_MAXDIM], fx[HJ_LS_MAXDIM], b[HJ_LS_MAXDIM];
+                row_x(g, idx0, q, rx);
+                memcpy(x, rx, sizeof(double) * (size_t)nx);
+                for (long j = 0; j < n0; j++) {
+                    x[0] = rx[0] + (double)j * dx0;
+                    const size_t node = (size_t)q * (size_t)n0 + (size_t)j;
+                    for (int i = 0; i < nx; i++) {
+                        const size_t o = (size_t)i * (size_t)n + node;
+                        p[i] = w->P[o], fx[i] = w->FX[o], b[i] = w->B[o];
+                    }
+                    node_player(P, nx, t, x, p, &h[node], fx, b, F->ctx);
+                    for (int i = 0; i < nx; i++) {
+                        const size_t o = (size_t)i * (size_t)n + node;
+                        w->FX[o] = fx[i], w->B[o] = b[i];
+                    }
                 }
             }
             continue;
@@ -276,10 +358,9 @@ static void row_ham(const fused_dyn *F, double t, const double *rx, double dx0, 
                 for (long j = 0; j < n; j++) fd[j] += pc;
             }
         }
-        if (*b_rows) /* the bounds of a constant matrix, added per row */
+        if (*b_rows) /* the bounds of a constant matrix, added per node */
             for (int d = 0; d < nx; d++) {
-                double *B = w->B + (size_t)d * (size_t)n;
-                double nn = 0;
+                double *B = w->B + (size_t)d * (size_t)n, nn = 0;
                 for (int jj = 0; jj < P->n; jj++) {
                     const double m = P->M[d * P->n + jj];
                     if (P->box) {
@@ -296,92 +377,80 @@ static void row_ham(const fused_dyn *F, double t, const double *rx, double dx0, 
     }
 }
 
-/* The ghost node at distance 1 beyond the face: hj_ls_grid.c's fill_line
- * for k = 1, from the boundary value v and its inward neighbour w (the
- * opposite boundary value for a periodic dimension). */
-static inline double ghost(const hj_ls_bc *bc, int hi, double v, double w, double dx)
-{
-    switch (bc->type) {
-    case HJ_LS_BC_PERIODIC: return w;
-    case HJ_LS_BC_DIRICHLET: return hi ? bc->hi : bc->lo;
-    case HJ_LS_BC_NEUMANN: return v + (double)1 * dx * (hi ? bc->hi : bc->lo);
-    default: {
-        const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
-        const double sv = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-        return v + (double)1 * dir * sv * fabs(v - w);
-    }
-    }
-}
-
-typedef struct {
-    const hj_reach_problem *pb;
-    const fused_dyn *F;
-    const hj_ls_grid *g;
-    size_t cs[HJ_LS_MAXDIM]; /* strides of the interior-only layout */
-    double T;
-} fused;
-
-/* One row of ydot = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d)/2)
- * into out; *inv = max_j sum_d alpha_d / dx_d; the first node with a
- * non-finite H or alpha in *bad (-1: none). */
+/* One block of ydot = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d)/2)
+ * into out (the block's nodes of next); *inv = max over the block of
+ * sum_d alpha_d / dx_d; the first node (row r, node j) with a non-finite
+ * H or alpha in *bad_r, *bad_j (*bad_j = -1: none). */
 CLONES
-static void row_ydot(const fused *fs, double tau, const double *y, size_t r, double *out, row_bufs *w, double *inv,
-                     long *bad)
+static void block_ydot(const fused *fs, double tau, const double *y, size_t blk, double *out, block_bufs *w,
+                       double *inv, size_t *bad_r, long *bad_j)
 {
     const hj_ls_grid *g = fs->g;
     const int dim = g->dim;
-    const long n = g->N[0];
-    long idx[HJ_LS_MAXDIM];
-    double rx[HJ_LS_MAXDIM];
-    hj_ls_row(g, r, idx);
-    hj_ls_coord(g, idx, rx);
-    const double *row = y + r * (size_t)n;
-    /* dimension 0: the row with its ghosts, pad[j + 1] = node j */
-    double *pad = w->pad;
-    const int per0 = g->bc[0].type == HJ_LS_BC_PERIODIC;
-    memcpy(pad + 1, row, sizeof(double) * (size_t)n);
-    pad[0] = ghost(&g->bc[0], 0, row[0], per0 ? row[n - 1] : row[1], g->dx[0]);
-    pad[n + 1] = ghost(&g->bc[0], 1, row[n - 1], per0 ? row[0] : row[n - 2], g->dx[0]);
+    const long n0 = g->N[0];
+    size_t r0;
+    long nrows, idx[HJ_LS_MAXDIM];
+    block_rows(fs, blk, &r0, &nrows);
+    hj_ls_row(g, r0, idx);
+    const long n = n0 * nrows;
+    const double *row = y + r0 * (size_t)n0; /* the block's first node */
+    /* dimension 0: neighbours at +-1, the ghosts at the ends of each row */
     {
         const double inv0 = 1.0 / g->dx[0];
+        const int per = g->bc[0].type == HJ_LS_BC_PERIODIC;
         double *L = w->L, *R = w->R, *P = w->P;
-        for (long j = 0; j < n; j++) {
-            L[j] = (pad[j + 1] - pad[j]) * inv0;
-            R[j] = (pad[j + 2] - pad[j + 1]) * inv0;
-            P[j] = 0.5 * (L[j] + R[j]);
+        for (long j = 1; j < n; j++) L[j] = (row[j] - row[j - 1]) * inv0;
+        for (long j = 0; j < n - 1; j++) R[j] = (row[j + 1] - row[j]) * inv0;
+        for (long q = 0; q < nrows; q++) {
+            const double *a = row + q * n0;
+            const double gl = ghost(&g->bc[0], 0, a[0], per ? a[n0 - 1] : a[1], g->dx[0]);
+            const double gh = ghost(&g->bc[0], 1, a[n0 - 1], per ? a[0] : a[n0 - 2], g->dx[0]);
+            L[q * n0] = (a[0] - gl) * inv0;
+            R[q * n0 + n0 - 1] = (gh - a[n0 - 1]) * inv0;
         }
+        for (long j = 0; j < n; j++) P[j] = 0.5 * (L[j] + R[j]);
     }
-    /* other dimensions: the neighbouring rows, or ghost rows at a face */
+    /* other dimensions: neighbours at +-stride, ghost rows at the faces
+     * (dimension 1: its first and last rows, in the block or not) */
     for (int d = 1; d < dim; d++) {
-        const size_t s = fs->cs[d], span = s * (size_t)(g->N[d] - 1);
+        const size_t s = fs->cs[d];
         const int per = g->bc[d].type == HJ_LS_BC_PERIODIC;
-        const double *lo, *hi;
-        if (idx[d] > 0) lo = row - s;
-        else if (per) lo = row + span;
-        else {
-            double *q = w->gr + (size_t)(2 * d) * (size_t)n;
-            const double *in = row + s;
-            for (long j = 0; j < n; j++) q[j] = ghost(&g->bc[d], 0, row[j], in[j], g->dx[d]);
-            lo = q;
-        }
-        if (idx[d] < g->N[d] - 1) hi = row + s;
-        else if (per) hi = row - span;
-        else {
-            double *q = w->gr + (size_t)(2 * d + 1) * (size_t)n;
-            const double *in = row - s;
-            for (long j = 0; j < n; j++) q[j] = ghost(&g->bc[d], 1, row[j], in[j], g->dx[d]);
-            hi = q;
-        }
         const double invd = 1.0 / g->dx[d];
         double *L = w->L + (size_t)d * (size_t)n, *R = w->R + (size_t)d * (size_t)n, *P = w->P + (size_t)d * (size_t)n;
-        for (long j = 0; j < n; j++) {
-            L[j] = (row[j] - lo[j]) * invd;
-            R[j] = (hi[j] - row[j]) * invd;
-            P[j] = 0.5 * (L[j] + R[j]);
+        /* the nodes [lo_from, n) have a lower neighbour on the grid,
+         * [0, hi_to) an upper one; the others are on a face */
+        long lo_from = 0, hi_to = n, lo_face = 0, hi_face = 0;
+        if (d == 1) {
+            if (idx[1] == 0) lo_from = n0, lo_face = n0;
+            if (idx[1] + nrows == g->N[1]) hi_to = n - n0, hi_face = n0;
+        } else {
+            if (idx[d] == 0) lo_from = n, lo_face = n;
+            if (idx[d] == g->N[d] - 1) hi_to = 0, hi_face = n;
         }
+        for (long j = lo_from; j < n; j++) L[j] = (row[j] - row[(ptrdiff_t)j - (ptrdiff_t)s]) * invd;
+        for (long j = 0; j < hi_to; j++) R[j] = (row[j + (long)s] - row[j]) * invd;
+        const size_t span = s * (size_t)(g->N[d] - 1);
+        if (lo_face) { /* nodes [0, lo_face) on the lower face */
+            double *q = w->gl;
+            if (per)
+                for (long j = 0; j < lo_face; j++) q[j] = row[(size_t)j + span];
+            else
+                for (long j = 0; j < lo_face; j++) q[j] = ghost(&g->bc[d], 0, row[j], row[(size_t)j + s], g->dx[d]);
+            for (long j = 0; j < lo_face; j++) L[j] = (row[j] - q[j]) * invd;
+        }
+        if (hi_face) { /* nodes [n - hi_face, n) on the upper face */
+            double *q = w->gh;
+            const double *a = row + (n - hi_face);
+            if (per)
+                for (long j = 0; j < hi_face; j++) q[j] = a[(ptrdiff_t)j - (ptrdiff_t)span];
+            else
+                for (long j = 0; j < hi_face; j++) q[j] = ghost(&g->bc[d], 1, a[j], a[(ptrdiff_t)j - (ptrdiff_t)s], g->dx[d]);
+            for (long j = 0; j < hi_face; j++) R[n - hi_face + j] = (q[j] - a[j]) * invd;
+        }
+        for (long j = 0; j < n; j++) P[j] = 0.5 * (L[j] + R[j]);
     }
     int b_rows;
-    row_ham(fs->F, fs->T - tau, rx, g->dx[0], n, w, &b_rows);
+    block_ham(fs->F, fs->T - tau, g, idx, nrows, w, &b_rows);
     /* dissipation, CFL sum, finiteness, the time derivative */
     double *DS = w->DS, *S = w->S, *h = w->h;
     int fin_any = 1;
@@ -419,7 +488,8 @@ static void row_ydot(const fused *fs, double tau, const double *y, size_t r, dou
             if (!ok) b = j;
         }
     *inv = m;
-    *bad = b;
+    *bad_r = b < 0 ? 0 : r0 + (size_t)(b / n0);
+    *bad_j = b < 0 ? -1 : b % n0;
 }
 
 static int set_given(const hj_reach_set *s) { return s->fn || s->array; }
@@ -443,7 +513,10 @@ int hj_reach_fused_applies(const hj_reach_problem *pb)
 
 size_t hj_reach_fused_bytes(const hj_ls_grid *g, int compact, int threads)
 {
-    return sizeof(double) * ((compact ? 1 : 2) * g->nodes + (size_t)threads * row_work(g));
+    fused fs;
+    fs.g = g;
+    blocks_init(&fs);
+    return sizeof(double) * ((compact ? 1 : 2) * g->nodes + (size_t)threads * block_work(g, fs.block_nodes));
 }
 
 static double wall(void)
@@ -491,16 +564,21 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     const long n = g->N[0];
     fused_dyn F;
     fused_dyn_init(&F, pb->dyn, T);
-    fused fs = {pb, &F, g, {1}, T};
+    fused fs = {pb, &F, g, {1}, T, 0, 0, 0, 0};
     for (int d = 1; d < g->dim; d++) fs.cs[d] = fs.cs[d - 1] * (size_t)g->N[d - 1];
+    blocks_init(&fs);
     double *own = malloc(sizeof(double) * g->nodes * (compact ? 1 : 2));
     if (!own) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for %zu nodes", g->nodes);
     double *y = compact ? phi : own, *next = compact ? own : own + g->nodes;
     long steps = 0;
     double tau = 0, change = INFINITY;
     int converged = 0, rc = HJ_OK;
-    /* tau = 0: max(target(T), -obstacle(T)). */
-    for (size_t r = 0; r < g->rows && rc == HJ_OK; r++) {
+    /* tau = 0: max(target(T), -obstacle(T)), node by node in parallel. */
+    int nan_target = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 16) reduction(| : nan_target)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
         long i[HJ_LS_MAXDIM];
         double x[HJ_LS_MAXDIM];
         hj_ls_row(g, r, i);
@@ -510,10 +588,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             const size_t k = ku + (size_t)j;
             x[0] = g->min[0] + (double)j * g->dx[0];
             double v = set_at(&pb->target, T, x, k);
-            if (isnan(v)) {
-                rc = hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
-                break;
-            }
+            nan_target |= isnan(v);
             if (ttr) ttr[k] = v <= 0 ? 0 : INFINITY;
             if (obst) {
                 const double o = -set_at(&pb->obstacle, T, x, k);
@@ -522,9 +597,11 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             y[kc + (size_t)j] = v;
         }
     }
+    if (nan_target) rc = hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
     const double tk = isinf(pb->horizon) ? DBL_MAX / 4 : T;
     const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
-    const size_t wsz = row_work(g);
+    const size_t wsz = block_work(g, fs.block_nodes);
+    const int set_fn = (tube && pb->target.fn) || (obst && pb->obstacle.fn);
     while (rc == HJ_OK && tk - tau > small) {
         /* pass 1: the time derivative into next, the CFL bound */
         double m = 0;
@@ -536,23 +613,25 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
 #endif
         {
             double *ws = malloc(sizeof(double) * wsz);
-            row_bufs w;
+            block_bufs w;
             if (!ws) nomem = 1;
             else {
-                row_bufs_init(&w, ws, g);
+                block_bufs_init(&w, ws, g, fs.block_nodes);
                 int nan_seen = 0;
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 4)
 #endif
-                for (size_t r = 0; r < g->rows; r++) {
+                for (size_t b = 0; b < fs.blocks; b++) {
                     double inv;
-                    long bj;
-                    row_ydot(&fs, tau, y, r, next + r * (size_t)n, &w, &inv, &bj);
+                    size_t br, r0;
+                    long bj, nr;
+                    block_rows(&fs, b, &r0, &nr);
+                    block_ydot(&fs, tau, y, b, next + r0 * (size_t)n, &w, &inv, &br, &bj);
                     if (bj >= 0) {
 #ifdef _OPENMP
 #pragma omp critical(hj_reach_fused_bad)
 #endif
-                        if (r < bad_r) bad_r = r, bad_j = bj;
+                        if (br < bad_r) bad_r = br, bad_j = bj;
                     }
                     if (inv != inv) nan_seen = 1;
                     else m = inv > m ? inv : m;
@@ -592,9 +671,11 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         for (size_t r = 0; r < g->rows; r++) {
             long i[HJ_LS_MAXDIM];
             double x[HJ_LS_MAXDIM];
-            hj_ls_row(g, r, i);
-            hj_ls_coord(g, i, x);
-            const size_t ku = user_row(g, compact, r), kc = r * (size_t)n;
+            if (set_fn) { /* coordinates only for set functions */
+                hj_ls_row(g, r, i);
+                hj_ls_coord(g, i, x);
+            }
+            const size_t kc = r * (size_t)n, ku = compact ? kc : user_row(g, 0, r);
             const double *yo = y + kc;
             double *yn = next + kc, rch = 0;
             int rb = 0, rs = 0;
