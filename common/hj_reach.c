@@ -522,6 +522,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
                             "reach: compact arrays need the fused path (first order upwinding, forward Euler, no "
                             "discount, undivided grid, general and per_node 0)");
     const double start = wall();
+    double step_seconds = 0;
     const hj_ls_grid *g = pb->grid;
     /* With an infinite horizon the sets are static: T only shifts time. */
     const double T = isinf(pb->horizon) ? 0 : pb->horizon;
@@ -599,7 +600,9 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     o.blowup_factor = 0; /* obstacle and target bound phi; discount decays */
     /* An infinite horizon runs until convergence: a long finite span. */
     const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
+    const double steps_start = wall();
     rc = hj_ls_ode(pb->order, g, term, tspan, 2, phi, &o, NULL, NULL, NULL, err);
+    step_seconds = wall() - steps_start;
     if (rc == STOP_CONVERGED) rc = HJ_OK, hj_error_clear(err);
     if (rc == HJ_OK) hj_ls_fill_ghosts(g, phi);
 done:
@@ -613,6 +616,7 @@ done:
         stats->tau = pc.tau_prev;
         stats->converged = pc.converged;
         stats->seconds = wall() - start;
+        stats->step_seconds = step_seconds;
         /* prev, the integrator's time derivative and stage, the kept
          * derivatives, the row buffers */
         stats->bytes = sizeof(double) * ((2 + (pb->order > 1)) * g->total +

@@ -173,6 +173,7 @@ typedef struct {
     double tau;    /* backward time reached (T, or less when converged) */
     int converged; /* the convergence stop ended the run */
     double seconds;
+    double step_seconds; /* of which in the time steps (no setup) */
     size_t bytes;  /* the solver's own arrays and row buffers (the
                     * caller's phi and ttr not counted) */
 } hj_reach_stats;

@@ -602,6 +602,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
     const size_t wsz = block_work(g, fs.block_nodes);
     const int set_fn = (tube && pb->target.fn) || (obst && pb->obstacle.fn);
+    const double steps_start = wall();
     while (rc == HJ_OK && tk - tau > small) {
         /* pass 1: the time derivative into next, the CFL bound */
         double m = 0;
@@ -728,6 +729,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             break;
         }
     }
+    const double step_seconds = wall() - steps_start;
     /* the value into the caller's array */
     if (rc == HJ_OK) {
         if (compact) {
@@ -744,6 +746,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         stats->tau = tau;
         stats->converged = converged;
         stats->seconds = wall() - start;
+        stats->step_seconds = step_seconds;
         stats->bytes = hj_reach_fused_bytes(g, compact, max_threads());
     }
     return rc;
