@@ -203,7 +203,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
  * it allocates for grid g with `threads` threads. */
 int hj_reach_fused_applies(const hj_reach_problem *pb);
 int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
-size_t hj_reach_fused_bytes(const hj_ls_grid *g, int compact, int threads);
+size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads);
 
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
  * periodic dimension, which counts a full period (hj_ls_measure_periodic). */

@@ -511,12 +511,13 @@ int hj_reach_fused_applies(const hj_reach_problem *pb)
            pb->discount == 0 && pb->grid && !pb->grid->dist;
 }
 
-size_t hj_reach_fused_bytes(const hj_ls_grid *g, int compact, int threads)
+size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads)
 {
     fused fs;
-    fs.g = g;
+    fs.g = pb->grid;
     blocks_init(&fs);
-    return sizeof(double) * ((compact ? 1 : 2) * g->nodes + (size_t)threads * block_work(g, fs.block_nodes));
+    const size_t narrays = (pb->compact ? 1 : 2) + (pb->order > 1);
+    return sizeof(double) * (narrays * fs.g->nodes + (size_t)threads * block_work(fs.g, fs.block_nodes));
 }
 
 static double wall(void)
@@ -551,6 +552,71 @@ static int report_bad(const hj_ls_grid *g, size_t r, long j, double tau, hj_erro
                         "Hamiltonian or partial callback returned a non-finite value at x = (%s), t = %g", pos, tau);
 }
 
+/* ydot of the state y into out over every block, in parallel; *m = the
+ * largest sum_d alpha_d / dx_d.  Errors as the general path's term. */
+static int eval_pass(const fused *fs, double tau, const double *y, double *out, size_t wsz, double *m_out,
+                     hj_error *err)
+{
+    const hj_ls_grid *g = fs->g;
+    const long n = g->N[0];
+    double m = 0;
+    int nomem = 0;
+    size_t bad_r = (size_t)-1;
+    long bad_j = -1;
+#ifdef _OPENMP
+#pragma omp parallel reduction(max : m) reduction(| : nomem)
+#endif
+    {
+        double *ws = malloc(sizeof(double) * wsz);
+        block_bufs w;
+        if (!ws) nomem = 1;
+        else {
+            block_bufs_init(&w, ws, g, fs->block_nodes);
+            int nan_seen = 0;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 4)
+#endif
+            for (size_t b = 0; b < fs->blocks; b++) {
+                double inv;
+                size_t br, r0;
+                long bj, nr;
+                block_rows(fs, b, &r0, &nr);
+                block_ydot(fs, tau, y, b, out + r0 * (size_t)n, &w, &inv, &br, &bj);
+                if (bj >= 0) {
+#ifdef _OPENMP
+#pragma omp critical(hj_reach_fused_bad)
+#endif
+                    if (br < bad_r) bad_r = br, bad_j = bj;
+                }
+                if (inv != inv) nan_seen = 1;
+                else m = inv > m ? inv : m;
+            }
+            if (nan_seen) m = NAN;
+        }
+        free(ws);
+    }
+    if (nomem) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for the row workspace");
+    if (bad_r != (size_t)-1) return report_bad(g, bad_r, bad_j, tau, err);
+    if (m != m || m == INFINITY)
+        return hj_error_set(err, HJ_ENONFINITE, "Hamiltonian or partial callback: non-finite CFL bound at t = %g", tau);
+    *m_out = m;
+    return HJ_OK;
+}
+
+/* dst = a y + b (u + dt f) (hj_ls_ode's combine); dst may alias y or u. */
+static void combine_pass(const hj_ls_grid *g, double *dst, double a, const double *y, double b, const double *u,
+                         double dt, const double *f)
+{
+    const long n = g->N[0];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = r * (size_t)n;
+        for (long q = 0; q < n; q++) dst[k + q] = a * y[k + q] + b * (u[k + q] + dt * f[k + q]);
+    }
+}
+
 int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err)
 {
     if (!hj_reach_fused_applies(pb))
@@ -567,9 +633,12 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     fused fs = {pb, &F, g, {1}, T, 0, 0, 0, 0};
     for (int d = 1; d < g->dim; d++) fs.cs[d] = fs.cs[d - 1] * (size_t)g->N[d - 1];
     blocks_init(&fs);
-    double *own = malloc(sizeof(double) * g->nodes * (compact ? 1 : 2));
+    /* the state y (the caller's phi when compact), the time derivative f,
+     * a Runge-Kutta stage u */
+    const size_t narrays = (compact ? 1 : 2) + (pb->order > 1);
+    double *own = malloc(sizeof(double) * g->nodes * narrays);
     if (!own) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for %zu nodes", g->nodes);
-    double *y = compact ? phi : own, *next = compact ? own : own + g->nodes;
+    double *y = compact ? phi : own + g->nodes * (narrays - 1), *f = own, *u = pb->order > 1 ? own + g->nodes : NULL;
     long steps = 0;
     double tau = 0, change = INFINITY;
     int converged = 0, rc = HJ_OK;
@@ -604,66 +673,33 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     const int set_fn = (tube && pb->target.fn) || (obst && pb->obstacle.fn);
     const double steps_start = wall();
     while (rc == HJ_OK && tk - tau > small) {
-        /* pass 1: the time derivative into next, the CFL bound */
-        double m = 0;
-        int nomem = 0;
-        size_t bad_r = (size_t)-1;
-        long bad_j = -1;
-#ifdef _OPENMP
-#pragma omp parallel reduction(max : m) reduction(| : nomem)
-#endif
-        {
-            double *ws = malloc(sizeof(double) * wsz);
-            block_bufs w;
-            if (!ws) nomem = 1;
-            else {
-                block_bufs_init(&w, ws, g, fs.block_nodes);
-                int nan_seen = 0;
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 4)
-#endif
-                for (size_t b = 0; b < fs.blocks; b++) {
-                    double inv;
-                    size_t br, r0;
-                    long bj, nr;
-                    block_rows(&fs, b, &r0, &nr);
-                    block_ydot(&fs, tau, y, b, next + r0 * (size_t)n, &w, &inv, &br, &bj);
-                    if (bj >= 0) {
-#ifdef _OPENMP
-#pragma omp critical(hj_reach_fused_bad)
-#endif
-                        if (br < bad_r) bad_r = br, bad_j = bj;
-                    }
-                    if (inv != inv) nan_seen = 1;
-                    else m = inv > m ? inv : m;
-                }
-                if (nan_seen) m = NAN;
-            }
-            free(ws);
-        }
-        if (nomem) {
-            rc = hj_error_set(err, HJ_ENOMEM, "reach: out of memory for the row workspace");
-            break;
-        }
-        if (bad_r != (size_t)-1) {
-            rc = report_bad(g, bad_r, bad_j, tau, err);
-            break;
-        }
-        if (m != m || m == INFINITY) {
-            rc = hj_error_set(err, HJ_ENONFINITE, "Hamiltonian or partial callback: non-finite CFL bound at t = %g", tau);
-            break;
-        }
+        /* hj_ls_ode's TVD Runge-Kutta step; the first evaluation sets dt */
+        double m;
+        if ((rc = eval_pass(&fs, tau, y, f, wsz, &m, err))) break;
         if (!(m > 0)) {
             rc = hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", tau);
             break;
         }
-        /* hj_ls_ode's step: factor_cfl times the bound, the last one cut */
         double dt = pb->factor_cfl * (1 / m);
         dt = dt < DBL_MAX ? dt : DBL_MAX;
         int last = 0;
         if (dt >= tk - tau) dt = tk - tau, last = 1;
         const double tau_new = last ? tk : tau + dt, t = T - tau_new, dtp = tau_new - tau;
-        /* pass 2: Euler step, target and obstacle, change, time-to-reach */
+        /* the last combination a y + b (u + dt f), fused with the post step */
+        double a = 0, b = 1;
+        const double *uu = y;
+        if (pb->order > 1) {
+            combine_pass(g, u, 0, y, 1, y, dt, f);
+            if ((rc = eval_pass(&fs, tau + dt, u, f, wsz, &m, err))) break;
+            a = 0.5, b = 0.5, uu = u;
+            if (pb->order == 3) {
+                combine_pass(g, u, 0.75, y, 0.25, u, dt, f);
+                if ((rc = eval_pass(&fs, tau + 0.5 * dt, u, f, wsz, &m, err))) break;
+                a = 1.0 / 3, b = 2.0 / 3;
+            }
+        }
+        /* Euler step or last stage, target and obstacle, change,
+         * time-to-reach: y in place */
         double ch = 0;
         int bad_state = 0, bad_set = 0;
 #ifdef _OPENMP
@@ -677,12 +713,12 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
                 hj_ls_coord(g, i, x);
             }
             const size_t kc = r * (size_t)n, ku = compact ? kc : user_row(g, 0, r);
-            const double *yo = y + kc;
-            double *yn = next + kc, rch = 0;
+            double *yo = y + kc, rch = 0;
+            const double *fr = f + kc, *ur = uu + kc;
             int rb = 0, rs = 0;
             for (long j = 0; j < n; j++) {
                 const double old = yo[j];
-                double v = 0.0 * old + 1.0 * (old + dt * yn[j]);
+                double v = a * old + b * (ur[j] + dt * fr[j]);
                 rb |= !(v - v == 0);
                 if (tube || obst) {
                     const size_t k = ku + (size_t)j;
@@ -698,7 +734,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
                         v = o > v ? o : v;
                     }
                 }
-                yn[j] = v;
+                yo[j] = v;
                 const double dv = fabs(v - old);
                 rch = dv > rch ? dv : rch;
                 if (ttr) {
@@ -720,8 +756,6 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             rc = hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
             break;
         }
-        double *sw = y;
-        y = next, next = sw;
         tau = tau_new;
         change = ch / dtp;
         if (pb->conv_tol > 0 && change <= pb->conv_tol) {
@@ -732,9 +766,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     const double step_seconds = wall() - steps_start;
     /* the value into the caller's array */
     if (rc == HJ_OK) {
-        if (compact) {
-            if (y != phi) memcpy(phi, y, sizeof(double) * g->nodes);
-        } else {
+        if (!compact) {
             for (size_t r = 0; r < g->rows; r++)
                 memcpy(phi + user_row(g, 0, r), y + r * (size_t)n, sizeof(double) * (size_t)n);
             hj_ls_fill_ghosts(g, phi);
@@ -747,7 +779,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         stats->converged = converged;
         stats->seconds = wall() - start;
         stats->step_seconds = step_seconds;
-        stats->bytes = hj_reach_fused_bytes(g, compact, max_threads());
+        stats->bytes = hj_reach_fused_bytes(pb, max_threads());
     }
     return rc;
 }
