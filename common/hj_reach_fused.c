@@ -187,6 +187,32 @@ static inline double ghost(const hj_ls_bc *bc, int hi, double v, double w, doubl
     }
 }
 
+/* The ghost node at distance k = 1..HJ_LS_GHOST beyond a face that is not
+ * periodic (fill_line for any k): v the boundary value, w its inward
+ * neighbour. */
+static inline double ghost_k(const hj_ls_bc *bc, int hi, long k, double v, double w, double dx)
+{
+    switch (bc->type) {
+    case HJ_LS_BC_DIRICHLET: return hi ? bc->hi : bc->lo;
+    case HJ_LS_BC_NEUMANN: return v + (double)k * dx * (hi ? bc->hi : bc->lo);
+    default: {
+        const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
+        const double sv = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+        return v + (double)k * dir * sv * fabs(v - w);
+    }
+    }
+}
+
+/* The grid index a periodic ghost at index i (< 0 or >= N) copies. */
+static inline long wrap(long i, long N)
+{
+    if (i < 0) {
+        const long k = -i;
+        return (N - k % N) % N;
+    }
+    return (i - N) % N;
+}
+
 typedef struct {
     const hj_reach_problem *pb;
     const fused_dyn *F;
@@ -234,11 +260,15 @@ typedef struct {
     double *Q;         /* HJ_REACH_MAXIN nb: G^T p (or H^T p) */
     double *h, *val, *n2, *DS, *S;
     double *frow;      /* dim N[0]: f_row's output for one row */
+    double *pad;       /* N[0] + 6: a row with its ghosts (higher orders) */
+    double *G;         /* 7 nb: the stencil's rows gathered (higher orders) */
+    double *uw;        /* HJ_LS_ROW_WORK nb: hj_ls_upwind_row's workspace */
 } block_bufs;
 
 static size_t block_work(const hj_ls_grid *g, long nb)
 {
-    return (size_t)(7 * g->dim + HJ_REACH_MAXIN + 7) * (size_t)nb + (size_t)g->dim * (size_t)g->N[0];
+    return (size_t)(7 * g->dim + HJ_REACH_MAXIN + 7 + 7 + HJ_LS_ROW_WORK) * (size_t)nb +
+           (size_t)(g->dim + 1) * (size_t)g->N[0] + 6;
 }
 
 static void block_bufs_init(block_bufs *w, double *ws, const hj_ls_grid *g, long nb)
@@ -249,6 +279,9 @@ static void block_bufs_init(block_bufs *w, double *ws, const hj_ls_grid *g, long
     w->Q = w->B + dn;
     w->h = w->Q + HJ_REACH_MAXIN * n, w->val = w->h + n, w->n2 = w->val + n, w->DS = w->n2 + n, w->S = w->DS + n;
     w->frow = w->S + n;
+    w->pad = w->frow + (size_t)g->dim * (size_t)g->N[0];
+    w->G = w->pad + (size_t)g->N[0] + 6;
+    w->uw = w->G + 7 * n;
 }
 
 /* Coordinates of the first node of row r0 + q (q < rows of its block). */
@@ -377,23 +410,14 @@ static void block_ham(const fused_dyn *F, double t, const hj_ls_grid *g, const l
     }
 }
 
-/* One block of ydot = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d)/2)
- * into out (the block's nodes of next); *inv = max over the block of
- * sum_d alpha_d / dx_d; the first node (row r, node j) with a non-finite
- * H or alpha in *bad_r, *bad_j (*bad_j = -1: none). */
-CLONES
-static void block_ydot(const fused *fs, double tau, const double *y, size_t blk, double *out, block_bufs *w,
-                       double *inv, size_t *bad_r, long *bad_j)
+/* First order: the one-sided differences L, R and their mean P of a
+ * block of nrows rows from index idx, row its first node: neighbours at
+ * +-1 and +-stride, the face ghosts made per row. */
+static void block_derivs_first(const fused *fs, const double *row, const long *idx, long nrows, block_bufs *w)
 {
     const hj_ls_grid *g = fs->g;
     const int dim = g->dim;
-    const long n0 = g->N[0];
-    size_t r0;
-    long nrows, idx[HJ_LS_MAXDIM];
-    block_rows(fs, blk, &r0, &nrows);
-    hj_ls_row(g, r0, idx);
-    const long n = n0 * nrows;
-    const double *row = y + r0 * (size_t)n0; /* the block's first node */
+    const long n0 = g->N[0], n = n0 * nrows;
     /* dimension 0: neighbours at +-1, the ghosts at the ends of each row */
     {
         const double inv0 = 1.0 / g->dx[0];
@@ -449,6 +473,106 @@ static void block_ydot(const fused *fs, double tau, const double *y, size_t blk,
         }
         for (long j = 0; j < n; j++) P[j] = 0.5 * (L[j] + R[j]);
     }
+}
+
+/* Higher order schemes (hj_ls_upwind_row_eps, the local WENO epsilon of
+ * the general path): the one-sided derivatives L, R and their mean P of a
+ * block of nrows rows from index idx, y the state, row its first node.
+ * Along dimension 0 each row is padded with its 3 ghosts on each side;
+ * along d >= 1 the 7 rows (blocks) of the stencil are read in place with
+ * stride cs[d] where they are all on the grid, else gathered with ghost
+ * rows made from the boundary conditions (a face's ghosts only: the
+ * stencil along d reads no corner ghost). */
+static void block_derivs_high(const fused *fs, const double *row, const long *idx, long nrows, block_bufs *w)
+{
+    const hj_ls_grid *g = fs->g;
+    const int scheme = fs->pb->scheme;
+    const long n0 = g->N[0], n = n0 * nrows;
+    {
+        const hj_ls_bc *bc = &g->bc[0];
+        const int per = bc->type == HJ_LS_BC_PERIODIC;
+        double *pad = w->pad;
+        for (long q = 0; q < nrows; q++) {
+            const double *a = row + q * n0;
+            memcpy(pad + 3, a, sizeof(double) * (size_t)n0);
+            for (long k = 1; k <= HJ_LS_GHOST; k++) {
+                pad[3 - k] = per ? a[wrap(-k, n0)] : ghost_k(bc, 0, k, a[0], a[1], g->dx[0]);
+                pad[2 + n0 + k] = per ? a[wrap(n0 - 1 + k, n0)] : ghost_k(bc, 1, k, a[n0 - 1], a[n0 - 2], g->dx[0]);
+            }
+            hj_ls_upwind_row_eps(scheme, pad + 3, 1, n0, g->dx[0], -1, w->L + q * n0, w->R + q * n0, w->uw);
+        }
+    }
+    for (int d = 1; d < g->dim; d++) {
+        const hj_ls_bc *bc = &g->bc[d];
+        const int per = bc->type == HJ_LS_BC_PERIODIC;
+        const long N = g->N[d];
+        /* the stencil's extent along d: the rows of a block along dimension
+         * 1 span nrows indices; along d >= 2 the block is one index */
+        const long span = d == 1 ? nrows : 1, first = idx[d] - HJ_LS_GHOST, lastx = idx[d] + span - 1 + HJ_LS_GHOST;
+        double *L = w->L + (size_t)d * (size_t)n, *R = w->R + (size_t)d * (size_t)n;
+        if (first >= 0 && lastx < N) {
+            hj_ls_upwind_row_eps(scheme, row, (ptrdiff_t)fs->cs[d], n, g->dx[d], -1, L, R, w->uw);
+            continue;
+        }
+        /* gather: slot o = 0..6 holds the nodes at offset o - 3 along d
+         * of every node of the block; the unit of an offset along d is
+         * one row (n0 nodes) for d = 1, the whole block for d >= 2 */
+        const size_t s = fs->cs[d];
+        const long unit = d == 1 ? n0 : n; /* nodes sharing one index along d */
+        /* (the node at index i along d of this part's position is at
+         * row + (i - idx[d]) s: for d = 1 the part's own offset is that of
+         * its index) */
+        for (int o = 0; o < 7; o++) {
+            double *dst = w->G + (size_t)o * (size_t)n;
+            for (long part = 0; part < n / unit; part++) {
+                const long i = idx[d] + part + (o - 3); /* index along d of this part */
+                double *to = dst + part * unit;
+                if (i >= 0 && i < N) {
+                    memcpy(to, row + (ptrdiff_t)(i - idx[d]) * (ptrdiff_t)s, sizeof(double) * (size_t)unit);
+                    continue;
+                }
+                if (per) {
+                    memcpy(to, row + (ptrdiff_t)(wrap(i, N) - idx[d]) * (ptrdiff_t)s, sizeof(double) * (size_t)unit);
+                    continue;
+                }
+                /* ghost at distance k from the face: from the boundary
+                 * row b and its inward neighbour */
+                const int hiface = i >= N;
+                const long k = hiface ? i - (N - 1) : -i, bi = hiface ? N - 1 : 0, wi = hiface ? N - 2 : 1;
+                const double *bv = row + (ptrdiff_t)(bi - idx[d]) * (ptrdiff_t)s;
+                const double *wv = row + (ptrdiff_t)(wi - idx[d]) * (ptrdiff_t)s;
+                for (long j = 0; j < unit; j++) to[j] = ghost_k(bc, hiface, k, bv[j], wv[j], g->dx[d]);
+            }
+        }
+        hj_ls_upwind_row_eps(scheme, w->G + 3 * (size_t)n, (ptrdiff_t)n, n, g->dx[d], -1, L, R, w->uw);
+    }
+    for (int d = 0; d < g->dim; d++) {
+        const double *L = w->L + (size_t)d * (size_t)n, *R = w->R + (size_t)d * (size_t)n;
+        double *P = w->P + (size_t)d * (size_t)n;
+        for (long j = 0; j < n; j++) P[j] = 0.5 * (L[j] + R[j]);
+    }
+}
+
+/* One block of ydot = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d)/2)
+ * into out (the block's nodes of next); *inv = max over the block of
+ * sum_d alpha_d / dx_d; the first node (row r, node j) with a non-finite
+ * H or alpha in *bad_r, *bad_j (*bad_j = -1: none). */
+CLONES
+static void block_ydot(const fused *fs, double tau, const double *y, size_t blk, double *out, block_bufs *w,
+                       double *inv, size_t *bad_r, long *bad_j)
+{
+    const hj_ls_grid *g = fs->g;
+    const int dim = g->dim;
+    const long n0 = g->N[0];
+    size_t r0;
+    long nrows, idx[HJ_LS_MAXDIM];
+    block_rows(fs, blk, &r0, &nrows);
+    hj_ls_row(g, r0, idx);
+    const long n = n0 * nrows;
+    const double *row = y + r0 * (size_t)n0; /* the block's first node */
+    if (fs->pb->scheme != HJ_LS_UPWIND_FIRST) block_derivs_high(fs, row, idx, nrows, w);
+    else
+        block_derivs_first(fs, row, idx, nrows, w);
     int b_rows;
     block_ham(fs->F, fs->T - tau, g, idx, nrows, w, &b_rows);
     /* dissipation, CFL sum, finiteness, the time derivative */
@@ -507,7 +631,7 @@ static size_t user_row(const hj_ls_grid *g, int compact, size_t r)
 
 int hj_reach_fused_applies(const hj_reach_problem *pb)
 {
-    return !pb->general && !pb->per_node && pb->scheme == HJ_LS_UPWIND_FIRST && pb->order == 1 &&
+    return !pb->general && !pb->per_node && hj_ls_scheme_name(pb->scheme) && pb->order >= 1 && pb->order <= 3 &&
            pb->discount == 0 && pb->grid && !pb->grid->dist;
 }
 

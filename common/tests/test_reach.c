@@ -428,7 +428,7 @@ static void same_bits_all_paths(hj_reach_problem *pb)
     assert_non_null(ref), assert_non_null(rttr), assert_non_null(phi), assert_non_null(ttr);
     hj_error err;
     hj_reach_stats st, rst;
-    pb->per_node = 1, pb->keep_derivs = 0;
+    pb->per_node = 1, pb->keep_derivs = 0, pb->general = 1; /* the kernel's paths (fused: below) */
     assert_int_equal(hj_reach_solve(pb, ref, rttr, &rst, &err), HJ_OK);
     assert_true(rst.steps > 2);
     for (int threads = 1; threads <= 2; threads++)
@@ -484,13 +484,23 @@ static void batched_rows_same_bits(void **state)
     same_bits_all_paths(&p3);
 }
 
-/* The fused first order path (hj_reach_solve_fused) against the general
- * path (pb->general = 1) on one thread: the same steps and bits of the
- * value and the time-to-reach on 1 and 2 threads, and again with compact
- * (interior-only) arrays, for the problem pb as given (its scheme set to
- * first order upwinding, forward Euler).  tgt: when not NULL, the target
- * as an array on the grid, also given compact. */
-static void fused_same_bits(hj_reach_problem *pb, const double *tgt)
+/* The fused path (hj_reach_solve_fused) against the general path
+ * (pb->general = 1) on one thread: the same steps and bits of the value
+ * and the time-to-reach on 1 and 2 threads, and again with compact
+ * (interior-only) arrays, for the problem pb as given with each of first
+ * order upwinding and forward Euler, ENO2 and RK2, WENO5 and RK3.  tgt:
+ * when not NULL, the target as an array on the grid, also given compact. */
+static void fused_same_bits_one(hj_reach_problem *pb, const double *tgt);
+static void fused_same_bits_n(hj_reach_problem *pb, const double *tgt, int nschemes)
+{
+    const int scheme[3] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A};
+    for (int k = 0; k < nschemes; k++) {
+        pb->scheme = scheme[k], pb->order = k + 1;
+        fused_same_bits_one(pb, tgt);
+    }
+}
+static void fused_same_bits(hj_reach_problem *pb, const double *tgt) { fused_same_bits_n(pb, tgt, 3); }
+static void fused_same_bits_one(hj_reach_problem *pb, const double *tgt)
 {
     const hj_ls_grid *g = pb->grid;
     double *ref = hj_ls_alloc(g), *rttr = hj_ls_alloc(g), *phi = hj_ls_alloc(g), *ttr = hj_ls_alloc(g);
@@ -500,7 +510,7 @@ static void fused_same_bits(hj_reach_problem *pb, const double *tgt)
     assert_non_null(cphi), assert_non_null(cttr), assert_non_null(ctgt);
     hj_error err;
     hj_reach_stats st, rst;
-    pb->scheme = HJ_LS_UPWIND_FIRST, pb->order = 1, pb->compact = 0;
+    pb->compact = 0;
     assert_true(hj_reach_fused_applies(pb));
     pb->general = 1;
     assert_false(hj_reach_fused_applies(pb));
@@ -610,7 +620,7 @@ static void fused_path_same_bits(void **state)
         fused_same_bits(&p3, NULL);
         if (b) {
             p3.horizon = INFINITY, p3.conv_tol = 0.5;
-            fused_same_bits(&p3, NULL);
+            fused_same_bits_n(&p3, NULL, 1);
         }
     }
     /* 6-D: three double integrators, the target as an array. */
@@ -640,7 +650,9 @@ static void fused_path_same_bits(void **state)
     hj_reach_problem p6;
     hj_reach_problem_init(&p6, &g6, &s6);
     p6.kind = HJ_REACH_BRS, p6.horizon = 0.4;
-    fused_same_bits(&p6, tgt);
+    fused_same_bits_n(&p6, tgt, 1);
+    p6.scheme = HJ_LS_WENO5A, p6.order = 3;
+    fused_same_bits_one(&p6, tgt);
     hj_ls_free(tgt);
     /* 2-D double integrator with 40 nodes a row: a plane of 31 rows is cut
      * into blocks of 12, 12 and 7 rows; each boundary condition along
@@ -661,7 +673,7 @@ static void fused_path_same_bits(void **state)
         hj_reach_problem p2;
         hj_reach_problem_init(&p2, &g2, &s2);
         p2.target.fn = disc, p2.obstacle.fn = box, p2.horizon = 0.3;
-        fused_same_bits(&p2, NULL);
+        fused_same_bits_n(&p2, NULL, b == 0 ? 3 : 1);
     }
     double a1 = -0.5, r1 = 0.5;
     hj_ls_grid g1 = grid1(41);
@@ -671,11 +683,11 @@ static void fused_path_same_bits(void **state)
     hj_reach_problem p1;
     hj_reach_problem_init(&p1, &g1, &s1);
     p1.target.fn = interval, p1.target.ctx = &r1, p1.horizon = 0.5;
-    fused_same_bits(&p1, NULL);
+    fused_same_bits_n(&p1, NULL, 3);
     /* Compact arrays need the fused path. */
     double *phi = malloc(sizeof(double) * g.nodes);
     hj_error err;
-    pb.compact = 1, pb.scheme = HJ_LS_ENO2, pb.order = 2;
+    pb.compact = 1, pb.discount = 0.1;
     assert_false(hj_reach_fused_applies(&pb));
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
