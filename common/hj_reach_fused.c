@@ -297,6 +297,7 @@ static void row_x(const hj_ls_grid *g, const long *idx0, long q, double *x)
  * in vector loops over the block (the per-node sums in node_player's
  * order): h = H at each node (the sign flipped by the caller), FX and B
  * as alpha_d = |FX| + B needs them. */
+CLONES
 static void block_ham(const fused_dyn *F, double t, const hj_ls_grid *g, const long *idx0, long nrows, block_bufs *w,
                       int *b_rows)
 {
@@ -413,6 +414,7 @@ static void block_ham(const fused_dyn *F, double t, const hj_ls_grid *g, const l
 /* First order: the one-sided differences L, R and their mean P of a
  * block of nrows rows from index idx, row its first node: neighbours at
  * +-1 and +-stride, the face ghosts made per row. */
+CLONES
 static void block_derivs_first(const fused *fs, const double *row, const long *idx, long nrows, block_bufs *w)
 {
     const hj_ls_grid *g = fs->g;
@@ -483,6 +485,7 @@ static void block_derivs_first(const fused *fs, const double *row, const long *i
  * stride cs[d] where they are all on the grid, else gathered with ghost
  * rows made from the boundary conditions (a face's ghosts only: the
  * stencil along d reads no corner ghost). */
+CLONES
 static void block_derivs_high(const fused *fs, const double *row, const long *idx, long nrows, block_bufs *w)
 {
     const hj_ls_grid *g = fs->g;

@@ -14,13 +14,12 @@
  *                their ghost layers, the kept one-sided derivatives; on
  *                the fused path one interior array and row buffers).
  *
- * First order runs twice, back to back: the general path (the kernel's
+ * Each scheme runs twice, back to back: the general path (the kernel's
  * Lax-Friedrichs term and integrator, pb.general = 1) and the fused path
  * hj_reach_solve takes by itself (compact arrays, G declared constant, f
  * batched over rows),
  * and prints the ratio of their rates; the two values are compared
- * bitwise (nodes that differ: 0 expected).  WENO5/RK3 has the general
- * path only.  --per-node and --no-keep-derivs run hj_reach's reference
+ * bitwise (nodes that differ: 0 expected).  WENO5/RK3 likewise.  --per-node and --no-keep-derivs run hj_reach's reference
  * variants of the general path (same bits).
  *
  * Writes bench_reach.tsv in --out-dir, with rates per wall-clock second
@@ -147,9 +146,9 @@ int main(int argc, char **argv)
                   "step_updates_per_s\tbytes_per_node\n");
     const int scheme[2] = {HJ_LS_UPWIND_FIRST, HJ_LS_WENO5A}, order[2] = {1, 3};
     const char *name[2] = {"first-order-euler", "weno5-rk3"};
-    for (int k = 0; k < (fused_only ? 1 : 2); k++) {
+    for (int k = 0; k < 2; k++) {
         run_result r[2];
-        const int paths = k == 0 ? 2 : 1; /* general, then fused */
+        const int paths = 2; /* general, then fused */
         for (int q = fused_only; q < paths; q++) {
             hj_progress("%s: %s, %s path\n", prog, name[k], q ? "fused" : "general");
             r[q] = run(&g, &s, scheme[k], order[k], q == 0, per_node, no_keep, horizon, q ? cphi : phi);
@@ -168,6 +167,7 @@ int main(int argc, char **argv)
                 for (long j = 0; j < N; j++)
                     differ += memcmp(&phi[kk + (size_t)j], &cphi[row * (size_t)N + (size_t)j], sizeof(double)) != 0;
             }
+            for (size_t q = 0; q < g.nodes; q++) cphi[q] = 0; /* the next run starts clean */
             printf("%s: %s fused / general: %.1fx the rate (wall), %.1fx in the steps alone, %.1fx per CPU second, "
                    "%.1fx fewer bytes per node; %ld nodes differ\n", prog, name[k], r[1].rate / r[0].rate,
                    r[1].step_rate / r[0].step_rate, r[1].cpu_rate / r[0].cpu_rate, r[0].bytes / r[1].bytes, differ);
