@@ -185,22 +185,24 @@ typedef struct {
  * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
-/* The fused first order path, which hj_reach_solve takes by itself when
- * it applies: scheme HJ_LS_UPWIND_FIRST, order 1 (forward Euler), no
- * discount, per_node and general 0, an undivided grid (any dissipation:
- * the partial bounds of a control-affine system do not depend on the
- * gradient, so GLF, LLF and LLLF coincide).  Per row of dimension 0 one
- * pass computes the one-sided differences, f and G (H) at each node, the
- * Hamiltonian, the bounds, the dissipation and the time derivative; a
- * second streaming pass takes the Euler step and applies the target and
- * obstacle.  Its state is two interior-sized arrays (one when compact:
- * the caller's phi is the other); the ghost values the first order
- * stencil reads, face ghosts only, are made per row from the boundary
- * conditions.  Same arithmetic, in the same order, as the general path:
- * the same bits, for any number of OpenMP threads.
- * hj_reach_solve_fused: HJ_EINVAL where the path does not apply, else as
- * hj_reach_solve (which it is called by).  hj_reach_fused_bytes: the bytes
- * it allocates for grid g with `threads` threads. */
+/* The fused path, which hj_reach_solve takes by itself when it applies:
+ * any upwind scheme (first order to WENO5), RK order 1..3, no discount,
+ * per_node and general 0, an undivided grid (any dissipation: the partial
+ * bounds of a control-affine system do not depend on the gradient, so
+ * GLF, LLF and LLLF coincide).  Per block of consecutive rows one pass
+ * computes the one-sided derivatives, f and G (H) at each node, the
+ * Hamiltonian, the bounds, the dissipation and the time derivative;
+ * streaming passes combine the Runge-Kutta stages, the last one with the
+ * target, the obstacle, the convergence measure and the time-to-reach.
+ * Its state is interior-sized: the value, the time derivative and, for
+ * RK2/3, one stage (the caller's phi is the value when compact); the
+ * ghost values a stencil reads along each dimension, face ghosts only,
+ * are made per block from the boundary conditions.  Same arithmetic, in
+ * the same order, as the general path: the same bits, for any number of
+ * OpenMP threads.  hj_reach_solve_fused: HJ_EINVAL where the path does
+ * not apply, else as hj_reach_solve (which it is called by).
+ * hj_reach_fused_bytes: the bytes it allocates for pb with `threads`
+ * threads. */
 int hj_reach_fused_applies(const hj_reach_problem *pb);
 int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads);
