@@ -1,27 +1,27 @@
-/* hj_reach_fused.c -- the fused first order path of hj_reach_solve.
+/* hj_reach_fused.c -- the fused path of hj_reach_solve.
  *
- * Upwind first order differences, forward Euler, the exact control-affine
- * Hamiltonian and its Lax-Friedrichs bounds, in one pass over each row of
- * dimension 0: the 2 dim one-sided differences, f and G (H) at the node,
- * the Hamiltonian, the dissipation and the time derivative, written
- * straight into the next state; then one streaming pass that takes the
- * Euler step and applies the target and obstacle (hj_reach.h).  The state
- * is two interior-sized arrays (no ghost layers): a neighbour across a
- * face of the grid is the value the kernel's ghost node would hold
- * (hj_ls_grid.h), made per row: by index for a periodic dimension, from
- * the boundary row and its inward neighbour otherwise.  The first order
- * stencil reaches only face ghosts, never corner ones, so these are all
- * the ghosts it reads.
+ * Any upwind scheme with TVD Runge-Kutta of order 1..3, the exact
+ * control-affine Hamiltonian and its Lax-Friedrichs bounds.  Per block of
+ * consecutive rows of dimension 0 (within one plane of dimensions 0 and
+ * 1) one pass computes the 2 dim one-sided derivatives, f and G (H) at
+ * the nodes, the Hamiltonian, the dissipation and the time derivative;
+ * streaming passes combine the Runge-Kutta stages, the last one together
+ * with the target, the obstacle, the convergence measure and the
+ * time-to-reach (hj_reach.h).  The state is interior-sized (no ghost
+ * layers): a value beyond a face of the grid is the one the kernel's
+ * ghost node would hold (hj_ls_grid.h), made per block: by index for a
+ * periodic dimension, from the boundary value and its inward neighbour
+ * otherwise.  A stencil along one dimension reaches only the ghosts of
+ * that dimension's faces, never corner ones, so these are all it reads.
  *
  * The arithmetic per node is that of the general path (hj_ls_upwind_row,
  * hj_ls_lax_friedrichs, hj_ls_ode's combine, hj_reach's post step), in the
  * same order, so both give the same bits: the partial bounds of a
  * control-affine system do not depend on the gradient, so the three
  * Lax-Friedrichs dissipations coincide.  Matrices declared constant
- * (G_const, H_const) are evaluated once and their zero entries skipped:
- * a product with an exact zero adds +-0, which changes no finite sum but
- * the sign of a zero, and these sums reach the result only through
- * fabs or through a sum that also holds a nonzero term.
+ * (G_const, H_const) are evaluated once and their zero entries skipped: a
+ * product with an exact zero adds +-0, which changes no sum of finite
+ * terms except, at most, the sign of an exact zero.
  */
 #include "hj_reach.h"
 
