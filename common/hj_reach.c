@@ -484,7 +484,7 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
     return HJ_OK;
 }
 
-static int check_problem(const hj_reach_problem *pb, hj_error *err)
+int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
 {
     if (!pb->grid || !pb->dyn) return hj_error_set(err, HJ_EINVAL, "reach: the problem needs a grid and dynamics");
     int rc = hj_reach_dyn_check(pb->dyn, err);
@@ -514,13 +514,13 @@ static double wall(void)
 
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err)
 {
-    int rc = check_problem(pb, err);
+    int rc = hj_reach_problem_check(pb, err);
     if (rc) return rc;
     if (hj_reach_fused_applies(pb)) return hj_reach_solve_fused(pb, phi, ttr, stats, err);
     if (pb->compact)
         return hj_error_set(err, HJ_EINVAL,
-                            "reach: compact arrays need the fused path (first order upwinding, forward Euler, no "
-                            "discount, undivided grid, general and per_node 0)");
+                            "reach: compact arrays need the fused path (no discount, an undivided grid, general "
+                            "and per_node 0)");
     const double start = wall();
     double step_seconds = 0;
     const hj_ls_grid *g = pb->grid;

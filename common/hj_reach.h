@@ -178,6 +178,10 @@ typedef struct {
                     * caller's phi and ttr not counted) */
 } hj_reach_stats;
 
+/* HJ_EINVAL naming what makes pb unsolvable (no target, zero horizon,
+ * dimensions that do not match, ...); hj_reach_solve checks this first. */
+int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
+
 /* Solve: phi (an array on the grid, written) receives the value at tau
  * (forward time T - tau); ttr (may be NULL) the time-to-reach; stats may
  * be NULL.  HJ_EINVAL for a problem that cannot be solved (checked before

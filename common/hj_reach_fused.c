@@ -746,10 +746,12 @@ static void combine_pass(const hj_ls_grid *g, double *dst, double a, const doubl
 
 int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err)
 {
+    int rc = hj_reach_problem_check(pb, err);
+    if (rc) return rc;
     if (!hj_reach_fused_applies(pb))
         return hj_error_set(err, HJ_EINVAL,
-                            "reach: the fused path needs first order upwinding, forward Euler, no discount and an "
-                            "undivided grid");
+                            "reach: the fused path needs an upwind scheme, RK order 1..3, no discount, general and "
+                            "per_node 0 and an undivided grid");
     const double start = wall();
     const hj_ls_grid *g = pb->grid;
     const int compact = pb->compact != 0, tube = pb->kind == HJ_REACH_BRT, obst = set_given(&pb->obstacle);
@@ -768,7 +770,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     double *y = compact ? phi : own + g->nodes * (narrays - 1), *f = own, *u = pb->order > 1 ? own + g->nodes : NULL;
     long steps = 0;
     double tau = 0, change = INFINITY;
-    int converged = 0, rc = HJ_OK;
+    int converged = 0;
     /* tau = 0: max(target(T), -obstacle(T)), node by node in parallel. */
     int nan_target = 0;
 #ifdef _OPENMP

@@ -691,6 +691,9 @@ static void fused_path_same_bits(void **state)
     assert_false(hj_reach_fused_applies(&pb));
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    pb.discount = 0, pb.target.fn = NULL; /* checked as hj_reach_solve checks */
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "no target"));
     free(phi);
 }
 
