@@ -124,7 +124,7 @@ $(BUILD)/obj/common/tests/test_ub_dense.o: CFLAGS += -fopenmp
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 # Reachability runs its per-node passes (projection, time-to-reach) in
 # parallel over rows like the kernel.
-$(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o: CFLAGS += -fopenmp -O3
+$(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o $(BUILD)/obj/common/hj_reach_fused.o $(BUILD)/pic/common/hj_reach_fused.o: CFLAGS += -fopenmp -O3
 $(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
 # The Eikonal sweeps run hyperplanes in parallel (bitwise thread-independent).
 $(BUILD)/obj/common/hj_eik.o $(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3

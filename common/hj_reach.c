@@ -92,6 +92,7 @@ int hj_reach_dyn_check(const hj_reach_dyn *s, hj_error *err)
 {
     if (s->nx < 1 || s->nx > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "dynamics: state dimension %d, must be 1..%d", s->nx, HJ_LS_MAXDIM);
+    if (s->f_row && !s->f) return hj_error_set(err, HJ_EINVAL, "dynamics: f_row given without f");
     int rc = check_input(&s->u, "control", s->G != NULL, err);
     return rc ? rc : check_input(&s->d, "disturbance", s->H != NULL, err);
 }
@@ -483,7 +484,7 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
     return HJ_OK;
 }
 
-static int check_problem(const hj_reach_problem *pb, hj_error *err)
+int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
 {
     if (!pb->grid || !pb->dyn) return hj_error_set(err, HJ_EINVAL, "reach: the problem needs a grid and dynamics");
     int rc = hj_reach_dyn_check(pb->dyn, err);
@@ -499,6 +500,8 @@ static int check_problem(const hj_reach_problem *pb, hj_error *err)
     if (!(pb->discount >= 0) || !isfinite(pb->discount))
         return hj_error_set(err, HJ_EINVAL, "reach: the discount must be finite and >= 0, got %g", pb->discount);
     if (!(pb->conv_tol >= 0)) return hj_error_set(err, HJ_EINVAL, "reach: the convergence tolerance must be >= 0");
+    if (!(pb->factor_cfl > 0) || !isfinite(pb->factor_cfl))
+        return hj_error_set(err, HJ_EINVAL, "reach: the CFL factor must be positive and finite, got %g", pb->factor_cfl);
     return HJ_OK;
 }
 
@@ -511,9 +514,15 @@ static double wall(void)
 
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err)
 {
-    int rc = check_problem(pb, err);
+    int rc = hj_reach_problem_check(pb, err);
     if (rc) return rc;
+    if (hj_reach_fused_applies(pb)) return hj_reach_solve_fused(pb, phi, ttr, stats, err);
+    if (pb->compact)
+        return hj_error_set(err, HJ_EINVAL,
+                            "reach: compact arrays need the fused path (no discount, an undivided grid, general "
+                            "and per_node 0)");
     const double start = wall();
+    double step_seconds = 0;
     const hj_ls_grid *g = pb->grid;
     /* With an infinite horizon the sets are static: T only shifts time. */
     const double T = isinf(pb->horizon) ? 0 : pb->horizon;
@@ -591,7 +600,9 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     o.blowup_factor = 0; /* obstacle and target bound phi; discount decays */
     /* An infinite horizon runs until convergence: a long finite span. */
     const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
+    const double steps_start = wall();
     rc = hj_ls_ode(pb->order, g, term, tspan, 2, phi, &o, NULL, NULL, NULL, err);
+    step_seconds = wall() - steps_start;
     if (rc == STOP_CONVERGED) rc = HJ_OK, hj_error_clear(err);
     if (rc == HJ_OK) hj_ls_fill_ghosts(g, phi);
 done:
@@ -605,6 +616,14 @@ done:
         stats->tau = pc.tau_prev;
         stats->converged = pc.converged;
         stats->seconds = wall() - start;
+        stats->step_seconds = step_seconds;
+        /* prev, the integrator's time derivative and stage, the kept
+         * derivatives, the row buffers */
+        stats->bytes = sizeof(double) * ((2 + (pb->order > 1)) * g->total +
+                                         (pb->keep_derivs && pb->dissipation != HJ_LS_LLLF
+                                              ? hj_ls_lax_friedrichs_work_size(g)
+                                              : 0) +
+                                         (size_t)hc.nslots * (size_t)g->dim * (size_t)g->N[0]);
     }
     return rc;
 }

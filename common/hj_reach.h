@@ -71,6 +71,9 @@ typedef struct {
 
 /* f: fx[0..nx-1]; G, H: nx x n matrices, row major (g[i * n + j]). */
 typedef void (*hj_reach_vec_fn)(double t, const double *x, double *out, void *ctx);
+/* f over a row of n nodes along dimension 0 (node j at x with x[0] + j dx0
+ * in place of x[0]): out[i * n + j] = f_i at node j. */
+typedef void (*hj_reach_row_fn)(double t, const double *x, double dx0, long n, double *out, void *ctx);
 
 typedef struct {
     int nx;                 /* state dimension, that of the grid */
@@ -79,6 +82,13 @@ typedef struct {
     hj_reach_vec_fn H;      /* disturbance matrix (needed when d.n > 0) */
     hj_reach_input u, d;
     void *ctx;
+    hj_reach_row_fn f_row; /* optional: f batched over a row, used by the
+                            * fused path; must give the bits of f, which
+                            * stays needed (the general path, the
+                            * per-node functions) */
+    int G_const, H_const; /* 1: G (H) depends on neither t nor x, so the
+                           * fused path (below) evaluates it once per solve
+                           * and skips its zero entries (same bits) */
 } hj_reach_dyn;
 
 /* Zero inputs, no callbacks. */
@@ -144,6 +154,15 @@ typedef struct {
                            * derivatives of their range pass for the update
                            * (hj_ls_lax_friedrichs_work_size doubles, 2 nx
                            * per node; same bits); 0 computes them twice */
+    int general;          /* 1: always the general path (the kernel's
+                           * hj_ls_lax_friedrichs and hj_ls_ode), for
+                           * comparison; 0 (default): the fused path where
+                           * it applies (hj_reach_fused_applies) */
+    int compact;          /* 1: phi, ttr and the target and obstacle arrays
+                           * hold the interior nodes only (g->nodes doubles,
+                           * dimension 0 fastest, no ghost layers); needs
+                           * the fused path.  0 (default): arrays on the
+                           * grid (hj_ls_alloc) */
 } hj_reach_problem;
 
 /* Defaults above for grid g and system s (target and horizon to set). */
@@ -154,7 +173,14 @@ typedef struct {
     double tau;    /* backward time reached (T, or less when converged) */
     int converged; /* the convergence stop ended the run */
     double seconds;
+    double step_seconds; /* of which in the time steps (no setup) */
+    size_t bytes;  /* the solver's own arrays and row buffers (the
+                    * caller's phi and ttr not counted) */
 } hj_reach_stats;
+
+/* HJ_EINVAL naming what makes pb unsolvable (no target, zero horizon,
+ * dimensions that do not match, ...); hj_reach_solve checks this first. */
+int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
 
 /* Solve: phi (an array on the grid, written) receives the value at tau
  * (forward time T - tau); ttr (may be NULL) the time-to-reach; stats may
@@ -162,6 +188,28 @@ typedef struct {
  * any step: no target, zero horizon, dimensions that do not match, ...),
  * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
+
+/* The fused path, which hj_reach_solve takes by itself when it applies:
+ * any upwind scheme (first order to WENO5), RK order 1..3, no discount,
+ * per_node and general 0, an undivided grid (any dissipation: the partial
+ * bounds of a control-affine system do not depend on the gradient, so
+ * GLF, LLF and LLLF coincide).  Per block of consecutive rows one pass
+ * computes the one-sided derivatives, f and G (H) at each node, the
+ * Hamiltonian, the bounds, the dissipation and the time derivative;
+ * streaming passes combine the Runge-Kutta stages, the last one with the
+ * target, the obstacle, the convergence measure and the time-to-reach.
+ * Its state is interior-sized: the value, the time derivative and, for
+ * RK2/3, one stage (the caller's phi is the value when compact); the
+ * ghost values a stencil reads along each dimension, face ghosts only,
+ * are made per block from the boundary conditions.  Same arithmetic, in
+ * the same order, as the general path: the same bits, for any number of
+ * OpenMP threads.  hj_reach_solve_fused: HJ_EINVAL where the path does
+ * not apply, else as hj_reach_solve (which it is called by).
+ * hj_reach_fused_bytes: the bytes it allocates for pb with `threads`
+ * threads. */
+int hj_reach_fused_applies(const hj_reach_problem *pb);
+int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
+size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads);
 
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
  * periodic dimension, which counts a full period (hj_ls_measure_periodic). */

@@ -428,7 +428,7 @@ static void same_bits_all_paths(hj_reach_problem *pb)
     assert_non_null(ref), assert_non_null(rttr), assert_non_null(phi), assert_non_null(ttr);
     hj_error err;
     hj_reach_stats st, rst;
-    pb->per_node = 1, pb->keep_derivs = 0;
+    pb->per_node = 1, pb->keep_derivs = 0, pb->general = 1; /* the kernel's paths (fused: below) */
     assert_int_equal(hj_reach_solve(pb, ref, rttr, &rst, &err), HJ_OK);
     assert_true(rst.steps > 2);
     for (int threads = 1; threads <= 2; threads++)
@@ -484,6 +484,219 @@ static void batched_rows_same_bits(void **state)
     same_bits_all_paths(&p3);
 }
 
+/* The fused path (hj_reach_solve_fused) against the general path
+ * (pb->general = 1) on one thread: the same steps and bits of the value
+ * and the time-to-reach on 1 and 2 threads, and again with compact
+ * (interior-only) arrays, for the problem pb as given with each of first
+ * order upwinding and forward Euler, ENO2 and RK2, WENO5 and RK3.  tgt:
+ * when not NULL, the target as an array on the grid, also given compact. */
+static void fused_same_bits_one(hj_reach_problem *pb, const double *tgt);
+static void fused_same_bits_n(hj_reach_problem *pb, const double *tgt, int nschemes)
+{
+    const int scheme[3] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A};
+    for (int k = 0; k < nschemes; k++) {
+        pb->scheme = scheme[k], pb->order = k + 1;
+        fused_same_bits_one(pb, tgt);
+    }
+}
+static void fused_same_bits(hj_reach_problem *pb, const double *tgt) { fused_same_bits_n(pb, tgt, 3); }
+static void fused_same_bits_one(hj_reach_problem *pb, const double *tgt)
+{
+    const hj_ls_grid *g = pb->grid;
+    double *ref = hj_ls_alloc(g), *rttr = hj_ls_alloc(g), *phi = hj_ls_alloc(g), *ttr = hj_ls_alloc(g);
+    double *cphi = malloc(sizeof(double) * g->nodes), *cttr = malloc(sizeof(double) * g->nodes);
+    double *ctgt = malloc(sizeof(double) * g->nodes);
+    assert_non_null(ref), assert_non_null(rttr), assert_non_null(phi), assert_non_null(ttr);
+    assert_non_null(cphi), assert_non_null(cttr), assert_non_null(ctgt);
+    hj_error err;
+    hj_reach_stats st, rst;
+    pb->compact = 0;
+    assert_true(hj_reach_fused_applies(pb));
+    pb->general = 1;
+    assert_false(hj_reach_fused_applies(pb));
+    if (tgt) pb->target.array = tgt;
+    assert_int_equal(hj_reach_solve(pb, ref, rttr, &rst, &err), HJ_OK);
+    assert_true(rst.steps > 2);
+    pb->general = 0;
+    for (int run = 0; run < 3; run++) { /* one thread, then two; compact on the last */
+        const int threads = run ? 2 : 1, compact = run == 2;
+#ifdef _OPENMP
+        omp_set_num_threads(threads);
+#endif
+            pb->compact = compact;
+            if (tgt && compact)
+                for (size_t r = 0; r < g->rows; r++) {
+                    long i[HJ_LS_MAXDIM];
+                    const size_t k = hj_ls_row(g, r, i);
+                    memcpy(ctgt + r * (size_t)g->N[0], tgt + k, sizeof(double) * (size_t)g->N[0]);
+                }
+            if (tgt) pb->target.array = compact ? ctgt : tgt;
+            assert_int_equal(hj_reach_solve(pb, compact ? cphi : phi, compact ? cttr : ttr, &st, &err), HJ_OK);
+            assert_int_equal(st.steps, rst.steps);
+            assert_true(st.tau == rst.tau);
+            if (g->dim >= 4) assert_true(st.bytes < rst.bytes); /* row buffers dominate below */
+            if (compact) /* back to the grid's layout for the comparison */
+                for (size_t r = 0; r < g->rows; r++) {
+                    long i[HJ_LS_MAXDIM];
+                    const size_t k = hj_ls_row(g, r, i), kc = r * (size_t)g->N[0];
+                    memcpy(phi + k, cphi + kc, sizeof(double) * (size_t)g->N[0]);
+                    memcpy(ttr + k, cttr + kc, sizeof(double) * (size_t)g->N[0]);
+                }
+            assert_int_equal(hj_ls_count_differ(g, ref, phi), 0);
+            assert_int_equal(hj_ls_count_differ(g, rttr, ttr), 0);
+            if (!compact) assert_int_equal(memcmp(ref, phi, sizeof(double) * g->total), 0); /* ghosts too */
+        }
+    hj_test_one_thread();
+    pb->compact = 0;
+    hj_ls_free(ref), hj_ls_free(rttr), hj_ls_free(phi), hj_ls_free(ttr);
+    free(cphi), free(cttr), free(ctgt);
+}
+
+/* Three double integrators: f = (v0, 0, v1, 0, v2, 0), G constant. */
+static void f6(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    for (int k = 0; k < 6; k += 2) o[k] = x[k + 1], o[k + 1] = 0;
+}
+static void G6(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    for (int q = 0; q < 18; q++) o[q] = q == 3 || q == 10 || q == 17;
+}
+
+/* A double integrator: f = (v, 0), G = (0, 1). */
+static void f2d(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[1], o[1] = 0;
+}
+static void G2d(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 1;
+}
+
+static void fused_path_same_bits(void **state)
+{
+    (void)state;
+    /* 4-D: drift, state-dependent control (box) and disturbance (ball)
+     * matrices, a moving obstacle, a tube, each dissipation. */
+    hj_ls_grid g;
+    hj_ls_bc bc[6];
+    for (int d = 0; d < 6; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 4, (double[]){-1, -1, -1, -1}, (double[]){1, 1, 1, 1},
+                                     (long[]){11, 9, 8, 7}, bc, NULL),
+                     HJ_OK);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 4, f4, NULL);
+    hj_reach_dyn_control_box(&s, G4, 2, (double[]){-1, -0.5}, (double[]){1, 0.7});
+    hj_reach_dyn_disturbance_ball(&s, H4, 2, (double[]){0.05, 0}, 0.2);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = ball4, pb.obstacle.fn = slab4, pb.horizon = 0.3;
+    fused_same_bits(&pb, NULL);
+    pb.dissipation = HJ_LS_GLF; /* the bounds do not depend on the gradient */
+    assert_true(hj_reach_fused_applies(&pb));
+    pb.dissipation = HJ_LS_LLLF;
+    assert_true(hj_reach_fused_applies(&pb));
+    /* 3-D Dubins car, constant G, every boundary condition on some face,
+     * a set (BRS) and a tube with a convergence stop. */
+    const hj_ls_bc bcs[2][3] = {
+        {{HJ_LS_BC_EXTRAP_TOWARD, 0, 0}, {HJ_LS_BC_NEUMANN, 0.3, -0.2}, {HJ_LS_BC_PERIODIC, 0, 0}},
+        {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_DIRICHLET, 1, 2}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}}};
+    for (int b = 0; b < 2; b++) {
+        hj_ls_grid g3;
+        assert_int_equal(hj_ls_grid_init_period(&g3, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI},
+                                                (long[]){17, 15, 12}, bcs[b], NULL),
+                         HJ_OK);
+        hj_reach_dyn s3;
+        hj_reach_dyn_init(&s3, 3, dub_f, NULL);
+        hj_reach_dyn_control_box(&s3, dub_G, 1, (double[]){-1}, (double[]){1});
+        s3.G_const = 1;
+        hj_reach_problem p3;
+        hj_reach_problem_init(&p3, &g3, &s3);
+        p3.target.fn = disc, p3.obstacle.fn = box, p3.horizon = 0.5;
+        p3.kind = b ? HJ_REACH_BRT : HJ_REACH_BRS;
+        fused_same_bits(&p3, NULL);
+        if (b) {
+            p3.horizon = INFINITY, p3.conv_tol = 0.5;
+            fused_same_bits_n(&p3, NULL, 1);
+        }
+    }
+    /* 6-D: three double integrators, the target as an array. */
+    hj_ls_grid g6;
+    double lo[6], hi[6];
+    long N[6];
+    for (int d = 0; d < 6; d++) lo[d] = -1.5, hi[d] = 1.5, N[d] = 4 + d % 2;
+    assert_int_equal(hj_ls_grid_init(&g6, 6, lo, hi, N, bc, NULL), HJ_OK);
+    double *tgt = hj_ls_alloc(&g6);
+    assert_non_null(tgt);
+    for (size_t r = 0; r < g6.rows; r++) {
+        long i[6];
+        double x[6];
+        const size_t k = hj_ls_row(&g6, r, i);
+        for (long j = 0; j < g6.N[0]; j++) {
+            i[0] = j;
+            hj_ls_coord(&g6, i, x);
+            double m = -INFINITY;
+            for (int d = 0; d < 6; d++) m = fmax(m, fabs(x[d]) - 0.5);
+            tgt[k + (size_t)j] = m;
+        }
+    }
+    hj_reach_dyn s6;
+    hj_reach_dyn_init(&s6, 6, f6, NULL);
+    hj_reach_dyn_control_box(&s6, G6, 3, (double[]){-1, -1, -1}, (double[]){1, 1, 1});
+    s6.G_const = 1;
+    hj_reach_problem p6;
+    hj_reach_problem_init(&p6, &g6, &s6);
+    p6.kind = HJ_REACH_BRS, p6.horizon = 0.4;
+    fused_same_bits_n(&p6, tgt, 1);
+    p6.scheme = HJ_LS_WENO5A, p6.order = 3;
+    fused_same_bits_one(&p6, tgt);
+    hj_ls_free(tgt);
+    /* 2-D double integrator with 40 nodes a row: a plane of 31 rows is cut
+     * into blocks of 12, 12 and 7 rows; each boundary condition along
+     * dimension 1 and along 0; and 1-D (one row). */
+    const int bc2d[3][2] = {{HJ_LS_BC_PERIODIC, HJ_LS_BC_DIRICHLET},
+                            {HJ_LS_BC_NEUMANN, HJ_LS_BC_EXTRAP_TOWARD},
+                            {HJ_LS_BC_EXTRAP_AWAY, HJ_LS_BC_PERIODIC}};
+    for (int b = 0; b < 3; b++) {
+        hj_ls_grid g2;
+        const hj_ls_bc bc2[2] = {{bc2d[b][0], -0.3, 0.2}, {bc2d[b][1], 0.5, -0.4}};
+        assert_int_equal(hj_ls_grid_init(&g2, 2, (double[]){-1.5, -1.5}, (double[]){1.5, 1.5}, (long[]){40, 31}, bc2,
+                                         NULL),
+                         HJ_OK);
+        hj_reach_dyn s2;
+        hj_reach_dyn_init(&s2, 2, f2d, NULL);
+        hj_reach_dyn_control_box(&s2, G2d, 1, (double[]){-1}, (double[]){1});
+        s2.G_const = b & 1;
+        hj_reach_problem p2;
+        hj_reach_problem_init(&p2, &g2, &s2);
+        p2.target.fn = disc, p2.obstacle.fn = box, p2.horizon = 0.3;
+        fused_same_bits_n(&p2, NULL, b == 0 ? 3 : 1);
+    }
+    double a1 = -0.5, r1 = 0.5;
+    hj_ls_grid g1 = grid1(41);
+    hj_reach_dyn s1;
+    hj_reach_dyn_init(&s1, 1, f1, &a1);
+    hj_reach_dyn_control_box(&s1, G1, 1, (double[]){-1}, (double[]){1});
+    hj_reach_problem p1;
+    hj_reach_problem_init(&p1, &g1, &s1);
+    p1.target.fn = interval, p1.target.ctx = &r1, p1.horizon = 0.5;
+    fused_same_bits_n(&p1, NULL, 3);
+    /* Compact arrays need the fused path. */
+    double *phi = malloc(sizeof(double) * g.nodes);
+    hj_error err;
+    pb.compact = 1, pb.discount = 0.1;
+    assert_false(hj_reach_fused_applies(&pb));
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    pb.discount = 0, pb.target.fn = NULL; /* checked as hj_reach_solve checks */
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "no target"));
+    free(phi);
+}
+
 /* Problems refused before any work: no target, a zero horizon, a grid of
  * another dimension, a measure with two periodic dimensions. */
 static void invalid_problems(void **state)
@@ -518,4 +731,5 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
+             cmocka_unit_test(fused_path_same_bits),
              cmocka_unit_test(invalid_problems))
