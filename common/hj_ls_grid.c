@@ -2,6 +2,7 @@
 #include "hj_ls_grid.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -124,6 +125,22 @@ size_t hj_ls_index(const hj_ls_grid *g, const long *i)
 void hj_ls_coord(const hj_ls_grid *g, const long *i, double *x)
 {
     for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)(i[d] + g->origin[d]) * g->dx[d];
+}
+
+void hj_ls_format_node(const hj_ls_grid *g, size_t r, long j, char *buf, size_t n)
+{
+    long idx[HJ_LS_MAXDIM];
+    double x[HJ_LS_MAXDIM];
+    hj_ls_row(g, r, idx);
+    idx[0] = j;
+    hj_ls_coord(g, idx, x);
+    size_t len = 0;
+    if (n) buf[0] = 0;
+    for (int d = 0; d < g->dim && len < n; d++) {
+        const int w = snprintf(buf + len, n - len, "%s%g", d ? ", " : "", x[d]);
+        if (w < 0) break;
+        len += (size_t)w;
+    }
 }
 
 size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i)

@@ -127,6 +127,10 @@ size_t hj_ls_index(const hj_ls_grid *g, const long *i);
 /* Coordinates x[0..dim-1] of node i (ghost indices give ghost coordinates). */
 void hj_ls_coord(const hj_ls_grid *g, const long *i, double *x);
 
+/* The coordinates of node j of interior row r as text, "x0, x1, ..." (%g
+ * each), in buf[0..n-1], for error messages that say where. */
+void hj_ls_format_node(const hj_ls_grid *g, size_t r, long j, char *buf, size_t n);
+
 /* Index of the first node of interior row r (0 <= r < g->rows), a line of
  * N[0] nodes along dimension 0; i[1..dim-1] receives its node index
  * (i[0] = 0).  Rows are numbered with dimension 1 fastest. */

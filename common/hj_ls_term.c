@@ -103,15 +103,8 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
     }
     if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the %s workspace", what);
     if (bad_code) {
-        long idx[HJ_LS_MAXDIM];
-        double x[HJ_LS_MAXDIM];
-        hj_ls_row(g, bad_row, idx);
-        idx[0] = bad_j;
-        hj_ls_coord(g, idx, x);
         char pos[256];
-        int len = 0;
-        for (int d = 0; d < g->dim && len < 200; d++)
-            len += snprintf(pos + len, sizeof pos - (size_t)len, "%s%g", d ? ", " : "", x[d]);
+        hj_ls_format_node(g, bad_row, bad_j, pos, sizeof pos);
         return hj_error_set(err, bad_code, "%s returned a non-finite value at x = (%s), t = %g", what, pos, t);
     }
     {

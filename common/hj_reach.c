@@ -404,12 +404,7 @@ void hj_reach_problem_init(hj_reach_problem *pb, const hj_ls_grid *g, const hj_r
     pb->keep_derivs = 1;
 }
 
-static int set_given(const hj_reach_set *s) { return s->fn || s->array; }
 
-static double set_at(const hj_reach_set *s, double t, const double *x, size_t k)
-{
-    return s->fn ? s->fn(t, x, s->ctx) : s->array[k];
-}
 
 /* State of the post-step projection. */
 typedef struct {
@@ -432,7 +427,7 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
     const hj_reach_problem *pb = c->pb;
     const hj_ls_grid *g = pb->grid;
     const double t = pb->horizon - tau, dt = tau - c->tau_prev;
-    const int tube = pb->kind == HJ_REACH_BRT, obst = set_given(&pb->obstacle);
+    const int tube = pb->kind == HJ_REACH_BRT, obst = hj_reach_set_given(&pb->obstacle);
     double change = 0;
     int bad = 0;
 #ifdef _OPENMP
@@ -448,17 +443,7 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
         for (long j = 0; j < g->N[0]; j++) {
             const size_t k = k0 + (size_t)j;
             x[0] = g->min[0] + (double)j * g->dx[0];
-            double v = y[k];
-            if (tube) {
-                const double l = set_at(&pb->target, t, x, k);
-                rb |= isnan(l);
-                v = l < v ? l : v;
-            }
-            if (obst) {
-                const double o = -set_at(&pb->obstacle, t, x, k);
-                rb |= isnan(o);
-                v = o > v ? o : v;
-            }
+            const double v = hj_reach_set_constrain(&pb->target, &pb->obstacle, tube, obst, t, x, k, y[k], &rb);
             y[k] = v;
             const double old = c->prev[k], dv = fabs(v - old);
             rc = dv > rc ? dv : rc;
@@ -491,7 +476,7 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
     if (rc) return rc;
     if (pb->dyn->nx != pb->grid->dim)
         return hj_error_set(err, HJ_EINVAL, "reach: %d-D dynamics on a %d-D grid", pb->dyn->nx, pb->grid->dim);
-    if (!set_given(&pb->target)) return hj_error_set(err, HJ_EINVAL, "reach: no target");
+    if (!hj_reach_set_given(&pb->target)) return hj_error_set(err, HJ_EINVAL, "reach: no target");
     if (pb->kind != HJ_REACH_BRS && pb->kind != HJ_REACH_BRT)
         return hj_error_set(err, HJ_EINVAL, "reach: kind must be HJ_REACH_BRS or HJ_REACH_BRT");
     if (!(pb->horizon > 0)) return hj_error_set(err, HJ_EINVAL, "reach: the horizon must be > 0, got %g", pb->horizon);
@@ -531,7 +516,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     post_ctx pc = {&p, hj_ls_alloc(g), ttr, 0, INFINITY, 0, 0, 0};
     if (!pc.prev) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory");
     /* tau = 0: max(target(T), -obstacle(T)). */
-    const int obst = set_given(&pb->obstacle);
+    const int obst = hj_reach_set_given(&pb->obstacle);
     for (size_t r = 0; r < g->rows; r++) {
         long i[HJ_LS_MAXDIM];
         double x[HJ_LS_MAXDIM];
@@ -540,14 +525,14 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
         for (long j = 0; j < g->N[0]; j++) {
             const size_t k = k0 + (size_t)j;
             x[0] = g->min[0] + (double)j * g->dx[0];
-            double v = set_at(&pb->target, T, x, k);
+            double v = hj_reach_set_at(&pb->target, T, x, k);
             if (isnan(v)) {
                 hj_ls_free(pc.prev);
                 return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
             }
             if (ttr) ttr[k] = v <= 0 ? 0 : INFINITY;
             if (obst) {
-                const double o = -set_at(&pb->obstacle, T, x, k);
+                const double o = -hj_reach_set_at(&pb->obstacle, T, x, k);
                 v = o > v ? o : v;
             }
             phi[k] = pc.prev[k] = v;

@@ -131,6 +131,32 @@ typedef struct {
     void *ctx;
 } hj_reach_set;
 
+/* Whether s holds a set. */
+static inline int hj_reach_set_given(const hj_reach_set *s) { return s->fn || s->array; }
+/* The value of s at time t and node k (coordinates x). */
+static inline double hj_reach_set_at(const hj_reach_set *s, double t, const double *x, size_t k)
+{
+    return s->fn ? s->fn(t, x, s->ctx) : s->array[k];
+}
+/* v projected on the problem's constraints at node k: the minimum with the
+ * target's value (a tube, when tube != 0) and the maximum with minus the
+ * obstacle's (when obst != 0); *nan is set when either value is NaN. */
+static inline double hj_reach_set_constrain(const hj_reach_set *target, const hj_reach_set *obstacle, int tube,
+                                            int obst, double t, const double *x, size_t k, double v, int *nan)
+{
+    if (tube) {
+        const double l = hj_reach_set_at(target, t, x, k);
+        *nan |= l != l;
+        v = l < v ? l : v;
+    }
+    if (obst) {
+        const double o = -hj_reach_set_at(obstacle, t, x, k);
+        *nan |= o != o;
+        v = o > v ? o : v;
+    }
+    return v;
+}
+
 enum { HJ_REACH_BRS, HJ_REACH_BRT };
 
 typedef struct {

@@ -619,11 +619,6 @@ static void block_ydot(const fused *fs, double tau, const double *y, size_t blk,
     *bad_j = b < 0 ? -1 : b % n0;
 }
 
-static int set_given(const hj_reach_set *s) { return s->fn || s->array; }
-static double set_at(const hj_reach_set *s, double t, const double *x, size_t k)
-{
-    return s->fn ? s->fn(t, x, s->ctx) : s->array[k];
-}
 
 /* The offset of interior row r's first node in the caller's arrays. */
 static size_t user_row(const hj_ls_grid *g, int compact, size_t r)
@@ -666,15 +661,8 @@ static int max_threads(void)
 /* The error of the first row (in row order) with a non-finite H or alpha. */
 static int report_bad(const hj_ls_grid *g, size_t r, long j, double tau, hj_error *err)
 {
-    long idx[HJ_LS_MAXDIM];
-    double x[HJ_LS_MAXDIM];
-    hj_ls_row(g, r, idx);
-    idx[0] = j;
-    hj_ls_coord(g, idx, x);
     char pos[256];
-    int len = 0;
-    for (int d = 0; d < g->dim && len < 200; d++)
-        len += snprintf(pos + len, sizeof pos - (size_t)len, "%s%g", d ? ", " : "", x[d]);
+    hj_ls_format_node(g, r, j, pos, sizeof pos);
     return hj_error_set(err, HJ_ENONFINITE,
                         "Hamiltonian or partial callback returned a non-finite value at x = (%s), t = %g", pos, tau);
 }
@@ -754,7 +742,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
                             "per_node 0 and an undivided grid");
     const double start = wall();
     const hj_ls_grid *g = pb->grid;
-    const int compact = pb->compact != 0, tube = pb->kind == HJ_REACH_BRT, obst = set_given(&pb->obstacle);
+    const int compact = pb->compact != 0, tube = pb->kind == HJ_REACH_BRT, obst = hj_reach_set_given(&pb->obstacle);
     const double T = isinf(pb->horizon) ? 0 : pb->horizon;
     const long n = g->N[0];
     fused_dyn F;
@@ -785,11 +773,11 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         for (long j = 0; j < n; j++) {
             const size_t k = ku + (size_t)j;
             x[0] = g->min[0] + (double)j * g->dx[0];
-            double v = set_at(&pb->target, T, x, k);
+            double v = hj_reach_set_at(&pb->target, T, x, k);
             nan_target |= isnan(v);
             if (ttr) ttr[k] = v <= 0 ? 0 : INFINITY;
             if (obst) {
-                const double o = -set_at(&pb->obstacle, T, x, k);
+                const double o = -hj_reach_set_at(&pb->obstacle, T, x, k);
                 v = o > v ? o : v;
             }
             y[kc + (size_t)j] = v;
@@ -852,16 +840,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
                 if (tube || obst) {
                     const size_t k = ku + (size_t)j;
                     x[0] = g->min[0] + (double)j * g->dx[0];
-                    if (tube) {
-                        const double l = set_at(&pb->target, t, x, k);
-                        rs |= isnan(l);
-                        v = l < v ? l : v;
-                    }
-                    if (obst) {
-                        const double o = -set_at(&pb->obstacle, t, x, k);
-                        rs |= isnan(o);
-                        v = o > v ? o : v;
-                    }
+                    v = hj_reach_set_constrain(&pb->target, &pb->obstacle, tube, obst, t, x, k, v, &rs);
                 }
                 yo[j] = v;
                 const double dv = fabs(v - old);
