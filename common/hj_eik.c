@@ -33,16 +33,21 @@
  * 60-70 iterations instead of 11-15 on a 3-D test); the Godunov update
  * then solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
  *
- * The sweeps.  The Gauss-Seidel order of each of the 2^dim sweeps is by
- * hyperplanes i + j (+ k) = const of the sweep's orientation (Detrixhe,
- * Gibou & Min 2013): every axis-aligned stencil of a node lies on other
- * hyperplanes, so the nodes of one hyperplane are independent and are
- * updated in parallel, and the result does not depend on the number of
- * threads (bit for bit).  The higher order iterations start from the
- * converged first order solution.  A node whose stencil did not change
- * since its last update is skipped (locking, Bak, McLaughlin & Renzi
- * 2010): exactly in the first order phase, and in the higher order phase
- * when the changes were below a tenth of the stopping threshold.
+ * The sweeps.  Each of the 2^dim sweeps visits the nodes in blocks taken
+ * by hyperplanes I + J (+ K) = const of block indices in the sweep's
+ * orientation (Detrixhe, Gibou & Min 2013, with blocks for nodes), the
+ * nodes of a block in lexicographic order: every axis-aligned stencil of
+ * a node lies in blocks of other hyperplanes, so the blocks of one
+ * hyperplane are updated in parallel, and along every axis line the
+ * order is that of the plain lexicographic sweep, so the result does not
+ * depend on the number of threads or the block size (bit for bit).  One
+ * thread sweeps the whole grid as one block, along the rows in memory.
+ * The higher order iterations start from the converged first order
+ * solution.  A node whose stencil did not change since its last update
+ * is skipped (locking, Bak, McLaughlin & Renzi 2010): in the first order
+ * phase when no neighbour changed by more than 1e-13 of tau after the
+ * node's last computation, in the higher order phase when the changes
+ * were below a tenth of the stopping threshold.
  *
  * Kinks.  WENO5 is replaced by WENO3 within 3 nodes of obstacles and of
  * the lines where two sources' fronts meet, and nodes that their source
