@@ -33,16 +33,21 @@
  * 60-70 iterations instead of 11-15 on a 3-D test); the Godunov update
  * then solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
  *
- * The sweeps.  The Gauss-Seidel order of each of the 2^dim sweeps is by
- * hyperplanes i + j (+ k) = const of the sweep's orientation (Detrixhe,
- * Gibou & Min 2013): every axis-aligned stencil of a node lies on other
- * hyperplanes, so the nodes of one hyperplane are independent and are
- * updated in parallel, and the result does not depend on the number of
- * threads (bit for bit).  The higher order iterations start from the
- * converged first order solution.  A node whose stencil did not change
- * since its last update is skipped (locking, Bak, McLaughlin & Renzi
- * 2010): exactly in the first order phase, and in the higher order phase
- * when the changes were below a tenth of the stopping threshold.
+ * The sweeps.  Each of the 2^dim sweeps visits the nodes in blocks taken
+ * by hyperplanes I + J (+ K) = const of block indices in the sweep's
+ * orientation (Detrixhe, Gibou & Min 2013, with blocks for nodes), the
+ * nodes of a block in lexicographic order: every axis-aligned stencil of
+ * a node lies in blocks of other hyperplanes, so the blocks of one
+ * hyperplane are updated in parallel, and along every axis line the
+ * order is that of the plain lexicographic sweep, so the result does not
+ * depend on the number of threads or the block size (bit for bit).  One
+ * thread sweeps the whole grid as one block, along the rows in memory.
+ * The higher order iterations start from the converged first order
+ * solution.  A node whose stencil did not change since its last update
+ * is skipped (locking, Bak, McLaughlin & Renzi 2010): in the first order
+ * phase when no neighbour changed by more than 1e-14 of tau after the
+ * node's last computation, in the higher order phase when the changes
+ * were below a tenth of the stopping threshold.
  *
  * Kinks.  WENO5 is replaced by WENO3 within 3 nodes of obstacles and of
  * the lines where two sources' fronts meet, and nodes that their source
@@ -65,6 +70,11 @@ enum { GH = 3 };                                  /* ghost layers: WENO5 reaches
 /* ST_SRC: a node near a point source during the first order phase; its
  * source's time there is a bound, not a value (a later source can be
  * overtaken by an earlier one). */
+/* First order phase: relative change of tau that unlocks the neighbours
+ * (see visit).  1e-13 saved a third more local solves but let the errors
+ * of the exact constant-speed case grow to 4e-12 (N = 320, 2-D); 1e-14
+ * keeps them at rounding level (5e-13 there, 8e-13 with exact locking). */
+#define FIRST_LOCK 1e-14
 enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
@@ -97,6 +107,8 @@ typedef struct {
                             * reached the node first (-1: none, fixed data) */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
+    int *calc;             /* first order phase: last sweep that computed
+                            * the node (-1: none yet) */
     src_info *src;
     int nsrc;
     double eps3, eps5[3];
@@ -113,6 +125,7 @@ static void work_free(eik_work *w)
     free(w->low);
     free(w->state);
     free(w->stamp);
+    free(w->calc);
     free(w->src);
 }
 
@@ -213,23 +226,38 @@ static inline double godunov_solve(int m, double *a, double *b, double f)
     return tau;
 }
 
+/* Neighbour nb (coordinates x with x[d] moved by dxd) of a node owned by
+ * o: *t its tau in o's factorisation, *Tr its T - t0(o) (+INFINITY when
+ * it has no value).  With the same owner Tr = T0[nb] tau[nb], the time
+ * the neighbour holds, with no square root. */
+static inline void neighbour(const eik_work *w, int o, long nb, const double *x, int d, double dxd, double *t,
+                             double *Tr)
+{
+    *t = INFINITY;
+    *Tr = INFINITY;
+    if (w->state[nb] == ST_GHOST) return;
+    const double v = w->tau[nb];
+    if (w->own[nb] == o || !(v < INFINITY)) {
+        *t = v;
+        if (v < INFINITY) *Tr = w->T0[nb] * v;
+        return;
+    }
+    double xn[3] = {x[0], x[1], x[2]};
+    xn[d] = x[d] + dxd;
+    const double T = src_tb(w, w->own[nb]) + w->T0[nb] * v;
+    const double t0 = src_T0(w, o, xn);
+    *t = t0 > 0 ? (T - src_tb(w, o)) / t0 : INFINITY;
+    if (*t < INFINITY) *Tr = t0 * *t;
+}
+
 /* Adds dimension d's upwind term to (a, b, m) from the neighbour values
- * nl, nr (tau at x -/+ h, or their WENO extrapolations). */
+ * nl, nr (tau at x -/+ h, or their WENO extrapolations) whose times
+ * (T - t0) are Tl, Tr: the upwind side is the given one if its value is
+ * finite, else (side < 0 too) the one with the smaller time. */
 static inline int add_term(const eik_work *w, int o, double T0, const double *x, int d, double nl, double nr,
-                           int side, double *a, double *b, int *m)
+                           double Tl, double Tr, int side, double *a, double *b, int *m)
 {
     const double h = w->h[d];
-    double xn[3] = {x[0], x[1], x[2]};
-    /* upwind side (side < 0): the smaller neighbour value of T */
-    double Tl = INFINITY, Tr = INFINITY;
-    if (nl < INFINITY) {
-        xn[d] = x[d] - h;
-        Tl = src_T0(w, o, xn) * nl;
-    }
-    if (nr < INFINITY) {
-        xn[d] = x[d] + h;
-        Tr = src_T0(w, o, xn) * nr;
-    }
     if (!(Tl < INFINITY) && !(Tr < INFINITY)) return -1;
     const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
     if (side < 0 || !((side ? Tr : Tl) < INFINITY)) side = Tl <= Tr ? 0 : 1;
@@ -259,18 +287,12 @@ static double local_update(const eik_work *w, long k, const double *x, int order
     for (int d = 0; d < w->dim; d++) {
         const long st = w->st[d];
         const double h = w->h[d];
-        double xn[3] = {x[0], x[1], x[2]};
-        double nl1 = INFINITY, nr1 = INFINITY; /* first order neighbour values */
-        if (w->state[k - st] != ST_GHOST) {
-            xn[d] = x[d] - h;
-            nl1 = tau_in(w, o, k - st, xn);
-        }
-        if (w->state[k + st] != ST_GHOST) {
-            xn[d] = x[d] + h;
-            nr1 = tau_in(w, o, k + st, xn);
-        }
-        const int side = add_term(w, o, T0, x, d, nl1, nr1, -1, a1, b1, &m1);
+        double nl1, nr1, Tl1, Tr1; /* first order neighbour values and times */
+        neighbour(w, o, k - st, x, d, -h, &nl1, &Tl1);
+        neighbour(w, o, k + st, x, d, h, &nr1, &Tr1);
+        const int side = add_term(w, o, T0, x, d, nl1, nr1, Tl1, Tr1, -1, a1, b1, &m1);
         if (order == 1) continue;
+        double xn[3] = {x[0], x[1], x[2]};
         const int R = order == 5 && !w->low[k] ? 3 : 2;
         double v[7];
         int ok = 1;
@@ -293,10 +315,14 @@ static double local_update(const eik_work *w, long k, const double *x, int order
             double hm, hp;
             if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
             else weno3(v, w->eps3, &hm, &hp);
-            add_term(w, o, T0, x, d, w->tau[k] - hm, w->tau[k] + hp, side, a, b, &m);
+            /* the side is the first order one; only whether the values
+             * are finite matters */
+            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp;
+            add_term(w, o, T0, x, d, nl, nr, nl < INFINITY ? 0 : INFINITY, nr < INFINITY ? 0 : INFINITY, side, a, b,
+                     &m);
             high = 1;
         } else {
-            add_term(w, o, T0, x, d, nl1, nr1, -1, a, b, &m);
+            add_term(w, o, T0, x, d, nl1, nr1, Tl1, Tr1, -1, a, b, &m);
         }
     }
     const double v1 = m1 > 0 ? godunov_solve(m1, a1, b1, w->fs[k]) : INFINITY;
@@ -318,6 +344,26 @@ static inline int active(const eik_work *w, long k, int R, int q)
     for (int d = 0; d < w->dim; d++)
         for (int r = 1; r <= R; r++)
             if (w->stamp[k - r * w->st[d]] >= q - 1 || w->stamp[k + r * w->st[d]] >= q - 1) return 1;
+    return 0;
+}
+
+/* First order phase (order 1: the update reads the neighbours, not the
+ * node itself): must node k be computed again in sweep q?  Only if a
+ * neighbour changed after k's last computation: in a later sweep, or in
+ * the same sweep but visited after k (downstream in that sweep's
+ * orientation, sweep r being orientation (r - 1) mod 2^dim).  Any other
+ * computation gives the value k already has, so skipping it keeps the
+ * bits of the rule of active() while computing each change about once. */
+static inline int active_first(const eik_work *w, long k, int q)
+{
+    const int c = w->calc[k];
+    const int back = (c - 1) & ((1 << w->dim) - 1); /* bit d: dimension d swept backwards in sweep c */
+    (void)q;
+    for (int d = 0; d < w->dim; d++) {
+        const int sl = w->stamp[k - w->st[d]], sr = w->stamp[k + w->st[d]];
+        if (sl > c || sr > c) return 1;
+        if (c > 0 && (((back >> d) & 1) ? sl == c : sr == c)) return 1;
+    }
     return 0;
 }
 
@@ -349,13 +395,14 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
 {
     const long k = ip[0] * w->st[0] + ip[1] * w->st[1] + ip[2] * w->st[2];
     if (w->state[k] != ST_FREE && !(first && w->state[k] == ST_SRC)) return 0;
-    if (!active(w, k, order == 1 ? 1 : (order + 1) / 2, q)) return 0;
+    if (first ? !active_first(w, k, q) : !active(w, k, (order + 1) / 2, q)) return 0;
     double x[3];
     node_x(w, ip, x);
     const double old = w->tau[k];
     double v = local_update(w, k, x, order);
     (*nup)++;
     if (first) {
+        w->calc[k] = q;
         /* a source-region node gives up its source's time only to a
          * clearly earlier arrival, not to rounding */
         if (!(v < (w->state[k] == ST_SRC ? old - 1e-12 * fabs(old) : old))) return 0;
@@ -365,57 +412,114 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
     }
     w->tau[k] = v;
     const double dT = old < INFINITY ? fabs(w->T0[k] * (old - v)) : INFINITY;
-    if (dT > w->lock_tol) w->stamp[k] = q;
+    /* First order phase: a change at rounding level (below FIRST_LOCK of
+     * tau) does not unlock the neighbours.  Exact locking let values
+     * creep down by a few ulps sweep after sweep: in the 3-D distance
+     * (N = 100) 300 000 to 400 000 such changes per sweep of the second
+     * iteration, half the work of the solve. */
+    if (first ? fabs(old - v) > FIRST_LOCK * fabs(v) : dT > w->lock_tol) w->stamp[k] = q;
     return dT;
 }
 
-/* Sweep q in orientation s (bit d set: dimension d backwards), hyperplane
- * by hyperplane; returns the largest change of T.  A hyperplane of at
- * least par_min nodes is split between the threads (a barrier per
- * hyperplane: small ones are not worth it). */
-static double sweep(eik_work *w, int s, int order, int q, int first, long par_min, size_t *nup)
+/* The nodes of one block in sweep coordinates (u: block index per
+ * dimension), in the sweep's lexicographic order; returns the largest
+ * change of T. */
+static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], int order, int q, int first,
+                          size_t *nu)
 {
-    const int dim = w->dim;
-    const long n0 = w->n[0], n1 = w->n[1], n2 = dim == 3 ? w->n[2] : 1;
-    const long Lmax = (n0 - 1) + (n1 - 1) + (n2 - 1);
+    const long n0 = w->n[0], n1 = w->n[1], n2 = w->n[2];
     const int s0 = s & 1, s1 = (s >> 1) & 1, s2 = (s >> 2) & 1;
+    const long i0 = u[0] * B[0], j0 = u[1] * B[1], k0 = u[2] * B[2];
+    const long i1 = i0 + B[0] < n0 ? i0 + B[0] : n0, j1 = j0 + B[1] < n1 ? j0 + B[1] : n1,
+               k1 = k0 + B[2] < n2 ? k0 + B[2] : n2;
+    double change = 0;
+    for (long kk = k0; kk < k1; kk++)
+        for (long jj = j0; jj < j1; jj++)
+            for (long ii = i0; ii < i1; ii++) {
+                const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + w->G[0], (s1 ? n1 - 1 - jj : jj) + w->G[1],
+                                    (s2 ? n2 - 1 - kk : kk) + w->G[2]};
+                const double c = visit(w, ip, order, q, first, nu);
+                if (c > change) change = c;
+            }
+    return change;
+}
+
+/* Sweep q in orientation s (bit d set: dimension d backwards); returns the
+ * largest change of T.  The grid is cut into blocks of B[d] nodes and the
+ * blocks are taken by hyperplanes I + J (+ K) = const of block indices in
+ * the sweep's orientation, the nodes of a block in the sweep's
+ * lexicographic order.  A node's update reads only nodes on its own axis
+ * lines, and along every axis line this order visits the nodes in the
+ * same order as the plain lexicographic sweep or the node hyperplanes of
+ * Detrixhe, Gibou & Min (2013) (the block size 1): all give the same bits.
+ * Two blocks of one hyperplane share no axis line, so they are swept in
+ * parallel (a hyperplane of at least par_min nodes); one block (the whole
+ * grid) is the serial sweep, whose memory access runs along the rows:
+ * node hyperplanes touch a new cache line at every node, which made the
+ * serial 3-D sweep several times slower. */
+static double sweep(eik_work *w, int s, int order, int q, int first, long par_min, const long B[3], size_t *nup)
+{
+    long nb[3], Lmax = 0;
+    for (int d = 0; d < 3; d++) {
+        nb[d] = (w->n[d] + B[d] - 1) / B[d];
+        Lmax += nb[d] - 1;
+    }
     double change = 0;
     size_t nu = 0;
     for (long L = 0; L <= Lmax; L++) {
-        const long klo = L - (n0 - 1) - (n1 - 1) > 0 ? L - (n0 - 1) - (n1 - 1) : 0;
-        const long khi = L < n2 - 1 ? L : n2 - 1;
+        /* blocks (I, J, K) with I + J + K = L, numbered by (K, J) */
+        const long klo = L - (nb[0] - 1) - (nb[1] - 1) > 0 ? L - (nb[0] - 1) - (nb[1] - 1) : 0;
+        const long khi = L < nb[2] - 1 ? L : nb[2] - 1;
         long count = 0;
-        for (long kk = klo; kk <= khi; kk++) {
-            const long M = L - kk;
-            count += (M < n1 - 1 ? M : n1 - 1) - (M - (n0 - 1) > 0 ? M - (n0 - 1) : 0) + 1;
+        for (long K = klo; K <= khi; K++) {
+            const long M = L - K;
+            count += (M < nb[1] - 1 ? M : nb[1] - 1) - (M - (nb[0] - 1) > 0 ? M - (nb[0] - 1) : 0) + 1;
         }
-        const int par = count >= par_min;
-        if (dim == 2) {
-            const long jlo = L - (n0 - 1) > 0 ? L - (n0 - 1) : 0, jhi = L < n1 - 1 ? L : n1 - 1;
+        const int par = count > 1 && count * B[0] * B[1] * B[2] >= par_min;
 #pragma omp parallel for if (par) schedule(static) reduction(max : change) reduction(+ : nu)
-            for (long jj = jlo; jj <= jhi; jj++) {
-                const long ii = L - jj;
-                const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + GH, (s1 ? n1 - 1 - jj : jj) + GH, 0};
-                const double c = visit(w, ip, order, q, first, &nu);
-                if (c > change) change = c;
-            }
-        } else {
-#pragma omp parallel for if (par) schedule(static) reduction(max : change) reduction(+ : nu)
-            for (long kk = klo; kk <= khi; kk++) {
-                const long M = L - kk;
-                const long jlo = M - (n0 - 1) > 0 ? M - (n0 - 1) : 0, jhi = M < n1 - 1 ? M : n1 - 1;
-                for (long jj = jlo; jj <= jhi; jj++) {
-                    const long ii = M - jj;
-                    const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + GH, (s1 ? n1 - 1 - jj : jj) + GH,
-                                        (s2 ? n2 - 1 - kk : kk) + GH};
-                    const double c = visit(w, ip, order, q, first, &nu);
-                    if (c > change) change = c;
+        for (long c = 0; c < count; c++) {
+            /* the c-th block of the hyperplane */
+            long K = klo, rest = c;
+            for (;; K++) {
+                const long M = L - K;
+                const long jlo = M - (nb[0] - 1) > 0 ? M - (nb[0] - 1) : 0, jhi = M < nb[1] - 1 ? M : nb[1] - 1;
+                if (rest <= jhi - jlo) {
+                    const long J = jlo + rest, u[3] = {M - J, J, K};
+                    const double ch = sweep_block(w, s, u, B, order, q, first, &nu);
+                    if (ch > change) change = ch;
+                    break;
                 }
+                rest -= jhi - jlo + 1;
             }
         }
     }
     *nup += nu;
     return change;
+}
+
+/* Block edges for the sweeps: the whole grid with one thread or on a grid
+ * of fewer than 16 par_min nodes (a barrier per block hyperplane costs
+ * more than it brings there: on a loaded 2-core machine the quick
+ * convergence study ran 3.5 times slower with 2 threads than with 1);
+ * else about four blocks per thread along each dimension (at least 8
+ * nodes), so that the block hyperplanes keep the threads busy.  `block`
+ * > 0 forces it. */
+static void sweep_blocks(const eik_work *w, long block, long par_min, long B[3])
+{
+    int nth = 1;
+#ifdef _OPENMP
+    nth = omp_get_max_threads();
+#endif
+    double nodes = 1;
+    for (int d = 0; d < w->dim; d++) nodes *= (double)w->n[d];
+    if (nodes < 16.0 * (double)par_min) nth = 1;
+    for (int d = 0; d < 3; d++) {
+        long b = w->n[d];
+        if (block > 0) b = block;
+        else if (nth > 1) b = (w->n[d] + 4 * nth - 1) / (4 * nth);
+        if (block <= 0 && b < 8) b = 8;
+        B[d] = d < w->dim ? (b < w->n[d] ? b : w->n[d]) : 1;
+    }
 }
 
 /* Polynomial extrapolation of tau (degree deg, from deg+1 interior nodes)
@@ -737,12 +841,13 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     w.low = calloc(np, 1);
     w.state = calloc(np, 1);
     w.stamp = malloc(np * sizeof(int));
+    w.calc = malloc(np * sizeof(int));
     w.src = malloc((size_t)(nsrc > 0 ? nsrc : 1) * sizeof(src_info));
     w.nsrc = nsrc;
-    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.lab || !w.low || !w.state || !w.stamp || !w.src) {
+    if (!w.tau || !w.T0 || !w.fs || !w.own || !w.lab || !w.low || !w.state || !w.stamp || !w.calc || !w.src) {
         work_free(&w);
         return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB",
-                            (double)np * (3 * sizeof(double) + 3 * sizeof(int) + 2) / 1e6);
+                            (double)np * (3 * sizeof(double) + 4 * sizeof(int) + 2) / 1e6);
     }
     for (size_t k = 0; k < np; k++) {
         w.tau[k] = INFINITY;
@@ -751,6 +856,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.own[k] = -1;
         w.lab[k] = -1;
         w.stamp[k] = 0;
+        w.calc[k] = -1;
     }
 
     /* Nodes: state and slowness; bad values before anything else. */
@@ -894,6 +1000,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     w.lock_tol = 0; /* exact locking for the first order phase */
 
     const long par_min = opt->parallel_min > 0 ? opt->parallel_min : 4096;
+    long B[3];
+    sweep_blocks(&w, opt->block, par_min, B);
 
     /* First order sweeps to convergence. */
     int q = 1;
@@ -903,7 +1011,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     for (long it = 1; it <= opt->max_iter; it++) {
         double change = 0;
         for (int s = 0; s < nsw; s++, q++) {
-            const double c = sweep(&w, s, 1, q, 1, par_min, &st->updates);
+            const double c = sweep(&w, s, 1, q, 1, par_min, B, &st->updates);
             if (c > change) change = c;
         }
         scale = 0;
@@ -950,7 +1058,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             double change = 0;
             for (int s = 0; s < nsw; s++, q++) {
                 fill_ghosts(&w, deg, q);
-                const double c = sweep(&w, s, opt->order, q, 0, par_min, &st->updates);
+                const double c = sweep(&w, s, opt->order, q, 0, par_min, B, &st->updates);
                 if (c > change) change = c;
             }
             scale = 0;

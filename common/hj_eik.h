@@ -42,9 +42,14 @@ typedef struct {
     /* Called after each full iteration (NULL: none). */
     void (*progress)(long iter, double change, void *ctx);
     void *progress_ctx;
-    long parallel_min;  /* hyperplanes of at least this many nodes are
-                         * swept by all OpenMP threads (0: 4096); the
-                         * result is the same for any thread count */
+    long parallel_min;  /* hyperplanes of blocks holding at least this
+                         * many nodes are swept by all OpenMP threads
+                         * (0: 4096); the result is the same for any
+                         * thread count */
+    long block;         /* block edge (nodes) of the sweeps' order (0:
+                         * automatic: the whole grid with one thread;
+                         * 1: node hyperplanes); the result does not
+                         * depend on it */
 } hj_eik_options;
 
 typedef struct {

@@ -323,9 +323,10 @@ static void wall_converges(void **state)
     free(ob);
 }
 
-/* Two sources and an obstacle in 3-D, every hyperplane of 16 nodes or
- * more swept in parallel: the same bits with 1 and 2 threads, at orders
- * 1, 3 and 5, and at order 5 with one source. */
+/* Two sources and an obstacle in 3-D, every block hyperplane of 16 nodes
+ * or more swept in parallel: the same bits with 1 and 2 threads, at
+ * orders 1, 3 and 5, and at order 5 with one source; and with 2 threads
+ * the same bits for blocks of 1 (node hyperplanes), 3 and 7 nodes. */
 static void threads_bitwise(void **state)
 {
     (void)state;
@@ -352,6 +353,14 @@ static void threads_bitwise(void **state)
             assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, th == 1 ? a : b, &st, &e), HJ_OK);
         }
         assert_memory_equal(a, b, n * sizeof *a);
+        const long blocks[3] = {1, 3, 7};
+        for (int kb = 0; kb < 3; kb++) {
+            o.block = blocks[kb];
+            hj_eik_stats st;
+            hj_error e;
+            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, b, &st, &e), HJ_OK);
+            assert_memory_equal(a, b, n * sizeof *a);
+        }
     }
     /* order 5, one source, no obstacle */
     hj_eik_options o = hj_eik_default_options();
