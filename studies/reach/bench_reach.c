@@ -5,7 +5,7 @@
  *
  *   first order: upwind first order, forward Euler: node updates per
  *                second (nodes x steps / seconds);
- *   WENO5/RK3:   node-stage updates per second (nodes x 3 steps / s);
+ *   WENO5/RK3:   node-stage updates per second (nodes x 3 stages x steps / s);
  *   memory:      bytes per interior node of the run's arrays: the value
  *                (with ghost layers on the general path, interior only on
  *                the fused one) and what hj_reach_solve allocates
@@ -97,7 +97,7 @@ static run_result run(const hj_ls_grid *g, hj_reach_dyn *s, int scheme, int orde
 
 int main(int argc, char **argv)
 {
-    long N = 11, steps = 3;
+    long N = 13, steps = 10;
     const char *out_dir = ".";
     int per_node = 0, no_keep = 0, fused_only = 0;
     hj_cli_opt opts[] = {
