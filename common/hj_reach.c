@@ -232,10 +232,30 @@ static double ls_ham(double tau, const double *x, double phi, const double *p, v
     return -hj_reach_hamiltonian(h->dyn, h->T - tau, x, p);
 }
 
+/* For the nx x n input matrix M of input set in: a[d] += (M c)_d, the
+ * centre's part of dx_d/dt, and b[d] += the set's bound on the rest of
+ * |dx_d/dt| (sum_j |M_dj| w_j for a box, r |M_d.| for a ball). */
+static void input_part(const hj_reach_input *in, const double *M, int nx, double *a, double *b)
+{
+    double c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
+    const int n = in->n;
+    centre(in, c, w);
+    for (int d = 0; d < nx; d++) {
+        double n2 = 0;
+        for (int j = 0; j < n; j++) {
+            const double m = M[d * n + j];
+            a[d] += m * c[j];
+            if (in->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
+            else n2 += m * m;
+        }
+        if (in->shape == HJ_REACH_BALL) b[d] += in->r * sqrt(n2);
+    }
+}
+
 /* alpha[0..nx-1] at (t, x): the largest |dx_i/dt| over the input sets. */
 static void partials(const hj_reach_dyn *s, double t, const double *x, double *alpha)
 {
-    double a[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], c[HJ_REACH_MAXIN], w[HJ_REACH_MAXIN];
+    double a[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX];
     if (s->f) s->f(t, x, a, s->ctx);
     const hj_reach_input *in[2] = {&s->u, &s->d};
     const hj_reach_vec_fn mf[2] = {s->G, s->H};
@@ -243,17 +263,7 @@ static void partials(const hj_reach_dyn *s, double t, const double *x, double *a
         const int n = in[k]->n;
         if (n == 0) continue;
         mf[k](t, x, M, s->ctx);
-        centre(in[k], c, w);
-        for (int d = 0; d < s->nx; d++) {
-            double n2 = 0;
-            for (int j = 0; j < n; j++) {
-                const double m = M[d * n + j];
-                a[d] += m * c[j];
-                if (in[k]->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
-                else n2 += m * m;
-            }
-            if (in[k]->shape == HJ_REACH_BALL) b[d] += in[k]->r * sqrt(n2);
-        }
+        input_part(in[k], M, s->nx, a, b);
     }
     for (int d = 0; d < s->nx; d++) alpha[d] = fabs(a[d]) + b[d];
 }
@@ -291,8 +301,7 @@ static double ls_partial(double tau, const double *x, const double *pmin, const 
 /* -H and alpha[0..nx-1] at one node, from one evaluation of f, G and H. */
 static double node_ham_partials(const hj_reach_dyn *s, double t, const double *x, const double *p, double *alpha)
 {
-    double fx[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], q[HJ_REACH_MAXIN], c[HJ_REACH_MAXIN],
-           w[HJ_REACH_MAXIN], h = 0;
+    double fx[HJ_LS_MAXDIM] = {0}, b[HJ_LS_MAXDIM] = {0}, M[MATMAX], q[HJ_REACH_MAXIN], h = 0;
     if (s->f) {
         s->f(t, x, fx, s->ctx);
         for (int i = 0; i < s->nx; i++) h += p[i] * fx[i];
@@ -305,17 +314,7 @@ static double node_ham_partials(const hj_reach_dyn *s, double t, const double *x
         mf[k](t, x, M, s->ctx);
         mat_tp(M, s->nx, n, p, q);
         h += input_opt(in[k], q, NULL);
-        centre(in[k], c, w);
-        for (int d = 0; d < s->nx; d++) {
-            double n2 = 0;
-            for (int j = 0; j < n; j++) {
-                const double m = M[d * n + j];
-                fx[d] += m * c[j];
-                if (in[k]->shape == HJ_REACH_BOX) b[d] += fabs(m) * w[j];
-                else n2 += m * m;
-            }
-            if (in[k]->shape == HJ_REACH_BALL) b[d] += in[k]->r * sqrt(n2);
-        }
+        input_part(in[k], M, s->nx, fx, b);
     }
     for (int d = 0; d < s->nx; d++) alpha[d] = fabs(fx[d]) + b[d];
     return -h;
