@@ -44,6 +44,25 @@ static inline int hj_test_rmdir(void **state)
     return system(cmd) == 0 ? 0 : -1;
 }
 
+/* Write len bytes of data to the file name in hj_test_dir(); its path
+ * (valid until the next call). */
+static inline const char *hj_test_write_file(const char *name, const void *data, size_t len)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/%s", hj_test_dir(), name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+    fclose(f);
+    return path;
+}
+
+/* The text msg contains part. */
+#define assert_has(msg, part)                                                                                          \
+    do {                                                                                                               \
+        if (!strstr(msg, part)) fail_msg("'%s' does not contain '%s'", msg, part);                                    \
+    } while (0)
+
 /* One OpenMP thread: CI machines are shared, and spinning OpenMP barriers
  * on a busy machine only slow the tests down (thread counts are tested
  * where they matter, e.g. test_ls_ode's threads_bitwise). */

@@ -13,23 +13,13 @@
 
 #define dir hj_test_dir()
 
-static const char *write_file(const char *name, const void *data, size_t len)
-{
-    static char path[128];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "wb");
-    assert_non_null(f);
-    assert_int_equal(fwrite(data, 1, len, f), len);
-    fclose(f);
-    return path;
-}
 
 /* The text map txt, written to name and read (which must succeed). */
 static hj_map read_text_map(const char *name, const char *txt)
 {
     hj_map m = {0};
     hj_error err;
-    assert_int_equal(hj_map_read(&m, write_file(name, txt, strlen(txt)), 0, 1, &err), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file(name, txt, strlen(txt)), 0, 1, &err), HJ_OK);
     return m;
 }
 
@@ -50,22 +40,22 @@ static void pgm_maps(void **state)
     (void)state;
     hj_map m = {0};
     const char p2[] = "P2\n# a comment\n2 2\n4\n0 4\n2 1\n";
-    assert_int_equal(hj_map_read(&m, write_file("a.pgm", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("a.pgm", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
     assert_int_equal(m.mx, 2);
     const double p2v[4] = {2, 1.5, 1, 3}; /* f = 1 + 2 v / 4, bottom row first */
     for (int k = 0; k < 4; k++) assert_true(m.v[k] == p2v[k]);
     hj_map_free(&m);
     /* the format by content: an upper-case suffix, no suffix, text named .pgm */
-    assert_int_equal(hj_map_read(&m, write_file("A.PGM", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("A.PGM", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
     assert_true(m.v[0] == 2);
     hj_map_free(&m);
-    assert_int_equal(hj_map_read(&m, write_file("image", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("image", p2, strlen(p2)), 1, 3, NULL), HJ_OK);
     hj_map_free(&m);
-    assert_int_equal(hj_map_read(&m, write_file("t.pgm", "7 8\n9 6\n", 8), 1, 3, NULL), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("t.pgm", "7 8\n9 6\n", 8), 1, 3, NULL), HJ_OK);
     assert_true(m.v[0] == 9);
     hj_map_free(&m);
     const unsigned char p5[] = {'P', '5', '\n', '2', ' ', '2', '\n', '2', '5', '5', '\n', 0, 255, 51, 102};
-    assert_int_equal(hj_map_read_pgm(&m, write_file("b.pgm", p5, sizeof p5), 0, 1, NULL), HJ_OK);
+    assert_int_equal(hj_map_read_pgm(&m, hj_test_write_file("b.pgm", p5, sizeof p5), 0, 1, NULL), HJ_OK);
     assert_close(m.v[0], 0.2, 1e-15, 0);
     assert_close(m.v[3], 1.0, 1e-15, 0);
     hj_map_free(&m);
@@ -79,23 +69,23 @@ static void malformed_maps(void **state)
     assert_int_equal(hj_map_read(&m, "/nonexistent.txt", 0, 1, &err), HJ_EIO);
     assert_non_null(strstr(err.msg, "cannot read /nonexistent.txt"));
     const char word[] = "1 2\n3 x\n", ragged[] = "1 2\n3\n", negative[] = "1 -2\n3 4\n", small[] = "1 2\n";
-    assert_int_equal(hj_map_read(&m, write_file("w.txt", word, strlen(word)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("w.txt", word, strlen(word)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, ":2:3: 'x' is not a number"));
-    assert_int_equal(hj_map_read(&m, write_file("r.txt", ragged, strlen(ragged)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("r.txt", ragged, strlen(ragged)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, "previous rows have 2"));
-    assert_int_equal(hj_map_read(&m, write_file("n.txt", negative, strlen(negative)), 0, 1, &err), HJ_ENONFINITE);
-    assert_int_equal(hj_map_read(&m, write_file("s.txt", small, strlen(small)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("n.txt", negative, strlen(negative)), 0, 1, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("s.txt", small, strlen(small)), 0, 1, &err), HJ_EFORMAT);
     const char cut[] = "P2\n2 2\n4\n0 4\n2\n";
-    assert_int_equal(hj_map_read(&m, write_file("c.pgm", cut, strlen(cut)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("c.pgm", cut, strlen(cut)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, "truncated"));
     /* a token is a number as a whole, and nothing follows the last pixel */
     const char dotted[] = "P2\n2 2\n255\n100.200 4\n2 3\n", extra[] = "P2\n2 2\n4\n0 4\n2 3 # ok\n1\n";
-    assert_int_equal(hj_map_read(&m, write_file("d.pgm", dotted, strlen(dotted)), 0, 1, &err), HJ_EFORMAT);
-    assert_int_equal(hj_map_read(&m, write_file("e.pgm", extra, strlen(extra)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("d.pgm", dotted, strlen(dotted)), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("e.pgm", extra, strlen(extra)), 0, 1, &err), HJ_EFORMAT);
     assert_non_null(strstr(err.msg, "more data than the 2 x 2 pixels"));
     const unsigned char raw[] = {'P', '5', '\n', '2', ' ', '2', '\n', '9', '\n', 1, 2, 3, 4, 5};
-    assert_int_equal(hj_map_read(&m, write_file("e5.pgm", raw, sizeof raw), 0, 1, &err), HJ_EFORMAT);
-    assert_int_equal(hj_map_read(&m, write_file("ok5.pgm", raw, sizeof raw - 1), 0, 1, &err), HJ_OK);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("e5.pgm", raw, sizeof raw), 0, 1, &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read(&m, hj_test_write_file("ok5.pgm", raw, sizeof raw - 1), 0, 1, &err), HJ_OK);
     hj_map_free(&m);
     assert_null(m.v);
 }
@@ -139,16 +129,12 @@ static const char *pgm_error(const char *name, const char *data, size_t n, int c
 {
     static hj_error err;
     hj_map m = {0};
-    assert_int_equal(hj_map_read_pgm(&m, write_file(name, data, n), 0, 1, &err), code);
+    assert_int_equal(hj_map_read_pgm(&m, hj_test_write_file(name, data, n), 0, 1, &err), code);
     for (const unsigned char *p = (const unsigned char *)err.msg; *p; p++)
         if (*p < 0x20 || *p == 0x7f) fail_msg("control byte 0x%02x in '%s'", *p, err.msg);
     return err.msg;
 }
 #define PGM_ERROR(name, lit, code) pgm_error(name, lit, sizeof lit - 1, code)
-#define assert_has(msg, part)                                                                                          \
-    do {                                                                                                               \
-        if (!strstr(msg, part)) fail_msg("'%s' does not contain '%s'", msg, part);                                    \
-    } while (0)
 
 /* A bad PGM token is named by file, line and column, quoted with its
  * control bytes escaped. */
@@ -180,7 +166,7 @@ static void pgm_messages_name_line_and_column(void **state)
     /* leading zeros make a long token, not a large number */
     hj_map m = {0};
     const char zeros[] = "P2\n2 2\n255\n1 0000000000000000000000000000007 3 4\n";
-    assert_int_equal(hj_map_read_pgm(&m, write_file("z.pgm", zeros, sizeof zeros - 1), 0, 255, NULL), HJ_OK);
+    assert_int_equal(hj_map_read_pgm(&m, hj_test_write_file("z.pgm", zeros, sizeof zeros - 1), 0, 255, NULL), HJ_OK);
     assert_true(m.v[3] == 7); /* top row, second pixel */
     hj_map_free(&m);
 }
@@ -224,12 +210,12 @@ static void text_map_messages(void **state)
     hj_map m = {0};
     hj_error err;
     const char ctl[] = "1 2\n3 \001x\n", nul[] = "1 2\n3 4\0005\n";
-    assert_int_equal(hj_map_read_text(&m, write_file("c.txt", ctl, sizeof ctl - 1), &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read_text(&m, hj_test_write_file("c.txt", ctl, sizeof ctl - 1), &err), HJ_EFORMAT);
     assert_has(err.msg, "c.txt:2:3: '\\x01x' is not a number");
-    assert_int_equal(hj_map_read_text(&m, write_file("z.txt", nul, sizeof nul - 1), &err), HJ_EFORMAT);
+    assert_int_equal(hj_map_read_text(&m, hj_test_write_file("z.txt", nul, sizeof nul - 1), &err), HJ_EFORMAT);
     assert_has(err.msg, "z.txt:2:3: '4\\x005' is not a number");
     const char neg[] = "1 2\n3   -4\n";
-    assert_int_equal(hj_map_read_text(&m, write_file("n.txt", neg, sizeof neg - 1), &err), HJ_ENONFINITE);
+    assert_int_equal(hj_map_read_text(&m, hj_test_write_file("n.txt", neg, sizeof neg - 1), &err), HJ_ENONFINITE);
     assert_has(err.msg, "n.txt:2:5: value -4 must be finite and >= 0");
 }
 

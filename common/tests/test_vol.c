@@ -10,22 +10,8 @@
 #include "hj_vol.h"
 
 #define dir hj_test_dir()
-#define assert_has(msg, part)                                                                                          \
-    do {                                                                                                               \
-        if (!strstr(msg, part)) fail_msg("'%s' does not contain '%s'", msg, part);                                    \
-    } while (0)
 
-static const char *write_file(const char *name, const void *data, size_t len)
-{
-    static char path[128];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "wb");
-    assert_non_null(f);
-    assert_int_equal(fwrite(data, 1, len, f), len);
-    fclose(f);
-    return path;
-}
-#define WRITE(name, lit) write_file(name, lit, sizeof lit - 1)
+#define WRITE(name, lit) hj_test_write_file(name, lit, sizeof lit - 1)
 
 /* Two slices of 3 x 2; each slice's first line is its top row. */
 static void text_volume(void **state)
@@ -95,25 +81,25 @@ static void raw_volume(void **state)
         const long n[3] = {2, 3, 2};
         hj_vol v = {0};
         hj_error err;
-        const char *p = write_file("r.raw", buf, (size_t)(12 * bytes));
+        const char *p = hj_test_write_file("r.raw", buf, (size_t)(12 * bytes));
         assert_int_equal(hj_vol_read_raw(&v, p, n, bytes, &err), HJ_OK);
         assert_int_equal(v.dim, 3);
         for (int k = 0; k < 12; k++) assert_true(v.v[k] == 0.5 * k);
         hj_vol_free(&v);
         /* one value short, one too many, other dimensions */
-        p = write_file("t.raw", buf, (size_t)(11 * bytes));
+        p = hj_test_write_file("t.raw", buf, (size_t)(11 * bytes));
         assert_int_equal(hj_vol_read_raw(&v, p, n, bytes, &err), HJ_EFORMAT);
         assert_has(err.msg, "t.raw: ");
         assert_has(err.msg, "truncated");
         const long n2[3] = {2, 2, 2};
-        assert_int_equal(hj_vol_read_raw(&v, write_file("l.raw", buf, (size_t)(12 * bytes)), n2, bytes, &err),
+        assert_int_equal(hj_vol_read_raw(&v, hj_test_write_file("l.raw", buf, (size_t)(12 * bytes)), n2, bytes, &err),
                          HJ_EFORMAT);
         put_le(buf + 7 * bytes, -1, bytes);
-        assert_int_equal(hj_vol_read_raw(&v, write_file("g.raw", buf, (size_t)(12 * bytes)), n, bytes, &err),
+        assert_int_equal(hj_vol_read_raw(&v, hj_test_write_file("g.raw", buf, (size_t)(12 * bytes)), n, bytes, &err),
                          HJ_ENONFINITE);
         assert_has(err.msg, "value -1 at (i, j, k) = (1, 0, 1)");
         put_le(buf + 7 * bytes, NAN, bytes);
-        assert_int_equal(hj_vol_read_raw(&v, write_file("g.raw", buf, (size_t)(12 * bytes)), n, bytes, &err),
+        assert_int_equal(hj_vol_read_raw(&v, hj_test_write_file("g.raw", buf, (size_t)(12 * bytes)), n, bytes, &err),
                          HJ_ENONFINITE);
         assert_null(v.v);
     }
@@ -142,7 +128,7 @@ static void format_by_content(void **state)
     assert_int_equal(hj_vol_read(&v, WRITE("dot.pgm", "P2\n2 2\n255\n100.200 3\n4 5\n"), 0, 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "is '100.200', not a whole number");
     const unsigned char p5[] = {'P', '5', ' ', '2', ' ', '2', ' ', '1', '0', '0', '0', '\n', 0, 0, 0x03, 0xe8, 0x01, 0xf4, 0, 1};
-    assert_int_equal(hj_vol_read(&v, write_file("wide", p5, sizeof p5), 0, 1, &err), HJ_OK);
+    assert_int_equal(hj_vol_read(&v, hj_test_write_file("wide", p5, sizeof p5), 0, 1, &err), HJ_OK);
     assert_close(v.v[0], 0.5, 0, 1e-15); /* bottom row first: 500 / 1000 */
     assert_close(v.v[3], 1.0, 0, 1e-15);
     hj_vol_free(&v);
