@@ -39,7 +39,6 @@ Timings move with the machine's load: compare ratios from one run.
 #include "p3_prog.h"
 
 enum { NA = 11 };
-static const double CENTRE[3] = {0, 0, 0};
 
 static double now(void)
 {
@@ -83,23 +82,12 @@ static void dyn_row(double t, const double *x, const double *xl, long len, int a
     }
 }
 
-static double avg0(const double *blo, const double *bhi, void *ctx)
-{
-    (void)ctx;
-    return hj_ub_avg_ball(3, blo, bhi, CENTRE, 1.0, 4);
-}
-
-static int uniform(const double *blo, const double *bhi, void *ctx)
-{
-    (void)ctx;
-    return hj_ub_ball_uniform(3, blo, bhi, CENTRE, 1.0);
-}
 
 static hj_ub_problem problem(int n)
 {
     return (hj_ub_problem){.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn,
-                           .target = 1, .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = avg0,
-                           .uniform = uniform, .bbox_lo = {-1, -1, -1}, .bbox_hi = {1, 1, 1}};
+                           .target = 1, .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = p3_ball3_avg,
+                           .uniform = p3_ball3_uniform, .bbox_lo = {-1, -1, -1}, .bbox_hi = {1, 1, 1}};
 }
 
 /* Triad bandwidth in bytes per second (24 B per element; best of 5). */
@@ -138,7 +126,7 @@ static int dense(int n, int steps, double *secs, double *cpu, hj_error *err)
             blo[k] = pb.lo[k] + (idx[k] - 0.5) * ws.dx[k];
             bhi[k] = blo[k] + ws.dx[k];
         }
-        v[l] = avg0(blo, bhi, NULL);
+        v[l] = p3_ball3_avg(blo, bhi, NULL);
     }
     double t = 0;
     *secs = *cpu = 1e300;

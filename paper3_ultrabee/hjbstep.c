@@ -38,7 +38,6 @@ step on SSDA (contiguous arrays per line).
 
 enum { STEPS = 3, NA = 11 };
 
-static const double CENTRE[3] = {0, 0, 0};
 
 static void dyn(double t, const double *x, int a, double *f, void *ctx)
 {
@@ -50,24 +49,13 @@ static void dyn(double t, const double *x, int a, double *f, void *ctx)
     f[2] = 1;
 }
 
-static double avg0(const double *blo, const double *bhi, void *ctx)
-{
-    (void)ctx;
-    return hj_ub_avg_ball(3, blo, bhi, CENTRE, 1.0, 4);
-}
-
-static int uniform(const double *blo, const double *bhi, void *ctx)
-{
-    (void)ctx;
-    return hj_ub_ball_uniform(3, blo, bhi, CENTRE, 1.0);
-}
 
 /* Seconds per step, |D^0|, and the bytes the store holds and its node
  * count after the steps; HJ_ENOMEM when the store does not fit. */
 static int run(hj_band_kind kind, int n, double *secs, size_t *d0, double *bytes, double *nodes, hj_error *err)
 {
     hj_ub_problem pb = {.d = 3, .n = n, .lo = {-2, -2, -2}, .hi = {2, 2, 2}, .ncontrols = NA, .dyn = dyn, .target = 1,
-                     .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = avg0, .uniform = uniform,
+                     .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP, .avg0 = p3_ball3_avg, .uniform = p3_ball3_uniform,
                      .bbox_lo = {-1, -1, -1}, .bbox_hi = {1, 1, 1}};
     hj_ub_solver sv;
     int rc = hj_ub_init(&sv, &pb, kind, err);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "hj_cli.h"
+#include "hj_ub.h"
 
 void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const char *extra, long first_table,
                    long last_table)
@@ -80,4 +81,18 @@ int p3_fig_block(FILE *fp, int d, int n, double lo, double dx, const int *i0, co
     fputs("\n", fp);
     if (ferror(fp)) return hj_error_set(err, HJ_EIO, "write error (figure data)");
     return HJ_OK;
+}
+
+static const double BALL3_CENTRE[3] = {0, 0, 0};
+
+double p3_ball3_avg(const double *blo, const double *bhi, void *ctx)
+{
+    (void)ctx;
+    return hj_ub_avg_ball(3, blo, bhi, BALL3_CENTRE, 1.0, 4);
+}
+
+int p3_ball3_uniform(const double *blo, const double *bhi, void *ctx)
+{
+    (void)ctx;
+    return hj_ub_ball_uniform(3, blo, bhi, BALL3_CENTRE, 1.0);
 }

@@ -13,6 +13,13 @@
 
 #define P3_MAX_SIZES 16
 
+/* The initial set of Table 5's HJB step (hjbstep, bench_ub): the unit
+ * ball at the origin of R^3.  The fraction of the cell [blo, bhi] inside
+ * it (hj_ub_avg_ball, 4 subdivisions) and whether the cell is wholly
+ * inside or outside (hj_ub_ball_uniform); ctx is unused. */
+double p3_ball3_avg(const double *blo, const double *bhi, void *ctx);
+int p3_ball3_uniform(const double *blo, const double *bhi, void *ctx);
+
 /* The exact sets of the examples are closed: a cell centre on a face is
  * inside.  Their tests allow P3_CLOSED_SLACK dx, so that the round-off of
  * the coordinates (-2 + i dx is ~1e-17 off a face through a centre) does
