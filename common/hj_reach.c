@@ -622,3 +622,16 @@ int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error
         }
     return hj_ls_measure_periodic(g, phi, pdim, m, err);
 }
+
+int hj_reach_measure_compact(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
+{
+    if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
+    double *a = hj_ls_alloc(g);
+    if (!a) return hj_error_set(err, HJ_ENOMEM, "out of memory for the measure");
+    long i[HJ_LS_MAXDIM];
+    for (size_t r = 0; r < g->rows; r++)
+        memcpy(a + hj_ls_row(g, r, i), phi + r * (size_t)g->N[0], (size_t)g->N[0] * sizeof *a);
+    const int rc = hj_reach_measure(g, a, m, err);
+    hj_ls_free(a);
+    return rc;
+}

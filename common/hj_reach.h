@@ -187,8 +187,9 @@ typedef struct {
     int compact;          /* 1: phi, ttr and the target and obstacle arrays
                            * hold the interior nodes only (g->nodes doubles,
                            * dimension 0 fastest, no ghost layers); needs
-                           * the fused path.  0 (default): arrays on the
-                           * grid (hj_ls_alloc) */
+                           * the fused path; its measure is
+                           * hj_reach_measure_compact.  0 (default): arrays
+                           * on the grid (hj_ls_alloc) */
 } hj_reach_problem;
 
 /* Defaults above for grid g and system s (target and horizon to set). */
@@ -240,5 +241,9 @@ size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads);
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
  * periodic dimension, which counts a full period (hj_ls_measure_periodic). */
 int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
+/* The same for an interior-only array (the layout of pb.compact = 1):
+ * hj_reach_measure reads arrays on the grid (hj_ls_alloc), and an
+ * interior-only array given to it is read at the wrong nodes. */
+int hj_reach_measure_compact(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
 
 #endif

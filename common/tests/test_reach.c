@@ -576,6 +576,51 @@ static void G2d(double t, const double *x, double *o, void *c)
     o[0] = 0, o[1] = 1;
 }
 
+static double box2d(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fmax(fabs(x[0]), fabs(x[1])) - 0.5;
+}
+
+/* The measure of a compact solve (interior-only arrays) equals that of
+ * the same solve on grid arrays; a 4-D grid is refused. */
+static void measure_compact(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, (double[]){-2, -2}, (double[]){2, 2}, (long[]){41, 33}, bc, NULL), HJ_OK);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 2, f2d, NULL);
+    hj_reach_dyn_control_box(&s, G2d, 1, (double[]){-1}, (double[]){1});
+    hj_reach_dyn_goal(&s, HJ_REACH_REACH);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = box2d, pb.horizon = 0.5;
+    double *c = calloc(g.nodes, sizeof *c), *a = hj_ls_alloc(&g);
+    assert_non_null(c), assert_non_null(a);
+    pb.compact = 1;
+    assert_int_equal(hj_reach_solve(&pb, c, NULL, NULL, NULL), HJ_OK);
+    pb.compact = 0;
+    assert_int_equal(hj_reach_solve(&pb, a, NULL, NULL, NULL), HJ_OK);
+    double mc, ma;
+    assert_int_equal(hj_reach_measure_compact(&g, c, &mc, NULL), HJ_OK);
+    assert_int_equal(hj_reach_measure(&g, a, &ma, NULL), HJ_OK);
+    assert_true(mc > 1.0);
+    assert_memory_equal(&mc, &ma, sizeof mc);
+    free(c), hj_ls_free(a);
+    hj_ls_grid g4;
+    hj_ls_bc bc4[4];
+    for (int d = 0; d < 4; d++) bc4[d] = bc[0];
+    assert_int_equal(hj_ls_grid_init(&g4, 4, (double[]){-1, -1, -1, -1}, (double[]){1, 1, 1, 1}, (long[]){5, 5, 5, 5},
+                                     bc4, NULL),
+                     HJ_OK);
+    double z[625] = {0}, m4;
+    hj_error err;
+    assert_int_equal(hj_reach_measure_compact(&g4, z, &m4, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "1 to 3 only"));
+}
+
 static void fused_path_same_bits(void **state)
 {
     (void)state;
@@ -731,5 +776,5 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
-             cmocka_unit_test(fused_path_same_bits),
+             cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),
              cmocka_unit_test(invalid_problems))
