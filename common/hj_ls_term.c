@@ -171,8 +171,10 @@ static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y,
  * -ffast-math; the lane order is fixed at compile time, not by threads. */
 #ifdef _OPENMP
 #define SIMD_REDUCE(...) _Pragma(HJ_LS_STR(omp simd reduction(__VA_ARGS__)))
+#define SIMD_CLAUSES(...) _Pragma(HJ_LS_STR(omp simd __VA_ARGS__))
 #else
 #define SIMD_REDUCE(...)
+#define SIMD_CLAUSES(...)
 #endif
 #define HJ_LS_STR(x) #x
 
@@ -573,8 +575,9 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const double *phi = y + rc->k;
     if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
     else lf_ham_nodes(c, t, &row, phi, pp, H);
-    long badj = first_nonfinite(H, n);
-    for (long j = 0; j < n; j++) DS[j] = 0, S[j] = 0;
+    /* Non-finite values are flagged inside the vector loops; the node is
+     * looked for (first_nonfinite) only on the rare row that has one. */
+    long badj = n;
     for (int d = 0; d < dim; d++) {
         const double *l = DL[d], *r = DR[d];
         const double *sl = lo[d], *sh = hi[d];
@@ -583,13 +586,26 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         if (c->partial_row) c->partial_row(t, &row, lo, hi, d, A, c->ctx);
         else lf_partial_nodes(c, t, &row, lo, hi, d, A);
         lo[d] = sl, hi[d] = sh;
-        badj = first_nonfinite(A, badj);
         const double dx = g->dx[d];
-        for (long j = 0; j < n; j++) {
-            const double a = fabs(A[j]);
-            DS[j] += a * 0.5 * (r[j] - l[j]);
-            S[j] += a / dx;
+        int nf = 0;
+        if (d == 0) { /* 0.0 + x: the bits of accumulating from zero */
+            SIMD_REDUCE(| : nf)
+            for (long j = 0; j < n; j++) {
+                const double a = fabs(A[j]);
+                nf |= !(A[j] - A[j] == 0);
+                DS[j] = 0.0 + a * 0.5 * (r[j] - l[j]);
+                S[j] = 0.0 + a / dx;
+            }
+        } else {
+            SIMD_REDUCE(| : nf)
+            for (long j = 0; j < n; j++) {
+                const double a = fabs(A[j]);
+                nf |= !(A[j] - A[j] == 0);
+                DS[j] += a * 0.5 * (r[j] - l[j]);
+                S[j] += a / dx;
+            }
         }
+        if (nf) badj = first_nonfinite(A, badj);
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
             double dm = rc->dmax[d];
             SIMD_REDUCE(max : dm)
@@ -600,11 +616,16 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             rc->dmax[d] = dm;
         }
     }
-    if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
     double m = 0, *out = ydot + rc->k;
-    for (long j = 0; j < n; j++) out[j] = -(H[j] - DS[j]);
-    SIMD_REDUCE(max : m)
-    for (long j = 0; j < n; j++) m = S[j] > m ? S[j] : m;
+    int nf = 0;
+    SIMD_CLAUSES(reduction(max : m) reduction(| : nf))
+    for (long j = 0; j < n; j++) {
+        nf |= !(H[j] - H[j] == 0);
+        out[j] = -(H[j] - DS[j]);
+        m = S[j] > m ? S[j] : m;
+    }
+    if (nf) badj = first_nonfinite(H, badj);
+    if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
     *inv = m;
     return HJ_OK;
 }
@@ -621,10 +642,12 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     lf_pass ps;
     ps.lf = c;
-    ps.cache = c->dissipation != HJ_LS_LLLF ? c->work : NULL;
+    const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;
+    ps.cache = ranged ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
-    if (c->dissipation != HJ_LS_LLLF) {
+    for (int d = 0; d < g->dim; d++) ps.gmin[d] = ps.gmax[d] = NAN; /* unread when range_free */
+    if (ranged) {
         /* Global range: each thread keeps its own in its workspace; min and
          * max are exact, so the merge order does not matter. */
         for (int d = 0; d < g->dim; d++) ps.gmin[d] = INFINITY, ps.gmax[d] = -INFINITY;

@@ -193,6 +193,7 @@ typedef struct {
     void *ctx;
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
+    int range_free; /* 1: the partials never read pmin, pmax (below) */
 } hj_ls_lax_friedrichs;
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);
@@ -202,6 +203,14 @@ void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int
  * (same bits; worth it where the derivatives cost more than the memory
  * traffic, as WENO5's do).  LLLF has no range pass and does not use it. */
 size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
+/* range_free = 1 declares that alpha_d depends on t and x only (air3D's
+ * bounds): GLF and LLF then skip the pass over the grid that finds the
+ * global gradient range, and each derivative is computed once, in the
+ * update pass (same bits as range_free = 0 for such callbacks; no work
+ * array is used).  The boxes handed to the partials are then NaN where
+ * the range pass would have filled them, so a partial that reads them
+ * after all returns NaN (an HJ_ENONFINITE error) rather than a silently
+ * wrong bound.  Default 0. */
 
 /* ---- mean curvature (6): G = b kappa |grad phi|, centered second order
  * (hj_ls_curvature_at).  CFL bound 1 / max_x 2 b sum_d 1/dx_d^2. */

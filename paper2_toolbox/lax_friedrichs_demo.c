@@ -126,6 +126,7 @@ static double run(const lf_case *c, int flow, int acc, int diss, double *phi, co
     p2_flow f = {flow == P2_LINEAR, 0, 2};
     hj_ls_lax_friedrichs term;
     hj_ls_lax_friedrichs_init(&term, &c->g, hj_ls_accuracy_scheme(acc), diss, ham, partial, &f);
+    term.range_free = 1; /* partial ignores the gradient box */
     hj_ls_copy(&c->g, phi, c->phi0);
     const double t0 = hj_sys_cpu_seconds();
     if (p2_solve(seq_path, acc, &c->g, &term.base, 1, phi, NULL, NULL, NULL, &err))

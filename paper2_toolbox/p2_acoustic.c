@@ -97,9 +97,8 @@ int p2_acoustic_solve(const hj_ls_grid *g, const p2_acoustic_par *p, int acc, in
     lf.partial_row = partial_row;
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
-    lf.work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(g)); /* optional: NULL recomputes */
+    lf.range_free = 1; /* partial_row never reads the gradient box */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
-    free(lf.work);
     free(c.xs);
     hj_ls_free(c.e);
     return rc;

@@ -58,7 +58,7 @@ int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p
  * x: the loops vectorise. */
 typedef struct {
     const p2_air3d_par *q;
-    double *cs, *sn, *ys;
+    double *cs, *sn, *ys, *xs; /* xs[j] = min[0] + j dx[0]: no int-to-double conversion per node */
 } cb_ctx;
 
 static void ham_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
@@ -68,10 +68,10 @@ static void ham_row(double t, const hj_ls_row_info *row, const double *phi, cons
     const cb_ctx *c = ctx;
     const p2_air3d_par *q = c->q;
     const double cs = c->cs[row->idx[2]], sn = c->sn[row->idx[2]], y = c->ys[row->idx[1]];
-    const double va = q->va, vb = q->vb, A = q->A, B = q->B, x0 = row->x[0], dx0 = row->dx0;
+    const double va = q->va, vb = q->vb, A = q->A, B = q->B, *xs = c->xs;
     const double *p0 = p[0], *p1 = p[1], *p2 = p[2];
     for (long j = 0; j < row->n; j++) {
-        const double x = x0 + (double)j * dx0;
+        const double x = xs[j];
         const double h = -va * p0[j] + vb * (cs * p0[j] + sn * p1[j]) + A * fabs(y * p0[j] - x * p1[j] - p2[j]) -
                          B * fabs(p2[j]);
         H[j] = -h;
@@ -86,8 +86,8 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
     const p2_air3d_par *q = c->q;
     const long n = row->n;
     if (d == 1) {
-        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, x0 = row->x[0], dx0 = row->dx0;
-        for (long j = 0; j < n; j++) alpha[j] = s + A * fabs(x0 + (double)j * dx0);
+        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, *xs = c->xs;
+        for (long j = 0; j < n; j++) alpha[j] = s + A * fabs(xs[j]);
         return;
     }
     const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
@@ -104,11 +104,18 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
                          const double *ts, int nt, double *phi, hj_ls_output_fn out, void *out_ctx,
                          hj_ls_ode_stats *stats, hj_error *err)
 {
-    cb_ctx c = {p, NULL, NULL, NULL};
-    const long n3 = global->N[2], n2 = global->N[1];
-    double *tab = malloc(sizeof(double) * (size_t)(2 * n3 + n2));
+    cb_ctx c = {p, NULL, NULL, NULL, NULL};
+    const long n3 = global->N[2], n2 = global->N[1], n1 = g->N[0];
+    double *tab = malloc(sizeof(double) * (size_t)(2 * n3 + n2 + n1));
     if (!tab) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
-    double *cs = tab, *sn = cs + n3, *ys = sn + n3;
+    double *cs = tab, *sn = cs + n3, *ys = sn + n3, *xs = ys + n2;
+    {
+        /* the bits of row->x[0] + j dx0, row->x[0] as hj_ls_coord has it */
+        const long i0[3] = {0, 0, 0};
+        double x0[3];
+        hj_ls_coord(g, i0, x0);
+        for (long j = 0; j < n1; j++) xs[j] = x0[0] + (double)j * g->dx[0];
+    }
     for (long k = 0; k <= n3 / 2; k++) {
         const double a = 2 * HJ_PI * (double)k / (double)n3;
         cs[k] = cos(a), sn[k] = k == 0 || 2 * k == n3 ? 0.0 : sin(a);
@@ -116,16 +123,15 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     }
     for (long j = 0; j < n2; j++) ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
     /* The callbacks index the tables by the block's node index. */
-    c.cs = cs + g->origin[2], c.sn = sn + g->origin[2], c.ys = ys + g->origin[1];
+    c.cs = cs + g->origin[2], c.sn = sn + g->origin[2], c.ys = ys + g->origin[1], c.xs = xs;
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, NULL, NULL, &c);
     lf.ham_row = ham_row;
     lf.partial_row = partial_row;
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
-    lf.work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(g)); /* optional: NULL recomputes */
+    lf.range_free = 1; /* partial_row reads the tables, never the gradient box */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
-    free(lf.work);
     free(tab);
     return rc;
 }
