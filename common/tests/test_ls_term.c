@@ -378,6 +378,77 @@ static void callback_errors_rows(void **state)
     hj_ls_free(y), hj_ls_free(f);
 }
 
+/* range_free: partials of t and x only give the same bits with and
+ * without the range pass (GLF and LLF, both CFL rules, per node and per
+ * row, 1 and 2 threads); a partial that reads the box after all gets NaN
+ * there and the evaluation fails instead of using a wrong bound. */
+static double partial_x(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)pmin, (void)pmax, (void)ctx;
+    return d == 0 ? fabs(x[0]) + fabs((1 + t) * x[2]) : d == 1 ? 0.5 + fabs(x[0]) : fabs(x[1]);
+}
+static void partial_x_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
+                          int d, double *alpha, void *ctx)
+{
+    double x[3] = {0, row->x[1], row->x[2]};
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        alpha[j] = partial_x(t, x, pmin[0] + j, pmax[0] + j, d, ctx); /* never read */
+    }
+}
+
+static void lax_friedrichs_range_free(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b;
+    double *work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(&g));
+    assert_non_null(work);
+    hj_ls_fill(&g, y, bump3, NULL);
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLF; diss++)
+        for (int rule = HJ_LS_CFL_NODE; rule <= HJ_LS_CFL_TOOLBOX; rule++)
+            for (int scheme = HJ_LS_ENO2; scheme <= HJ_LS_WENO5A; scheme += HJ_LS_WENO5A - HJ_LS_ENO2) {
+                double b0;
+                hj_ls_lax_friedrichs lf;
+                hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_x, NULL);
+                lf.cfl_rule = rule;
+                lf.work = work;
+                assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
+                for (int form = 0; form < 2 * threads; form++) {
+#ifdef _OPENMP
+                    omp_set_num_threads(1 + form / 2);
+#endif
+                    hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_x, NULL);
+                    lf.cfl_rule = rule;
+                    lf.range_free = 1;
+                    if (form % 2) lf.ham = NULL, lf.partial = NULL, lf.ham_row = ham_mix_row, lf.partial_row = partial_x_row;
+                    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, NULL), HJ_OK);
+                    assert_memory_equal(&b, &b0, sizeof b);
+                    long idx[3];
+                    for (size_t r = 0; r < g.rows; r++) {
+                        const size_t k = hj_ls_row(&g, r, idx);
+                        assert_memory_equal(f0 + k, f1 + k, sizeof(double) * (size_t)g.N[0]);
+                    }
+                }
+            }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_error err;
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLF; diss++) {
+        hj_ls_lax_friedrichs lf;
+        hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, diss, ham_mix, partial_mix, NULL);
+        lf.range_free = 1; /* wrongly: partial_mix reads the box */
+        assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, &err), HJ_ENONFINITE);
+    }
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+    free(work);
+}
+
 /* A speed depending on t, x and phi, per node and per row: normal motion,
  * curvature and discount give the same bits either way. */
 static double speed_mix(double t, const double *x, double phi, void *ctx)
@@ -537,6 +608,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(callback_errors_rows),
+                        cmocka_unit_test(lax_friedrichs_range_free),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
                         cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
