@@ -150,22 +150,28 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
     const double *D[6];
     for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
     switch (scheme) {
-    case HJ_LS_UPWIND_FIRST:
-        first_differences(p, s, n, dx, w, -1, 0);
+    case HJ_LS_UPWIND_FIRST: {
+        /* differences in registers, not through w (same expressions) */
+        const double inv = 1.0 / dx;
+        const double *restrict a = p - s, *restrict b = p + s;
         for (long i = 0; i < n; i++) {
-            dl[i] = D[2][i];
-            dr[i] = D[3][i];
+            dl[i] = (p[i] - a[i]) * inv;
+            dr[i] = (b[i] - p[i]) * inv;
         }
         break;
-    case HJ_LS_ENO2:
-        first_differences(p, s, n, dx, w, -2, 1);
+    }
+    case HJ_LS_ENO2: {
+        const double inv = 1.0 / dx;
+        const double *restrict a = p - 2 * s, *restrict b = p - s, *restrict c = p + s, *restrict e = p + 2 * s;
         for (long i = 0; i < n; i++) {
-            const double m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i];
+            const double m2 = (b[i] - a[i]) * inv, m1 = (p[i] - b[i]) * inv, z0 = (c[i] - p[i]) * inv,
+                         p1 = (e[i] - c[i]) * inv;
             const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
             dl[i] = m1 + AMIN(e2m1, e20);
             dr[i] = z0 - AMIN(e20, e2p1);
         }
         break;
+    }
     case HJ_LS_ENO3A:
         first_differences(p, s, n, dx, w, -3, 2);
         for (long i = 0; i < n; i++) {

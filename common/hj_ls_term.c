@@ -587,25 +587,25 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         else lf_partial_nodes(c, t, &row, lo, hi, d, A);
         lo[d] = sl, hi[d] = sh;
         const double dx = g->dx[d];
-        int nf = 0;
+        double nf = 0; /* sum of A - A: 0, or NaN if an A is not finite */
         if (d == 0) { /* 0.0 + x: the bits of accumulating from zero */
-            SIMD_REDUCE(| : nf)
+            SIMD_REDUCE(+ : nf)
             for (long j = 0; j < n; j++) {
                 const double a = fabs(A[j]);
-                nf |= !(A[j] - A[j] == 0);
+                nf += A[j] - A[j];
                 DS[j] = 0.0 + a * 0.5 * (r[j] - l[j]);
                 S[j] = 0.0 + a / dx;
             }
         } else {
-            SIMD_REDUCE(| : nf)
+            SIMD_REDUCE(+ : nf)
             for (long j = 0; j < n; j++) {
                 const double a = fabs(A[j]);
-                nf |= !(A[j] - A[j] == 0);
+                nf += A[j] - A[j];
                 DS[j] += a * 0.5 * (r[j] - l[j]);
                 S[j] += a / dx;
             }
         }
-        if (nf) badj = first_nonfinite(A, badj);
+        if (nf != 0) badj = first_nonfinite(A, badj);
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
             double dm = rc->dmax[d];
             SIMD_REDUCE(max : dm)
@@ -617,14 +617,14 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         }
     }
     double m = 0, *out = ydot + rc->k;
-    int nf = 0;
-    SIMD_CLAUSES(reduction(max : m) reduction(| : nf))
+    double nf = 0;
+    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
     for (long j = 0; j < n; j++) {
-        nf |= !(H[j] - H[j] == 0);
+        nf += H[j] - H[j];
         out[j] = -(H[j] - DS[j]);
         m = S[j] > m ? S[j] : m;
     }
-    if (nf) badj = first_nonfinite(H, badj);
+    if (nf != 0) badj = first_nonfinite(H, badj);
     if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
     *inv = m;
     return HJ_OK;
