@@ -187,6 +187,43 @@ static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc 
     }
 }
 
+/* fill_line for the m neighbouring lines p[i], p[i + s], ... (i < m):
+ * the same expression per ghost node, in a loop over i that vectorises
+ * (the lines along d > 0 lie side by side in memory). */
+static void fill_lines(double *p, ptrdiff_t s, long n, long m, double dx, const hj_ls_bc *bc)
+{
+    double *lo = p, *hi = p + (n - 1) * s;
+    const double *lo1 = lo + s, *hi1 = hi - s;
+    for (long k = 1; k <= HJ_LS_GHOST; k++) {
+        double *gl = lo - k * s, *gh = hi + k * s;
+        switch (bc->type) {
+        case HJ_LS_BC_PERIODIC: {
+            const double *sl = p + ((n - k % n) % n) * s, *sh = p + ((k - 1) % n) * s;
+            for (long i = 0; i < m; i++) gl[i] = sl[i], gh[i] = sh[i];
+            break;
+        }
+        case HJ_LS_BC_DIRICHLET:
+            for (long i = 0; i < m; i++) gl[i] = bc->lo, gh[i] = bc->hi;
+            break;
+        case HJ_LS_BC_NEUMANN:
+            for (long i = 0; i < m; i++) {
+                gl[i] = lo[i] + (double)k * dx * bc->lo;
+                gh[i] = hi[i] + (double)k * dx * bc->hi;
+            }
+            break;
+        default: { /* extrapolation away from / toward zero */
+            const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
+            for (long i = 0; i < m; i++) {
+                const double sl = lo[i] > 0 ? 1.0 : (lo[i] < 0 ? -1.0 : 0.0);
+                const double sh = hi[i] > 0 ? 1.0 : (hi[i] < 0 ? -1.0 : 0.0);
+                gl[i] = lo[i] + (double)k * dir * sl * fabs(lo[i] - lo1[i]);
+                gh[i] = hi[i] + (double)k * dir * sh * fabs(hi[i] - hi1[i]);
+            }
+        }
+        }
+    }
+}
+
 void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a) { hj_ls_fill_ghosts_width(g, a, HJ_LS_GHOST); }
 
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
@@ -195,18 +232,28 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
     for (int d = 0; d < g->dim; d++) {
         /* Lines along d over the full extent of the other dimensions, so
          * that corners take the ghosts already filled in earlier dimensions. */
-        const size_t nlines = g->total / (size_t)g->ext[d];
+        if (d == 0) {
+            const size_t nlines = g->total / (size_t)g->ext[0];
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 32)
 #endif
-        for (size_t l = 0; l < nlines; l++) {
-            size_t r = l, k = (size_t)HJ_LS_GHOST * (size_t)g->stride[d];
-            for (int e = 0; e < g->dim; e++) {
-                if (e == d) continue;
-                k += (r % (size_t)g->ext[e]) * (size_t)g->stride[e];
-                r /= (size_t)g->ext[e];
+            for (size_t l = 0; l < nlines; l++)
+                fill_line(a + (size_t)HJ_LS_GHOST + l * (size_t)g->ext[0], 1, g->N[0], g->dx[0], &g->bc[0]);
+        } else {
+            /* Along d > 0 the lines through one plane of the dimensions
+             * below d are contiguous: planes (outer index over the
+             * dimensions above d) cut into pieces of `piece` lines. */
+            const size_t inner = (size_t)g->stride[d], outer = g->total / (inner * (size_t)g->ext[d]);
+            const size_t piece = 512, pieces = (inner + piece - 1) / piece;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 4)
+#endif
+            for (size_t q = 0; q < outer * pieces; q++) {
+                const size_t o = q / pieces, i0 = (q % pieces) * piece;
+                const size_t m = inner - i0 < piece ? inner - i0 : piece;
+                double *p = a + o * inner * (size_t)g->ext[d] + (size_t)HJ_LS_GHOST * inner + i0;
+                fill_lines(p, g->stride[d], g->N[d], (long)m, g->dx[d], &g->bc[d]);
             }
-            fill_line(a + k, g->stride[d], g->N[d], g->dx[d], &g->bc[d]);
         }
         if (g->dist) g->dist->halo(g, a, d, width, g->dist->ctx);
     }
