@@ -273,39 +273,54 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
     hj_ls_upwind_select_diffs_eps(scheme, D, n, -1, v, out);
 }
 
-HJ_LS_CLONES
-void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, double eps, const double *v,
-                                   double *restrict out)
-{
-    /* The right derivative is the left formula on the mirrored stencil
-     * (p2, p1, z0, m1, m2, m3): bitwise the same as hj_ls_upwind_row.  One
-     * loop per scheme with branch-free selects, so that it vectorises. */
+/* The selected side of nodes I0 + q, q < CNT (a constant 8 leaves no
+ * remainder loop).  The right derivative is the left formula on the
+ * mirrored stencil (p2, p1, z0, m1, m2, m3): bitwise the same as
+ * hj_ls_upwind_row.  One loop per scheme with branch-free selects, so that
+ * it vectorises. */
 #define MIRROR                                                                                           \
     const int left = v[i] > 0;                                                                           \
     const double a0 = D[0][i], a1 = D[1][i], a2 = D[2][i], a3 = D[3][i], a4 = D[4][i], a5 = D[5][i];     \
     const double m3 = left ? a0 : a5, m2 = left ? a1 : a4, m1 = left ? a2 : a3;                          \
     const double z0 = left ? a3 : a2, p1 = left ? a4 : a1;
-    if (scheme == HJ_LS_WENO5A)
-        for (long i = 0; i < n; i++) {
-            MIRROR
-            const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
-            const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;
-            out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),
-                           m1 + e20 - f30 / 3, eps);
-        }
-    else if (scheme == HJ_LS_WENO5B)
-        for (long i = 0; i < n; i++) {
-            MIRROR
-            out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps);
-        }
-    else
-        for (long i = 0; i < n; i++) {
-            MIRROR
-            (void)m3, (void)p1;
-            out[i] = weno3(m2, m1, z0);
-        }
-#undef MIRROR
+#define SELECT_LOOP(I0, CNT)                                                                                   \
+    do {                                                                                                       \
+        const long i0_ = (I0);                                                                                 \
+        if (scheme == HJ_LS_WENO5A)                                                                            \
+            for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \
+                MIRROR                                                                                         \
+                const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1),            \
+                             e2p1 = 0.5 * (p1 - z0);                                                           \
+                const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;                          \
+                out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),    \
+                               m1 + e20 - f30 / 3, eps);                                                       \
+            }                                                                                                  \
+        else if (scheme == HJ_LS_WENO5B)                                                                       \
+            for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \
+                MIRROR                                                                                         \
+                out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps); \
+            }                                                                                                  \
+        else                                                                                                   \
+            for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \
+                MIRROR(void) m3, (void)p1;                                                                     \
+                out[i] = weno3(m2, m1, z0);                                                                    \
+            }                                                                                                  \
+    } while (0)
+
+HJ_LS_CLONES
+void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, double eps, const double *v,
+                                   double *restrict out)
+{
+    /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
+     * scalar remainder: a scalar WENO node costs about what a vector of
+     * them does, and recomputing a node gives the same bits. */
+    const long n8 = n & ~7L;
+    SELECT_LOOP(0, n8);
+    if (n8 < n && n >= 8) SELECT_LOOP(n - 8, 8);
+    else if (n8 < n) SELECT_LOOP(n8, n - n8);
 }
+#undef SELECT_LOOP
+#undef MIRROR
 
 double hj_ls_weno_eps_grid(const hj_ls_grid *g, const double *data, int d)
 {
