@@ -143,6 +143,21 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
     hj_ls_upwind_row_eps(scheme, p, s, n, dx, -1, dl, dr, w);
 }
 
+/* Row loops: whole blocks of 8 nodes, then the last 8 nodes again
+ * instead of a scalar remainder (a scalar node of these kernels costs
+ * about what a vector of them does; recomputing a node gives the same
+ * bits, the outputs never alias the inputs). */
+#define ROWS(...)                                                                          \
+    do {                                                                                   \
+        const long n8_ = n & ~7L;                                                          \
+        for (long i = 0; i < n8_; i++) __VA_ARGS__                                         \
+        if (n8_ < n && n >= 8) {                                                           \
+            const long b_ = n - 8;                                                         \
+            for (long i = b_; i < b_ + 8; i++) __VA_ARGS__                                 \
+        } else                                                                             \
+            for (long i = n8_; i < n; i++) __VA_ARGS__                                     \
+    } while (0)
+
 HJ_LS_CLONES
 void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *restrict dl,
                           double *restrict dr, double *w)
@@ -154,27 +169,27 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
         /* differences in registers, not through w (same expressions) */
         const double inv = 1.0 / dx;
         const double *restrict a = p - s, *restrict b = p + s;
-        for (long i = 0; i < n; i++) {
+        ROWS({
             dl[i] = (p[i] - a[i]) * inv;
             dr[i] = (b[i] - p[i]) * inv;
-        }
+        });
         break;
     }
     case HJ_LS_ENO2: {
         const double inv = 1.0 / dx;
         const double *restrict a = p - 2 * s, *restrict b = p - s, *restrict c = p + s, *restrict e = p + 2 * s;
-        for (long i = 0; i < n; i++) {
+        ROWS({
             const double m2 = (b[i] - a[i]) * inv, m1 = (p[i] - b[i]) * inv, z0 = (c[i] - p[i]) * inv,
                          p1 = (e[i] - c[i]) * inv;
             const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
             dl[i] = m1 + AMIN(e2m1, e20);
             dr[i] = z0 - AMIN(e20, e2p1);
-        }
+        });
         break;
     }
     case HJ_LS_ENO3A:
         first_differences(p, s, n, dx, w, -3, 2);
-        for (long i = 0; i < n; i++) {
+        ROWS({
             TABLE
             /* all candidates, then branch-free selection (vectorises);
              * ties go right, as AMIN */
@@ -186,11 +201,11 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
             const double q1 = sel(fabs(f3m1) < fabs(f30), r3, r2), q2 = sel(fabs(f30) < fabs(f3p1), r2b, r1);
             dl[i] = sel(fabs(e2m1) < fabs(e20), l1, l2);
             dr[i] = sel(fabs(e20) < fabs(e2p1), q1, q2);
-        }
+        });
         break;
     case HJ_LS_ENO3B:
         first_differences(p, s, n, dx, w, -3, 2);
-        for (long i = 0; i < n; i++) {
+        ROWS({
             const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
             /* Undivided differences of the v's: the same decisions as ENO3A. */
             const double u2m1 = m1 - m2, u20 = z0 - m1, u2p1 = p1 - z0;
@@ -202,38 +217,40 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
             const double q1 = sel(fabs(u3m1) < fabs(u30), d3, d2), q2 = sel(fabs(u30) < fabs(u3p1), d2, d1);
             dl[i] = sel(fabs(u2m1) < fabs(u20), l1, l2);
             dr[i] = sel(fabs(u20) < fabs(u2p1), q1, q2);
-        }
+        });
         break;
     case HJ_LS_WENO5A:
         first_differences(p, s, n, dx, w, -3, 2);
-        for (long i = 0; i < n; i++) {
+        ROWS({
             TABLE
             const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3), ld = m1 + e20 - f30 / 3;
             const double r1 = z0 - e2p1 + 2 * (f3p1 / 3), r2 = z0 - e2p1 + 2 * (f30 / 3), r3 = z0 - e20 - f3m1 / 3;
             dl[i] = weno5(m3, m2, m1, z0, p1, la, lb, ld, eps);
             dr[i] = weno5(p2, p1, z0, m1, m2, r1, r2, r3, eps);
-        }
+        });
         break;
     case HJ_LS_WENO5B:
         first_differences(p, s, n, dx, w, -3, 2);
-        for (long i = 0; i < n; i++) {
+        ROWS({
             const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
             dl[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps);
             dr[i] = weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps);
-        }
+        });
         break;
     case HJ_LS_WENO3:
         first_differences(p, s, n, dx, w, -2, 1);
-        for (long i = 0; i < n; i++) {
+        ROWS({
             const double m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i];
             dl[i] = weno3(m2, m1, z0);
             dr[i] = weno3(p1, z0, m1);
-        }
+        });
         break;
     default:
         break;
     }
 }
+
+#undef ROWS
 
 void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v, double *out,
                              double *w)
