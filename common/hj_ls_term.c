@@ -198,9 +198,10 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
         if (c->velocity_fn || c->velocity_array[d]) {
             if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
             else memcpy(v, c->velocity_array[d] + rc->k, sizeof(double) * (size_t)n);
-            long j = 0;
-            while (j < n && v[j] == 0) j++; /* NaN counts as flow: it reaches the CFL bound */
-            if (j == n) continue;           /* no flow along d on this row: no derivative */
+            int flow = 0; /* NaN counts as flow: it reaches the CFL bound */
+            SIMD_REDUCE(| : flow)
+            for (long j = 0; j < n; j++) flow |= v[j] != 0;
+            if (!flow) continue; /* no flow along d on this row: no derivative */
         } else {
             if (c->velocity[d] == 0) continue;
             for (long j = 0; j < n; j++) v[j] = c->velocity[d];

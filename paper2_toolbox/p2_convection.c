@@ -1,6 +1,8 @@
 /* p2_convection.c -- see p2_convection.h. */
 #include "p2_convection.h"
 
+#include <limits.h>
+
 #include "hj_ls_accuracy.h"
 #include "hj_math.h"
 
@@ -22,8 +24,12 @@ void p2_flow_velocity(double t, const double *x, double dx0, long n, int d, doub
         const double c = s * 2 * HJ_PI * x[1];
         for (long j = 0; j < n; j++) v[j] = c;
     } else if (d == 1) {
+        /* an int counter: its conversion to double vectorises (a long's
+         * does not before AVX-512), with the same values */
         const double c = -s * 2 * HJ_PI, x0 = x[0];
-        for (long j = 0; j < n; j++) v[j] = c * (x0 + (double)j * dx0);
+        const int ni = n < INT_MAX ? (int)n : INT_MAX;
+        for (int j = 0; j < ni; j++) v[j] = c * (x0 + (double)j * dx0);
+        for (long j = ni; j < n; j++) v[j] = c * (x0 + (double)j * dx0);
     } else {
         for (long j = 0; j < n; j++) v[j] = 0;
     }
