@@ -17,8 +17,9 @@ per second (steps x RK stages x nodes / seconds), whether the 1- and
 
 - bytes per node-stage: the compulsory traffic of the passes over the grid
   (a model, not a counter: this machine exposes no hardware counters):
-  the term reads phi (twice for the global Lax-Friedrichs, whose gradient
-  range is a pass of its own) and writes G; reachability adds the
+  the term reads phi and writes G (air3D's partials ignore the gradient
+  range, so the global Lax-Friedrichs makes no pass for it: `range_free`
+  in `p2_air3d.c`); reachability adds the
   restriction's read and write of G; the RK combination reads phi and G
   (and the stage array after the first stage) and writes the new state;
 - flops per node-stage: an operation count of the scheme (per dimension,
@@ -303,7 +304,7 @@ int main(int argc, char **argv)
         const double stages = (double)st.steps * order, ns = stages * (double)s.g.nodes;
         /* bytes: term reads and writes, restriction, RK combination (24 B first stage, 32 B later) */
         const double combine = (24.0 + 32.0 * (order - 1)) / order;
-        const double bytes = c->kind == AIR3D ? 16 + 8 + 16 + combine : 8 + 8 + combine;
+        const double bytes = c->kind == AIR3D ? 8 + 8 + 16 + combine : 8 + 8 + combine;
         /* flops: the rotation moves no node along x_3 in 3-D: two dimensions carry flow */
         const double flops = c->kind == AIR3D ? dim * (deriv_flops(c->acc) + 8) + 20 + 5
                                               : 2 * (deriv_flops(c->acc) / 2 + 6) + 5;
