@@ -457,6 +457,7 @@ typedef struct {
     double gmin[HJ_LS_MAXDIM], gmax[HJ_LS_MAXDIM]; /* global gradient range */
     double eps[HJ_LS_MAXDIM];                      /* WENO5 epsilons (weno_eps) */
     double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
+    int clip;      /* a restriction of this term (hj_ls_restrict): 1 G >= 0, -1 G <= 0, 0 none */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -627,11 +628,19 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     }
     if (nf != 0) badj = first_nonfinite(H, badj);
     if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
+    /* restrict_eval's clipping, on the row while it is in cache */
+    if (ps->clip > 0)
+        for (long j = 0; j < n; j++) out[j] = out[j] > 0 ? out[j] : 0;
+    else if (ps->clip < 0)
+        for (long j = 0; j < n; j++) out[j] = out[j] < 0 ? out[j] : 0;
     *inv = m;
     return HJ_OK;
 }
 
-static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+/* The evaluation, its output clipped as hj_ls_restrict would (clip 1:
+ * G >= 0, -1: G <= 0, 0: not), in the same pass. */
+static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, int clip,
+                        hj_error *err)
 {
     const hj_ls_lax_friedrichs *c = (const hj_ls_lax_friedrichs *)term;
     const hj_ls_grid *g = c->grid;
@@ -643,6 +652,7 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     lf_pass ps;
     ps.lf = c;
+    ps.clip = clip;
     const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;
     ps.cache = ranged ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
@@ -694,6 +704,11 @@ static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, do
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
+}
+
+static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    return lf_eval_clip(term, t, y, ydot, bound, 0, err);
 }
 
 size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g) { return 2 * (size_t)g->dim * g->nodes; }
@@ -854,6 +869,9 @@ static int restrict_eval(const hj_ls_term *term, double t, double *y, double *yd
 {
     const hj_ls_restrict *c = (const hj_ls_restrict *)term;
     const hj_ls_grid *g = c->grid;
+    /* A Lax-Friedrichs term (reachability) clips in its own row pass:
+     * the same values, one pass over the grid fewer. */
+    if (c->inner->eval == lf_eval) return lf_eval_clip(c->inner, t, y, ydot, bound, c->positive ? 1 : -1, err);
     int rc = c->inner->eval(c->inner, t, y, ydot, bound, err);
     if (rc) return rc;
 #ifdef _OPENMP

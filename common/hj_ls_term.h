@@ -250,7 +250,9 @@ typedef struct {
 void hj_ls_forcing_init(hj_ls_forcing *c, const hj_ls_grid *g);
 
 /* ---- restrict update (10): the inner term's G clipped to >= 0 (positive)
- * or <= 0; its CFL bound unchanged (toolbox termRestrictUpdate). */
+ * or <= 0; its CFL bound unchanged (toolbox termRestrictUpdate).  A
+ * Lax-Friedrichs inner term (reachability) clips in its own row pass
+ * instead of a pass of its own (same values). */
 typedef struct {
     hj_ls_term base;
     const hj_ls_grid *grid;

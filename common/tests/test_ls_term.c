@@ -550,6 +550,49 @@ static void hessian_heat(void **state)
 
 /* Restrict update keeps only non-negative G; sum combines CFL bounds as
  * (sum 1 / b_i)^-1. */
+/* A restricted Lax-Friedrichs term clips in the term's own pass: the
+ * same bits and bound as the term's G clipped afterwards, both signs,
+ * with 1 and 2 threads. */
+static void restrict_lax_friedrichs(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 15, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b0, b1;
+    hj_ls_fill(&g, y, bump3, NULL);
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    long seen[2] = {0, 0};
+    for (int positive = 0; positive < 2; positive++)
+        for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+            omp_set_num_threads(th);
+#endif
+            hj_ls_lax_friedrichs lf;
+            hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_mix, partial_mix, NULL);
+            assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
+            hj_ls_restrict rs;
+            hj_ls_restrict_init(&rs, &g, &lf.base, positive);
+            assert_int_equal(rs.base.eval(&rs.base, 0.3, y, f1, &b1, NULL), HJ_OK);
+            assert_memory_equal(&b0, &b1, sizeof b0);
+            long idx[3];
+            for (size_t r = 0; r < g.rows; r++) {
+                const size_t k = hj_ls_row(&g, r, idx);
+                for (long j = 0; j < g.N[0]; j++) {
+                    const double v = f0[k + (size_t)j], w = positive ? (v > 0 ? v : 0) : (v < 0 ? v : 0);
+                    seen[positive] += w != v; /* the clip changed something */
+                    assert_memory_equal(&w, f1 + k + (size_t)j, sizeof w);
+                }
+            }
+        }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    assert_true(seen[0] > 0 && seen[1] > 0);
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+}
+
 static void restrict_and_sum(void **state)
 {
     (void)state;
@@ -611,4 +654,4 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(lax_friedrichs_range_free),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
-                        cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
+                        cmocka_unit_test(restrict_lax_friedrichs), cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
