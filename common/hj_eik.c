@@ -32,6 +32,11 @@
  * and forth where fronts meet, and the third order iteration then needed
  * 60-70 iterations instead of 11-15 on a 3-D test); the Godunov update
  * then solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
+ * The high order update keeps that side except where both neighbours
+ * along d are earlier than the node (a valley of T along d): there it
+ * takes the side whose term is larger at the root (the Godunov max,
+ * godunov_max), so that the update does not jump when the neighbours'
+ * order flips.
  *
  * The sweeps.  Each of the 2^dim sweeps visits the nodes in blocks taken
  * by hyperplanes I + J (+ K) = const of block indices in the sweep's
@@ -226,6 +231,55 @@ static inline double godunov_solve(int m, double *a, double *b, double f)
     return tau;
 }
 
+/* The Godunov update with the upwind side of each dimension d taken where
+ * it gives the larger term: the smallest tau with
+ *     sum_d max(al_d tau - bl_d, ar_d tau - br_d, 0)^2 + sum_j (a_j tau - b_j)_+^2 = f^2
+ * (a side with al_d = 0 or ar_d = 0 is absent; (a, b, m): terms with a
+ * fixed side).  The left side is a maximum over the side choices S of
+ * increasing functions F_S, so the root is the smallest of the roots of
+ * the F_S: starting from the sides sd, each pass takes the sides that are
+ * largest at the last root, which can only lower it, until no side
+ * changes.  The result is a continuous function of the data.  Choosing
+ * the side from the neighbours' times instead (as the first order scheme
+ * does) made the high order update jump where the two neighbours along
+ * a dimension have nearly the same time (a valley of T along that axis):
+ * the side flipped from sweep to sweep and the iteration cycled. */
+static double godunov_max(int dim, const double *a, const double *b, int m, const double *al, const double *bl,
+                          const double *ar, const double *br, int *sd, double f)
+{
+    double tau = INFINITY;
+    for (int pass = 0; pass <= 2 * dim; pass++) {
+        double A[3], B[3];
+        int n = 0;
+        for (int j = 0; j < m; j++, n++) {
+            A[n] = a[j];
+            B[n] = b[j];
+        }
+        for (int d = 0; d < dim; d++) {
+            if (sd[d] < 0) continue;
+            if (sd[d] == 0 ? !(al[d] > 0) : !(ar[d] > 0)) sd[d] = 1 - sd[d];
+            if (sd[d] == 0 ? !(al[d] > 0) : !(ar[d] > 0)) continue;
+            A[n] = sd[d] ? ar[d] : al[d];
+            B[n] = sd[d] ? br[d] : bl[d];
+            n++;
+        }
+        tau = n > 0 ? godunov_solve(n, A, B, f) : INFINITY;
+        if (!(tau < INFINITY)) return tau;
+        int changed = 0;
+        for (int d = 0; d < dim; d++) {
+            if (sd[d] < 0 || !(al[d] > 0) || !(ar[d] > 0)) continue;
+            const double tl = al[d] * tau - bl[d], tr = ar[d] * tau - br[d];
+            const double cur = sd[d] ? tr : tl, oth = sd[d] ? tl : tr;
+            if (oth > cur && oth > 0) {
+                sd[d] = 1 - sd[d];
+                changed = 1;
+            }
+        }
+        if (!changed) break;
+    }
+    return tau;
+}
+
 /* Neighbour nb (coordinates x with x[d] moved by dxd) of a node owned by
  * o: *t its tau in o's factorisation, *Tr its T - t0(o) (+INFINITY when
  * it has no value).  With the same owner Tr = T0[nb] tau[nb], the time
@@ -283,6 +337,9 @@ static double local_update(const eik_work *w, long k, const double *x, int order
     const int o = w->own[k];
     const double T0 = w->T0[k];
     double a[3], b[3], a1[3], b1[3];
+    /* high order: both sides' terms per dimension (a = 0: none) */
+    double al[3] = {0, 0, 0}, bl[3] = {0, 0, 0}, ar[3] = {0, 0, 0}, br[3] = {0, 0, 0};
+    int sd[3] = {-1, -1, -1};
     int m = 0, m1 = 0, high = 0;
     for (int d = 0; d < w->dim; d++) {
         const long st = w->st[d];
@@ -315,11 +372,21 @@ static double local_update(const eik_work *w, long k, const double *x, int order
             double hm, hp;
             if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
             else weno3(v, w->eps3, &hm, &hp);
-            /* the side is the first order one; only whether the values
-             * are finite matters */
-            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp;
-            add_term(w, o, T0, x, d, nl, nr, nl < INFINITY ? 0 : INFINITY, nr < INFINITY ? 0 : INFINITY, side, a, b,
-                     &m);
+            const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
+            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp, Tk = T0 * w->tau[k];
+            /* a side is a candidate if it is the first order one or its
+             * neighbour is earlier than the node (both: a valley of T
+             * along d); a later neighbour's side has a small a near a
+             * source, and taking it let values run away there */
+            if (T0 / h + p > 0 && (side == 0 || Tl1 < Tk)) {
+                al[d] = T0 / h + p;
+                bl[d] = T0 * nl / h;
+            }
+            if (T0 / h - p > 0 && (side == 1 || Tr1 < Tk)) {
+                ar[d] = T0 / h - p;
+                br[d] = T0 * nr / h;
+            }
+            sd[d] = side;
             high = 1;
         } else {
             add_term(w, o, T0, x, d, nl1, nr1, Tl1, Tr1, -1, a, b, &m);
@@ -327,7 +394,7 @@ static double local_update(const eik_work *w, long k, const double *x, int order
     }
     const double v1 = m1 > 0 ? godunov_solve(m1, a1, b1, w->fs[k]) : INFINITY;
     if (order == 1 || !high) return v1;
-    const double v = m > 0 ? godunov_solve(m, a, b, w->fs[k]) : INFINITY;
+    const double v = godunov_max(w->dim, a, b, m, al, bl, ar, br, sd, w->fs[k]);
     double hmin = w->h[0];
     for (int d = 1; d < w->dim; d++) hmin = w->h[d] < hmin ? w->h[d] : hmin;
     const double lim = w->fs[k] * hmin / T0;
