@@ -59,7 +59,11 @@
  * cannot see in a straight line are not factored (mark_low,
  * hide_shadows): without these the WENO5 iteration settled into a cycle
  * there (changes of 2e-5 to 4e-5 of the solution's scale for 1000
- * iterations) on a wall with a gap and on two meeting fronts. */
+ * iterations) on a wall with a gap and on two meeting fronts.  Where the
+ * speed varies by a large factor over a few cells WENO5's weights can
+ * still swing from sweep to sweep and the iteration cycle; when the
+ * largest change stops decreasing, the nodes that still move switch to
+ * WENO3 (demote_cycling).  An iteration that converges never does. */
 #include "hj_eik.h"
 
 #include <math.h>
@@ -80,6 +84,11 @@ enum { GH = 3 };                                  /* ghost layers: WENO5 reaches
  * of the exact constant-speed case grow to 4e-12 (N = 320, 2-D); 1e-14
  * keeps them at rounding level (5e-13 there, 8e-13 with exact locking). */
 #define FIRST_LOCK 1e-14
+/* WENO5 cycle detection (demote_cycling): the largest change of a block
+ * of STALL_SPAN iterations at least STALL_RATIO times that of the block
+ * before; at most STALL_ROUNDS demotions. */
+enum { STALL_SPAN = 8, STALL_ROUNDS = 4 };
+#define STALL_RATIO 0.9
 enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
@@ -112,6 +121,8 @@ typedef struct {
                             * reached the node first (-1: none, fixed data) */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
+    float *chg;            /* order 5: largest change of T per node in the
+                            * current iteration (NULL otherwise) */
     int *calc;             /* first order phase: last sweep that computed
                             * the node (-1: none yet) */
     src_info *src;
@@ -131,6 +142,7 @@ static void work_free(eik_work *w)
     free(w->state);
     free(w->stamp);
     free(w->calc);
+    free(w->chg);
     free(w->src);
 }
 
@@ -485,6 +497,7 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
      * (N = 100) 300 000 to 400 000 such changes per sweep of the second
      * iteration, half the work of the solve. */
     if (first ? fabs(old - v) > FIRST_LOCK * fabs(v) : dT > w->lock_tol) w->stamp[k] = q;
+    if (w->chg && dT > w->chg[k]) w->chg[k] = (float)dT;
     return dT;
 }
 
@@ -846,6 +859,41 @@ static void mark_low(eik_work *w)
     }
 }
 
+/* WENO5 can settle into a cycle instead of converging where the speed
+ * varies by a large factor over a few cells: the smoothness indicators
+ * of data resolved by only a few nodes per wavelength are of one size,
+ * their ratios swing with each sweep's small changes, and so do the
+ * weights (from (0.9, 0.1, 0) to (0.2, 0.7, 0.1) on one node in
+ * consecutive sweeps; changes of 0.2-0.3 % of max T for ever on a 40 x 40
+ * map, speed 1 + 0.5 sin(x/7) cos(y/5)).  WENO3's weights stay put there.
+ * The nodes whose last change was at least a tenth of the iteration's
+ * largest (change), and those within 3 nodes of them, use WENO3 from now
+ * on and all nodes are made active (sweep q).  A converging iteration
+ * never gets here, so its result does not change. */
+static void demote_cycling(eik_work *w, double change, int q)
+{
+    const size_t np = w->npad;
+    const float lim = (float)(0.1 * change);
+    unsigned char *m = w->low;
+    for (size_t k = 0; k < np; k++) {
+        if (m[k]) m[k] = 4; /* kept: already WENO3 */
+        if (w->chg[k] >= lim) m[k] |= 1;
+        w->stamp[k] = q;
+    }
+    for (int d = 0; d < w->dim; d++) {
+        const long st = w->st[d];
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 1)
+                for (int r = -3; r <= 3; r++) {
+                    const long kk = (long)k + r * st;
+                    if (kk >= 0 && (size_t)kk < np && !(m[kk] & 1)) m[kk] |= 2;
+                }
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 2) m[k] = (unsigned char)((m[k] & 4) | 1);
+    }
+    for (size_t k = 0; k < np; k++) m[k] = m[k] ? 1 : 0;
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -1120,9 +1168,16 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
+        if (opt->order == 5 && !(w.chg = calloc(np, sizeof(float)))) {
+            work_free(&w);
+            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np * 4 / 1e6);
+        }
+        double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
+        int demoted = 0, nblk = 0;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
+            if (w.chg) memset(w.chg, 0, np * sizeof(float));
             for (int s = 0; s < nsw; s++, q++) {
                 fill_ghosts(&w, deg, q);
                 const double c = sweep(&w, s, opt->order, q, 0, par_min, B, &st->updates);
@@ -1141,6 +1196,20 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             if (change <= opt->tol * scale) {
                 conv = 1;
                 break;
+            }
+            /* WENO5 cycling (the largest change of a block of
+             * STALL_SPAN iterations not below STALL_RATIO times that of
+             * the block before): the nodes that still move use WENO3 */
+            if (change > blk[1]) blk[1] = change;
+            if (w.chg && ++nblk == STALL_SPAN) {
+                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && demoted < STALL_ROUNDS) {
+                    demote_cycling(&w, change, q);
+                    demoted++;
+                    blk[1] = 0; /* the next block starts afresh */
+                }
+                blk[0] = blk[1];
+                blk[1] = 0;
+                nblk = 0;
             }
         }
     }
