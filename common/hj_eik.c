@@ -1207,7 +1207,10 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
              * the block before): the nodes that still move use WENO3 */
             if (change > blk[1]) blk[1] = change;
             if (w.chg && ++nblk == STALL_SPAN) {
-                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && demoted < STALL_ROUNDS) {
+                /* a plateau at rounding level (below 1e-12 of the
+                 * scale: a tolerance too small to reach) is no cycle */
+                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale &&
+                    demoted < STALL_ROUNDS) {
                     demote_cycling(&w, change, q);
                     demoted++;
                     blk[1] = 0; /* the next block starts afresh */
