@@ -32,6 +32,11 @@
  * and forth where fronts meet, and the third order iteration then needed
  * 60-70 iterations instead of 11-15 on a 3-D test); the Godunov update
  * then solves sum_d (a_d tau - b_d)_+^2 = f^2 over the upwind sides.
+ * The high order update keeps that side except where both neighbours
+ * along d are earlier than the node (a valley of T along d): there it
+ * takes the side whose term is larger at the root (the Godunov max,
+ * godunov_max), so that the update does not jump when the neighbours'
+ * order flips.
  *
  * The sweeps.  Each of the 2^dim sweeps visits the nodes in blocks taken
  * by hyperplanes I + J (+ K) = const of block indices in the sweep's
@@ -54,7 +59,11 @@
  * cannot see in a straight line are not factored (mark_low,
  * hide_shadows): without these the WENO5 iteration settled into a cycle
  * there (changes of 2e-5 to 4e-5 of the solution's scale for 1000
- * iterations) on a wall with a gap and on two meeting fronts. */
+ * iterations) on a wall with a gap and on two meeting fronts.  Where the
+ * speed varies by a large factor over a few cells WENO5's weights can
+ * still swing from sweep to sweep and the iteration cycle; when the
+ * largest change stops decreasing, the nodes that still move switch to
+ * WENO3 (demote_cycling).  An iteration that converges never does. */
 #include "hj_eik.h"
 
 #include <math.h>
@@ -75,6 +84,16 @@ enum { GH = 3 };                                  /* ghost layers: WENO5 reaches
  * of the exact constant-speed case grow to 4e-12 (N = 320, 2-D); 1e-14
  * keeps them at rounding level (5e-13 there, 8e-13 with exact locking). */
 #define FIRST_LOCK 1e-14
+/* WENO5 cycle detection (demote_cycling): the largest change of a block
+ * of STALL_SPAN iterations at least STALL_RATIO times that of the block
+ * before; at most STALL_ROUNDS demotions, each of the nodes whose change
+ * in the last iteration was at least STALL_FRAC of the largest.  With
+ * 0.1 instead of 0.01 the cycle moved on to the next nodes after each
+ * demotion (3-D 40^3, speed 1 + 0.5 sin(x/7) cos(y/5): 154 iterations
+ * instead of 108). */
+enum { STALL_SPAN = 8, STALL_ROUNDS = 8 };
+#define STALL_RATIO 0.9
+#define STALL_FRAC 0.01
 enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
@@ -107,6 +126,8 @@ typedef struct {
                             * reached the node first (-1: none, fixed data) */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
+    float *chg;            /* order 5: largest change of T per node in the
+                            * current iteration (NULL otherwise) */
     int *calc;             /* first order phase: last sweep that computed
                             * the node (-1: none yet) */
     src_info *src;
@@ -126,6 +147,7 @@ static void work_free(eik_work *w)
     free(w->state);
     free(w->stamp);
     free(w->calc);
+    free(w->chg);
     free(w->src);
 }
 
@@ -226,6 +248,55 @@ static inline double godunov_solve(int m, double *a, double *b, double f)
     return tau;
 }
 
+/* The Godunov update with the upwind side of each dimension d taken where
+ * it gives the larger term: the smallest tau with
+ *     sum_d max(al_d tau - bl_d, ar_d tau - br_d, 0)^2 + sum_j (a_j tau - b_j)_+^2 = f^2
+ * (a side with al_d = 0 or ar_d = 0 is absent; (a, b, m): terms with a
+ * fixed side).  The left side is a maximum over the side choices S of
+ * increasing functions F_S, so the root is the smallest of the roots of
+ * the F_S: starting from the sides sd, each pass takes the sides that are
+ * largest at the last root, which can only lower it, until no side
+ * changes.  The result is a continuous function of the data.  Choosing
+ * the side from the neighbours' times instead (as the first order scheme
+ * does) made the high order update jump where the two neighbours along
+ * a dimension have nearly the same time (a valley of T along that axis):
+ * the side flipped from sweep to sweep and the iteration cycled. */
+static double godunov_max(int dim, const double *a, const double *b, int m, const double *al, const double *bl,
+                          const double *ar, const double *br, int *sd, double f)
+{
+    double tau = INFINITY;
+    for (int pass = 0; pass <= 2 * dim; pass++) {
+        double A[3], B[3];
+        int n = 0;
+        for (int j = 0; j < m; j++, n++) {
+            A[n] = a[j];
+            B[n] = b[j];
+        }
+        for (int d = 0; d < dim; d++) {
+            if (sd[d] < 0) continue;
+            if (sd[d] == 0 ? !(al[d] > 0) : !(ar[d] > 0)) sd[d] = 1 - sd[d];
+            if (sd[d] == 0 ? !(al[d] > 0) : !(ar[d] > 0)) continue;
+            A[n] = sd[d] ? ar[d] : al[d];
+            B[n] = sd[d] ? br[d] : bl[d];
+            n++;
+        }
+        tau = n > 0 ? godunov_solve(n, A, B, f) : INFINITY;
+        if (!(tau < INFINITY)) return tau;
+        int changed = 0;
+        for (int d = 0; d < dim; d++) {
+            if (sd[d] < 0 || !(al[d] > 0) || !(ar[d] > 0)) continue;
+            const double tl = al[d] * tau - bl[d], tr = ar[d] * tau - br[d];
+            const double cur = sd[d] ? tr : tl, oth = sd[d] ? tl : tr;
+            if (oth > cur && oth > 0) {
+                sd[d] = 1 - sd[d];
+                changed = 1;
+            }
+        }
+        if (!changed) break;
+    }
+    return tau;
+}
+
 /* Neighbour nb (coordinates x with x[d] moved by dxd) of a node owned by
  * o: *t its tau in o's factorisation, *Tr its T - t0(o) (+INFINITY when
  * it has no value).  With the same owner Tr = T0[nb] tau[nb], the time
@@ -283,6 +354,9 @@ static double local_update(const eik_work *w, long k, const double *x, int order
     const int o = w->own[k];
     const double T0 = w->T0[k];
     double a[3], b[3], a1[3], b1[3];
+    /* high order: both sides' terms per dimension (a = 0: none) */
+    double al[3] = {0, 0, 0}, bl[3] = {0, 0, 0}, ar[3] = {0, 0, 0}, br[3] = {0, 0, 0};
+    int sd[3] = {-1, -1, -1};
     int m = 0, m1 = 0, high = 0;
     for (int d = 0; d < w->dim; d++) {
         const long st = w->st[d];
@@ -315,11 +389,21 @@ static double local_update(const eik_work *w, long k, const double *x, int order
             double hm, hp;
             if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
             else weno3(v, w->eps3, &hm, &hp);
-            /* the side is the first order one; only whether the values
-             * are finite matters */
-            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp;
-            add_term(w, o, T0, x, d, nl, nr, nl < INFINITY ? 0 : INFINITY, nr < INFINITY ? 0 : INFINITY, side, a, b,
-                     &m);
+            const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
+            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp, Tk = T0 * w->tau[k];
+            /* a side is a candidate if it is the first order one or its
+             * neighbour is earlier than the node (both: a valley of T
+             * along d); a later neighbour's side has a small a near a
+             * source, and taking it let values run away there */
+            if (T0 / h + p > 0 && (side == 0 || Tl1 < Tk)) {
+                al[d] = T0 / h + p;
+                bl[d] = T0 * nl / h;
+            }
+            if (T0 / h - p > 0 && (side == 1 || Tr1 < Tk)) {
+                ar[d] = T0 / h - p;
+                br[d] = T0 * nr / h;
+            }
+            sd[d] = side;
             high = 1;
         } else {
             add_term(w, o, T0, x, d, nl1, nr1, Tl1, Tr1, -1, a, b, &m);
@@ -327,7 +411,7 @@ static double local_update(const eik_work *w, long k, const double *x, int order
     }
     const double v1 = m1 > 0 ? godunov_solve(m1, a1, b1, w->fs[k]) : INFINITY;
     if (order == 1 || !high) return v1;
-    const double v = m > 0 ? godunov_solve(m, a, b, w->fs[k]) : INFINITY;
+    const double v = godunov_max(w->dim, a, b, m, al, bl, ar, br, sd, w->fs[k]);
     double hmin = w->h[0];
     for (int d = 1; d < w->dim; d++) hmin = w->h[d] < hmin ? w->h[d] : hmin;
     const double lim = w->fs[k] * hmin / T0;
@@ -418,6 +502,7 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
      * (N = 100) 300 000 to 400 000 such changes per sweep of the second
      * iteration, half the work of the solve. */
     if (first ? fabs(old - v) > FIRST_LOCK * fabs(v) : dT > w->lock_tol) w->stamp[k] = q;
+    if (w->chg && dT > w->chg[k]) w->chg[k] = (float)dT;
     return dT;
 }
 
@@ -779,6 +864,41 @@ static void mark_low(eik_work *w)
     }
 }
 
+/* WENO5 can settle into a cycle instead of converging where the speed
+ * varies by a large factor over a few cells: the smoothness indicators
+ * of data resolved by only a few nodes per wavelength are of one size,
+ * their ratios swing with each sweep's small changes, and so do the
+ * weights (from (0.9, 0.1, 0) to (0.2, 0.7, 0.1) on one node in
+ * consecutive sweeps; changes of 0.2-0.3 % of max T for ever on a 40 x 40
+ * map, speed 1 + 0.5 sin(x/7) cos(y/5)).  WENO3's weights stay put there.
+ * The nodes whose last change was at least STALL_FRAC of the
+ * iteration's largest (change), and those within 3 nodes of them, use
+ * WENO3 from now on and all nodes are made active (sweep q).  A converging iteration
+ * never gets here, so its result does not change. */
+static void demote_cycling(eik_work *w, double change, int q)
+{
+    const size_t np = w->npad;
+    const float lim = (float)(STALL_FRAC * change);
+    unsigned char *m = w->low;
+    for (size_t k = 0; k < np; k++) {
+        if (m[k]) m[k] = 4; /* kept: already WENO3 */
+        if (w->chg[k] >= lim) m[k] |= 1;
+        w->stamp[k] = q;
+    }
+    for (int d = 0; d < w->dim; d++) {
+        const long st = w->st[d];
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 1)
+                for (int r = -3; r <= 3; r++) {
+                    const long kk = (long)k + r * st;
+                    if (kk >= 0 && (size_t)kk < np && !(m[kk] & 1)) m[kk] |= 2;
+                }
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 2) m[k] = (unsigned char)((m[k] & 4) | 1);
+    }
+    for (size_t k = 0; k < np; k++) m[k] = m[k] ? 1 : 0;
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -1053,9 +1173,16 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
+        if (opt->order == 5 && !(w.chg = calloc(np, sizeof(float)))) {
+            work_free(&w);
+            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np * 4 / 1e6);
+        }
+        double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
+        int demoted = 0, nblk = 0;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
+            if (w.chg) memset(w.chg, 0, np * sizeof(float));
             for (int s = 0; s < nsw; s++, q++) {
                 fill_ghosts(&w, deg, q);
                 const double c = sweep(&w, s, opt->order, q, 0, par_min, B, &st->updates);
@@ -1074,6 +1201,23 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             if (change <= opt->tol * scale) {
                 conv = 1;
                 break;
+            }
+            /* WENO5 cycling (the largest change of a block of
+             * STALL_SPAN iterations not below STALL_RATIO times that of
+             * the block before): the nodes that still move use WENO3 */
+            if (change > blk[1]) blk[1] = change;
+            if (w.chg && ++nblk == STALL_SPAN) {
+                /* a plateau at rounding level (below 1e-12 of the
+                 * scale: a tolerance too small to reach) is no cycle */
+                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale &&
+                    demoted < STALL_ROUNDS) {
+                    demote_cycling(&w, change, q);
+                    demoted++;
+                    blk[1] = 0; /* the next block starts afresh */
+                }
+                blk[0] = blk[1];
+                blk[1] = 0;
+                nblk = 0;
             }
         }
     }
