@@ -312,58 +312,76 @@ static int line_offsets(int d, int off[][HJ_BAND_DMAX])
     return m;
 }
 
-/* The values of Neigh(I) in runs: p[3 r + k] for line offset r and last
- * index offset k - 1 (NULL: not stored); in[3 r + k] 1 when the node is in
- * the grid and not I itself, 2 when it is outside the grid (its value is the
- * boundary value), 0 for I itself. */
-static void neighbours(hj_ub_solver *sv, const int *idx, int loff[][HJ_BAND_DMAX], int nl, double **p, char *in)
-{
-    const int d = sv->pb->d, n = sv->pb->n;
-    for (int r = 0; r < nl; r++) {
-        int j[HJ_BAND_DMAX], ok = 1, zero = 1;
-        for (int i = 0; i < d; i++) {
-            j[i] = idx[i] + loff[r][i];
-            if (i < d - 1) {
-                ok &= j[i] >= 0 && j[i] < n;
-                zero &= loff[r][i] == 0;
-            }
-        }
-        if (ok) hj_band_find_run(sv->s, j, 3, &p[3 * r]);
-        for (int k = 0; k < 3; k++)
-            in[3 * r + k] = (char)(zero && k == 1 ? 0 : ok && j[d - 1] + k >= 0 && j[d - 1] + k < n ? 1 : 2);
-    }
-}
-
-/* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the +-1 node
- * it neighbours. */
+/* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the first
+ * node of D^n (in the store's order) it neighbours.
+ *
+ * The band is walked in segments: nodes of one line with consecutive last
+ * indices a..b.  Their neighbours on each of the 3^(d-1) lines are asked
+ * of the store once per segment, as runs of 3 covering a-1..b+1 (a third
+ * of the searches of one run per node).  A node absent then may have been
+ * inserted since by an earlier node: it is looked up again before its
+ * insert, so that the inserts, their order and their values are those of
+ * the node-by-node walk. */
 static int expand_band(hj_ub_solver *sv, hj_error *err)
 {
-    const int d = sv->pb->d;
+    const int d = sv->pb->d, n = sv->pb->n;
     int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
     int loff[27][HJ_BAND_DMAX];
     const int nl = line_offsets(d, loff);
-    double *p[81];
-    char in[81];
+    const size_t span = (size_t)n + 2; /* last indices -1 .. n of one line */
+    char *pres = malloc((size_t)nl * span);
+    if (!pres) return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
     collect_ctx c = {sv, 0};
     hj_band_foreach(sv->s, collect, &c);
-    for (size_t i = 0; i < c.m; i++) {
-        int idx[HJ_BAND_DMAX], j[HJ_BAND_DMAX];
-        unlin(d, sv->pb->n, sv->lin[i], idx);
-        neighbours(sv, idx, loff, nl, p, in);
-        /* presence is known before the inserts, which do not change it for
-         * the other nodes of Neigh(I) */
-        for (int r = 0; r < nl; r++)
-            for (int k = 0; k < 3; k++) {
-                if (in[3 * r + k] != 1 || p[3 * r + k]) continue;
-                if (sv->v0[i] != 1 && sv->v0[i] != -1)
-                    return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
-                for (int q = 0; q < d; q++) j[q] = idx[q] + loff[r][q];
-                j[d - 1] += k;
-                if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) return rc;
+    for (size_t i0 = 0, i1; i0 < c.m && !rc; i0 = i1) {
+        for (i1 = i0 + 1; i1 < c.m && sv->lin[i1] == sv->lin[i1 - 1] + 1 && sv->lin[i1] % n != 0; i1++) {}
+        int idx[HJ_BAND_DMAX], line_ok[27];
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1, top = b + 1 < n - 1 ? b + 1 : n - 1;
+        /* presence in D^n of the nodes a-1 .. top of each neighbouring line: pres[r span + 1 + j] */
+        for (int r = 0; r < nl; r++) {
+            int j[HJ_BAND_DMAX];
+            line_ok[r] = 1;
+            for (int q = 0; q < d - 1; q++) {
+                j[q] = idx[q] + loff[r][q];
+                line_ok[r] &= j[q] >= 0 && j[q] < n;
             }
+            if (!line_ok[r]) continue;
+            for (int s = a - 1; s <= top; s += 3) {
+                double *p[3];
+                const int m = top - s + 1 < 3 ? top - s + 1 : 3;
+                j[d - 1] = s;
+                hj_band_find_run(sv->s, j, m, p);
+                for (int k = 0; k < m; k++) pres[(size_t)r * span + (size_t)(s + 1 + k)] = p[k] != NULL;
+            }
+        }
+        for (size_t i = i0; i < i1 && !rc; i++) {
+            const int jl = a + (int)(i - i0);
+            for (int r = 0; r < nl && !rc; r++) {
+                if (!line_ok[r]) continue;
+                for (int k = 0; k < 3; k++) {
+                    const int jk = jl - 1 + k;
+                    char *pr = &pres[(size_t)r * span + (size_t)(jk + 1)];
+                    if (jk < 0 || jk >= n || *pr) continue; /* outside, or stored (I itself too) */
+                    int j[HJ_BAND_DMAX];
+                    double *p;
+                    for (int q = 0; q < d - 1; q++) j[q] = idx[q] + loff[r][q];
+                    j[d - 1] = jk;
+                    hj_band_find_run(sv->s, j, 1, &p); /* inserted by an earlier segment? */
+                    *pr = 1;
+                    if (p) continue;
+                    if (sv->v0[i] != 1 && sv->v0[i] != -1) {
+                        rc = hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
+                        break;
+                    }
+                    if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) break;
+                }
+            }
+        }
     }
-    return HJ_OK;
+    free(pres);
+    return rc;
 }
 
 /* Value slots temporarily hold the node's position in the snapshot, so that
@@ -381,17 +399,27 @@ static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
         int idx[HJ_BAND_DMAX];
         unlin(d, sv->pb->n, sv->lin[i], idx);
         hj_ub_centre(sv, idx, &sv->x[i * d]); /* once per step, for every control */
-        for (int k = 0; k < d; k++)
-            for (int s = 0; s < 2; s++) {
-                int32_t *l = &sv->link[i * 2 * d + 2 * k + s];
-                idx[k] += s ? 1 : -1;
-                if (idx[k] < 0 || idx[k] >= sv->pb->n) *l = -2;
-                else {
-                    const double *p = hj_band_find(sv->s, idx);
-                    *l = p ? (int32_t)*p : -1;
+        /* the scheme's search (hj_band_find_run): along the last index one
+         * run of 3 gives both neighbours */
+        const int n = sv->pb->n;
+        int32_t *l = &sv->link[i * 2 * d];
+        for (int k = 0; k < d; k++) {
+            double *p[3];
+            if (k == d - 1) {
+                idx[k]--;
+                hj_band_find_run(sv->s, idx, 3, p);
+                idx[k]++;
+                p[1] = p[2];
+            } else
+                for (int s = 0; s < 2; s++) {
+                    idx[k] += s ? 1 : -1;
+                    p[s] = NULL;
+                    if (idx[k] >= 0 && idx[k] < n) hj_band_find_run(sv->s, idx, 1, &p[s]);
+                    idx[k] -= s ? 1 : -1;
                 }
-                idx[k] -= s ? 1 : -1;
-            }
+            for (int s = 0; s < 2; s++)
+                l[2 * k + s] = idx[k] + (s ? 1 : -1) < 0 || idx[k] + (s ? 1 : -1) >= n ? -2 : p[s] ? (int32_t)*p[s] : -1;
+        }
     }
     return HJ_OK;
 }
@@ -454,16 +482,38 @@ static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
     }
 }
 
+/* Whether node i's new value equals every value of Neigh(I) (an unstored
+ * node: i's value at t_n; outside: the boundary value).  The 2d axis
+ * neighbours come first, from the links, without a search: most nodes that
+ * stay in the band differ there.  Then the 3^(d-1) runs of the store,
+ * stopping at the first value that differs. */
 static int equal_to_neighbours(hj_ub_solver *sv, size_t i, int loff[][HJ_BAND_DMAX], int nl)
 {
+    const int d = sv->pb->d, n = sv->pb->n;
+    const double v = sv->vmin[i], bnd = sv->pb->boundary;
+    for (int q = 0; q < 2 * d; q++) {
+        const int32_t l = sv->link[i * 2 * (size_t)d + (size_t)q];
+        if ((l >= 0 ? sv->vmin[l] : l == -1 ? sv->v0[i] : bnd) != v) return 0;
+    }
     int idx[HJ_BAND_DMAX];
-    double *p[81];
-    char in[81];
-    const double v = sv->vmin[i];
-    unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
-    neighbours(sv, idx, loff, nl, p, in);
-    for (int o = 0; o < 3 * nl; o++)
-        if (in[o] == 1 ? (p[o] ? *p[o] : sv->v0[i]) != v : in[o] == 2 && sv->pb->boundary != v) return 0;
+    unlin(d, n, sv->lin[i], idx);
+    for (int r = 0; r < nl; r++) {
+        int j[HJ_BAND_DMAX], ok = 1;
+        for (int q = 0; q < d; q++) {
+            j[q] = idx[q] + loff[r][q];
+            if (q < d - 1) ok &= j[q] >= 0 && j[q] < n;
+        }
+        if (!ok) {
+            if (bnd != v) return 0;
+            continue;
+        }
+        double *p[3];
+        hj_band_find_run(sv->s, j, 3, p);
+        for (int k = 0; k < 3; k++) {
+            const int jk = j[d - 1] + k;
+            if ((jk < 0 || jk >= n ? bnd : p[k] ? *p[k] : sv->v0[i]) != v) return 0;
+        }
+    }
     return 1;
 }
 
