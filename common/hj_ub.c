@@ -312,6 +312,30 @@ static int line_offsets(int d, int off[][HJ_BAND_DMAX])
     return m;
 }
 
+/* The end of the segment that starts at snapshot node i0: the following
+ * nodes of the same line with consecutive last indices. */
+static size_t segment_end(const hj_ub_solver *sv, size_t i0, size_t m)
+{
+    const int64_t n = sv->pb->n;
+    size_t i1 = i0 + 1;
+    while (i1 < m && sv->lin[i1] == sv->lin[i1 - 1] + 1 && sv->lin[i1] % n != 0) i1++;
+    return i1;
+}
+
+/* The store's pointers to nodes lo..hi (-1 <= lo, hi <= n - 1) of the line
+ * of j (its first d - 1 indices): out[0 .. hi - lo], asked as runs of 3
+ * (hj_band_find_run, the scheme's search). */
+static void line_run(hj_ub_solver *sv, const int *j, int lo, int hi, double **out)
+{
+    const int d = sv->pb->d;
+    int q[HJ_BAND_DMAX];
+    memcpy(q, j, (size_t)d * sizeof *q);
+    for (int s = lo; s <= hi; s += 3) {
+        q[d - 1] = s;
+        hj_band_find_run(sv->s, q, hi - s + 1 < 3 ? hi - s + 1 : 3, out + (s - lo));
+    }
+}
+
 /* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the first
  * node of D^n (in the store's order) it neighbours.
  *
@@ -331,11 +355,16 @@ static int expand_band(hj_ub_solver *sv, hj_error *err)
     const int nl = line_offsets(d, loff);
     const size_t span = (size_t)n + 2; /* last indices -1 .. n of one line */
     char *pres = malloc((size_t)nl * span);
-    if (!pres) return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
+    double **pp = malloc(span * sizeof *pp);
+    if (!pres || !pp) {
+        free(pres);
+        free(pp);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
+    }
     collect_ctx c = {sv, 0};
     hj_band_foreach(sv->s, collect, &c);
     for (size_t i0 = 0, i1; i0 < c.m && !rc; i0 = i1) {
-        for (i1 = i0 + 1; i1 < c.m && sv->lin[i1] == sv->lin[i1 - 1] + 1 && sv->lin[i1] % n != 0; i1++) {}
+        i1 = segment_end(sv, i0, c.m);
         int idx[HJ_BAND_DMAX], line_ok[27];
         unlin(d, n, sv->lin[i0], idx);
         const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1, top = b + 1 < n - 1 ? b + 1 : n - 1;
@@ -348,13 +377,8 @@ static int expand_band(hj_ub_solver *sv, hj_error *err)
                 line_ok[r] &= j[q] >= 0 && j[q] < n;
             }
             if (!line_ok[r]) continue;
-            for (int s = a - 1; s <= top; s += 3) {
-                double *p[3];
-                const int m = top - s + 1 < 3 ? top - s + 1 : 3;
-                j[d - 1] = s;
-                hj_band_find_run(sv->s, j, m, p);
-                for (int k = 0; k < m; k++) pres[(size_t)r * span + (size_t)(s + 1 + k)] = p[k] != NULL;
-            }
+            line_run(sv, j, a - 1, top, pp);
+            for (int k = 0; k <= top - a + 1; k++) pres[(size_t)r * span + (size_t)(a + k)] = pp[k] != NULL;
         }
         for (size_t i = i0; i < i1 && !rc; i++) {
             const int jl = a + (int)(i - i0);
@@ -381,6 +405,7 @@ static int expand_band(hj_ub_solver *sv, hj_error *err)
         }
     }
     free(pres);
+    free(pp);
     return rc;
 }
 
@@ -388,39 +413,54 @@ static int expand_band(hj_ub_solver *sv, hj_error *err)
  * the store's own neighbour search gives the links. */
 static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
 {
-    const int d = sv->pb->d;
+    const int d = sv->pb->d, n = sv->pb->n;
     int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
+    double **pp = malloc((size_t)n * sizeof *pp);
+    if (!pp) return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
     collect_ctx c = {sv, 0};
     hj_band_foreach(sv->s, collect, &c);
     *m = c.m;
     for (size_t i = 0; i < c.m; i++) *sv->ptr[i] = (double)i;
-    for (size_t i = 0; i < c.m; i++) {
+    const size_t L = 2 * (size_t)d;
+    for (size_t i0 = 0, i1; i0 < c.m; i0 = i1) {
+        i1 = segment_end(sv, i0, c.m);
         int idx[HJ_BAND_DMAX];
-        unlin(d, sv->pb->n, sv->lin[i], idx);
-        hj_ub_centre(sv, idx, &sv->x[i * d]); /* once per step, for every control */
-        /* the scheme's search (hj_band_find_run): along the last index one
-         * run of 3 gives both neighbours */
-        const int n = sv->pb->n;
-        int32_t *l = &sv->link[i * 2 * d];
-        for (int k = 0; k < d; k++) {
-            double *p[3];
-            if (k == d - 1) {
-                idx[k]--;
-                hj_band_find_run(sv->s, idx, 3, p);
-                idx[k]++;
-                p[1] = p[2];
-            } else
-                for (int s = 0; s < 2; s++) {
-                    idx[k] += s ? 1 : -1;
-                    p[s] = NULL;
-                    if (idx[k] >= 0 && idx[k] < n) hj_band_find_run(sv->s, idx, 1, &p[s]);
-                    idx[k] -= s ? 1 : -1;
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1;
+        for (size_t i = i0; i < i1; i++) { /* centres once per step, for every control */
+            idx[d - 1] = a + (int)(i - i0);
+            hj_ub_centre(sv, idx, &sv->x[i * (size_t)d]);
+        }
+        idx[d - 1] = a;
+        /* the segment's neighbouring lines, one run of searches each */
+        for (int k = 0; k < d - 1; k++)
+            for (int s = 0; s < 2; s++) {
+                idx[k] += s ? 1 : -1;
+                const int out = idx[k] < 0 || idx[k] >= n;
+                if (!out) line_run(sv, idx, a, b, pp);
+                for (size_t i = i0; i < i1; i++)
+                    sv->link[i * L + 2 * (size_t)k + (size_t)s] = out ? -2 : pp[i - i0] ? (int32_t)*pp[i - i0] : -1;
+                idx[k] -= s ? 1 : -1;
+            }
+        /* along the last index: the segment's own nodes, and its two ends */
+        for (size_t i = i0; i < i1; i++) {
+            const int j = a + (int)(i - i0);
+            int32_t *l = &sv->link[i * L + L - 2];
+            for (int s = 0; s < 2; s++) {
+                const int jn = j + (s ? 1 : -1);
+                if (jn < 0 || jn >= n) l[s] = -2;
+                else if (s ? i + 1 < i1 : i > i0) l[s] = (int32_t)(s ? i + 1 : i - 1);
+                else {
+                    double *p;
+                    idx[d - 1] = jn;
+                    hj_band_find_run(sv->s, idx, 1, &p);
+                    l[s] = p ? (int32_t)*p : -1;
                 }
-            for (int s = 0; s < 2; s++)
-                l[2 * k + s] = idx[k] + (s ? 1 : -1) < 0 || idx[k] + (s ? 1 : -1) >= n ? -2 : p[s] ? (int32_t)*p[s] : -1;
+            }
         }
     }
+    free(pp);
     return HJ_OK;
 }
 
@@ -482,51 +522,82 @@ static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
     }
 }
 
-/* Whether node i's new value equals every value of Neigh(I) (an unstored
- * node: i's value at t_n; outside: the boundary value).  The 2d axis
- * neighbours come first, from the links, without a search: most nodes that
- * stay in the band differ there.  Then the 3^(d-1) runs of the store,
- * stopping at the first value that differs. */
-static int equal_to_neighbours(hj_ub_solver *sv, size_t i, int loff[][HJ_BAND_DMAX], int nl)
+/* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to every node of Neigh(I)
+ * (an unstored node: I's value at t_n; outside: the boundary value).
+ * Segment by segment: the 2d axis neighbours come first, from the links,
+ * without a search (most nodes that stay differ there); a neighbouring
+ * line's nodes a-1..b+1 are asked of the store once per segment, when a
+ * node first needs them; a node's test stops at the first value that
+ * differs.  No store change until every node is tested. */
+static int reduce_band(hj_ub_solver *sv, size_t m, hj_error *err)
 {
     const int d = sv->pb->d, n = sv->pb->n;
-    const double v = sv->vmin[i], bnd = sv->pb->boundary;
-    for (int q = 0; q < 2 * d; q++) {
-        const int32_t l = sv->link[i * 2 * (size_t)d + (size_t)q];
-        if ((l >= 0 ? sv->vmin[l] : l == -1 ? sv->v0[i] : bnd) != v) return 0;
+    const double bnd = sv->pb->boundary;
+    int loff[27][HJ_BAND_DMAX];
+    const int nl = line_offsets(d, loff);
+    const size_t span = (size_t)n + 2, L = 2 * (size_t)d;
+    double **pp = malloc((size_t)nl * span * sizeof *pp);
+    int64_t *gone = malloc((m ? m : 1) * sizeof *gone);
+    if (!pp || !gone) {
+        free(pp);
+        free(gone);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
     }
-    int idx[HJ_BAND_DMAX];
-    unlin(d, n, sv->lin[i], idx);
-    for (int r = 0; r < nl; r++) {
-        int j[HJ_BAND_DMAX], ok = 1;
-        for (int q = 0; q < d; q++) {
-            j[q] = idx[q] + loff[r][q];
-            if (q < d - 1) ok &= j[q] >= 0 && j[q] < n;
-        }
-        if (!ok) {
-            if (bnd != v) return 0;
-            continue;
-        }
-        double *p[3];
-        hj_band_find_run(sv->s, j, 3, p);
-        for (int k = 0; k < 3; k++) {
-            const int jk = j[d - 1] + k;
-            if ((jk < 0 || jk >= n ? bnd : p[k] ? *p[k] : sv->v0[i]) != v) return 0;
+    size_t ngone = 0;
+    for (size_t i0 = 0, i1; i0 < m; i0 = i1) {
+        i1 = segment_end(sv, i0, m);
+        int idx[HJ_BAND_DMAX], got[27] = {0};
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1, top = b + 1 < n - 1 ? b + 1 : n - 1;
+        for (size_t i = i0; i < i1; i++) {
+            const double v = sv->vmin[i];
+            int keep = v != 1 && v != -1;
+            for (size_t q = 0; q < L && !keep; q++) {
+                const int32_t l = sv->link[i * L + q];
+                keep = (l >= 0 ? sv->vmin[l] : l == -1 ? sv->v0[i] : bnd) != v;
+            }
+            const int jl = a + (int)(i - i0);
+            for (int r = 0; r < nl && !keep; r++) {
+                int j[HJ_BAND_DMAX], ok = 1;
+                for (int q = 0; q < d - 1; q++) {
+                    j[q] = idx[q] + loff[r][q];
+                    ok &= j[q] >= 0 && j[q] < n;
+                }
+                if (!ok) {
+                    keep = bnd != v;
+                    continue;
+                }
+                double **p = pp + (size_t)r * span;
+                if (!got[r]) {
+                    line_run(sv, j, a - 1, top, p);
+                    got[r] = 1;
+                }
+                for (int k = 0; k < 3 && !keep; k++) {
+                    const int jk = jl - 1 + k;
+                    keep = (jk < 0 || jk >= n ? bnd : p[jk - a + 1] ? *p[jk - a + 1] : sv->v0[i]) != v;
+                }
+            }
+            if (!keep) gone[ngone++] = sv->lin[i];
         }
     }
-    return 1;
+    for (size_t i = 0; i < ngone; i++) {
+        int idx[HJ_BAND_DMAX];
+        unlin(d, n, gone[i], idx);
+        hj_band_remove(sv->s, idx);
+    }
+    free(pp);
+    free(gone);
+    return HJ_OK;
 }
 
 int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
 {
     const hj_ub_problem *pb = sv->pb;
     const int d = pb->d;
-    int loff[27][HJ_BAND_DMAX];
-    const int nl = line_offsets(d, loff);
     int rc;
     if (!(tmax > sv->t)) return HJ_OK;
     if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = expand_band(sv, err))) return rc;
-    size_t m;
+    size_t m = 0;
     if ((rc = snapshot(sv, &m, err))) return rc;
     sv->band_sum += (double)m;
     sv->band_max = m > sv->band_max ? m : sv->band_max;
@@ -561,17 +632,7 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
         }
     }
     /* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to all their neighbours */
-    if (hj_band_kind_of(sv->s) != HJ_BAND_FS) {
-        size_t r = 0;
-        for (size_t i = 0; i < m; i++)
-            if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, loff, nl))
-                sv->lin[r++] = sv->lin[i];
-        for (size_t i = 0; i < r; i++) {
-            int idx[HJ_BAND_DMAX];
-            unlin(d, pb->n, sv->lin[i], idx);
-            hj_band_remove(sv->s, idx);
-        }
-    }
+    if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = reduce_band(sv, m, err))) return rc;
     sv->t = dt == tmax - sv->t ? tmax : sv->t + dt;
     sv->steps++;
     return HJ_OK;
