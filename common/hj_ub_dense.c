@@ -19,7 +19,7 @@ enum { SEG = 256 };
 /* The row kernels are built for AVX2 as well as the baseline x86-64 and
  * chosen at run time (no FMA: the same IEEE operations, the same bits). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-#define HJ_UB_CLONES __attribute__((target_clones("avx2", "default")))
+#define HJ_UB_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define HJ_UB_CLONES
 #endif
@@ -160,10 +160,12 @@ double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
  * (c + 0.0 keeps the sign-of-zero rule of the original). */
 HJ_UB_CLONES
 static void row_flux(long len, const double *restrict wm, const double *restrict wi, const double *restrict wp,
-                     const double *restrict mu, double *restrict out)
+                     double cfl_k, const double *restrict fk, double *restrict mu, double *restrict out)
 {
     for (long j = 0; j < len; j++) {
-        const double m = mu[j], c = wi[j];
+        /* mu_j = dt/dx_k f_k, stored for the update, in the same pass */
+        const double m = cfl_k * fk[j], c = wi[j];
+        mu[j] = m;
         const int right = m > 0;
         const double e = right ? wm[j] : wp[j], down = right ? wp[j] : wm[j];
         const double den = right ? m : m < 0 ? -m : 1;
@@ -199,38 +201,41 @@ static void row_update(long len, const double *restrict wmm, const double *restr
         out[j] = node_update(wmm[j], wm[j], w0[j], wp[j], wpp[j], mL[j], m0[j], mR[j], aL[j], a0[j], aR[j]);
 }
 
-/* What the sweep does with its value: the next sweep's input, the minimum
- * over controls, or (last control) the final value of the step. */
-typedef struct {
-    int mode;                /* 0 store, 1 min (first control: store), 2 final */
-    int first;               /* first control */
-    const double *v0;        /* V^n (final: target min) */
-    int target;
-    double snap;
-} sink;
-
-/* out may be vmin (min) or v0 (final): element by element, in place. */
-static void row_store(const sink *s, long len, const double *val, double *out, const double *vmin, const double *v0)
+/* node_update over a row of the last sweep of a control, with the minimum
+ * over the controls in the same pass: vmin = min(vmin, update). */
+HJ_UB_CLONES
+static void row_update_min(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
+                           double *restrict vmin)
 {
-    if (s->mode == 0 || (s->mode == 1 && s->first)) {
-        memcpy(out, val, (size_t)len * sizeof *out);
-        return;
-    }
-    if (s->mode == 1) {
-        for (long j = 0; j < len; j++) out[j] = val[j] < vmin[j] ? val[j] : vmin[j];
-        return;
-    }
-    const double snap = s->snap;
     for (long j = 0; j < len; j++) {
-        double v = s->first || val[j] < vmin[j] ? val[j] : vmin[j];
-        if (s->target && v0[j] < v) v = v0[j];
-        out[j] = v > 1 - snap ? 1 : v < -1 + snap ? -1 : v;
+        const double u = node_update(w[j], w[j + 1], w[j + 2], w[j + 3], w[j + 4], mu[j], mu[j + 1], mu[j + 2], A[j],
+                                     A[j + 1], A[j + 2]);
+        vmin[j] = u < vmin[j] ? u : vmin[j];
+    }
+}
+
+/* The last control's last sweep: the minimum over the controls (vmin
+ * NULL: a single control), the min with V^n for the target problem, and
+ * the snap to +-1, into v (V^n on entry). */
+HJ_UB_CLONES
+static void row_update_final(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
+                             const double *restrict vmin, int target, double snap, double *restrict v)
+{
+    for (long j = 0; j < len; j++) {
+        double u = node_update(w[j], w[j + 1], w[j + 2], w[j + 3], w[j + 4], mu[j], mu[j + 1], mu[j + 2], A[j], A[j + 1],
+                               A[j + 2]);
+        u = !vmin || u < vmin[j] ? u : vmin[j];
+        u = target && v[j] < u ? v[j] : u;
+        v[j] = u > 1 - snap ? 1 : u < -1 + snap ? -1 : u;
     }
 }
 
 /* Sweep in the last direction: every row on its own, padded with the
- * boundary value and the mu of the cells beside the ends. */
-static void sweep_last(hj_ub_dense *ws, const double *src, double *dst, const sink *s, int a, double t, double dt)
+ * boundary value and the mu of the cells beside the ends.  mode 0: the
+ * first control's result into vmin; 1: the minimum with vmin; 2: the
+ * final value of the step into v (first: a single control). */
+static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, int first, double snap, int a, double t,
+                       double dt)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n, k = d - 1;
@@ -239,18 +244,22 @@ static void sweep_last(hj_ub_dense *ws, const double *src, double *dst, const si
 #pragma omp parallel for num_threads(ws->nthreads) schedule(static)
     for (size_t r = 0; r < rows; r++) {
         double *b = ws->buf + (size_t)thread_id() * ws->bufper;
-        double *f = b, *w = f + (size_t)d * (size_t)(n + 2), *mu = w + n + 4, *A = mu + n + 4, *val = A + n + 4;
+        double *f = b, *w = f + (size_t)d * (size_t)(n + 2), *mu = w + n + 4, *A = mu + n + 4;
         double x[HJ_BAND_DMAX] = {0};
         row_coords(ws, r, 0, 0, x);
         row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
-        for (int j = 0; j < n + 2; j++) mu[j] = c * f[(size_t)k * (size_t)(n + 2) + (size_t)j]; /* mu_{j-1} */
         const double *in = src + r * (size_t)n;
         w[0] = w[1] = w[n + 2] = w[n + 3] = bnd; /* w[j + 2] = W_j */
         memcpy(w + 2, in, (size_t)n * sizeof *w);
-        row_flux(n + 2, w, w + 1, w + 2, mu, A); /* A[j + 1] = A_j, j = -1..n */
-        row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, val);
+        /* mu[j + 1] = mu_j, A[j + 1] = A_j, j = -1..n */
+        row_flux(n + 2, w, w + 1, w + 2, c, f + (size_t)k * (size_t)(n + 2), mu, A);
         const size_t o = r * (size_t)n;
-        row_store(s, n, val, dst + o, ws->vmin + o, s->v0 ? s->v0 + o : NULL);
+        if (mode == 0)
+            row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, ws->vmin + o);
+        else if (mode == 1)
+            row_update_min(n, w, mu, A, ws->vmin + o);
+        else
+            row_update_final(n, w, mu, A, first ? NULL : ws->vmin + o, pb->target, snap, v + o);
     }
 }
 
@@ -280,8 +289,7 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
         double x_[HJ_BAND_DMAX] = {0};                                                                 \
         row_coords(ws, base + (size_t)((i) < 0 ? 0 : (i) >= n ? n - 1 : (i)) * stride, k, (i), x_);   \
         row_dyn(ws, t, x_, ws->xlast + 1 + j0, len, a, f);                                            \
-        for (long j = 0; j < len; j++) mu[s][j] = c * f[(long)k * len + j];                            \
-        row_flux(len, ROW((i) - 1), ROW(i), ROW((i) + 1), mu[s], A[s]);                                \
+        row_flux(len, ROW((i) - 1), ROW(i), ROW((i) + 1), c, f + (long)k * len, mu[s], A[s]);          \
     } while (0)
         FILL(-1, 0);
         FILL(0, 1);
@@ -312,8 +320,7 @@ int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *
             src = tmp[k % 2];
         }
         const int last = a == pb->ncontrols - 1;
-        const sink s = {.mode = last ? 2 : 1, .first = a == 0, .v0 = v, .target = pb->target, .snap = snap};
-        sweep_last(ws, src, last ? v : ws->vmin, &s, a, t, dt);
+        sweep_last(ws, src, v, last ? 2 : a == 0 ? 0 : 1, a == 0, snap, a, t, dt);
     }
     return HJ_OK;
 }
