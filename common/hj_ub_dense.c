@@ -24,6 +24,11 @@ enum { SEG = 256 };
 #define HJ_UB_CLONES
 #endif
 
+/* Per-thread buffer: 7 rolling rows of sweep_rows (at most seg_max
+ * columns), the dynamics of a row, and the padded row of the last sweep
+ * (values, mu, fluxes). */
+static size_t seg_max(int n) { return (size_t)n > SEG ? (size_t)n : SEG; }
+
 static int thread_id(void)
 {
 #ifdef _OPENMP
@@ -55,7 +60,7 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
 #else
     ws->nthreads = 1;
 #endif
-    ws->bufper = 7 * (size_t)SEG + (size_t)d * (size_t)(n + 2) + 3 * (size_t)(n + 4);
+    ws->bufper = 7 * seg_max(n) + (size_t)d * (size_t)(n + 2) + 3 * (size_t)(n + 4);
     ws->w1 = malloc(ws->total * sizeof *ws->w1);
     ws->w2 = malloc(ws->total * sizeof *ws->w2);
     ws->vmin = malloc(ws->total * sizeof *ws->vmin);
@@ -230,57 +235,81 @@ static void row_update_final(long len, const double *restrict w, const double *r
     }
 }
 
-/* Sweep in the last direction: every row on its own, padded with the
- * boundary value and the mu of the cells beside the ends.  mode 0: the
- * first control's result into vmin; 1: the minimum with vmin; 2: the
- * final value of the step into v (first: a single control). */
-static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, int first, double snap, int a, double t,
-                       double dt)
+/* The last direction's sweep of row r, from w[2 .. n + 1] (the buffer's
+ * padded row, filled by the caller): pads with the boundary value and the
+ * mu of the cells beside the ends, fluxes, update.  mode 0: the first
+ * control's result into vmin; 1: the minimum with vmin; 2: the final value
+ * of the step into v (first: a single control). */
+static void last_row(hj_ub_dense *ws, double *b, size_t r, double *v, int mode, int first, double snap, int a, double t,
+                     double dt)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n, k = d - 1;
+    double *f = b + 7 * seg_max(n), *w = f + (size_t)d * (size_t)(n + 2), *mu = w + n + 4, *A = mu + n + 4;
+    double x[HJ_BAND_DMAX] = {0};
+    row_coords(ws, r, 0, 0, x);
+    row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
+    w[0] = w[1] = w[n + 2] = w[n + 3] = pb->boundary; /* w[j + 2] = W_j */
+    /* mu[j + 1] = mu_j, A[j + 1] = A_j, j = -1..n */
+    row_flux(n + 2, w, w + 1, w + 2, dt / ws->dx[k], f + (size_t)k * (size_t)(n + 2), mu, A);
+    const size_t o = r * (size_t)n;
+    if (mode == 0)
+        row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, ws->vmin + o);
+    else if (mode == 1)
+        row_update_min(n, w, mu, A, ws->vmin + o);
+    else
+        row_update_final(n, w, mu, A, first ? NULL : ws->vmin + o, pb->target, snap, v + o);
+}
+
+/* The padded row of last_row in thread buffer b. */
+static double *last_row_in(const hj_ub_dense *ws, double *b)
+{
+    return b + 7 * seg_max(ws->pb->n) + (size_t)ws->pb->d * (size_t)(ws->pb->n + 2) + 2;
+}
+
+/* Sweep in the last direction alone (d = 2): every row on its own. */
+static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, int first, double snap, int a, double t,
+                       double dt)
+{
+    const int n = ws->pb->n;
     const size_t rows = ws->total / (size_t)n;
-    const double bnd = pb->boundary, c = dt / ws->dx[k];
 #pragma omp parallel for num_threads(ws->nthreads) schedule(static)
     for (size_t r = 0; r < rows; r++) {
         double *b = ws->buf + (size_t)thread_id() * ws->bufper;
-        double *f = b, *w = f + (size_t)d * (size_t)(n + 2), *mu = w + n + 4, *A = mu + n + 4;
-        double x[HJ_BAND_DMAX] = {0};
-        row_coords(ws, r, 0, 0, x);
-        row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
-        const double *in = src + r * (size_t)n;
-        w[0] = w[1] = w[n + 2] = w[n + 3] = bnd; /* w[j + 2] = W_j */
-        memcpy(w + 2, in, (size_t)n * sizeof *w);
-        /* mu[j + 1] = mu_j, A[j + 1] = A_j, j = -1..n */
-        row_flux(n + 2, w, w + 1, w + 2, c, f + (size_t)k * (size_t)(n + 2), mu, A);
-        const size_t o = r * (size_t)n;
-        if (mode == 0)
-            row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, ws->vmin + o);
-        else if (mode == 1)
-            row_update_min(n, w, mu, A, ws->vmin + o);
-        else
-            row_update_final(n, w, mu, A, first ? NULL : ws->vmin + o, pb->target, snap, v + o);
+        memcpy(last_row_in(ws, b), src + r * (size_t)n, (size_t)n * sizeof *src);
+        last_row(ws, b, r, v, mode, first, snap, a, t, dt);
     }
 }
 
+/* The last sweep fused into sweep_rows (last != NULL): each row of the
+ * sweep in direction d - 2 goes straight to last_row, without a grid
+ * between the two. */
+typedef struct {
+    double *v;
+    int mode, first;
+    double snap;
+} fused;
+
 /* Sweep in direction k < d - 1: lines of rows along k, each walked with
- * three rolling rows of mu and fluxes, in segments of SEG columns. */
-static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, int a, double t, double dt)
+ * three rolling rows of mu and fluxes, in segments of SEG columns (whole
+ * rows when the last sweep is fused). */
+static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, int a, double t, double dt, const fused *last)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n;
     size_t stride = 1; /* rows between neighbours in direction k */
     for (int q = k + 1; q < d - 1; q++) stride *= (size_t)n;
-    const size_t lines = ws->total / ((size_t)n * (size_t)n), nseg = ((size_t)n + SEG - 1) / SEG;
+    const size_t SEGL = last ? (size_t)n : SEG; /* whole rows when the last sweep follows */
+    const size_t lines = ws->total / ((size_t)n * (size_t)n), nseg = ((size_t)n + SEGL - 1) / SEGL;
     const double bnd = pb->boundary, c = dt / ws->dx[k];
 #pragma omp parallel for num_threads(ws->nthreads) schedule(static)
     for (size_t item = 0; item < lines * nseg; item++) {
-        const size_t line = item / nseg, j0 = (item % nseg) * SEG;
-        const long len = (long)((size_t)n - j0 < SEG ? (size_t)n - j0 : SEG);
+        const size_t line = item / nseg, j0 = (item % nseg) * SEGL;
+        const long len = (long)((size_t)n - j0 < SEGL ? (size_t)n - j0 : SEGL);
         const size_t base = (line / stride) * (size_t)n * stride + line % stride;
         double *b = ws->buf + (size_t)thread_id() * ws->bufper;
-        double *mu[3] = {b, b + SEG, b + 2 * SEG}, *A[3] = {b + 3 * SEG, b + 4 * SEG, b + 5 * SEG}, *brow = b + 6 * SEG;
-        double *f = b + 7 * SEG;
+        double *mu[3] = {b, b + SEGL, b + 2 * SEGL}, *A[3] = {b + 3 * SEGL, b + 4 * SEGL, b + 5 * SEGL}, *brow = b + 6 * SEGL;
+        double *f = b + 7 * seg_max(n);
         for (long j = 0; j < len; j++) brow[j] = bnd;
 #define ROW(i) ((i) < 0 || (i) >= n ? brow : src + (base + (size_t)(i) * stride) * (size_t)n + j0)
         /* mu and flux of row i (-1 .. n) into slot s */
@@ -298,8 +327,10 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
             FILL(i + 1, sr);
             const double *wmm = ROW(i - 2), *wm = ROW(i - 1), *w0 = ROW(i), *wp = ROW(i + 1), *wpp = ROW(i + 2);
             const double *mL = mu[sl], *m0 = mu[s0], *mR = mu[sr], *aL = A[sl], *a0 = A[s0], *aR = A[sr];
-            double *out = dst + (base + (size_t)i * stride) * (size_t)n + j0;
+            const size_t row = base + (size_t)i * stride;
+            double *out = last ? last_row_in(ws, b) : dst + row * (size_t)n + j0;
             row_update(len, wmm, wm, w0, wp, wpp, mL, m0, mR, aL, a0, aR, out);
+            if (last) last_row(ws, b, row, last->v, last->mode, last->first, last->snap, a, t, dt);
         }
 #undef FILL
 #undef ROW
@@ -315,12 +346,16 @@ int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *
     for (int a = 0; a < pb->ncontrols; a++) {
         const double *src = v;
         double *tmp[2] = {ws->w1, ws->w2};
+        const int last = a == pb->ncontrols - 1;
+        const fused fz = {.v = v, .mode = last ? 2 : a == 0 ? 0 : 1, .first = a == 0, .snap = snap};
+        /* d >= 3: the last sweep inside the sweep in direction d - 2 (its
+         * lines are many enough to share among threads); d = 2: apart */
         for (int k = 0; k < d - 1; k++) {
-            sweep_rows(ws, k, src, tmp[k % 2], a, t, dt);
+            const int fuse = d >= 3 && k == d - 2;
+            sweep_rows(ws, k, src, tmp[k % 2], a, t, dt, fuse ? &fz : NULL);
             src = tmp[k % 2];
         }
-        const int last = a == pb->ncontrols - 1;
-        sweep_last(ws, src, v, last ? 2 : a == 0 ? 0 : 1, a == 0, snap, a, t, dt);
+        if (d == 2) sweep_last(ws, src, v, fz.mode, fz.first, snap, a, t, dt);
     }
     return HJ_OK;
 }
