@@ -62,11 +62,11 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
 #endif
     ws->bufper = 7 * seg_max(n) + (size_t)d * (size_t)(n + 2) + 3 * (size_t)(n + 4);
     ws->w1 = malloc(ws->total * sizeof *ws->w1);
-    ws->w2 = malloc(ws->total * sizeof *ws->w2);
+    ws->w2 = d >= 4 ? malloc(ws->total * sizeof *ws->w2) : NULL; /* d = 2, 3: one intermediate grid at most */
     ws->vmin = malloc(ws->total * sizeof *ws->vmin);
     ws->xlast = malloc((size_t)(n + 2) * sizeof *ws->xlast);
     ws->buf = malloc((size_t)ws->nthreads * ws->bufper * sizeof *ws->buf);
-    if (!ws->w1 || !ws->w2 || !ws->vmin || !ws->xlast || !ws->buf) {
+    if (!ws->w1 || (d >= 4 && !ws->w2) || !ws->vmin || !ws->xlast || !ws->buf) {
         hj_ub_dense_free(ws);
         return hj_error_set(err, HJ_ENOMEM, "out of memory: UB workspace of %.3g GB", total * 24 / 1e9);
     }
