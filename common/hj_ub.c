@@ -563,22 +563,22 @@ static double mu_beside(hj_ub_solver *sv, size_t i, int k, int s, int a, double 
 }
 
 /* One sweep in direction k for control a: wn = UB update of w. */
-static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
+static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt, const double *restrict w, double *restrict wn)
 {
     const int d = sv->pb->d;
     const double bnd = sv->pb->boundary;
     for (size_t i = 0; i < m; i++) {
         double w5[5], mu3[3];
-        w5[2] = sv->w[i];
+        w5[2] = w[i];
         mu3[1] = sv->mu[i * d + k];
         for (int s = 0; s < 2; s++) {
             const int32_t n1 = sv->link[i * 2 * d + 2 * k + s];
             double w1, w2, m1;
             if (n1 >= 0) {
                 const int32_t n2 = sv->link[(size_t)n1 * 2 * d + 2 * k + s];
-                w1 = sv->w[n1];
+                w1 = w[n1];
                 m1 = sv->mu[(size_t)n1 * d + k];
-                w2 = n2 >= 0 ? sv->w[n2] : n2 == -1 ? sv->v0[n1] : bnd;
+                w2 = n2 >= 0 ? w[n2] : n2 == -1 ? sv->v0[n1] : bnd;
             } else {
                 /* not stored: the value of this node at t_n; outside: boundary */
                 w1 = w2 = n1 == -1 ? sv->v0[i] : bnd;
@@ -588,7 +588,7 @@ static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
             w5[s ? 4 : 0] = w2;
             mu3[s ? 2 : 0] = m1;
         }
-        sv->wn[i] = ub_update(w5, mu3);
+        wn[i] = ub_update(w5, mu3);
     }
 }
 
@@ -679,9 +679,8 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
             pb->dyn(sv->t, x, a, &sv->f[i * d], pb->ctx);
             for (int k = 0; k < d; k++) sv->mu[i * d + k] = dt / sv->dx[k] * sv->f[i * d + k];
         }
-        memcpy(sv->w, sv->v0, m * sizeof *sv->w);
-        for (int k = 0; k < d; k++) {
-            sweep(sv, m, k, a, dt);
+        for (int k = 0; k < d; k++) { /* the first sweep reads V^n itself */
+            sweep(sv, m, k, a, dt, k ? sv->w : sv->v0, sv->wn);
             double *tmp = sv->w;
             sv->w = sv->wn;
             sv->wn = tmp;
