@@ -324,6 +324,12 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
         FILL(0, 1);
         for (int i = 0; i < n; i++) {
             const int sl = i % 3, s0 = (i + 1) % 3, sr = (i + 2) % 3; /* slots of rows i-1, i, i+1 */
+            /* the row the next iteration brings in, one grid plane away
+             * for k = 0: ask for it now (the hardware does not follow) */
+            if (i + 3 < n) {
+                const char *nx = (const char *)ROW(i + 3);
+                for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(nx + j);
+            }
             FILL(i + 1, sr);
             const double *wmm = ROW(i - 2), *wm = ROW(i - 1), *w0 = ROW(i), *wp = ROW(i + 1), *wpp = ROW(i + 2);
             const double *mL = mu[sl], *m0 = mu[s0], *mR = mu[sr], *aL = A[sl], *a0 = A[s0], *aR = A[sr];
