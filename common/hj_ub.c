@@ -229,6 +229,85 @@ static int uniform_block(const hj_ub_solver *sv, const int *idx, double v, const
     return 1;
 }
 
+/* Cells idx[0..d-2], j of D^0 (FS: every cell), in the scan's order. */
+static int init_cell(hj_ub_solver *sv, hj_band_kind kind, int *idx, int j, hj_error *err)
+{
+    const hj_ub_problem *pb = sv->pb;
+    const int d = pb->d;
+    idx[d - 1] = j;
+    double clo[HJ_BAND_DMAX], chi[HJ_BAND_DMAX], blo[HJ_BAND_DMAX], bhi[HJ_BAND_DMAX];
+    for (int k = 0; k < d; k++) {
+        clo[k] = pb->lo[k] + (idx[k] - 0.5) * sv->dx[k];
+        chi[k] = clo[k] + sv->dx[k];
+        blo[k] = clo[k] - sv->dx[k];
+        bhi[k] = chi[k] + sv->dx[k];
+    }
+    const double v = pb->avg0(clo, chi, pb->ctx);
+    if (v == -1 && pb->reached) pb->reached(idx, 0.0, pb->ctx);
+    /* D^0: the cells whose 3^d block is not uniform (FS: every cell) */
+    if (kind == HJ_BAND_FS || !uniform_block(sv, idx, v, blo, bhi)) return hj_band_insert(sv->s, idx, v, err);
+    return HJ_OK;
+}
+
+/* Cells j0..j1 of a line, in order.  A run whose cells' 3^d blocks all lie
+ * in one box where the data are constant (pb->uniform, else avg0 = +-1 on
+ * the box, as uniform_block decides) holds no node of D^0: its cells are
+ * only reported to pb->reached; other runs are halved, down to single
+ * cells.  So the scan costs about the number of cells near the front,
+ * not the volume of the box (the unit ball of Table 5 at N = 1600: 5e8
+ * cells).  The box is widened by 1e-9 dx so that it holds every cell's
+ * block despite round-off.  The grid's edge cells are always tested one
+ * by one (there a uniform block may still be in D^0). */
+static int init_cells(hj_ub_solver *sv, hj_band_kind kind, int *idx, int j0, int j1, hj_error *err)
+{
+    const hj_ub_problem *pb = sv->pb;
+    const int d = pb->d, n = pb->n;
+    int edge = kind == HJ_BAND_FS || j0 == 0 || j1 == n - 1 || j1 - j0 < 7;
+    for (int k = 0; k < d - 1; k++) edge |= idx[k] == 0 || idx[k] == n - 1;
+    if (edge && j1 - j0 >= 7 && kind != HJ_BAND_FS) { /* peel the edge cells off a long run */
+        int rc;
+        if (j0 == 0) {
+            if ((rc = init_cell(sv, kind, idx, 0, err))) return rc;
+            return init_cells(sv, kind, idx, 1, j1, err);
+        }
+        if (j1 == n - 1) {
+            if ((rc = init_cells(sv, kind, idx, j0, n - 2, err))) return rc;
+            return init_cell(sv, kind, idx, n - 1, err);
+        }
+    }
+    if (edge) {
+        for (int j = j0; j <= j1; j++) {
+            const int rc = init_cell(sv, kind, idx, j, err);
+            if (rc) return rc;
+        }
+        return HJ_OK;
+    }
+    double blo[HJ_BAND_DMAX], bhi[HJ_BAND_DMAX];
+    for (int k = 0; k < d; k++) {
+        const int a = k < d - 1 ? idx[k] : j0, b = k < d - 1 ? idx[k] : j1;
+        blo[k] = pb->lo[k] + (a - 1.5) * sv->dx[k] - 1e-9 * sv->dx[k];
+        bhi[k] = pb->lo[k] + (b + 1.5) * sv->dx[k] + 1e-9 * sv->dx[k];
+    }
+    double b = 0;
+    if (pb->uniform ? pb->uniform(blo, bhi, pb->ctx) : (b = pb->avg0(blo, bhi, pb->ctx)) == 1 || b == -1) {
+        if (!pb->reached) return HJ_OK;
+        double clo[HJ_BAND_DMAX], chi[HJ_BAND_DMAX];
+        for (int k = 0; k < d; k++) {
+            clo[k] = pb->lo[k] + ((k < d - 1 ? idx[k] : j0) - 0.5) * sv->dx[k];
+            chi[k] = clo[k] + sv->dx[k];
+        }
+        if (pb->avg0(clo, chi, pb->ctx) == -1)
+            for (int j = j0; j <= j1; j++) {
+                idx[d - 1] = j;
+                pb->reached(idx, 0.0, pb->ctx);
+            }
+        return HJ_OK;
+    }
+    const int mid = j0 + (j1 - j0) / 2;
+    const int rc = init_cells(sv, kind, idx, j0, mid, err);
+    return rc ? rc : init_cells(sv, kind, idx, mid + 1, j1, err);
+}
+
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
 {
     memset(sv, 0, sizeof *sv);
@@ -254,24 +333,15 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
         if (hi[k] < lo[k]) return HJ_OK; /* Omega_0 outside the domain */
         cells *= hi[k] - lo[k] + 1;
     }
-    for (long c = 0; c < cells; c++) {
+    /* the lines of the box (its first d - 1 indices), each along the last index */
+    const long lines = cells / (hi[d - 1] - lo[d - 1] + 1);
+    for (long c = 0; c < lines; c++) {
         long r = c;
-        for (int k = d - 1; k >= 0; k--) {
+        for (int k = d - 2; k >= 0; k--) {
             idx[k] = lo[k] + (int)(r % (hi[k] - lo[k] + 1));
             r /= hi[k] - lo[k] + 1;
         }
-        double clo[HJ_BAND_DMAX], chi[HJ_BAND_DMAX], blo[HJ_BAND_DMAX], bhi[HJ_BAND_DMAX];
-        for (int k = 0; k < d; k++) {
-            clo[k] = pb->lo[k] + (idx[k] - 0.5) * sv->dx[k];
-            chi[k] = clo[k] + sv->dx[k];
-            blo[k] = clo[k] - sv->dx[k];
-            bhi[k] = chi[k] + sv->dx[k];
-        }
-        const double v = pb->avg0(clo, chi, pb->ctx);
-        if (v == -1 && pb->reached) pb->reached(idx, 0.0, pb->ctx);
-        /* D^0: the cells whose 3^d block is not uniform (FS: every cell) */
-        if ((kind == HJ_BAND_FS || !uniform_block(sv, idx, v, blo, bhi)) && (rc = hj_band_insert(sv->s, idx, v, err)))
-            return rc;
+        if ((rc = init_cells(sv, kind, idx, lo[d - 1], hi[d - 1], err))) return rc;
     }
     return HJ_OK;
 }
@@ -312,87 +382,155 @@ static int line_offsets(int d, int off[][HJ_BAND_DMAX])
     return m;
 }
 
-/* The values of Neigh(I) in runs: p[3 r + k] for line offset r and last
- * index offset k - 1 (NULL: not stored); in[3 r + k] 1 when the node is in
- * the grid and not I itself, 2 when it is outside the grid (its value is the
- * boundary value), 0 for I itself. */
-static void neighbours(hj_ub_solver *sv, const int *idx, int loff[][HJ_BAND_DMAX], int nl, double **p, char *in)
+/* The end of the segment that starts at snapshot node i0: the following
+ * nodes of the same line with consecutive last indices. */
+static size_t segment_end(const hj_ub_solver *sv, size_t i0, size_t m)
 {
-    const int d = sv->pb->d, n = sv->pb->n;
-    for (int r = 0; r < nl; r++) {
-        int j[HJ_BAND_DMAX], ok = 1, zero = 1;
-        for (int i = 0; i < d; i++) {
-            j[i] = idx[i] + loff[r][i];
-            if (i < d - 1) {
-                ok &= j[i] >= 0 && j[i] < n;
-                zero &= loff[r][i] == 0;
-            }
-        }
-        if (ok) hj_band_find_run(sv->s, j, 3, &p[3 * r]);
-        for (int k = 0; k < 3; k++)
-            in[3 * r + k] = (char)(zero && k == 1 ? 0 : ok && j[d - 1] + k >= 0 && j[d - 1] + k < n ? 1 : 2);
+    const int64_t n = sv->pb->n;
+    size_t i1 = i0 + 1;
+    while (i1 < m && sv->lin[i1] == sv->lin[i1 - 1] + 1 && sv->lin[i1] % n != 0) i1++;
+    return i1;
+}
+
+/* The store's pointers to nodes lo..hi (-1 <= lo, hi <= n - 1) of the line
+ * of j (its first d - 1 indices): out[0 .. hi - lo], asked as runs of 3
+ * (hj_band_find_run, the scheme's search). */
+static void line_run(hj_ub_solver *sv, const int *j, int lo, int hi, double **out)
+{
+    const int d = sv->pb->d;
+    int q[HJ_BAND_DMAX];
+    memcpy(q, j, (size_t)d * sizeof *q);
+    for (int s = lo; s <= hi; s += 3) {
+        q[d - 1] = s;
+        hj_band_find_run(sv->s, q, hi - s + 1 < 3 ? hi - s + 1 : 3, out + (s - lo));
     }
 }
 
-/* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the +-1 node
- * it neighbours. */
+/* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the first
+ * node of D^n (in the store's order) it neighbours.
+ *
+ * The band is walked in segments: nodes of one line with consecutive last
+ * indices a..b.  Their neighbours on each of the 3^(d-1) lines are asked
+ * of the store once per segment, as runs of 3 covering a-1..b+1 (a third
+ * of the searches of one run per node).  A node absent then may have been
+ * inserted since by an earlier node: it is looked up again before its
+ * insert, so that the inserts, their order and their values are those of
+ * the node-by-node walk. */
 static int expand_band(hj_ub_solver *sv, hj_error *err)
 {
-    const int d = sv->pb->d;
+    const int d = sv->pb->d, n = sv->pb->n;
     int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
     int loff[27][HJ_BAND_DMAX];
     const int nl = line_offsets(d, loff);
-    double *p[81];
-    char in[81];
+    const size_t span = (size_t)n + 2; /* last indices -1 .. n of one line */
+    char *pres = malloc((size_t)nl * span);
+    double **pp = malloc(span * sizeof *pp);
+    if (!pres || !pp) {
+        free(pres);
+        free(pp);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
+    }
     collect_ctx c = {sv, 0};
     hj_band_foreach(sv->s, collect, &c);
-    for (size_t i = 0; i < c.m; i++) {
-        int idx[HJ_BAND_DMAX], j[HJ_BAND_DMAX];
-        unlin(d, sv->pb->n, sv->lin[i], idx);
-        neighbours(sv, idx, loff, nl, p, in);
-        /* presence is known before the inserts, which do not change it for
-         * the other nodes of Neigh(I) */
-        for (int r = 0; r < nl; r++)
-            for (int k = 0; k < 3; k++) {
-                if (in[3 * r + k] != 1 || p[3 * r + k]) continue;
-                if (sv->v0[i] != 1 && sv->v0[i] != -1)
-                    return hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
-                for (int q = 0; q < d; q++) j[q] = idx[q] + loff[r][q];
-                j[d - 1] += k;
-                if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) return rc;
+    for (size_t i0 = 0, i1; i0 < c.m && !rc; i0 = i1) {
+        i1 = segment_end(sv, i0, c.m);
+        int idx[HJ_BAND_DMAX], line_ok[27];
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1, top = b + 1 < n - 1 ? b + 1 : n - 1;
+        /* presence in D^n of the nodes a-1 .. top of each neighbouring line: pres[r span + 1 + j] */
+        for (int r = 0; r < nl; r++) {
+            int j[HJ_BAND_DMAX];
+            line_ok[r] = 1;
+            for (int q = 0; q < d - 1; q++) {
+                j[q] = idx[q] + loff[r][q];
+                line_ok[r] &= j[q] >= 0 && j[q] < n;
             }
+            if (!line_ok[r]) continue;
+            line_run(sv, j, a - 1, top, pp);
+            for (int k = 0; k <= top - a + 1; k++) pres[(size_t)r * span + (size_t)(a + k)] = pp[k] != NULL;
+        }
+        for (size_t i = i0; i < i1 && !rc; i++) {
+            const int jl = a + (int)(i - i0);
+            for (int r = 0; r < nl && !rc; r++) {
+                if (!line_ok[r]) continue;
+                for (int k = 0; k < 3; k++) {
+                    const int jk = jl - 1 + k;
+                    char *pr = &pres[(size_t)r * span + (size_t)(jk + 1)];
+                    if (jk < 0 || jk >= n || *pr) continue; /* outside, or stored (I itself too) */
+                    int j[HJ_BAND_DMAX];
+                    double *p;
+                    for (int q = 0; q < d - 1; q++) j[q] = idx[q] + loff[r][q];
+                    j[d - 1] = jk;
+                    hj_band_find_run(sv->s, j, 1, &p); /* inserted by an earlier segment? */
+                    *pr = 1;
+                    if (p) continue;
+                    if (sv->v0[i] != 1 && sv->v0[i] != -1) {
+                        rc = hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
+                        break;
+                    }
+                    if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) break;
+                }
+            }
+        }
     }
-    return HJ_OK;
+    free(pres);
+    free(pp);
+    return rc;
 }
 
 /* Value slots temporarily hold the node's position in the snapshot, so that
  * the store's own neighbour search gives the links. */
 static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
 {
-    const int d = sv->pb->d;
+    const int d = sv->pb->d, n = sv->pb->n;
     int rc = reserve(sv, hj_band_count(sv->s), err);
     if (rc) return rc;
+    double **pp = malloc((size_t)n * sizeof *pp);
+    if (!pp) return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
     collect_ctx c = {sv, 0};
     hj_band_foreach(sv->s, collect, &c);
     *m = c.m;
     for (size_t i = 0; i < c.m; i++) *sv->ptr[i] = (double)i;
-    for (size_t i = 0; i < c.m; i++) {
+    const size_t L = 2 * (size_t)d;
+    for (size_t i0 = 0, i1; i0 < c.m; i0 = i1) {
+        i1 = segment_end(sv, i0, c.m);
         int idx[HJ_BAND_DMAX];
-        unlin(d, sv->pb->n, sv->lin[i], idx);
-        hj_ub_centre(sv, idx, &sv->x[i * d]); /* once per step, for every control */
-        for (int k = 0; k < d; k++)
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1;
+        for (size_t i = i0; i < i1; i++) { /* centres once per step, for every control */
+            idx[d - 1] = a + (int)(i - i0);
+            hj_ub_centre(sv, idx, &sv->x[i * (size_t)d]);
+        }
+        idx[d - 1] = a;
+        /* the segment's neighbouring lines, one run of searches each */
+        for (int k = 0; k < d - 1; k++)
             for (int s = 0; s < 2; s++) {
-                int32_t *l = &sv->link[i * 2 * d + 2 * k + s];
                 idx[k] += s ? 1 : -1;
-                if (idx[k] < 0 || idx[k] >= sv->pb->n) *l = -2;
-                else {
-                    const double *p = hj_band_find(sv->s, idx);
-                    *l = p ? (int32_t)*p : -1;
-                }
+                const int out = idx[k] < 0 || idx[k] >= n;
+                if (!out) line_run(sv, idx, a, b, pp);
+                for (size_t i = i0; i < i1; i++)
+                    sv->link[i * L + 2 * (size_t)k + (size_t)s] = out ? -2 : pp[i - i0] ? (int32_t)*pp[i - i0] : -1;
                 idx[k] -= s ? 1 : -1;
             }
+        /* along the last index: the segment's own nodes, and its two ends */
+        for (size_t i = i0; i < i1; i++) {
+            const int j = a + (int)(i - i0);
+            int32_t *l = &sv->link[i * L + L - 2];
+            for (int s = 0; s < 2; s++) {
+                const int jn = j + (s ? 1 : -1);
+                if (jn < 0 || jn >= n) l[s] = -2;
+                else if (s ? i + 1 < i1 : i > i0) l[s] = (int32_t)(s ? i + 1 : i - 1);
+                else {
+                    double *p;
+                    idx[d - 1] = jn;
+                    hj_band_find_run(sv->s, idx, 1, &p);
+                    l[s] = p ? (int32_t)*p : -1;
+                }
+            }
+        }
     }
+    free(pp);
     return HJ_OK;
 }
 
@@ -425,22 +563,22 @@ static double mu_beside(hj_ub_solver *sv, size_t i, int k, int s, int a, double 
 }
 
 /* One sweep in direction k for control a: wn = UB update of w. */
-static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
+static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt, const double *restrict w, double *restrict wn)
 {
     const int d = sv->pb->d;
     const double bnd = sv->pb->boundary;
     for (size_t i = 0; i < m; i++) {
         double w5[5], mu3[3];
-        w5[2] = sv->w[i];
+        w5[2] = w[i];
         mu3[1] = sv->mu[i * d + k];
         for (int s = 0; s < 2; s++) {
             const int32_t n1 = sv->link[i * 2 * d + 2 * k + s];
             double w1, w2, m1;
             if (n1 >= 0) {
                 const int32_t n2 = sv->link[(size_t)n1 * 2 * d + 2 * k + s];
-                w1 = sv->w[n1];
+                w1 = w[n1];
                 m1 = sv->mu[(size_t)n1 * d + k];
-                w2 = n2 >= 0 ? sv->w[n2] : n2 == -1 ? sv->v0[n1] : bnd;
+                w2 = n2 >= 0 ? w[n2] : n2 == -1 ? sv->v0[n1] : bnd;
             } else {
                 /* not stored: the value of this node at t_n; outside: boundary */
                 w1 = w2 = n1 == -1 ? sv->v0[i] : bnd;
@@ -450,33 +588,86 @@ static void sweep(hj_ub_solver *sv, size_t m, int k, int a, double dt)
             w5[s ? 4 : 0] = w2;
             mu3[s ? 2 : 0] = m1;
         }
-        sv->wn[i] = ub_update(w5, mu3);
+        wn[i] = ub_update(w5, mu3);
     }
 }
 
-static int equal_to_neighbours(hj_ub_solver *sv, size_t i, int loff[][HJ_BAND_DMAX], int nl)
+/* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to every node of Neigh(I)
+ * (an unstored node: I's value at t_n; outside: the boundary value).
+ * Segment by segment: the 2d axis neighbours come first, from the links,
+ * without a search (most nodes that stay differ there); a neighbouring
+ * line's nodes a-1..b+1 are asked of the store once per segment, when a
+ * node first needs them; a node's test stops at the first value that
+ * differs.  No store change until every node is tested. */
+static int reduce_band(hj_ub_solver *sv, size_t m, hj_error *err)
 {
-    int idx[HJ_BAND_DMAX];
-    double *p[81];
-    char in[81];
-    const double v = sv->vmin[i];
-    unlin(sv->pb->d, sv->pb->n, sv->lin[i], idx);
-    neighbours(sv, idx, loff, nl, p, in);
-    for (int o = 0; o < 3 * nl; o++)
-        if (in[o] == 1 ? (p[o] ? *p[o] : sv->v0[i]) != v : in[o] == 2 && sv->pb->boundary != v) return 0;
-    return 1;
+    const int d = sv->pb->d, n = sv->pb->n;
+    const double bnd = sv->pb->boundary;
+    int loff[27][HJ_BAND_DMAX];
+    const int nl = line_offsets(d, loff);
+    const size_t span = (size_t)n + 2, L = 2 * (size_t)d;
+    double **pp = malloc((size_t)nl * span * sizeof *pp);
+    int64_t *gone = malloc((m ? m : 1) * sizeof *gone);
+    if (!pp || !gone) {
+        free(pp);
+        free(gone);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (band workspace)");
+    }
+    size_t ngone = 0;
+    for (size_t i0 = 0, i1; i0 < m; i0 = i1) {
+        i1 = segment_end(sv, i0, m);
+        int idx[HJ_BAND_DMAX], got[27] = {0};
+        unlin(d, n, sv->lin[i0], idx);
+        const int a = idx[d - 1], b = a + (int)(i1 - i0) - 1, top = b + 1 < n - 1 ? b + 1 : n - 1;
+        for (size_t i = i0; i < i1; i++) {
+            const double v = sv->vmin[i];
+            int keep = v != 1 && v != -1;
+            for (size_t q = 0; q < L && !keep; q++) {
+                const int32_t l = sv->link[i * L + q];
+                keep = (l >= 0 ? sv->vmin[l] : l == -1 ? sv->v0[i] : bnd) != v;
+            }
+            const int jl = a + (int)(i - i0);
+            for (int r = 0; r < nl && !keep; r++) {
+                int j[HJ_BAND_DMAX], ok = 1;
+                for (int q = 0; q < d - 1; q++) {
+                    j[q] = idx[q] + loff[r][q];
+                    ok &= j[q] >= 0 && j[q] < n;
+                }
+                if (!ok) {
+                    keep = bnd != v;
+                    continue;
+                }
+                double **p = pp + (size_t)r * span;
+                if (!got[r]) {
+                    line_run(sv, j, a - 1, top, p);
+                    got[r] = 1;
+                }
+                for (int k = 0; k < 3 && !keep; k++) {
+                    const int jk = jl - 1 + k;
+                    keep = (jk < 0 || jk >= n ? bnd : p[jk - a + 1] ? *p[jk - a + 1] : sv->v0[i]) != v;
+                }
+            }
+            if (!keep) gone[ngone++] = sv->lin[i];
+        }
+    }
+    for (size_t i = 0; i < ngone; i++) {
+        int idx[HJ_BAND_DMAX];
+        unlin(d, n, gone[i], idx);
+        hj_band_remove(sv->s, idx);
+    }
+    free(pp);
+    free(gone);
+    return HJ_OK;
 }
 
 int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
 {
     const hj_ub_problem *pb = sv->pb;
     const int d = pb->d;
-    int loff[27][HJ_BAND_DMAX];
-    const int nl = line_offsets(d, loff);
     int rc;
     if (!(tmax > sv->t)) return HJ_OK;
     if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = expand_band(sv, err))) return rc;
-    size_t m;
+    size_t m = 0;
     if ((rc = snapshot(sv, &m, err))) return rc;
     sv->band_sum += (double)m;
     sv->band_max = m > sv->band_max ? m : sv->band_max;
@@ -488,9 +679,8 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
             pb->dyn(sv->t, x, a, &sv->f[i * d], pb->ctx);
             for (int k = 0; k < d; k++) sv->mu[i * d + k] = dt / sv->dx[k] * sv->f[i * d + k];
         }
-        memcpy(sv->w, sv->v0, m * sizeof *sv->w);
-        for (int k = 0; k < d; k++) {
-            sweep(sv, m, k, a, dt);
+        for (int k = 0; k < d; k++) { /* the first sweep reads V^n itself */
+            sweep(sv, m, k, a, dt, k ? sv->w : sv->v0, sv->wn);
             double *tmp = sv->w;
             sv->w = sv->wn;
             sv->wn = tmp;
@@ -511,17 +701,7 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
         }
     }
     /* D^{n+1} = D^{n+1/2} minus the +-1 nodes equal to all their neighbours */
-    if (hj_band_kind_of(sv->s) != HJ_BAND_FS) {
-        size_t r = 0;
-        for (size_t i = 0; i < m; i++)
-            if ((sv->vmin[i] == 1 || sv->vmin[i] == -1) && equal_to_neighbours(sv, i, loff, nl))
-                sv->lin[r++] = sv->lin[i];
-        for (size_t i = 0; i < r; i++) {
-            int idx[HJ_BAND_DMAX];
-            unlin(d, pb->n, sv->lin[i], idx);
-            hj_band_remove(sv->s, idx);
-        }
-    }
+    if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = reduce_band(sv, m, err))) return rc;
     sv->t = dt == tmax - sv->t ? tmax : sv->t + dt;
     sv->steps++;
     return HJ_OK;

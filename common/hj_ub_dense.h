@@ -15,8 +15,11 @@
  * control's second sweep needs its first sweep on the neighbouring rows,
  * so running every control inside the row loop would hold one intermediate
  * grid per control (11 grids for Table 5).  Each control instead runs its d
- * sweeps over the grid, and the last sweep takes the minimum over the
- * controls (and the final min with V^n, the snap) in the same pass.
+ * sweeps over the grid; for d >= 3 the last sweep runs row by row inside
+ * the sweep in direction d - 2 (each of its rows goes straight to the last
+ * direction, in cache), and takes the minimum over the controls (and the
+ * final min with V^n, the snap) in the same pass.  The row kernels are
+ * built for AVX-512 and AVX2 besides the baseline, chosen at run time.
  *
  * OpenMP: the rows (or row segments) of a sweep are shared among the
  * threads; each node's value depends on its stencil only, so results are
@@ -50,7 +53,8 @@ typedef struct {
 } hj_ub_dense;
 
 /* Set up the workspace for problem pb (pb->avg0, uniform, reached, bbox and
- * front_sub are not used).  Holds 3 n^d doubles besides the caller's V. */
+ * front_sub are not used).  Holds 2 n^d doubles besides the caller's V
+ * (3 n^d for d = 4). */
 int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_row, hj_error *err);
 void hj_ub_dense_free(hj_ub_dense *ws);
 

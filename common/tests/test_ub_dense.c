@@ -73,9 +73,9 @@ static void fs_values(hj_ub_solver *sv, double *out) { hj_band_foreach(sv->s, co
 static void cases(dcase *cs, int *m)
 {
     *m = 0;
-    for (int d = 2; d <= 3; d++)
+    for (int d = 2; d <= 4; d++)
         for (int kind = 0; kind < 4; kind++) {
-            dcase c = {d, kind, {0.3, -0.5, -0.4, 0}, {1.1, 0.5, 0.2, 0}};
+            dcase c = {d, kind, {0.3, -0.5, -0.4, -0.3}, {1.1, 0.5, 0.2, 0.6}};
             if (kind == 3) { c.blo[0] = -3; c.bhi[0] = 0.1; } /* the box crosses the edge x1 = -2: inflow of 1 */
             cs[(*m)++] = c;
         }
@@ -86,12 +86,12 @@ static void equals_fs_store(void **state)
 {
     (void)state;
     hj_test_one_thread();
-    dcase cs[8];
+    dcase cs[12];
     int m;
     cases(cs, &m);
     for (int i = 0; i < m; i++)
         for (int batched = 0; batched < 2; batched++) {
-            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 37 : 15);
+            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 37 : cs[i].d == 3 ? 15 : 11);
             hj_ub_solver sv;
             hj_ub_dense ws;
             assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
@@ -128,7 +128,7 @@ static void threads_bitwise(void **state)
 {
     (void)state;
 #ifdef _OPENMP
-    dcase cs[8];
+    dcase cs[12];
     int m;
     cases(cs, &m);
     for (int i = 0; i < m; i++) {
@@ -137,7 +137,7 @@ static void threads_bitwise(void **state)
         for (int th = 1; th <= 2; th++) {
             omp_set_num_threads(th);
             /* 2-D: rows longer than one segment, so that segments are shared */
-            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 300 : 40);
+            hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 300 : cs[i].d == 3 ? 40 : 14);
             hj_ub_solver sv;
             hj_ub_dense ws;
             assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
