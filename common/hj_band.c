@@ -312,14 +312,18 @@ int hj_band_new(hj_band **out, hj_band_kind kind, int d, int n, hj_error *err)
             free(s);
             return hj_error_set(err, HJ_ENOMEM, "out of memory: %s needs %.3g GB", hj_band_kind_name(kind), need / 1e9);
         }
-        s->val = malloc((size_t)s->total * sizeof *s->val);
-        if (kind == HJ_BAND_FLS) s->state = calloc((size_t)s->total, 1);
+        s->val = hj_sys_alloc_large((size_t)s->total * sizeof *s->val);
+        if (kind == HJ_BAND_FLS) s->state = hj_sys_alloc_large((size_t)s->total);
         if (!s->val || (kind == HJ_BAND_FLS && !s->state)) {
             hj_band_free(s);
             return hj_error_set(err, HJ_ENOMEM, "out of memory: %s needs %.3g GB", hj_band_kind_name(kind), need / 1e9);
         }
-        for (int64_t i = 0; i < s->total; i++) s->val[i] = 1.0;
-        if (kind == HJ_BAND_FS) s->count = (size_t)s->total;
+        if (kind == HJ_BAND_FS) { /* FLS reads a value only where state says it was stored */
+            for (int64_t i = 0; i < s->total; i++) s->val[i] = 1.0;
+            s->count = (size_t)s->total;
+        } else {
+            memset(s->state, 0, (size_t)s->total);
+        }
     } else if (kind == HJ_BAND_SSDA) {
         int64_t nl = 1;
         for (int i = 0; i < d - 1; i++) nl *= n;

@@ -48,13 +48,17 @@ smallest sizes of each group.
 **Output.** table1.tsv ... table4.tsv (table4.tsv also holds the runs under the
 4 GB limit, which notes/table4_limits.md presents); fig05_fronts.dat, the band F+ u F- of
 both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
-(fig05.png, plot/fig05.gp).
+(fig05.png, plot/fig05.gp), written with Table 1.
 */
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "hj_band.h"
 #include "hj_cli.h"
@@ -63,6 +67,30 @@ both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 #include "p3_prog.h"
 
 static double BUDGET = 100.0; /* seconds; 5 with --quick (see the header) */
+
+/* ---- one big full store at a time --------------------------------------- */
+
+/* The tables may run as separate processes side by side (`make paper3`
+ * runs Table 1 beside Tables 2-4).  A full store (FS, FLS) above 1 GB is
+ * built only while holding a write lock (fcntl, released by the process's
+ * end) on OUT_DIR/.memlock: the largest, FLS at 200^4, is 14.4 GB, and two
+ * of them do not fit in this machine's 24 GB.  The lock is taken before
+ * the build, so a wait never enters a timing. */
+static int MEMLOCK_FD = -1;
+
+static int full_store_big(hj_band_kind kind, int d, int n)
+{
+    double total = 1;
+    for (int i = 0; i < d; i++) total *= n;
+    return (kind == HJ_BAND_FS || kind == HJ_BAND_FLS) && total * 9.0 > 1e9;
+}
+
+static void memlock_set(int on)
+{
+    if (MEMLOCK_FD < 0) return;
+    struct flock fl = {.l_type = (short)(on ? F_WRLCK : F_UNLCK), .l_whence = SEEK_SET};
+    while (fcntl(MEMLOCK_FD, F_SETLKW, &fl) && errno == EINTR) {}
+}
 
 typedef struct {
     hj_band *s;
@@ -243,8 +271,10 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 {
     hj_band *s;
     size_t nb;
+    const int big = full_store_big(kind, f->d, f->n);
+    if (big) memlock_set(1);
     int rc = build(&s, kind, f, &nb, err);
-    if (rc) return rc;
+    if (rc) { if (big) memlock_set(0); return rc; }
     const double t0 = hj_sys_cpu_seconds();
     for (size_t i = 0; i < u->nins && !rc; i++) {
         int idx[HJ_BAND_DMAX];
@@ -258,6 +288,7 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
     }
     *secs = hj_sys_cpu_seconds() - t0;
     hj_band_free(s);
+    if (big) memlock_set(0);
     return rc;
 }
 
@@ -311,13 +342,16 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
                 if (!affordable(t[k], i, d)) continue;
                 hj_band *s;
                 hj_progress("%s d=%d N=%ld %s ...\n", table, d, sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
+                const int big = full_store_big(SEARCH_KINDS[k], d, f.n);
+                if (big) memlock_set(1);
                 const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
                 mem_cell *m = example == 1 && d == 3 ? &MEM_SEEN[k][i] : NULL;
                 if (m && (rc == HJ_OK || rc == HJ_ENOMEM)) *m = (mem_cell){1, rc ? NAN : (double)hj_band_bytes(s) / 1e6, nb};
-                if (rc == HJ_ENOMEM) continue; /* beyond this machine: no value */
+                if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; } /* beyond this machine: no value */
                 if (rc) p3_die(a->prog, err);
                 t[k][i] = time_search(s, &f);
                 hj_band_free(s);
+                if (big) memlock_set(0);
             }
             for (int k = 0; k < NSK; k++) {
                 char b1[32], b2[32];
@@ -421,11 +455,14 @@ static void memory_table(const p3_args *a, hj_error *err)
             mb[k][i] = NAN;
             if (MEM_SEEN[k][i].have) { mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue; }
             hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
+            const int big = full_store_big(SEARCH_KINDS[k], 3, f.n);
+            if (big) memlock_set(1);
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
-            if (rc == HJ_ENOMEM) continue;
+            if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; }
             if (rc) p3_die(a->prog, err);
             mb[k][i] = (double)hj_band_bytes(s) / 1e6;
             hj_band_free(s);
+            if (big) memlock_set(0);
         }
         fprintf(out.fp, "\t%zu", nb);
         for (int k = 0; k < NSK; k++) {
@@ -477,7 +514,12 @@ int main(int argc, char **argv)
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
     if (a.quick) BUDGET = 5.0;
-    if (p3_want(&a, 1) || p3_want(&a, 2)) fig05(&a, &err);
+    char lock[4096];
+    if (snprintf(lock, sizeof lock, "%s/.memlock", a.out_dir) < (int)sizeof lock) {
+        if (hj_mkdirs(a.out_dir, &err)) p3_die(a.prog, &err);
+        MEMLOCK_FD = open(lock, O_RDWR | O_CREAT, 0644); /* no lock file: run unlocked */
+    }
+    if (p3_want(&a, 1)) fig05(&a, &err);
     if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
     if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
     if (p3_want(&a, 3)) update_table(&a, &err);
