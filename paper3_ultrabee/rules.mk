@@ -103,19 +103,20 @@ bench-ub: $(P3_BENCH)
 # `make paper3` shares its runs between the two cores: one make -j2 over
 # the runs in order of decreasing run time, so that each core takes the
 # next run as soon as it is free (longest first keeps the last run short).
-# `make reproduce` adds the other papers' results (REPRODUCE_BESIDE, the
-# top Makefile) to the same pool after paper 3's runs.  Run times (CPU s,
-# measured 26 November 2026, README "Numbers and reproducibility"):
-# storage Table 1 ~470, Tables 11, 12 ~400 each, storage Table 2 ~370,
-# hjbstep ~290, papers 1 and 2 ~55 and ~370 in several runs, storage
-# Tables 3-4 ~90, Table 13 ~55, examples2d ~35.  The binaries are built
+# `make reproduce` adds the other papers' results to the same pool: their
+# long runs (REPRODUCE_BESIDE_LONG, the top Makefile) among paper 3's
+# long ones, the rest (REPRODUCE_BESIDE) at the end.  Run times (CPU s;
+# README "Numbers and reproducibility"): storage Table 1 ~420, Tables 11
+# and 12 ~440 and ~360, storage Table 2 ~330, hjbstep ~260, storage
+# Tables 3-4 ~60, Table 13 ~50, examples2d ~30.  The binaries are built
 # first, then the runs.
-P3_RUNS := $(P3_STORE1) $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB) \
-           $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D)
+P3_RUNS_LONG := $(P3_STORE1) $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB)
+P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D)
 .PHONY: paper3-results
 paper3-results:
 	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
-	$(MAKE) --no-print-directory -j2 $(P3_RUNS) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
+	$(MAKE) --no-print-directory -j2 $(P3_RUNS_LONG) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
+	    $(P3_RUNS_SHORT) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
 	$(MAKE) --no-print-directory $(P3_FIGS)
 REPRODUCE_FIRST += paper3-results
 paper3:

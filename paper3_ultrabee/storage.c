@@ -40,6 +40,27 @@ largest, LS and CRS of Table 1 at d = 3, n = 400, are predicted at 83 s
 and 63 s; the next ones (Table 3's CRS at n = 800, 110 s; Table 1's LS at
 n = 800, 660 s) have no published value.
 
+**Cost.** What is timed is the sweeps and the updates above; everything
+else is kept cheap without touching them: the band of a front is found
+once per row and every structure of the row is built from it in order
+(hj_band_append: O(1) per node, where inserting searched CRS's rows from
+their heads, O(row^2) per row); Table 4 takes the bytes of the stores
+Table 1 builds for its d = 3 rows and builds only the ones Table 1 skips;
+FS and FLS sit on transparent huge pages (hj_sys_alloc_large: filling
+14.4 GB 4 KB page by page cost minutes on this virtual machine) and FLS
+no longer fills values it never reads.  Two changes reach the timed
+code, both the same algorithm with less waste: the list kinds keep keys
+and links apart from the values (a walk reads 16 bytes per step instead
+of 24; LS and CRS sweeps about 10 % faster), and FS's sweep counts its
+indices up instead of dividing them out of the linear index.  Every
+structure does the same work per lookup at every size as before, so the
+Order columns (ratios between sizes) keep their meaning; SSD_over_FLS
+can move by the few per cent SSD's walks gained (26 November 2026).
+With `make paper3` the tables run as three processes (Table 1, Table 2,
+Tables 3-4; rules.mk); a full store above 1 GB is built only under a lock
+on OUT_DIR/.memlock, so that two runs never hold two (FLS at 200^4 is
+14.4 GB).
+
 **Parameters.** Published sizes: Table 1 d = 2: 400, 800, 1600; d = 3:
 100, 200, 400, 800; d = 4: 25, 50, 100, 200.  Table 2: d = 3 and 4 as in
 Table 1.  Table 3: 50 ... 800.  Table 4: 100 ... 800.  `--quick`: the two
