@@ -105,18 +105,21 @@ bench-ub: $(P3_BENCH)
 # next run as soon as it is free (longest first keeps the last run short).
 # `make reproduce` adds the other papers' results to the same pool: their
 # long runs (REPRODUCE_BESIDE_LONG, the top Makefile) among paper 3's
-# long ones, the rest (REPRODUCE_BESIDE) at the end.  Run times (CPU s;
-# README "Numbers and reproducibility"): storage Table 1 ~420, Tables 11
-# and 12 ~440 and ~360, storage Table 2 ~330, hjbstep ~260, storage
-# Tables 3-4 ~60, Table 13 ~50, examples2d ~30.  The binaries are built
+# long ones, the rest (REPRODUCE_BESIDE) at the end.  Run times in CPU
+# seconds (measured 26 November 2026 on a loaded machine for storage; the
+# others from the 23-24 November runs, README "Numbers and
+# reproducibility"): storage Table 1 702, the ToolboxLS comparison ~720,
+# Tables 11 and 12 441 and 363, storage Table 2 288, hjbstep 259, storage
+# Tables 3-4 174, Table 13 47, examples2d 31.  The binaries are built
 # first, then the runs.
-P3_RUNS_LONG := $(P3_STORE1) $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB)
+P3_RUNS_FIRST := $(P3_STORE1)
+P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB)
 P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D)
 .PHONY: paper3-results
 paper3-results:
 	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
-	$(MAKE) --no-print-directory -j2 $(P3_RUNS_LONG) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
-	    $(P3_RUNS_SHORT) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
+	$(MAKE) --no-print-directory -j2 $(P3_RUNS_FIRST) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
+	    $(P3_RUNS_LONG) $(P3_RUNS_SHORT) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
 	$(MAKE) --no-print-directory $(P3_FIGS)
 REPRODUCE_FIRST += paper3-results
 paper3:
