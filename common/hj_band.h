@@ -28,8 +28,9 @@
  *           linked list (searched by bisection).
  *
  * List cells of LS, CRS and SSD are allocated from one pool per list (and
- * linked by 32-bit indices), so that walking a list stays in cache; the
- * list structure itself is the textbook one.
+ * linked by 32-bit indices, the keys and links apart from the values), so
+ * that walking a list stays in cache; the list structure itself is the
+ * textbook one.
  *
  * Library code: nothing is printed; failures return HJ_* codes.  Out of
  * memory is HJ_ENOMEM, including for the full kinds above a few GB.
@@ -83,6 +84,15 @@ void hj_band_find_run(hj_band *s, const int *idx, int m, double **out);
 
 /* Store node idx with value v (overwrites the value if already stored). */
 int hj_band_insert(hj_band *s, const int *idx, double v, hj_error *err);
+
+/* Store node idx with value v, for building a store from nodes given in
+ * lexicographic order: the list kinds (LS, CRS, SSD, SSDC) link it after
+ * the last cell of its list, found from the list's last position (O(1) per
+ * node when every node is appended), instead of searching for its place
+ * from the head; the other kinds insert as hj_band_insert.  HJ_EINVAL
+ * (store unchanged) when idx is not above every node of its list (SSDA:
+ * of its line); FS and FLS accept any node. */
+int hj_band_append(hj_band *s, const int *idx, double v, hj_error *err);
 
 /* Remove node idx if stored (FS: nothing happens). */
 void hj_band_remove(hj_band *s, const int *idx);

@@ -1,6 +1,9 @@
+#define _DEFAULT_SOURCE /* madvise's MADV_HUGEPAGE */
 #include "hj_sys.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
@@ -24,4 +27,16 @@ double hj_sys_peak_rss_mb(void)
     struct rusage ru;
     if (getrusage(RUSAGE_SELF, &ru)) return NAN;
     return (double)ru.ru_maxrss / 1024.0;
+}
+
+void *hj_sys_alloc_large(size_t bytes)
+{
+    const size_t huge = (size_t)2 << 20;
+    if (bytes < huge) return malloc(bytes ? bytes : 1);
+    void *p;
+    if (posix_memalign(&p, huge, bytes)) return NULL;
+#ifdef MADV_HUGEPAGE
+    (void)madvise(p, bytes, MADV_HUGEPAGE); /* a hint: refused is fine */
+#endif
+    return p;
 }

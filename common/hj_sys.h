@@ -8,6 +8,8 @@
 #ifndef HJ_SYS_H
 #define HJ_SYS_H
 
+#include <stddef.h>
+
 /* Physical memory of the machine in bytes (0 if unknown). */
 double hj_sys_physical_memory(void);
 
@@ -16,5 +18,13 @@ double hj_sys_cpu_seconds(void);
 
 /* Peak resident memory of this process in MB (getrusage), NaN if unknown. */
 double hj_sys_peak_rss_mb(void);
+
+/* A block of `bytes` for a large array that will be touched throughout,
+ * freed with free(); NULL if out of memory.  Blocks of 2 MB and more are
+ * aligned to 2 MB and marked for transparent huge pages where the system
+ * offers them (Linux madvise): one page fault per 2 MB instead of per
+ * 4 KB, which on virtual machines is most of the cost of filling
+ * gigabytes. */
+void *hj_sys_alloc_large(size_t bytes);
 
 #endif

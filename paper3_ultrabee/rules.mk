@@ -24,16 +24,17 @@ P3_HJB := $(P3_OUT)/table5.tsv
 P3_RESULTS := $(P3_STORE) $(P3_HJB) $(P3_2D) $(P3_ND)
 
 # One run of each program writes its group of tables; examples34d runs
-# once per table, so that `make paper3` can balance the long runs over two
+# once per table and storage once per search table (1, 2) and once for
+# Tables 3-4, so that `make paper3` can share the long runs between two
 # cores (below).  Each program measures its own CPU time
 # (CLOCK_PROCESS_CPUTIME_ID), so the side-by-side runs do not enter each
-# other's timings.  The programs that hold gigabytes, storage (14.4 GB
-# for FLS at 200^4) and hjbstep (4.6 GB), may run side by side (19 GB on
-# this 24 GB machine); storage takes a lock so that no -j ever runs two of
-# it (a second copy would not fit).  examples2d's level set runs
+# other's timings.  The programs that hold gigabytes may run side by
+# side: storage builds a full store above 1 GB (FLS at 200^4: 14.4 GB)
+# only under a lock on $(P3_OUT)/.memlock, so that two of its runs never
+# hold two (storage.c); hjbstep holds 4.6 GB (19 GB together on this 24
+# GB machine).  examples2d's level set runs
 # use one OpenMP thread: its 2-D grids are small, and spinning threads on
 # a shared machine cost more CPU than they save.
-P3_MEMLOCK = flock $(P3_OUT)/.memlock
 $(P3_2D) &: $(BUILD)/bin/$(P3)/examples2d | $(HJTIME)
 	@mkdir -p $(P3_OUT)
 	$(call hj_timed,$(P3_OUT),examples2d) env OMP_NUM_THREADS=1 $< $(QUICKFLAG) --out-dir $(P3_OUT)
@@ -47,9 +48,19 @@ P3_FIG09_DATA := $(P3_OUT)/fig09_advection.dat $(P3_OUT)/fig09_target.dat
 $(P3_FIG09_DATA): $(P3_OUT)/table11.tsv
 	@test -f $@ || { echo "$@ missing: rerun table 11 (rm $<)"; exit 1; }
 
-$(P3_STORE) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
+# storage: Table 1 (with Figure 5's data), Table 2, Tables 3-4.
+P3_STORE1 := $(P3_OUT)/table1.tsv $(P3_OUT)/fig05_fronts.dat
+P3_STORE2 := $(P3_OUT)/table2.tsv
+P3_STORE34 := $(P3_OUT)/table3.tsv $(P3_OUT)/table4.tsv
+$(P3_STORE1) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(P3_MEMLOCK) $(call hj_timed,$(P3_OUT),storage) $< $(QUICKFLAG) --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table1) $< $(QUICKFLAG) --tables 1 --out-dir $(P3_OUT)
+$(P3_STORE2): $(BUILD)/bin/$(P3)/storage | $(HJTIME)
+	@mkdir -p $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table2) $< $(QUICKFLAG) --tables 2 --out-dir $(P3_OUT)
+$(P3_STORE34) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
+	@mkdir -p $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table3-4) $< $(QUICKFLAG) --tables 3,4 --out-dir $(P3_OUT)
 $(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep | $(HJTIME)
 	@mkdir -p $(P3_OUT)
 	$(call hj_timed,$(P3_OUT),hjbstep) $< $(QUICKFLAG) --out-dir $(P3_OUT)
@@ -89,27 +100,27 @@ bench-ub: $(P3_BENCH)
 	@mkdir -p $(P3_OUT)
 	OMP_WAIT_POLICY=passive $(P3_BENCH) $(QUICKFLAG) --out-dir $(P3_OUT)
 
-# `make reproduce` also runs the other papers' results (REPRODUCE_BESIDE,
-# the top Makefile) in lane B after paper 3's, beside the storage
-# comparison, instead of after both lanes: lane B ends minutes before lane
-# A, and papers 1 and 2 then ran alone on one core of two.
-# `make paper3` runs two lanes side by side, each one program at a time:
-# storage alone (25 minutes), and the UB runs (Tables 12, 11, 13, the
-# 2-D examples) with hjbstep (20 minutes): measured on 23 November 2026,
-# overview.md.  The binaries are built first, so that
-# the lanes never build the same file.
-P3_LANE_A := $(P3_STORE)
-P3_LANE_B := $(P3_OUT)/table12.tsv $(P3_OUT)/table11.tsv $(P3_HJB) $(P3_OUT)/table13.tsv $(P3_2D)
-.PHONY: paper3-results paper3-lane-a paper3-lane-b
+# `make paper3` shares its runs between the two cores: one make -j2 over
+# the runs in order of decreasing run time, so that each core takes the
+# next run as soon as it is free (longest first keeps the last run short).
+# `make reproduce` adds the other papers' results to the same pool: their
+# long runs (REPRODUCE_BESIDE_LONG, the top Makefile) among paper 3's
+# long ones, the rest (REPRODUCE_BESIDE) at the end.  Run times in CPU
+# seconds (measured 26 November 2026 on a loaded machine for storage; the
+# others from the 23-24 November runs, README "Numbers and
+# reproducibility"): storage Table 1 702, the ToolboxLS comparison ~720,
+# Tables 11 and 12 441 and 363, storage Table 2 288, hjbstep 259, storage
+# Tables 3-4 174, Table 13 47, examples2d 31.  The binaries are built
+# first, then the runs.
+P3_RUNS_FIRST := $(P3_STORE1)
+P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB)
+P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D)
+.PHONY: paper3-results
 paper3-results:
 	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
-	$(MAKE) --no-print-directory -j2 paper3-lane-a paper3-lane-b
+	$(MAKE) --no-print-directory -j2 $(P3_RUNS_FIRST) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
+	    $(P3_RUNS_LONG) $(P3_RUNS_SHORT) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
 	$(MAKE) --no-print-directory $(P3_FIGS)
-paper3-lane-a:
-	$(MAKE) --no-print-directory -j1 $(P3_LANE_A)
-paper3-lane-b:
-	$(MAKE) --no-print-directory -j1 $(P3_LANE_B)
-	$(if $(REPRODUCE_BESIDE_ON),$(MAKE) --no-print-directory -j1 $(REPRODUCE_BESIDE))
 REPRODUCE_FIRST += paper3-results
 paper3:
 	$(MAKE) --no-print-directory paper3-results

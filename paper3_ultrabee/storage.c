@@ -37,8 +37,31 @@ size whose predicted time (previous time x ratio of the last two sizes,
 or x 2^d) exceeds 100 s (5 s with `--quick`) is not run ('-'), like the published ">1e3" cells.
 The 100 s are chosen so that every size with a published time runs: the
 largest, LS and CRS of Table 1 at d = 3, n = 400, are predicted at 83 s
-and 63 s; the next ones (Table 3's CRS at n = 800, 110 s; Table 1's LS at
-n = 800, 660 s) have no published value.
+and 63 s; the next ones (Table 3's CRS at n = 800; Table 1's LS at n =
+800, 660 s) have no published value.  Table 3's CRS at n = 800, once
+predicted at 110 s, now runs (predicted 91 s, measured 99 s on 26
+November 2026): the faster list walks brought it under the budget.
+
+**Cost.** What is timed is the sweeps and the updates above; everything
+else is kept cheap without touching them: the band of a front is found
+once per row and every structure of the row is built from it in order
+(hj_band_append: O(1) per node, where inserting searched CRS's rows from
+their heads, O(row^2) per row); Table 4 takes the bytes of the stores
+Table 1 builds for its d = 3 rows and builds only the ones Table 1 skips;
+FS and FLS sit on transparent huge pages (hj_sys_alloc_large: filling
+14.4 GB 4 KB page by page cost minutes on this virtual machine) and FLS
+no longer fills values it never reads.  Two changes reach the timed
+code, both the same algorithm with less waste: the list kinds keep keys
+and links apart from the values (a walk reads 16 bytes per step instead
+of 24; LS and CRS sweeps about 10 % faster), and FS's sweep counts its
+indices up instead of dividing them out of the linear index.  Every
+structure does the same work per lookup at every size as before, so the
+Order columns (ratios between sizes) keep their meaning; SSD_over_FLS
+can move by the few per cent SSD's walks gained (26 November 2026).
+With `make paper3` the tables run as three processes (Table 1, Table 2,
+Tables 3-4; rules.mk); a full store above 1 GB is built only under a lock
+on OUT_DIR/.memlock, so that two runs never hold two (FLS at 200^4 is
+14.4 GB).
 
 **Parameters.** Published sizes: Table 1 d = 2: 400, 800, 1600; d = 3:
 100, 200, 400, 800; d = 4: 25, 50, 100, 200.  Table 2: d = 3 and 4 as in
@@ -48,13 +71,17 @@ smallest sizes of each group.
 **Output.** table1.tsv ... table4.tsv (table4.tsv also holds the runs under the
 4 GB limit, which notes/table4_limits.md presents); fig05_fronts.dat, the band F+ u F- of
 both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
-(fig05.png, plot/fig05.gp).
+(fig05.png, plot/fig05.gp), written with Table 1.
 */
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "hj_band.h"
 #include "hj_cli.h"
@@ -63,6 +90,30 @@ both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 #include "p3_prog.h"
 
 static double BUDGET = 100.0; /* seconds; 5 with --quick (see the header) */
+
+/* ---- one big full store at a time --------------------------------------- */
+
+/* The tables may run as separate processes side by side (`make paper3`
+ * runs Table 1 beside Tables 2-4).  A full store (FS, FLS) above 1 GB is
+ * built only while holding a write lock (fcntl, released by the process's
+ * end) on OUT_DIR/.memlock: the largest, FLS at 200^4, is 14.4 GB, and two
+ * of them do not fit in this machine's 24 GB.  The lock is taken before
+ * the build, so a wait never enters a timing. */
+static int MEMLOCK_FD = -1;
+
+static int full_store_big(hj_band_kind kind, int d, int n)
+{
+    double total = 1;
+    for (int i = 0; i < d; i++) total *= n;
+    return (kind == HJ_BAND_FS || kind == HJ_BAND_FLS) && total * 9.0 > 1e9;
+}
+
+static void memlock_set(int on)
+{
+    if (MEMLOCK_FD < 0) return;
+    struct flock fl = {.l_type = (short)(on ? F_WRLCK : F_UNLCK), .l_whence = SEEK_SET};
+    while (fcntl(MEMLOCK_FD, F_SETLKW, &fl) && errno == EINTR) {}
+}
 
 typedef struct {
     hj_band *s;
@@ -105,7 +156,7 @@ static int add_node(const int *idx, int side, void *vctx)
 {
     build_ctx *c = vctx;
     c->nb++;
-    if (c->s && (c->rc = hj_band_insert(c->s, idx, side, c->err))) return 1;
+    if (c->s && (c->rc = hj_band_append(c->s, idx, side, c->err))) return 1; /* the band comes in order */
     if (c->plus) {
         int64_t k = lin(c->d, c->n, idx);
         if (side > 0 ? push(&c->plus, &c->nplus, &c->capplus, k) : push(&c->minus, &c->nminus, &c->capminus, k)) {
@@ -116,16 +167,51 @@ static int add_node(const int *idx, int side, void *vctx)
     return 0;
 }
 
+/* The band of the last front asked for, as linear indices times 2 plus 1
+ * on F+, in the order p3_front_band gives them (lexicographic): found once
+ * and reused by the builds of every structure of a row (at 200^4 finding
+ * the band costs about as much as a build). */
+static struct {
+    int example, d, n;
+    int64_t *code;
+    size_t len, cap;
+} BAND;
+
+static int collect_node(const int *idx, int side, void *vctx)
+{
+    (void)vctx;
+    return push(&BAND.code, &BAND.len, &BAND.cap, 2 * lin(BAND.d, BAND.n, idx) + (side > 0)) ? HJ_ENOMEM : 0;
+}
+
+static int band_of(const p3_front *f, hj_error *err)
+{
+    if (BAND.code && BAND.len && BAND.example == f->example && BAND.d == f->d && BAND.n == f->n) return HJ_OK;
+    BAND.example = f->example;
+    BAND.d = f->d;
+    BAND.n = f->n;
+    BAND.len = 0;
+    if (p3_front_band(f, collect_node, NULL, err)) { /* only ever out of memory */
+        BAND.len = 0;
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (band list)");
+    }
+    return HJ_OK;
+}
+
 /* The store of the given kind holding the band of front f. */
 static int build(hj_band **s, hj_band_kind kind, const p3_front *f, size_t *nb, hj_error *err)
 {
-    int rc = hj_band_new(s, kind, f->d, f->n, err);
+    int rc = band_of(f, err);
     if (rc) return rc;
-    build_ctx c = {*s, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f->n, f->d};
-    p3_front_band(f, add_node, &c, err);
-    *nb = c.nb;
-    if (c.rc) { hj_band_free(*s); *s = NULL; }
-    return c.rc;
+    rc = hj_band_new(s, kind, f->d, f->n, err);
+    if (rc) return rc;
+    for (size_t i = 0; i < BAND.len && !rc; i++) {
+        int idx[HJ_BAND_DMAX];
+        unlin(f->d, f->n, BAND.code[i] >> 1, idx);
+        rc = hj_band_append(*s, idx, BAND.code[i] & 1 ? 1 : -1, err); /* the band comes in order */
+    }
+    *nb = BAND.len;
+    if (rc) { hj_band_free(*s); *s = NULL; }
+    return rc;
 }
 
 /* ---- neighbour search ---------------------------------------------------- */
@@ -243,8 +329,10 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 {
     hj_band *s;
     size_t nb;
+    const int big = full_store_big(kind, f->d, f->n);
+    if (big) memlock_set(1);
     int rc = build(&s, kind, f, &nb, err);
-    if (rc) return rc;
+    if (rc) { if (big) memlock_set(0); return rc; }
     const double t0 = hj_sys_cpu_seconds();
     for (size_t i = 0; i < u->nins && !rc; i++) {
         int idx[HJ_BAND_DMAX];
@@ -258,6 +346,7 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
     }
     *secs = hj_sys_cpu_seconds() - t0;
     hj_band_free(s);
+    if (big) memlock_set(0);
     return rc;
 }
 
@@ -273,6 +362,16 @@ static int affordable(const double *prev, int i, int d)
 
 static const hj_band_kind SEARCH_KINDS[] = {HJ_BAND_FS, HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NSK = 7 };
+
+/* Table 4 measures the stores of Table 1's d = 3 rows (Example 1, n = 100
+ * ... 800): the bytes of each store Table 1 builds are kept here (NAN: it
+ * did not fit), so that Table 4 builds only the ones Table 1 skipped. */
+typedef struct {
+    int have;
+    double mb;
+    size_t nb;
+} mem_cell;
+static mem_cell MEM_SEEN[NSK][4];
 
 static void search_table(const p3_args *a, const char *table, int example, hj_error *err)
 {
@@ -301,11 +400,16 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
                 if (!affordable(t[k], i, d)) continue;
                 hj_band *s;
                 hj_progress("%s d=%d N=%ld %s ...\n", table, d, sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
+                const int big = full_store_big(SEARCH_KINDS[k], d, f.n);
+                if (big) memlock_set(1);
                 const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
-                if (rc == HJ_ENOMEM) continue; /* beyond this machine: no value */
+                mem_cell *m = example == 1 && d == 3 ? &MEM_SEEN[k][i] : NULL;
+                if (m && (rc == HJ_OK || rc == HJ_ENOMEM)) *m = (mem_cell){1, rc ? NAN : (double)hj_band_bytes(s) / 1e6, nb};
+                if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; } /* beyond this machine: no value */
                 if (rc) p3_die(a->prog, err);
                 t[k][i] = time_search(s, &f);
                 hj_band_free(s);
+                if (big) memlock_set(0);
             }
             for (int k = 0; k < NSK; k++) {
                 char b1[32], b2[32];
@@ -407,12 +511,16 @@ static void memory_table(const p3_args *a, hj_error *err)
         for (int k = 0; k < NSK; k++) {
             hj_band *s;
             mb[k][i] = NAN;
+            if (MEM_SEEN[k][i].have) { mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue; }
             hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
+            const int big = full_store_big(SEARCH_KINDS[k], 3, f.n);
+            if (big) memlock_set(1);
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
-            if (rc == HJ_ENOMEM) continue;
+            if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; }
             if (rc) p3_die(a->prog, err);
             mb[k][i] = (double)hj_band_bytes(s) / 1e6;
             hj_band_free(s);
+            if (big) memlock_set(0);
         }
         fprintf(out.fp, "\t%zu", nb);
         for (int k = 0; k < NSK; k++) {
@@ -464,10 +572,16 @@ int main(int argc, char **argv)
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
     if (a.quick) BUDGET = 5.0;
-    if (p3_want(&a, 1) || p3_want(&a, 2)) fig05(&a, &err);
+    char lock[4096];
+    if (snprintf(lock, sizeof lock, "%s/.memlock", a.out_dir) < (int)sizeof lock) {
+        if (hj_mkdirs(a.out_dir, &err)) p3_die(a.prog, &err);
+        MEMLOCK_FD = open(lock, O_RDWR | O_CREAT, 0644); /* no lock file: run unlocked */
+    }
+    if (p3_want(&a, 1)) fig05(&a, &err);
     if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
     if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
     if (p3_want(&a, 3)) update_table(&a, &err);
     if (p3_want(&a, 4)) memory_table(&a, &err);
+    free(BAND.code);
     return 0;
 }

@@ -167,6 +167,62 @@ static void find_run_equals_find(void **state)
         }
 }
 
+/* Appending nodes in lexicographic order builds the same store as
+ * inserting them (same nodes, values, walk order and bytes); an append
+ * below the last node of its list is refused and changes nothing. */
+static void append_equals_insert(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 4; d++) {
+        const int n = d == 2 ? 30 : d == 3 ? 12 : 6;
+        for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+            hj_band *a, *b;
+            assert_int_equal(hj_band_new(&a, kind, d, n, NULL), HJ_OK);
+            assert_int_equal(hj_band_new(&b, kind, d, n, NULL), HJ_OK);
+            int64_t total = 1;
+            for (int i = 0; i < d; i++) total *= n;
+            unsigned seed = 777u + (unsigned)d;
+            for (int64_t k = 0; k < total; k++) {
+                if (rnd(&seed) % 4) continue; /* about a quarter of the grid */
+                int idx[HJ_BAND_DMAX];
+                int64_t r = k;
+                for (int i = d - 1; i >= 0; i--) { idx[i] = (int)(r % n); r /= n; }
+                assert_int_equal(hj_band_append(a, idx, (double)k, NULL), HJ_OK);
+                assert_int_equal(hj_band_insert(b, idx, (double)k, NULL), HJ_OK);
+            }
+            assert_int_equal(hj_band_count(a), hj_band_count(b));
+            assert_int_equal(hj_band_bytes(a), hj_band_bytes(b));
+            for (int64_t k = 0; k < total; k++) {
+                int idx[HJ_BAND_DMAX];
+                int64_t r = k;
+                for (int i = d - 1; i >= 0; i--) { idx[i] = (int)(r % n); r /= n; }
+                const double *pa = hj_band_find(a, idx), *pb = hj_band_find(b, idx);
+                assert_true((pa == NULL) == (pb == NULL));
+                if (pa) assert_true(*pa == *pb);
+            }
+            if (kind != HJ_BAND_FS && kind != HJ_BAND_FLS) {
+                /* the last node of the grid, and one below it in its line
+                 * (so in its list for every kind) */
+                int top[HJ_BAND_DMAX], low[HJ_BAND_DMAX];
+                for (int i = 0; i < d; i++) top[i] = low[i] = n - 1;
+                low[d - 1] = 0;
+                hj_band_remove(a, top);
+                assert_int_equal(hj_band_append(a, top, 5.0, NULL), HJ_OK);
+                const size_t before = hj_band_count(a);
+                hj_error err;
+                assert_int_equal(hj_band_append(a, low, 1.0, &err), HJ_EINVAL);
+                assert_int_equal(hj_band_count(a), before);
+                /* after a remove the last cell is found again */
+                hj_band_remove(a, top);
+                assert_int_equal(hj_band_append(a, top, 6.0, NULL), HJ_OK);
+                assert_true(*hj_band_find(a, top) == 6.0);
+            }
+            hj_band_free(a);
+            hj_band_free(b);
+        }
+    }
+}
+
 HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(random_sequence_all_kinds),
              cmocka_unit_test(find_run_equals_find), cmocka_unit_test(full_storage_holds_every_node),
-             cmocka_unit_test(out_of_memory_and_bad_args))
+             cmocka_unit_test(out_of_memory_and_bad_args), cmocka_unit_test(append_equals_insert))
