@@ -828,6 +828,26 @@ static void settle_sources(eik_work *w, int factored, int has_obst)
             }
 }
 
+/* Marks bit 1 of m also on every node within 3 nodes of a marked one (a
+ * 7^dim box, the reach of the WENO5 stencil), dimension by dimension;
+ * other bits (4: a mark kept from before) are left as they are.  A
+ * wrap-around at the padded row ends only marks ghost or extra nodes. */
+static void dilate_box3(const eik_work *w, unsigned char *m)
+{
+    const size_t np = w->npad;
+    for (int d = 0; d < w->dim; d++) {
+        const long st = w->st[d];
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 1)
+                for (int r = -3; r <= 3; r++) {
+                    const long kk = (long)k + r * st;
+                    if (kk >= 0 && (size_t)kk < np && !(m[kk] & 1)) m[kk] |= 2;
+                }
+        for (size_t k = 0; k < np; k++)
+            if (m[k] & 2) m[k] = (unsigned char)((m[k] & 4) | 1);
+    }
+}
+
 /* WENO5 is kept away from obstacles and from the lines where two sources'
  * fronts meet: a node within 3 nodes (a box, the reach of the WENO5
  * stencil) of an obstacle or of a node of another owner uses WENO3.  At
@@ -837,7 +857,6 @@ static void settle_sources(eik_work *w, int factored, int has_obst)
  * convergence) while WENO3 converges; away from them the order stays 5. */
 static void mark_low(eik_work *w)
 {
-    const size_t np = w->npad;
     for (long c = w->G[2]; c < w->n[2] + w->G[2]; c++)
         for (long b = w->G[1]; b < w->n[1] + w->G[1]; b++)
             for (long a = w->G[0]; a < w->n[0] + w->G[0]; a++) {
@@ -849,19 +868,7 @@ static void mark_low(eik_work *w)
                 }
                 w->low[k] = (unsigned char)mark;
             }
-    /* dilate by 3 nodes along each dimension in turn: a 7^dim box (a
-     * wrap-around at the padded row ends only marks ghost or extra nodes) */
-    unsigned char *tmp = w->low;
-    for (int d = 0; d < w->dim; d++) {
-        const long st = w->st[d];
-        for (size_t k = 0; k < np; k++)
-            if (tmp[k] & 1)
-                for (int r = -3; r <= 3; r++) {
-                    const long kk = (long)k + r * st;
-                    if (kk >= 0 && (size_t)kk < np && !(tmp[kk] & 1)) tmp[kk] |= 2;
-                }
-        for (size_t k = 0; k < np; k++) tmp[k] = tmp[k] ? 1 : 0;
-    }
+    dilate_box3(w, w->low);
 }
 
 /* WENO5 can settle into a cycle instead of converging where the speed
@@ -885,17 +892,7 @@ static void demote_cycling(eik_work *w, double change, int q)
         if (w->chg[k] >= lim) m[k] |= 1;
         w->stamp[k] = q;
     }
-    for (int d = 0; d < w->dim; d++) {
-        const long st = w->st[d];
-        for (size_t k = 0; k < np; k++)
-            if (m[k] & 1)
-                for (int r = -3; r <= 3; r++) {
-                    const long kk = (long)k + r * st;
-                    if (kk >= 0 && (size_t)kk < np && !(m[kk] & 1)) m[kk] |= 2;
-                }
-        for (size_t k = 0; k < np; k++)
-            if (m[k] & 2) m[k] = (unsigned char)((m[k] & 4) | 1);
-    }
+    dilate_box3(w, m);
     for (size_t k = 0; k < np; k++) m[k] = m[k] ? 1 : 0;
 }
 
