@@ -16,18 +16,26 @@
  * threads on a 2-D grid. */
 enum { SEG = 256 };
 
-/* The row kernels are built for AVX2 as well as the baseline x86-64 and
- * chosen at run time (no FMA: the same IEEE operations, the same bits). */
+/* The row kernels are built for AVX-512 and AVX2 as well as the baseline
+ * x86-64 and chosen at run time (-std=c11 contracts no a b + c into an
+ * FMA: the same IEEE operations, the same bits). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 #define HJ_UB_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define HJ_UB_CLONES
 #endif
 
-/* Per-thread buffer: 7 rolling rows of sweep_rows (at most seg_max
- * columns), the dynamics of a row, and the padded row of the last sweep
- * (values, mu, fluxes). */
 static size_t seg_max(int n) { return (size_t)n > SEG ? (size_t)n : SEG; }
+
+/* Per-thread buffer, in doubles from its start (s = seg_max(n)):
+ * strided sweeps: mu, A, P of two parities, the boundary row, Q (6 s);
+ * the dynamics of two rows (2 d (n + 2));
+ * the last direction's padded row: W_{-3 .. n+2} (n + 6), then mu, A, P, Q
+ * of nodes -1 .. n (4 (n + 2)). */
+static size_t buf_size(int d, int n)
+{
+    return 6 * seg_max(n) + 2 * (size_t)d * (size_t)(n + 2) + (size_t)(n + 6) + 4 * (size_t)(n + 2);
+}
 
 static int thread_id(void)
 {
@@ -60,7 +68,7 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
 #else
     ws->nthreads = 1;
 #endif
-    ws->bufper = 7 * seg_max(n) + (size_t)d * (size_t)(n + 2) + 3 * (size_t)(n + 4);
+    ws->bufper = buf_size(d, n);
     ws->w1 = malloc(ws->total * sizeof *ws->w1);
     ws->w2 = d >= 4 ? malloc(ws->total * sizeof *ws->w2) : NULL; /* d = 2, 3: one intermediate grid at most */
     ws->vmin = malloc(ws->total * sizeof *ws->vmin);
@@ -122,7 +130,22 @@ static void row_dyn(const hj_ub_dense *ws, double t, const double *x, const doub
     }
 }
 
-double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
+/* max_j |f[j]|: a max reduction gcc vectorises, the same maximum in any
+ * order (|f| >= 0 has no signed zero; a NaN is skipped here as by q > m). */
+HJ_UB_CLONES
+static double row_absmax(long len, const double *restrict f)
+{
+    double m = 0;
+#pragma omp simd reduction(max : m)
+    for (long j = 0; j < len; j++) {
+        const double q = fabs(f[j]);
+        m = q > m ? q : m;
+    }
+    return m;
+}
+
+/* max over nodes, controls and directions of |f_k| / dx_k at time t */
+static double max_rate(hj_ub_dense *ws, double t)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n;
@@ -136,135 +159,155 @@ double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
             row_dyn(ws, t, x, ws->xlast + 1, n, a, f);
             /* max |f_k| / dx_k = max (|f_k| / dx_k): division is monotone */
             for (int k = 0; k < d; k++) {
-                double fk = 0;
-                const double *fr = f + (size_t)k * (size_t)n;
-                /* a max reduction gcc vectorises: the same maximum (|f| >= 0
-                 * has no signed zero; a NaN is skipped here as by q > fk) */
-#pragma omp simd reduction(max : fk)
-                for (int j = 0; j < n; j++) {
-                    const double q = fabs(fr[j]);
-                    fk = q > fk ? q : fk;
-                }
-                const double q = fk / ws->dx[k];
+                const double q = row_absmax(n, f + (size_t)k * (size_t)n) / ws->dx[k];
                 rate = q > rate ? q : rate;
             }
         }
     }
-    const double left = tmax - t;
+    return rate;
+}
+
+double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
+{
+    const hj_ub_problem *pb = ws->pb;
+    if (!ws->autonomous || !ws->rate_known) {
+        ws->rate = max_rate(ws, t);
+        ws->rate_known = 1;
+    }
+    const double rate = ws->rate, left = tmax - t;
     const double dt = rate * left <= pb->cfl ? left : pb->cfl / rate;
     return pb->dtmax > 0 && dt > pb->dtmax ? pb->dtmax : dt;
 }
 
-/* ---- the Ultra-Bee fluxes over rows (hj_ub.c's flux_left, flux_right) ----- */
+/* ---- the Ultra-Bee faces over rows (hj_ub.c's flux_left, flux_right) ------ */
 
-/* The flux node j hands to the face it feeds when mu_j != 0: W^L_{j+1/2}
- * (mu_j > 0) or W^R_{j-1/2} (mu_j < 0), from W_{j-1}, W_j, W_{j+1}.
- * hj_ub.c clips to [mx + (c - mx)/mu, mn + (c - mn)/mu] with mx, mn the
- * max and min of c = W_j and its upwind neighbour e: one of the two bounds
- * is c + (+0)/mu = c + 0.0, so one division gives both, bit for bit
- * (c + 0.0 keeps the sign-of-zero rule of the original). */
+/* What node j gives the faces of the update in one direction, from W_{j-2..j+2}
+ * and mu_j = dt/dx_k f_k:
+ *  A_j, the flux node j hands to the face it feeds when mu_j != 0: W^L_{j+1/2}
+ *    (mu_j > 0) or W^R_{j-1/2} (mu_j < 0).  hj_ub.c clips to
+ *    [mx + (c - mx)/mu, mn + (c - mn)/mu] with mx, mn the max and min of
+ *    c = W_j and its upwind neighbour e: one of the two bounds is
+ *    c + (+0)/mu = c + 0.0, so one division gives both, bit for bit (c + 0.0
+ *    keeps the sign-of-zero rule of the original);
+ *  P_j, the face j+1/2 as node j+1 uses it when mu_{j+1} > 0: A_j when node j
+ *    flows right, else the mu = 0 value or (8) of hj_ub_update;
+ *  Q_j, the face j-1/2 as node j-1 uses it when mu_{j-1} < 0, symmetrically.
+ * With P and Q each node's update reads 5 values instead of 11. */
+static inline void node_faces(double wmm, double wm, double w0, double wp, double wpp, double m, double *A, double *P,
+                              double *Q)
+{
+    const int right = m > 0;
+    const double e = right ? wm : wp, down = right ? wp : wm;
+    /* |mu| (hj_ub.c's -mu when mu < 0); 1 for mu = 0, where A is not used
+     * (nor for a NaN mu, whose update is NaN whatever A) */
+    const double den = m == 0 ? 1 : fabs(m);
+    const double g = e + (w0 - e) / den, c0 = w0 + 0.0;
+    const double lo = w0 > e ? c0 : g, hi = w0 < e ? c0 : g;
+    const double x = down < lo ? lo : down, a = x > hi ? hi : x;
+    /* two-way selects one after the other: gcc if-converts these (not
+     * one nested select of five arms) */
+    const double pz = w0 != wm ? wp : w0, pn = wp == wpp ? wp : w0, p0 = m == 0 ? pz : pn;
+    const double qz = w0 != wp ? wm : w0, qp = wm == wmm ? wm : w0, q0 = m == 0 ? qz : qp;
+    *A = a;
+    *P = m > 0 ? a : p0;
+    *Q = m < 0 ? a : q0;
+}
+
+/* The update W_j - mu_j (W^L_{j+1/2} - W^R_{j-1/2}) of hj_ub_update from node
+ * j's own mu_j, A_j and its neighbours' P_{j-1}, Q_{j+1}. */
+static inline double node_step(double w0, double m, double a, double pl, double qr)
+{
+    const double df = m > 0 ? a - pl : qr - a;
+    return m == 0 ? w0 : w0 - m * df;
+}
+
+/* A strided sweep's step from row i to row i+1, in one pass: the faces of
+ * row i+1 from rows r0..r4 = W_{i-1..i+3} and its f_k, and the update of row
+ * i = r1 into out.  mu, A hold row i's on entry and row i+1's on return; P
+ * holds P_{i-1} on entry and P_{i+1} on return (Q_{i+1} is used at once). */
 HJ_UB_CLONES
-static void row_flux(long len, const double *restrict wm, const double *restrict wi, const double *restrict wp,
-                     double cfl_k, const double *restrict fk, double *restrict mu, double *restrict out)
+static void row_pipe(long len, const double *restrict r0, const double *restrict r1, const double *restrict r2,
+                     const double *restrict r3, const double *restrict r4, const double *restrict fk, double c,
+                     double *restrict mu, double *restrict A, double *restrict P, double *restrict out)
 {
     for (long j = 0; j < len; j++) {
-        /* mu_j = dt/dx_k f_k, stored for the update, in the same pass */
-        const double m = cfl_k * fk[j], c = wi[j];
+        const double m = c * fk[j];
+        double a, p, q;
+        node_faces(r0[j], r1[j], r2[j], r3[j], r4[j], m, &a, &p, &q);
+        out[j] = node_step(r1[j], mu[j], A[j], P[j], q);
         mu[j] = m;
-        const int right = m > 0;
-        const double e = right ? wm[j] : wp[j], down = right ? wp[j] : wm[j];
-        const double den = right ? m : m < 0 ? -m : 1;
-        const double g = e + (c - e) / den, c0 = c + 0.0;
-        const double lo = c > e ? c0 : g, hi = c < e ? c0 : g;
-        const double x = down < lo ? lo : down;
-        out[j] = x > hi ? hi : x;
+        A[j] = a;
+        P[j] = p;
     }
 }
 
-/* The update W_j - mu_j (W^L_{j+1/2} - W^R_{j-1/2}) of hj_ub_update, from
- * W_{j-2..j+2}, mu_{j-1..j+1} and the fluxes A_{j-1..j+1} of row_flux. */
-static inline double node_update(double wmm, double wm, double w0, double wp, double wpp, double mL, double m0, double mR,
-                                 double aL, double a0, double aR)
-{
-    /* left face when mu_j > 0: node j-1's flux if it flows right; its
-     * mu = 0 value; else (8) */
-    const double frp = mL > 0 ? aL : mL == 0 ? (wm != wmm ? w0 : wm) : (w0 == wp ? w0 : wm);
-    /* right face when mu_j < 0, symmetrically */
-    const double fln = mR < 0 ? aR : mR == 0 ? (wp != wpp ? w0 : wp) : (w0 == wm ? w0 : wp);
-    const double fl = m0 > 0 ? a0 : fln, fr = m0 > 0 ? frp : a0;
-    return m0 == 0 ? w0 : w0 - m0 * (fl - fr);
-}
-
-/* node_update over a row. */
+/* The faces of the row r2 (rows r0..r4 around it) without an update: those
+ * of the first rows of a strided sweep, or with stride 1 the faces of a
+ * whole padded row. */
 HJ_UB_CLONES
-static void row_update(long len, const double *restrict wmm, const double *restrict wm, const double *restrict w0,
-                       const double *restrict wp, const double *restrict wpp, const double *restrict mL,
-                       const double *restrict m0, const double *restrict mR, const double *restrict aL,
-                       const double *restrict a0, const double *restrict aR, double *restrict out)
-{
-    for (long j = 0; j < len; j++)
-        out[j] = node_update(wmm[j], wm[j], w0[j], wp[j], wpp[j], mL[j], m0[j], mR[j], aL[j], a0[j], aR[j]);
-}
-
-/* node_update over a row of the last sweep of a control, with the minimum
- * over the controls in the same pass: vmin = min(vmin, update). */
-HJ_UB_CLONES
-static void row_update_min(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
-                           double *restrict vmin)
+static void row_faces(long len, const double *restrict r0, const double *restrict r1, const double *restrict r2,
+                      const double *restrict r3, const double *restrict r4, const double *restrict fk, double c,
+                      double *restrict mu, double *restrict A, double *restrict P, double *restrict Q)
 {
     for (long j = 0; j < len; j++) {
-        const double u = node_update(w[j], w[j + 1], w[j + 2], w[j + 3], w[j + 4], mu[j], mu[j + 1], mu[j + 2], A[j],
-                                     A[j + 1], A[j + 2]);
-        vmin[j] = u < vmin[j] ? u : vmin[j];
+        const double m = c * fk[j];
+        double a, p, q;
+        node_faces(r0[j], r1[j], r2[j], r3[j], r4[j], m, &a, &p, &q);
+        mu[j] = m;
+        A[j] = a;
+        P[j] = p;
+        Q[j] = q;
     }
 }
 
-/* The last control's last sweep: the minimum over the controls (vmin
- * NULL: a single control), the min with V^n for the target problem, and
- * the snap to +-1, into v (V^n on entry). */
+/* The last direction's update of a padded row (w[j] = W_j, mu[j], A[j],
+ * P[j], Q[j] for j = -1 .. n, n = len): mode 0 stores it into vmin, mode 1
+ * the minimum with vmin; mode 2 is the last control's: the minimum over the
+ * controls (vmin NULL: a single control), the min with V^n for the target
+ * problem, and the snap to +-1, into v (V^n on entry). */
 HJ_UB_CLONES
-static void row_update_final(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
-                             const double *restrict vmin, int target, double snap, double *restrict v)
+static void row_last(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
+                     const double *restrict P, const double *restrict Q, int mode, double *restrict vmin, int target,
+                     double snap, double *restrict v)
 {
-    for (long j = 0; j < len; j++) {
-        double u = node_update(w[j], w[j + 1], w[j + 2], w[j + 3], w[j + 4], mu[j], mu[j + 1], mu[j + 2], A[j], A[j + 1],
-                               A[j + 2]);
-        u = !vmin || u < vmin[j] ? u : vmin[j];
-        u = target && v[j] < u ? v[j] : u;
-        v[j] = u > 1 - snap ? 1 : u < -1 + snap ? -1 : u;
-    }
+    if (mode == 0)
+        for (long j = 0; j < len; j++) vmin[j] = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
+    else if (mode == 1)
+        for (long j = 0; j < len; j++) {
+            const double u = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
+            vmin[j] = u < vmin[j] ? u : vmin[j];
+        }
+    else
+        for (long j = 0; j < len; j++) {
+            double u = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
+            u = !vmin || u < vmin[j] ? u : vmin[j];
+            u = target && v[j] < u ? v[j] : u;
+            v[j] = u > 1 - snap ? 1 : u < -1 + snap ? -1 : u;
+        }
 }
 
-/* The last direction's sweep of row r, from w[2 .. n + 1] (the buffer's
- * padded row, filled by the caller): pads with the boundary value and the
- * mu of the cells beside the ends, fluxes, update.  mode 0: the first
- * control's result into vmin; 1: the minimum with vmin; 2: the final value
- * of the step into v (first: a single control). */
-static void last_row(hj_ub_dense *ws, double *b, size_t r, double *v, int mode, int first, double snap, int a, double t,
+static double *buf_f(const hj_ub_dense *ws, double *b, int slot)
+{
+    return b + 6 * seg_max(ws->pb->n) + (size_t)slot * (size_t)ws->pb->d * (size_t)(ws->pb->n + 2);
+}
+/* W_0 of the padded row */
+static double *last_row_in(const hj_ub_dense *ws, double *b) { return buf_f(ws, b, 2) + 3; }
+
+/* The last direction's sweep of row r from the padded row of buffer b
+ * (W_0 .. W_{n-1} filled by the caller) with the dynamics of the row f
+ * (d (n + 2) values: nodes -1 .. n): pads with the boundary value, faces,
+ * update (row_last's modes; first: no minimum over controls yet). */
+static void last_row(hj_ub_dense *ws, double *b, const double *f, size_t r, double *v, int mode, int first, double snap,
                      double dt)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n, k = d - 1;
-    double *f = b + 7 * seg_max(n), *w = f + (size_t)d * (size_t)(n + 2), *mu = w + n + 4, *A = mu + n + 4;
-    double x[HJ_BAND_DMAX] = {0};
-    row_coords(ws, r, 0, 0, x);
-    row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
-    w[0] = w[1] = w[n + 2] = w[n + 3] = pb->boundary; /* w[j + 2] = W_j */
-    /* mu[j + 1] = mu_j, A[j + 1] = A_j, j = -1..n */
-    row_flux(n + 2, w, w + 1, w + 2, dt / ws->dx[k], f + (size_t)k * (size_t)(n + 2), mu, A);
+    double *w = last_row_in(ws, b), *mu = w + n + 3, *A = mu + n + 2, *P = A + n + 2, *Q = P + n + 2;
+    w[-3] = w[-2] = w[-1] = w[n] = w[n + 1] = w[n + 2] = pb->boundary;
+    /* node j = -1 .. n at index j + 1 */
+    row_faces(n + 2, w - 3, w - 2, w - 1, w, w + 1, f + (size_t)k * (size_t)(n + 2), dt / ws->dx[k], mu, A, P, Q);
     const size_t o = r * (size_t)n;
-    if (mode == 0)
-        row_update(n, w, w + 1, w + 2, w + 3, w + 4, mu, mu + 1, mu + 2, A, A + 1, A + 2, ws->vmin + o);
-    else if (mode == 1)
-        row_update_min(n, w, mu, A, ws->vmin + o);
-    else
-        row_update_final(n, w, mu, A, first ? NULL : ws->vmin + o, pb->target, snap, v + o);
-}
-
-/* The padded row of last_row in thread buffer b. */
-static double *last_row_in(const hj_ub_dense *ws, double *b)
-{
-    return b + 7 * seg_max(ws->pb->n) + (size_t)ws->pb->d * (size_t)(ws->pb->n + 2) + 2;
+    row_last(n, w, mu + 1, A + 1, P + 1, Q + 1, mode, mode == 2 && first ? NULL : ws->vmin + o, pb->target, snap, v + o);
 }
 
 /* Sweep in the last direction alone (d = 2): every row on its own. */
@@ -275,15 +318,18 @@ static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, 
     const size_t rows = ws->total / (size_t)n;
 #pragma omp parallel for num_threads(ws->nthreads) schedule(static)
     for (size_t r = 0; r < rows; r++) {
-        double *b = ws->buf + (size_t)thread_id() * ws->bufper;
+        double *b = ws->buf + (size_t)thread_id() * ws->bufper, *f = buf_f(ws, b, 0);
+        double x[HJ_BAND_DMAX] = {0};
+        row_coords(ws, r, 0, 0, x);
+        row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
         memcpy(last_row_in(ws, b), src + r * (size_t)n, (size_t)n * sizeof *src);
-        last_row(ws, b, r, v, mode, first, snap, a, t, dt);
+        last_row(ws, b, f, r, v, mode, first, snap, dt);
     }
 }
 
 /* The last sweep fused into sweep_rows (last != NULL): each row of the
  * sweep in direction d - 2 goes straight to last_row, without a grid
- * between the two. */
+ * between the two, with the dynamics the sweep evaluated for it. */
 typedef struct {
     double *v;
     int mode, first;
@@ -291,8 +337,8 @@ typedef struct {
 } fused;
 
 /* Sweep in direction k < d - 1: lines of rows along k, each walked with
- * three rolling rows of mu and fluxes, in segments of SEG columns (whole
- * rows when the last sweep is fused). */
+ * row_pipe, in segments of SEG columns (whole rows when the last sweep is
+ * fused). */
 static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, int a, double t, double dt, const fused *last)
 {
     const hj_ub_problem *pb = ws->pb;
@@ -308,35 +354,39 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
         const long len = (long)((size_t)n - j0 < SEGL ? (size_t)n - j0 : SEGL);
         const size_t base = (line / stride) * (size_t)n * stride + line % stride;
         double *b = ws->buf + (size_t)thread_id() * ws->bufper;
-        double *mu[3] = {b, b + SEGL, b + 2 * SEGL}, *A[3] = {b + 3 * SEGL, b + 4 * SEGL, b + 5 * SEGL}, *brow = b + 6 * SEGL;
-        double *f = b + 7 * seg_max(n);
+        double *mu = b, *A = b + SEGL, *P[2] = {b + 2 * SEGL, b + 3 * SEGL}, *brow = b + 4 * SEGL, *Q = b + 5 * SEGL;
+        /* fused: the dynamics of the whole row (nodes -1 .. n) are kept for
+         * the last direction's sweep of that row */
+        const long fn = last ? n + 2 : len, fo = last ? 1 : 0;
         for (long j = 0; j < len; j++) brow[j] = bnd;
 #define ROW(i) ((i) < 0 || (i) >= n ? brow : src + (base + (size_t)(i) * stride) * (size_t)n + j0)
-        /* mu and flux of row i (-1 .. n) into slot s */
-#define FILL(i, s)                                                                                     \
-    do {                                                                                               \
-        double x_[HJ_BAND_DMAX] = {0};                                                                 \
-        row_coords(ws, base + (size_t)((i) < 0 ? 0 : (i) >= n ? n - 1 : (i)) * stride, k, (i), x_);   \
-        row_dyn(ws, t, x_, ws->xlast + 1 + j0, len, a, f);                                            \
-        row_flux(len, ROW((i) - 1), ROW(i), ROW((i) + 1), c, f + (long)k * len, mu[s], A[s]);          \
+        /* the dynamics of row i (-1 .. n) into slot i & 1; its f_k */
+#define FILL(i, fk)                                                                                     \
+    do {                                                                                                \
+        double x_[HJ_BAND_DMAX] = {0}, *f_ = buf_f(ws, b, (i) & 1);                                     \
+        row_coords(ws, base + (size_t)((i) < 0 ? 0 : (i) >= n ? n - 1 : (i)) * stride, k, (i), x_);    \
+        row_dyn(ws, t, x_, ws->xlast + 1 - fo + j0, fn, a, f_);                                        \
+        fk = f_ + (long)k * fn + fo;                                                                    \
     } while (0)
-        FILL(-1, 0);
-        FILL(0, 1);
+        const double *fk;
+        /* P_{-1}; mu_0, A_0, P_0 */
+        FILL(-1, fk);
+        row_faces(len, ROW(-3), ROW(-2), ROW(-1), ROW(0), ROW(1), fk, c, mu, A, P[1], Q);
+        FILL(0, fk);
+        row_faces(len, ROW(-2), ROW(-1), ROW(0), ROW(1), ROW(2), fk, c, mu, A, P[0], Q);
         for (int i = 0; i < n; i++) {
-            const int sl = i % 3, s0 = (i + 1) % 3, sr = (i + 2) % 3; /* slots of rows i-1, i, i+1 */
             /* the row the next iteration brings in, one grid plane away
              * for k = 0: ask for it now (the hardware does not follow) */
-            if (i + 3 < n) {
-                const char *nx = (const char *)ROW(i + 3);
+            if (i + 4 < n) {
+                const char *nx = (const char *)ROW(i + 4);
                 for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(nx + j);
             }
-            FILL(i + 1, sr);
-            const double *wmm = ROW(i - 2), *wm = ROW(i - 1), *w0 = ROW(i), *wp = ROW(i + 1), *wpp = ROW(i + 2);
-            const double *mL = mu[sl], *m0 = mu[s0], *mR = mu[sr], *aL = A[sl], *a0 = A[s0], *aR = A[sr];
+            FILL(i + 1, fk);
             const size_t row = base + (size_t)i * stride;
             double *out = last ? last_row_in(ws, b) : dst + row * (size_t)n + j0;
-            row_update(len, wmm, wm, w0, wp, wpp, mL, m0, mR, aL, a0, aR, out);
-            if (last) last_row(ws, b, row, last->v, last->mode, last->first, last->snap, a, t, dt);
+            row_pipe(len, ROW(i - 1), ROW(i), ROW(i + 1), ROW(i + 2), ROW(i + 3), fk, c, mu, A, P[(i + 1) & 1], out);
+            if (last)
+                last_row(ws, b, buf_f(ws, b, i & 1), row, last->v, last->mode, last->first, last->snap, dt);
         }
 #undef FILL
 #undef ROW

@@ -5,11 +5,13 @@
  * (bitwise: unit test), without the store: V is n^d doubles, row-major
  * (the last index runs fastest), and every direction is swept over whole
  * rows of the last index, so that the Ultra-Bee flux evaluation is one
- * branch-free loop the compiler vectorises.  Each node's flux is computed
- * once per sweep and shared by the two faces that use it.  The dynamics
- * may be given over a row of nodes per call (hj_ub_row_fn), so that the
- * user's code vectorises too; without it the problem's per-node dyn is
- * called.
+ * branch-free loop the compiler vectorises.  Each node's flux, and the
+ * values its two faces take in its neighbours' updates, are computed once
+ * per sweep, so that a node's update reads 5 values; a sweep along a
+ * strided direction steps from one row to the next in one pass (the faces
+ * of row i + 1 and the update of row i).  The dynamics may be given over a
+ * row of nodes per call (hj_ub_row_fn), so that the user's code vectorises
+ * too; without it the problem's per-node dyn is called.
  *
  * Why the controls' loop is outside the sweeps: with dimension splitting a
  * control's second sweep needs its first sweep on the neighbouring rows,
@@ -18,7 +20,8 @@
  * sweeps over the grid; for d >= 3 the last sweep runs row by row inside
  * the sweep in direction d - 2 (each of its rows goes straight to the last
  * direction, in cache), and takes the minimum over the controls (and the
- * final min with V^n, the snap) in the same pass.  The row kernels are
+ * final min with V^n, the snap) in the same pass, with the dynamics the
+ * sweep in direction d - 2 evaluated for the row.  The row kernels are
  * built for AVX-512 and AVX2 besides the baseline, chosen at run time.
  *
  * OpenMP: the rows (or row segments) of a sweep are shared among the
@@ -50,6 +53,9 @@ typedef struct {
     double *xlast;           /* last coordinate of nodes -1 .. n */
     double *buf;             /* per-thread row buffers */
     size_t bufper;
+    int autonomous;          /* set by the caller: 1 when f does not depend on t */
+    int rate_known;          /* the CFL rate max |f_k| / dx_k is ws->rate (autonomous f) */
+    double rate;
 } hj_ub_dense;
 
 /* Set up the workspace for problem pb (pb->avg0, uniform, reached, bbox and
@@ -59,7 +65,9 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
 void hj_ub_dense_free(hj_ub_dense *ws);
 
 /* The time step at time t towards tmax: CFL pb->cfl over every node and
- * control, truncated to land on tmax, capped by pb->dtmax (hj_ub_step's). */
+ * control, truncated to land on tmax, capped by pb->dtmax (hj_ub_step's).
+ * The rate max |f_k| / dx_k costs one evaluation of the dynamics over the
+ * grid; with ws->autonomous set (f independent of t) it is computed once. */
 double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax);
 
 /* V^{n+1} from V^n = v at time t, in place, with the step dt (from

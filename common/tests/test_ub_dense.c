@@ -2,7 +2,8 @@
  * bitwise the values of hj_ub_step on the FS store (every flux branch:
  * both signs of mu, mu = 0, inflow through the grid's edge, several
  * controls, the target problem), the batched dynamics the same as the
- * per-node ones, and the same bits for 1 and 2 OpenMP threads. */
+ * per-node ones, the same bits for 1 and 2 OpenMP threads, and the rate
+ * of autonomous dynamics computed once with the same time steps. */
 #include "hj_test.h"
 
 #include <stdlib.h>
@@ -27,10 +28,14 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
     }
 }
 
+static long row_calls; /* calls of dyn_row (one thread) */
+
 /* The batched form of dyn: the row's coordinates, the last one per node. */
 static void dyn_row(double t, const double *x, const double *xl, long len, int a, double *f, void *vctx)
 {
     const dcase *c = vctx;
+#pragma omp atomic
+    row_calls++;
     for (long j = 0; j < len; j++) {
         double z[4] = {0, 0, 0, 0}, h[4];
         for (int k = 0; k < c->d - 1; k++) z[k] = x[k];
@@ -163,6 +168,43 @@ static void threads_bitwise(void **state)
 #endif
 }
 
+/* f independent of t (kinds 0, 2, 3): with ws.autonomous the rate is
+ * computed once, and every step's dt is the same as without. */
+static void autonomous_rate(void **state)
+{
+    (void)state;
+    hj_test_one_thread();
+    for (int kind = 0; kind < 4; kind++) {
+        if (kind == 1) continue; /* f_3 depends on t */
+        dcase c = {3, kind, {0.3, -0.5, -0.4, 0}, {1.1, 0.5, 0.2, 0}};
+        hj_ub_problem pb = problem(&c, 13);
+        hj_ub_dense ws[2];
+        double *v[2];
+        for (int i = 0; i < 2; i++) {
+            assert_int_equal(hj_ub_dense_init(&ws[i], &pb, dyn_row, NULL), HJ_OK);
+            ws[i].autonomous = i;
+            v[i] = malloc(ws[i].total * sizeof *v[i]);
+            for (size_t l = 0; l < ws[i].total; l++) v[i][l] = l % 7 < 3 ? -1 : 1;
+        }
+        double t = 0;
+        for (int st = 0; st < 4; st++) {
+            const double dt0 = hj_ub_dense_dt(&ws[0], t, 10);
+            const long calls = row_calls;
+            const double dt1 = hj_ub_dense_dt(&ws[1], t, 10);
+            if (st > 0) assert_int_equal(row_calls, calls); /* the rate of step 0 */
+            assert_memory_equal(&dt0, &dt1, sizeof dt0);
+            assert_true(dt0 > 0);
+            for (int i = 0; i < 2; i++) assert_int_equal(hj_ub_dense_step(&ws[i], v[i], t, dt0, NULL), HJ_OK);
+            t += dt0;
+        }
+        assert_memory_equal(v[0], v[1], ws[0].total * sizeof *v[0]);
+        for (int i = 0; i < 2; i++) {
+            free(v[i]);
+            hj_ub_dense_free(&ws[i]);
+        }
+    }
+}
+
 static void bad_input(void **state)
 {
     (void)state;
@@ -190,6 +232,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(equals_fs_store),
         cmocka_unit_test(threads_bitwise),
+        cmocka_unit_test(autonomous_rate),
         cmocka_unit_test(bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
