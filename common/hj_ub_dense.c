@@ -381,6 +381,17 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
                 const char *nx = (const char *)ROW(i + 4);
                 for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(nx + j);
             }
+            /* and the row of the grid written two steps on: the
+             * intermediate grid, or the running minimum (and V for the
+             * last control) of the fused last sweep */
+            if (i + 2 < n) {
+                const size_t o = (base + (size_t)(i + 2) * stride) * (size_t)n + j0;
+                const char *wr = (const char *)(last ? (last->mode == 2 ? last->v : ws->vmin) + o : dst + o);
+                for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(wr + j, 1);
+                if (last && last->mode == 2 && !last->first)
+                    for (long j = 0; j < len * (long)sizeof(double); j += 64)
+                        __builtin_prefetch((const char *)(ws->vmin + o) + j);
+            }
             FILL(i + 1, fk);
             const size_t row = base + (size_t)i * stride;
             double *out = last ? last_row_in(ws, b) : dst + row * (size_t)n + j0;
