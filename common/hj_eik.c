@@ -380,7 +380,10 @@ static inline int add_term(const eik_work *w, int o, double T0, const double *x,
     return side;
 }
 
-/* New tau at padded node k (coordinates x) with the scheme of `order`.
+/* New tau at padded node k (padded index ip, coordinates x) with the
+ * scheme of `order` in sweep orientation sw.  A higher order term
+ * relaxed downwind (see the head of this file) keeps at least half the
+ * plain slope: near a source p can cancel most of T0 c / h.
  * A higher order value is clamped to within f h (in T) of the first order
  * update of the same stencil: on smooth data the two differ by O(h^2), so
  * the clamp only acts where WENO's extrapolations go wild (kinks, corners
