@@ -168,8 +168,9 @@ typedef struct {
     int nsrc;
     double eps3, eps5[3];
     double lock_tol; /* a change below this (in T) does not unlock neighbours */
-    int relax_lin;   /* 1 after demote_cycling: downwind relaxation limited to
-                      * that of the linear weights */
+    int relax;       /* downwind relaxation: 2 full, 1 no stronger than
+                      * with the linear weights (after demote_cycling),
+                      * 0 none (an order 3 iteration that stalled) */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -446,12 +447,12 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
              * flow (left side: forwards), so the downwind neighbours
              * still hold the previous sweep's values */
             const long id = ip[d] - w->G[d];
-            if (w->relax_lin) { /* no stronger than with the linear weights */
+            if (w->relax == 1) { /* no stronger than with the linear weights */
                 const double cl = ord == 5 ? 47.0 / 60 : 5.0 / 6;
                 cm = cm < cl ? cl : cm;
                 cp = cp < cl ? cl : cp;
             }
-            const int inner = id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
+            const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
              * along d); a later neighbour's side has a small a near a
@@ -1175,6 +1176,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
             }
+    w.relax = 2;
     w.eps3 = 1e-6;
     for (int d = 0; d < w.dim; d++) w.eps5[d] = 1e-6 * (w.h[d] / Lmax) * (w.h[d] / Lmax);
     w.lock_tol = 0; /* exact locking for the first order phase */
@@ -1266,15 +1268,21 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
              * STALL_SPAN iterations not below STALL_RATIO times that of
              * the block before): the nodes that still move use WENO3 */
             if (change > blk[1]) blk[1] = change;
-            if (w.chg && ++nblk == STALL_SPAN) {
+            if (++nblk == STALL_SPAN) {
                 /* a plateau at rounding level (below 1e-12 of the
                  * scale: a tolerance too small to reach) is no cycle */
-                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale &&
-                    demoted < STALL_ROUNDS) {
+                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
+                if (stall && w.chg && demoted < STALL_ROUNDS) {
                     demote_cycling(&w, change, q);
-                    w.relax_lin = 1;
+                    w.relax = 1;
                     demoted++;
                     blk[1] = 0; /* the next block starts afresh */
+                } else if (stall && !w.chg && w.relax) {
+                    /* order 3: the plain update from here on (the wall
+                     * of eik_convergence at N = 40: changes of 3.5e-12
+                     * of the scale for 1000 iterations with it) */
+                    w.relax = 0;
+                    blk[1] = 0;
                 }
                 blk[0] = blk[1];
                 blk[1] = 0;
