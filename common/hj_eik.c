@@ -44,7 +44,7 @@
  * corrects a smooth error (the node's own weight in h D^- is 1/2 for
  * WENO3 with its linear weights); such errors were carried out of the
  * grid a few nodes per sweep and the iteration count grew with N (2-D,
- * point source, order 3: 24, 30, 40, 56, 95 iterations for N = 40 ...
+ * point source, order 3: 24, 30, 40, 56, 94 iterations for N = 40 ...
  * 640; order 5: 32 ... 114).  Where the sweep runs along dimension d in
  * the direction of the side's flow, the downwind nodes come after the
  * node in that sweep and will move about as much as it does, so the
@@ -56,8 +56,9 @@
  * solution is the same.  In 1-D with the linear weights this bounds the
  * amplification of such a sweep by 1/2 (WENO3) and 2/3 (WENO5) at every
  * wave number, where it was 1 for smooth errors; the iteration count
- * then stays flat in N (23-26 at order 3, 30-40 at order 5 for N = 40
- * ... 640).  In the sweeps against the flow the downwind nodes are
+ * then stays about flat in N in 2-D (23-27 at order 3, 30-43 at order
+ * 5, N = 40 ... 640; in 3-D it still grows, more slowly: order 3 13-23
+ * for N = 20 ... 160, 14-31 before).  In the sweeps against the flow the downwind nodes are
  * already new and the plain slope is kept: the relaxed slope there
  * amplifies short waves (1-D WENO5: by 3.6 per sweep) and the WENO5
  * iteration cycled.  Stencils reaching the ghost layers keep it too (the
