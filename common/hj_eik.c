@@ -38,6 +38,44 @@
  * godunov_max), so that the update does not jump when the neighbours'
  * order flips.
  *
+ * Downwind relaxation.  The WENO stencil of D^- tau at node i reaches
+ * the downwind nodes i+1 (WENO3) and i+1, i+2 (WENO5).  A Gauss-Seidel
+ * update that moves the node alone against a held stencil only half
+ * corrects a smooth error (the node's own weight in h D^- is 1/2 for
+ * WENO3 with its linear weights); such errors were carried out of the
+ * grid a few nodes per sweep and the iteration count grew with N (2-D,
+ * point source, order 3: 24, 30, 40, 56, 94 iterations for N = 40 ...
+ * 640; order 5: 32 ... 114).  Where the sweep runs along dimension d in
+ * the direction of the side's flow, the downwind nodes come after the
+ * node in that sweep and will move about as much as it does, so the
+ * term is linearised with the node and its downwind nodes moving
+ * together: slope T0 c / h + p instead of T0 / h + p, c the own plus
+ * downwind coefficient of h D^- with the weights held (0.5 + w for
+ * WENO3, 5/6 with the linear weights; 47/60 for WENO5), right-hand side
+ * such that the term is unchanged at the current tau, so the converged
+ * solution is the same.  In 1-D with the linear weights this bounds the
+ * amplification of such a sweep by 1/2 (WENO3) and 2/3 (WENO5) at every
+ * wave number, where it was 1 for smooth errors; the iteration count
+ * then stays about flat in N in 2-D (23-27 at order 3, 30-43 at order
+ * 5, N = 40 ... 640; in 3-D it still grows, more slowly: order 3 13-23
+ * for N = 20 ... 160, 14-31 before).  In the sweeps against the flow the downwind nodes are
+ * already new and the plain slope is kept: the relaxed slope there
+ * amplifies short waves (1-D WENO5: by 3.6 per sweep) and the WENO5
+ * iteration cycled.  Stencils reaching the ghost layers keep it too (the
+ * ghost values are extrapolations of the node itself): relaxed there,
+ * the order 3 iteration slowed to a factor 0.66 per iteration at the
+ * outflow boundary.  The weights' c, not the linear weights' constant,
+ * is what keeps order 3 converging on maps whose speed varies by a
+ * large factor over a few cells (with the constant the 40 x 40 map below
+ * did not converge in 1000 iterations): where a stencil is not smooth
+ * the weights lean upwind and c > 1 damps the update.  Once the WENO5
+ * iteration has been found cycling (demote_cycling), c is kept at least
+ * at the linear weights' value: the weights swing there, and a stronger
+ * relaxation made that map take 137 iterations instead of 72 (79 so).
+ * An order 3 iteration that stops converging by the same test drops the
+ * relaxation (the wall of eik_convergence at N = 40 stalled at changes
+ * of 3.5e-12 of the scale with it).
+ *
  * The sweeps.  Each of the 2^dim sweeps visits the nodes in blocks taken
  * by hyperplanes I + J (+ K) = const of block indices in the sweep's
  * orientation (Detrixhe, Gibou & Min 2013, with blocks for nodes), the
@@ -134,6 +172,9 @@ typedef struct {
     int nsrc;
     double eps3, eps5[3];
     double lock_tol; /* a change below this (in T) does not unlock neighbours */
+    int relax;       /* downwind relaxation: 2 full, 1 no stronger than
+                      * with the linear weights (after demote_cycling),
+                      * 0 none (an order 3 iteration that stalled) */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -182,8 +223,10 @@ static inline double tau_in(const eik_work *w, int o, long nb, const double *x)
 /* ---- one-sided WENO derivatives, as extrapolated neighbour values ----- */
 
 /* WENO3 (Zhang, Zhao & Qian 2006): v[0..4] = tau at i-2..i+2; *hm = h D^-,
- * *hp = h D^+ (undivided). */
-static inline void weno3(const double *v, double eps, double *hm, double *hp)
+ * *hp = h D^+ (undivided).  *cm, *cp: how much hm and -hp grow when the
+ * node and its downwind neighbours (i..i+2 for hm, i-2..i for hp) all
+ * move by 1, the weights held (see local_update). */
+static inline void weno3(const double *v, double eps, double *hm, double *hp, double *cm, double *cp)
 {
     const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
     const double den = eps + dc * dc;
@@ -192,33 +235,41 @@ static inline void weno3(const double *v, double eps, double *hm, double *hp)
     const double cen = 0.5 * (v[3] - v[1]);
     *hm = (1 - wm) * cen + wm * 0.5 * (3 * v[2] - 4 * v[1] + v[0]);
     *hp = (1 - wp) * cen + wp * 0.5 * (-3 * v[2] + 4 * v[3] - v[4]);
+    *cm = 0.5 + wm;
+    *cp = 0.5 + wp;
 }
 
-/* WENO5 of Jiang & Peng on the undivided differences d1..d5. */
-static inline double weno5_one(double d1, double d2, double d3, double d4, double d5, double eps)
+/* WENO5 of Jiang & Peng on the undivided differences d1..d5; *c: the
+ * derivative of the result in d3 with the weights held. */
+static inline double weno5_one(double d1, double d2, double d3, double d4, double d5, double eps, double *c)
 {
     const double p1 = d1 / 3 - 7 * d2 / 6 + 11 * d3 / 6;
     const double p2 = -d2 / 6 + 5 * d3 / 6 + d4 / 3;
     const double p3 = d3 / 3 + 5 * d4 / 6 - d5 / 6;
     const double a = d1 - 2 * d2 + d3, b = d1 - 4 * d2 + 3 * d3;
-    const double c = d2 - 2 * d3 + d4, e = d2 - d4;
+    const double cc = d2 - 2 * d3 + d4, e = d2 - d4;
     const double f = d3 - 2 * d4 + d5, g = 3 * d3 - 4 * d4 + d5;
     const double s1 = 13.0 / 12 * a * a + 0.25 * b * b;
-    const double s2 = 13.0 / 12 * c * c + 0.25 * e * e;
+    const double s2 = 13.0 / 12 * cc * cc + 0.25 * e * e;
     const double s3 = 13.0 / 12 * f * f + 0.25 * g * g;
     const double a1 = 0.1 / ((eps + s1) * (eps + s1));
     const double a2 = 0.6 / ((eps + s2) * (eps + s2));
     const double a3 = 0.3 / ((eps + s3) * (eps + s3));
-    return (a1 * p1 + a2 * p2 + a3 * p3) / (a1 + a2 + a3);
+    const double as = a1 + a2 + a3;
+    *c = (11.0 / 6 * a1 + 5.0 / 6 * a2 + a3 / 3) / as;
+    return (a1 * p1 + a2 * p2 + a3 * p3) / as;
 }
 
-/* v[0..6] = tau at i-3..i+3 (Jiang & Peng 2000, as in Xiong et al. 2010). */
-static inline void weno5(const double *v, double eps, double *hm, double *hp)
+/* v[0..6] = tau at i-3..i+3 (Jiang & Peng 2000, as in Xiong et al. 2010);
+ * *cm, *cp as in weno3: moving the node and its downwind neighbours by 1
+ * moves only the difference v[3] - v[2] (hp: v[4] - v[3]), the third
+ * argument of weno5_one. */
+static inline void weno5(const double *v, double eps, double *hm, double *hp, double *cm, double *cp)
 {
     const double d0 = v[1] - v[0], d1 = v[2] - v[1], d2 = v[3] - v[2];
     const double d3 = v[4] - v[3], d4 = v[5] - v[4], d5 = v[6] - v[5];
-    *hm = weno5_one(d0, d1, d2, d3, d4, eps);
-    *hp = weno5_one(d5, d4, d3, d2, d1, eps);
+    *hm = weno5_one(d0, d1, d2, d3, d4, eps, cm);
+    *hp = weno5_one(d5, d4, d3, d2, d1, eps, cp);
 }
 
 /* ---- the local Godunov solve ------------------------------------------- */
@@ -343,13 +394,16 @@ static inline int add_term(const eik_work *w, int o, double T0, const double *x,
     return side;
 }
 
-/* New tau at padded node k (coordinates x) with the scheme of `order`.
+/* New tau at padded node k (padded index ip, coordinates x) with the
+ * scheme of `order` in sweep orientation sw.  A higher order term
+ * relaxed downwind (see the head of this file) keeps at least half the
+ * plain slope: near a source p can cancel most of T0 c / h.
  * A higher order value is clamped to within f h (in T) of the first order
  * update of the same stencil: on smooth data the two differ by O(h^2), so
  * the clamp only acts where WENO's extrapolations go wild (kinks, corners
  * next to obstacles) and keeps the iteration from running away there; a
  * clamp rather than a switch keeps the update continuous. */
-static double local_update(const eik_work *w, long k, const double *x, int order)
+static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw)
 {
     const int o = w->own[k];
     const double T0 = w->T0[k];
@@ -386,22 +440,36 @@ static double local_update(const eik_work *w, long k, const double *x, int order
             ord = 3;
         }
         if (ok) {
-            double hm, hp;
-            if (ord == 5) weno5(v, w->eps5[d], &hm, &hp);
-            else weno3(v, w->eps3, &hm, &hp);
+            double hm, hp, cm, cp;
+            if (ord == 5) weno5(v, w->eps5[d], &hm, &hp, &cm, &cp);
+            else weno3(v, w->eps3, &hm, &hp, &cm, &cp);
             const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
-            const double nl = w->tau[k] - hm, nr = w->tau[k] + hp, Tk = T0 * w->tau[k];
+            const double tk = w->tau[k], nl = tk - hm, nr = tk + hp, Tk = T0 * tk;
+            /* downwind moving along: the stencil lies inside the grid
+             * (ghost values are extrapolations of the node itself) and
+             * this sweep runs along d in the direction of the side's
+             * flow (left side: forwards), so the downwind neighbours
+             * still hold the previous sweep's values */
+            const long id = ip[d] - w->G[d];
+            if (w->relax == 1) { /* no stronger than with the linear weights */
+                const double cl = ord == 5 ? 47.0 / 60 : 5.0 / 6;
+                cm = cm < cl ? cl : cm;
+                cp = cp < cl ? cl : cp;
+            }
+            const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
              * along d); a later neighbour's side has a small a near a
              * source, and taking it let values run away there */
             if (T0 / h + p > 0 && (side == 0 || Tl1 < Tk)) {
-                al[d] = T0 / h + p;
-                bl[d] = T0 * nl / h;
+                const double A = T0 / h + p, Ac = T0 * cm / h + p;
+                al[d] = inner && fwd ? (Ac > 0.5 * A ? Ac : 0.5 * A) : A;
+                bl[d] = al[d] == A ? T0 * nl / h : al[d] * tk - (p * tk + T0 * hm / h);
             }
             if (T0 / h - p > 0 && (side == 1 || Tr1 < Tk)) {
-                ar[d] = T0 / h - p;
-                br[d] = T0 * nr / h;
+                const double A = T0 / h - p, Ac = T0 * cp / h - p;
+                ar[d] = inner && !fwd ? (Ac > 0.5 * A ? Ac : 0.5 * A) : A;
+                br[d] = ar[d] == A ? T0 * nr / h : ar[d] * tk + (p * tk + T0 * hp / h);
             }
             sd[d] = side;
             high = 1;
@@ -475,7 +543,7 @@ static inline int arrival_label(const eik_work *w, long k)
 }
 
 /* One node of a sweep; returns |change of T|. */
-static inline double visit(eik_work *w, const long ip[3], int order, int q, int first, size_t *nup)
+static inline double visit(eik_work *w, const long ip[3], int sw, int order, int q, int first, size_t *nup)
 {
     const long k = ip[0] * w->st[0] + ip[1] * w->st[1] + ip[2] * w->st[2];
     if (w->state[k] != ST_FREE && !(first && w->state[k] == ST_SRC)) return 0;
@@ -483,7 +551,7 @@ static inline double visit(eik_work *w, const long ip[3], int order, int q, int 
     double x[3];
     node_x(w, ip, x);
     const double old = w->tau[k];
-    double v = local_update(w, k, x, order);
+    double v = local_update(w, k, ip, x, order, sw);
     (*nup)++;
     if (first) {
         w->calc[k] = q;
@@ -523,7 +591,7 @@ static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], 
             for (long ii = i0; ii < i1; ii++) {
                 const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + w->G[0], (s1 ? n1 - 1 - jj : jj) + w->G[1],
                                     (s2 ? n2 - 1 - kk : kk) + w->G[2]};
-                const double c = visit(w, ip, order, q, first, nu);
+                const double c = visit(w, ip, s, order, q, first, nu);
                 if (c > change) change = c;
             }
     return change;
@@ -1112,6 +1180,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
             }
+    w.relax = 2;
     w.eps3 = 1e-6;
     for (int d = 0; d < w.dim; d++) w.eps5[d] = 1e-6 * (w.h[d] / Lmax) * (w.h[d] / Lmax);
     w.lock_tol = 0; /* exact locking for the first order phase */
@@ -1203,14 +1272,21 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
              * STALL_SPAN iterations not below STALL_RATIO times that of
              * the block before): the nodes that still move use WENO3 */
             if (change > blk[1]) blk[1] = change;
-            if (w.chg && ++nblk == STALL_SPAN) {
+            if (++nblk == STALL_SPAN) {
                 /* a plateau at rounding level (below 1e-12 of the
                  * scale: a tolerance too small to reach) is no cycle */
-                if (blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale &&
-                    demoted < STALL_ROUNDS) {
+                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
+                if (stall && w.chg && demoted < STALL_ROUNDS) {
                     demote_cycling(&w, change, q);
+                    w.relax = 1;
                     demoted++;
                     blk[1] = 0; /* the next block starts afresh */
+                } else if (stall && !w.chg && w.relax) {
+                    /* order 3: the plain update from here on (the wall
+                     * of eik_convergence at N = 40: changes of 3.5e-12
+                     * of the scale for 1000 iterations with it) */
+                    w.relax = 0;
+                    blk[1] = 0;
                 }
                 blk[0] = blk[1];
                 blk[1] = 0;

@@ -14,7 +14,9 @@
  *
  * Errors are the mean over the nodes (L1) and the maximum (Linf), over all
  * nodes and "away" from the source (|x - s| >= 0.25); iterations count the
- * first order start and the higher order sweeps (2^dim sweeps each).
+ * first order start and the higher order sweeps (2^dim sweeps each);
+ * solves are the local solves per node (hj_eik_stats.updates / nodes:
+ * locking skips the nodes whose stencil did not change).
  * Orders e = C h^p are fitted with Ceres (common/hj_fit.h) over the sizes
  * run; `make check` compares them with the design order (eik table of
  * paper1_fastsweeping/eik/).
@@ -42,6 +44,7 @@ typedef struct {
     long N;
     double h, l1, linf, l1a, linfa;
     long iter, fo_iter;
+    double solves; /* local solves per node (locking skips the others) */
     int converged;
 } row;
 
@@ -124,6 +127,7 @@ static int run(int cs, int dim, int order, long N, long Nref, double **ref_cache
     r->iter = st.iterations, r->fo_iter = st.fo_iterations, r->converged = st.converged;
     const hj_eik_grid g = {dim, {N + 1, N + 1, dim == 3 ? N + 1 : 1}, {-1, -1, -1}, {2.0 / N, 2.0 / N, 2.0 / N}};
     const size_t n = (size_t)(g.n[0] * g.n[1] * g.n[2]);
+    r->solves = (double)st.updates / (double)n;
     size_t cnt = 0, cnta = 0;
     const long m = cs == OBSTACLE ? Nref / N : 1;
     for (size_t u = 0; u < n; u++) {
@@ -205,11 +209,12 @@ int main(int argc, char **argv)
     hj_out tab, fit;
     if (hj_out_open(&tab, path, &err) != HJ_OK) hj_cli_fail(spec.prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(tab.fp, "# hj_eik convergence (paper1_fastsweeping/eik_convergence.c); away: |x - s| >= %g\n", AWAY);
-    fprintf(tab.fp, "case\tdim\torder\tN\th\tL1\tLinf\tL1_away\tLinf_away\titer\tfo_iter\tconverged\n");
+    fprintf(tab.fp, "case\tdim\torder\tN\th\tL1\tLinf\tL1_away\tLinf_away\titer\tfo_iter\tsolves\tconverged\n");
     for (int i = 0; i < nr; i++) {
         const row *r = &rows[i];
-        fprintf(tab.fp, "%s\t%d\t%d\t%ld\t%.6g\t%.3e\t%.3e\t%.3e\t%.3e\t%ld\t%ld\t%d\n", case_names[r->cs], r->dim,
-                r->order, r->N, r->h, r->l1, r->linf, r->l1a, r->linfa, r->iter, r->fo_iter, r->converged);
+        fprintf(tab.fp, "%s\t%d\t%d\t%ld\t%.6g\t%.3e\t%.3e\t%.3e\t%.3e\t%ld\t%ld\t%.1f\t%d\n", case_names[r->cs],
+                r->dim, r->order, r->N, r->h, r->l1, r->linf, r->l1a, r->linfa, r->iter, r->fo_iter, r->solves,
+                r->converged);
     }
     if (hj_out_open(&fit, fpath, &err) != HJ_OK) hj_cli_fail(spec.prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(fit.fp, "# fitted orders e = C h^p (Ceres, Huber loss, see common/hj_fit.h)\n");
