@@ -107,20 +107,21 @@ bench-ub: $(P3_BENCH)
 # long runs (REPRODUCE_BESIDE_LONG, the top Makefile) after paper 3's
 # long ones, the rest (REPRODUCE_BESIDE: every result the check and the
 # report read, paper 3's figures too) at the end, so that nothing is left
-# for one core after the pool.  Run times in CPU seconds (26 November
-# 2026, the cells without a published value left out: storage.c,
-# hjbstep.c): storage Table 1 about 450, Tables 11 and 12 321 and 313,
-# hjbstep about 130, storage Tables 3-4 about 60, Table 13 44, storage
-# Table 2 18, examples2d 26; the other papers' runs 5-70 s each.  The
+# for one core after the pool.  Run times in CPU seconds (user + system,
+# 26 November 2026, the cells without a published value left out:
+# storage.c, hjbstep.c): storage Table 1 442, Tables 11 and 12 about 230
+# and 200 (321 and 313 before the segment searches of hj_ub.c), hjbstep
+# 88, storage Tables 3-4 44, Table 13 about 35, examples2d 26, storage
+# Table 2 18; paper 2's longest 45-65 s, the other runs 5-50 s.  The
 # binaries are built first, two at a time, then the runs.
 # P3_EXTRA=1 (`make paper3 P3_EXTRA=1`) also runs the cells without a
 # published value that storage and hjbstep leave out as too costly
 # (--extra: FS and FLS at 800^3 and 200^4, Table 2's FS, LS and CRS, ...;
-# about 10 more CPU minutes).
+# about 14 more CPU minutes: 2116 s of paper 3 runs before, about 1200 after).
 P3_EXTRAFLAG := $(if $(filter 1,$(P3_EXTRA)),--extra)
 P3_RUNS_FIRST := $(P3_STORE1)
-P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_HJB) $(P3_STORE34)
-P3_RUNS_SHORT := $(P3_OUT)/table13.tsv $(P3_2D) $(P3_STORE2)
+P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_HJB)
+P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D) $(P3_STORE2)
 .PHONY: paper3-results
 paper3-results:
 	$(MAKE) --no-print-directory -j2 $(P3_BINS) $(HJTIME)
