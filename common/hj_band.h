@@ -69,14 +69,15 @@ int hj_band_size(const hj_band *s);
  * node is not stored.  Valid until the next insert or remove. */
 double *hj_band_find(hj_band *s, const int *idx);
 
-/* The m <= 3 nodes idx + k e_{d-1}, k = 0..m-1, consecutive along the
- * last index (idx[0..d-2] in 0..n-1; idx[d-1] may be -1): out[k] as
+/* The m nodes idx + k e_{d-1}, k = 0..m-1, consecutive along the last
+ * index (idx[0..d-2] in 0..n-1; idx[d-1] may be -1): out[k] as
  * hj_band_find would give it, NULL when not stored or outside the grid.
  * The list kinds (LS, CRS, SSD, SSDC) hold the m nodes next to each other
  * in one sorted list, and each list remembers the cell last found, inserted
  * or next to a removed one: the search starts there and walks forward or
  * backward (as LS always does), then steps along the run.  This is the
- * scheme's lookup (hj_ub.c), which visits the band in the store's order so
+ * scheme's lookup (hj_ub.c: one run per segment of the band and
+ * neighbouring line), which visits the band in the store's order so
  * that each neighbouring line is asked for nearby keys again and again;
  * hj_band_find keeps each structure's own search (Tables 1-2 time it).
  * Pointers valid until the next insert or remove. */

@@ -365,7 +365,7 @@ static int collect(const int *idx, double *v, void *vctx)
 }
 
 /* The 3^(d-1) offsets of the first d - 1 indices (the last index left 0):
- * Neigh(I) is walked as 3^(d-1) runs of 3 nodes along the last index, each
+ * Neigh(I) is walked as 3^(d-1) runs of nodes along the last index, each
  * run one search of the store (hj_band_find_run). */
 static int line_offsets(int d, int off[][HJ_BAND_DMAX])
 {
@@ -393,17 +393,16 @@ static size_t segment_end(const hj_ub_solver *sv, size_t i0, size_t m)
 }
 
 /* The store's pointers to nodes lo..hi (-1 <= lo, hi <= n - 1) of the line
- * of j (its first d - 1 indices): out[0 .. hi - lo], asked as runs of 3
- * (hj_band_find_run, the scheme's search). */
+ * of j (its first d - 1 indices): out[0 .. hi - lo], one run of the
+ * store's search (hj_band_find_run): one list and one walk per segment
+ * and neighbouring line instead of one per 3 nodes. */
 static void line_run(hj_ub_solver *sv, const int *j, int lo, int hi, double **out)
 {
     const int d = sv->pb->d;
     int q[HJ_BAND_DMAX];
     memcpy(q, j, (size_t)d * sizeof *q);
-    for (int s = lo; s <= hi; s += 3) {
-        q[d - 1] = s;
-        hj_band_find_run(sv->s, q, hi - s + 1 < 3 ? hi - s + 1 : 3, out + (s - lo));
-    }
+    q[d - 1] = lo;
+    hj_band_find_run(sv->s, q, hi - lo + 1, out);
 }
 
 /* D^{n+1/2} = D^n + Neigh(D^n); a new node takes the value of the first
@@ -411,8 +410,8 @@ static void line_run(hj_ub_solver *sv, const int *j, int lo, int hi, double **ou
  *
  * The band is walked in segments: nodes of one line with consecutive last
  * indices a..b.  Their neighbours on each of the 3^(d-1) lines are asked
- * of the store once per segment, as runs of 3 covering a-1..b+1 (a third
- * of the searches of one run per node).  A node absent then may have been
+ * of the store once per segment, as one run covering a-1..b+1 (one search
+ * per segment and line instead of one per node).  A node absent then may have been
  * inserted since by an earlier node: it is looked up again before its
  * insert, so that the inserts, their order and their values are those of
  * the node-by-node walk. */

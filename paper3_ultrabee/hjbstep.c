@@ -23,6 +23,14 @@ peak_MB is the process's peak resident memory so far (it only grows: at
 N = 1600 it still shows FLS at N = 800).  An extra column runs the same
 step on SSDA (contiguous arrays per line).
 
+**Cost.** The cells the paper has no value for (FLS at N = 800, the SSDA
+column) run only when predicted cheap: at most EXTRA_BUDGET CPU seconds
+for the steps (the last step time times the growth between the last two
+sizes, or 8), and FLS only while its 9 N^3 bytes stay under 1 GB; the
+others are listed in a comment line at the end of the table.  `--extra`
+(`make paper3 P3_EXTRA=1`) runs them all; so does `--sizes`.  Every
+published cell (FLS to N = 400, SSD to N = 1600) runs as before.
+
 **Parameters.** N = 50, 100, 200, 400, 800, 1600; `--quick`: 50, 100.
 
 **Output.** table5.tsv.
@@ -37,6 +45,7 @@ step on SSDA (contiguous arrays per line).
 #include "p3_prog.h"
 
 enum { STEPS = 3, NA = 11 };
+static const double EXTRA_BUDGET = 2.0; /* CPU seconds of STEPS steps (see the header) */
 
 
 static void dyn(double t, const double *x, int a, double *f, void *ctx)
@@ -72,7 +81,9 @@ static int run(hj_band_kind kind, int n, double *secs, size_t *d0, double *bytes
 
 int main(int argc, char **argv)
 {
-    p3_args a = {.prog = "hjbstep"};
+    p3_args a = {.prog = "hjbstep",
+                 .extra_help = "also run the cells without a published value that are predicted above 2 s (FLS at N = 800, "
+                               "SSDA from N = 400; minutes)"};
     p3_args_parse(&a, argc, argv, "Table 5: CPU time of one UB-HJB step, FLS against SSD.", NULL, 5, 5);
     static const long published[] = {50, 100, 200, 400, 800, 1600};
     const long *sizes = a.nsizes ? a.sizes : published;
@@ -85,16 +96,35 @@ int main(int argc, char **argv)
     fprintf(out.fp, "N\tD0\tFLS\tFLS_ratio\tSSD\tSSD_ratio\tSSD_over_FLS\tSSDA\tSSDA_over_FLS\tSSD_ns_node\tSSD_B_node\t"
                     "SSD_MB\tpeak_MB\n");
     double prev[2] = {NAN, NAN};
+    double last[3][2] = {{NAN, NAN}, {NAN, NAN}, {NAN, NAN}}; /* the last two step times of each store */
+    int stopped[3] = {0, 0, 0};
+    char skipped[256] = "";
     for (int i = 0; i < ns; i++) {
         if (a.max_n && sizes[i] > a.max_n) continue;
         static const hj_band_kind kinds[3] = {HJ_BAND_FLS, HJ_BAND_SSD, HJ_BAND_SSDA};
         double t[3] = {NAN, NAN, NAN}, bytes[3] = {NAN, NAN, NAN}, nodes[3] = {NAN, NAN, NAN};
         size_t d0 = 0;
         for (int k = 0; k < 3; k++) {
+            /* the paper's values: FLS to N = 400, SSD at every size, SSDA none */
+            const int pub = a.extra || a.nsizes || k == 1 || (k == 0 && sizes[i] <= 400);
+            if (!pub && !stopped[k]) {
+                const double growth = last[k][0] > 0 ? last[k][1] / last[k][0] : 8;
+                const double n3 = (double)sizes[i] * (double)sizes[i] * (double)sizes[i];
+                stopped[k] = (k == 0 && 9 * n3 > 1e9) ||
+                             (!isnan(last[k][1]) && STEPS * last[k][1] * (growth > 2 ? growth : 2) > EXTRA_BUDGET);
+                if (stopped[k]) {
+                    const size_t len = strlen(skipped);
+                    snprintf(skipped + len, sizeof skipped - len, "%s%s N>=%ld", len ? ", " : "", hj_band_kind_name(kinds[k]),
+                             sizes[i]);
+                }
+            }
+            if (!pub && stopped[k]) continue;
             hj_progress("table5 N=%ld %s ...\n", sizes[i], hj_band_kind_name(kinds[k]));
             const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &bytes[k], &nodes[k], &err);
             if (rc == HJ_ENOMEM) { t[k] = NAN; continue; }
             if (rc) { hj_out_abort(&out); p3_die(a.prog, &err); }
+            last[k][0] = last[k][1];
+            last[k][1] = t[k];
         }
         char b[11][32];
         fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
@@ -105,6 +135,9 @@ int main(int argc, char **argv)
         prev[0] = t[0];
         prev[1] = t[1];
     }
+    if (skipped[0])
+        fprintf(out.fp, "# not run, no published value and predicted above %g s of CPU or FLS above 1 GB "
+                        "(hjbstep --extra, make paper3 P3_EXTRA=1 runs them): %s\n", EXTRA_BUDGET, skipped);
     if (hj_out_commit(&out, &err)) p3_die(a.prog, &err);
     return 0;
 }

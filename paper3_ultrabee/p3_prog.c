@@ -17,6 +17,7 @@ void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const
     a->nsizes = 0;
     a->max_n = 0;
     a->ntables = 0;
+    a->extra = 0;
     hj_cli_opt opts[] = {
         {.name = "--quick", .type = HJ_OPT_FLAG, .value = &a->quick, .help = "reduced sizes (CI)"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &a->out_dir, .metavar = "DIR",
@@ -29,8 +30,10 @@ void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const
         {.name = "--tables", .type = HJ_OPT_LONG_LIST, .value = a->tables, .min = (double)first_table,
          .max = (double)last_table, .metavar = "T,T,...", .help = "only these tables (numbers)", .count = &a->ntables,
          .maxn = P3_MAX_SIZES, .dflt = "all"},
+        {.name = "--extra", .type = HJ_OPT_FLAG, .value = &a->extra, .help = a->extra_help},
     };
-    hj_cli_spec spec = {a->prog, summary, opts, (int)(sizeof opts / sizeof opts[0]), extra};
+    const int nopts = (int)(sizeof opts / sizeof opts[0]) - (a->extra_help == NULL); /* --extra is last */
+    hj_cli_spec spec = {a->prog, summary, opts, nopts, extra};
     hj_cli_parse_or_exit(&spec, argc, argv);
     if (a->quick && a->nsizes) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "give --quick or --sizes, not both");
 }

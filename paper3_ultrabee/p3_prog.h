@@ -1,5 +1,5 @@
 /* p3_prog.h -- what the paper-3 programs share: the command line
- * (--help, --quick, --out-dir, --sizes, --max-n, --tables), the closed
+ * (--help, --quick, --out-dir, --sizes, --max-n, --tables, --extra), the closed
  * sets of the examples and the output tables (CPU time and peak memory
  * come from hj_sys.h).  p3_args_parse() and p3_die() are for main()
  * only (they print and exit, as hj_cli_fail does); the rest returns codes. */
@@ -35,6 +35,8 @@ typedef struct {
     long max_n;               /* --max-n: skip the sizes above it (0: none) */
     long tables[P3_MAX_SIZES]; /* --tables: only these table numbers (none: all) */
     int ntables;
+    int extra;                /* --extra: also the cells the paper has no value for, whatever their cost */
+    const char *extra_help;   /* set before parsing: the program offers --extra (NULL: not) */
 } p3_args;
 
 /* Whether table number t was asked for (all when --tables is absent). */

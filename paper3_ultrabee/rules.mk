@@ -54,16 +54,16 @@ P3_STORE2 := $(P3_OUT)/table2.tsv
 P3_STORE34 := $(P3_OUT)/table3.tsv $(P3_OUT)/table4.tsv
 $(P3_STORE1) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(call hj_timed,$(P3_OUT),storage.table1) $< $(QUICKFLAG) --tables 1 --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table1) $< $(QUICKFLAG) $(P3_EXTRAFLAG) --tables 1 --out-dir $(P3_OUT)
 $(P3_STORE2): $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(call hj_timed,$(P3_OUT),storage.table2) $< $(QUICKFLAG) --tables 2 --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table2) $< $(QUICKFLAG) $(P3_EXTRAFLAG) --tables 2 --out-dir $(P3_OUT)
 $(P3_STORE34) &: $(BUILD)/bin/$(P3)/storage | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(call hj_timed,$(P3_OUT),storage.table3-4) $< $(QUICKFLAG) --tables 3,4 --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),storage.table3-4) $< $(QUICKFLAG) $(P3_EXTRAFLAG) --tables 3,4 --out-dir $(P3_OUT)
 $(P3_HJB): $(BUILD)/bin/$(P3)/hjbstep | $(HJTIME)
 	@mkdir -p $(P3_OUT)
-	$(call hj_timed,$(P3_OUT),hjbstep) $< $(QUICKFLAG) --out-dir $(P3_OUT)
+	$(call hj_timed,$(P3_OUT),hjbstep) $< $(QUICKFLAG) $(P3_EXTRAFLAG) --out-dir $(P3_OUT)
 
 # Figures 5-9 (gnuplot, plot/figNN.gp): drawn from the data the programs
 # write during their table runs (storage: fig05_fronts.dat; examples2d:
@@ -104,22 +104,29 @@ bench-ub: $(P3_BENCH)
 # the runs in order of decreasing run time, so that each core takes the
 # next run as soon as it is free (longest first keeps the last run short).
 # `make reproduce` adds the other papers' results to the same pool: their
-# long runs (REPRODUCE_BESIDE_LONG, the top Makefile) among paper 3's
-# long ones, the rest (REPRODUCE_BESIDE) at the end.  Run times in CPU
-# seconds (measured 26 November 2026 on a loaded machine for storage; the
-# others from the 23-24 November runs, README "Numbers and
-# reproducibility"): storage Table 1 702, the ToolboxLS comparison ~720,
-# Tables 11 and 12 441 and 363, storage Table 2 288, hjbstep 259, storage
-# Tables 3-4 174, Table 13 47, examples2d 31.  The binaries are built
-# first, then the runs.
+# long runs (REPRODUCE_BESIDE_LONG, the top Makefile) after paper 3's
+# long ones, the rest (REPRODUCE_BESIDE: every result the check and the
+# report read, paper 3's figures too) at the end, so that nothing is left
+# for one core after the pool.  Run times in CPU seconds (user + system,
+# 26 November 2026, the cells without a published value left out:
+# storage.c, hjbstep.c): storage Table 1 442, Tables 11 and 12 about 230
+# and 200 (321 and 313 before the segment searches of hj_ub.c), hjbstep
+# 88, storage Tables 3-4 44, Table 13 about 35, examples2d 26, storage
+# Table 2 18; paper 2's longest 45-65 s, the other runs 5-50 s.  The
+# binaries are built first, two at a time, then the runs.
+# P3_EXTRA=1 (`make paper3 P3_EXTRA=1`) also runs the cells without a
+# published value that storage and hjbstep leave out as too costly
+# (--extra: FS and FLS at 800^3 and 200^4, Table 2's FS, LS and CRS, ...;
+# about 14 more CPU minutes: 2116 s of paper 3 runs before, about 1200 after).
+P3_EXTRAFLAG := $(if $(filter 1,$(P3_EXTRA)),--extra)
 P3_RUNS_FIRST := $(P3_STORE1)
-P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_STORE2) $(P3_HJB)
-P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D)
+P3_RUNS_LONG := $(P3_OUT)/table11.tsv $(P3_OUT)/table12.tsv $(P3_HJB)
+P3_RUNS_SHORT := $(P3_STORE34) $(P3_OUT)/table13.tsv $(P3_2D) $(P3_STORE2)
 .PHONY: paper3-results
 paper3-results:
-	$(MAKE) --no-print-directory $(P3_BINS) $(HJTIME)
-	$(MAKE) --no-print-directory -j2 $(P3_RUNS_FIRST) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
-	    $(P3_RUNS_LONG) $(P3_RUNS_SHORT) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
+	$(MAKE) --no-print-directory -j2 $(P3_BINS) $(HJTIME)
+	$(MAKE) --no-print-directory -j2 $(P3_RUNS_FIRST) $(P3_RUNS_LONG) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE_LONG)) \
+	    $(P3_RUNS_SHORT) $(P3_FIGS) $(if $(REPRODUCE_BESIDE_ON),$(REPRODUCE_BESIDE))
 	$(MAKE) --no-print-directory $(P3_FIGS)
 REPRODUCE_FIRST += paper3-results
 paper3:

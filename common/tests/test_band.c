@@ -132,7 +132,8 @@ static void out_of_memory_and_bad_args(void **state)
 }
 
 /* hj_band_find_run gives what hj_band_find gives, node by node, for
- * every kind, every start (including -1 and runs leaving the grid), with
+ * every kind, every start (including -1 and runs leaving the grid), runs
+ * of 1 to n + 2 nodes (a whole segment of the scheme and beyond), with
  * searches interleaved with inserts and removes in random order. */
 static void find_run_equals_find(void **state)
 {
@@ -151,8 +152,8 @@ static void find_run_equals_find(void **state)
                 else if (op == 1) hj_band_remove(s, idx);
                 else {
                     idx[d - 1] = (int)(rnd(&seed) % (unsigned)(n + 1)) - 1; /* -1 .. n-1 */
-                    const int m = 1 + (int)(rnd(&seed) % 3);
-                    double *run[3];
+                    const int m = 1 + (int)(rnd(&seed) % (unsigned)(n + 2)); /* up to past the line's end */
+                    double *run[16];
                     hj_band_find_run(s, idx, m, run);
                     for (int k = 0; k < m; k++) {
                         int j[HJ_BAND_DMAX];
