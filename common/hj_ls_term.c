@@ -597,8 +597,9 @@ static long first_nonfinite(const double *v, long bad)
 static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, long n, long j0, long j1,
                                                                   const double *restrict A, const double *restrict DL,
                                                                   const double *restrict DR, size_t ds_stride,
-                                                                  const double *restrict H, const double *h, int clip,
-                                                                  double *restrict out, double *mp, double *nfp)
+                                                                  const double *restrict H, const double *hinv,
+                                                                  int clip, double *restrict out, double *restrict SP,
+                                                                  double *mp, double *nfp)
 {
     double m = *mp, nf = *nfp;
     SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
@@ -609,12 +610,13 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
             const size_t q = (size_t)d * ds_stride + (size_t)j;
             nf += Aj - Aj;
             ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
-            s += a / h[d];
+            s += a * hinv[d];
         }
         nf += H[j] - H[j];
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
         out[j] = v;
+        SP[j] = s;
         m = s > m ? s : m;
     }
     *mp = m, *nfp = nf;
@@ -622,37 +624,56 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
 
 /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
  * scalar remainder (recomputing a node gives the same bits; max and the
- * finiteness sum do not change). */
+ * finiteness sum do not change).
+ *
+ * The CFL sum s = sum_d |alpha_d| / dx_d is wanted only at the row's
+ * largest: the vector loop forms it with multiplications by 1 / dx_d (SP,
+ * within (dim + 2) 2^-53 relative of s, all terms being >= 0), and s
+ * itself, with its divisions and bits, is computed at the nodes whose SP
+ * lies within 1e-12 relative of the row's largest SP, which hold the
+ * largest s: three vector divisions per node were a third of the row's
+ * end. */
 static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, long n, const double *restrict A,
                                                            const double *restrict DL, const double *restrict DR,
                                                            size_t ds_stride, const double *restrict H,
                                                            const double *dx, int clip, double *restrict out,
-                                                           double *inv)
+                                                           double *restrict SP, double *inv)
 {
-    double h[HJ_LS_MAXDIM];
-    for (int d = 0; d < dim; d++) h[d] = dx[d];
-    double m = 0, nf = 0;
+    double hinv[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
+    double mp = 0, nf = 0;
     const long n8 = n & ~7L;
-    lf_finish_range(diffs, dim, n, 0, n8, A, DL, DR, ds_stride, H, h, clip, out, &m, &nf);
-    if (n8 < n && n >= 8) lf_finish_range(diffs, dim, n, n - 8, n, A, DL, DR, ds_stride, H, h, clip, out, &m, &nf);
-    else if (n8 < n) lf_finish_range(diffs, dim, n, n8, n, A, DL, DR, ds_stride, H, h, clip, out, &m, &nf);
+    lf_finish_range(diffs, dim, n, 0, n8, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    if (n8 < n && n >= 8)
+        lf_finish_range(diffs, dim, n, n - 8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    else if (n8 < n)
+        lf_finish_range(diffs, dim, n, n8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    const double thr = mp * (1 - 1e-12);
+    double m = 0;
+    for (long j = 0; j < n; j++)
+        if (SP[j] >= thr) {
+            double s = 0.0;
+            for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)j]) / dx[d];
+            m = s > m ? s : m;
+        }
     *inv = m;
     return nf != 0;
 }
 
 HJ_LS_TERM_CLONES
 static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
-                         size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *inv)
+                         size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
+                         double *inv)
 {
     if (diffs) switch (dim) {
-        case 2: return lf_finish(1, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
-        case 3: return lf_finish(1, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
-        default: return lf_finish(1, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
+        case 2: return lf_finish(1, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+        case 3: return lf_finish(1, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+        default: return lf_finish(1, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
         }
     switch (dim) {
-    case 2: return lf_finish(0, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
-    case 3: return lf_finish(0, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
-    default: return lf_finish(0, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, inv);
+    case 2: return lf_finish(0, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+    case 3: return lf_finish(0, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+    default: return lf_finish(0, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
     }
 }
 
@@ -785,7 +806,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     }
     double m;
     double *out = ydot + rc->k;
-    if (lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, &m)) {
+    if (lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, ring + 6 * (size_t)n, &m)) {
         /* the first node of the row with a non-finite alpha or H */
         long badj = n;
         for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
@@ -859,7 +880,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 7) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
+    int rc = for_rows(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 8) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
                       "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
