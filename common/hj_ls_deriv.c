@@ -53,7 +53,7 @@ static void first_differences(const double *restrict p, ptrdiff_t s, long n, dou
 
 /* Branch-free select c ? a : b on the bits (exact); gcc does not
  * if-convert the nested selections of ENO3 by itself. */
-static inline double sel(int c, double a, double b)
+static inline __attribute__((always_inline)) double sel(int c, double a, double b)
 {
     uint64_t ua, ub;
     memcpy(&ua, &a, sizeof ua);
@@ -85,7 +85,8 @@ void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx
 
 /* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
  * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
-static inline double weno5(double v1, double v2, double v3, double v4, double v5, double c1, double c2, double c3,
+static inline __attribute__((always_inline)) double weno5(double v1, double v2, double v3, double v4, double v5,
+                                                          double c1, double c2, double c3,
                            double epsg)
 {
     const double t1 = v1 - 2 * v2 + v3, u1 = v1 - 4 * v2 + 3 * v3;
@@ -115,7 +116,7 @@ static inline double weno5(double v1, double v2, double v3, double v4, double v5
 
 /* WENO3 from v1, v2, v3 (v1 farthest upwind): candidates -v1/2 + 3 v2/2
  * and (v2 + v3)/2, ideal weights 1/3 and 2/3, eps = 1e-6. */
-static inline double weno3(double v1, double v2, double v3)
+static inline __attribute__((always_inline)) double weno3(double v1, double v2, double v3)
 {
     const double eps = 1e-6, s1 = eps + (v2 - v1) * (v2 - v1), s2 = eps + (v3 - v2) * (v3 - v2);
     const double a1 = (1.0 / 3) / (s1 * s1), a2 = (2.0 / 3) / (s2 * s2);

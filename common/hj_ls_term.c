@@ -266,17 +266,20 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         }
         const double idx = 1 / g->dx[d];
-        const double *restrict vv = v, *restrict L = dl, *restrict R = dr;
+        /* the side of the upwind direction (WENO: dl holds it already) */
+        const double *restrict vv = v, *restrict L = dl, *restrict R = weno ? dl : dr;
         double *restrict ac = acc, *restrict cf = cfl;
         if (first) /* 0 - x and 0 + x: the bits of accumulating from zero */
             for (long j = 0; j < n; j++) {
-                const double D = weno ? L[j] : vv[j] > 0 ? L[j] : R[j];
+                const double l = L[j], r = R[j]; /* unconditional loads: vectorises */
+                const double D = vv[j] > 0 ? l : r;
                 ac[j] = 0.0 - vv[j] * D;
                 cf[j] = 0.0 + fabs(vv[j]) * idx;
             }
         else
             for (long j = 0; j < n; j++) {
-                const double D = weno ? L[j] : vv[j] > 0 ? L[j] : R[j];
+                const double l = L[j], r = R[j]; /* unconditional loads: vectorises */
+                const double D = vv[j] > 0 ? l : r;
                 ac[j] -= vv[j] * D;
                 cf[j] += fabs(vv[j]) * idx;
             }
@@ -648,7 +651,9 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, l
         lf_finish_range(diffs, dim, n, n - 8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
     else if (n8 < n)
         lf_finish_range(diffs, dim, n, n8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
-    const double thr = mp * (1 - 1e-12);
+    /* (far from underflow and overflow, where the bound holds; else every
+     * node exactly) */
+    const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
     double m = 0;
     for (long j = 0; j < n; j++)
         if (SP[j] >= thr) {
