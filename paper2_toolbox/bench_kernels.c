@@ -13,7 +13,10 @@ what the hardware could do:
 
 Per case: seconds with 1 and 2 threads and their ratio, node-stage updates
 per second (steps x RK stages x nodes / seconds), whether the 1- and
-2-thread states agree bit for bit, and a roofline line:
+2-thread states agree bit for bit, the CPU seconds of the best one-thread
+run (`cpu_s_1thread`: on a loaded machine wall time counts the waits for
+a core, CPU time much less, so before/after ratios are taken from it;
+`--threads 1` runs the one-thread figures only), and a roofline line:
 
 - bytes per node-stage: the compulsory traffic of the passes over the grid
   (a model, not a counter: this machine exposes no hardware counters):
