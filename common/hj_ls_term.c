@@ -266,23 +266,25 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         }
         const double idx = 1 / g->dx[d];
-        /* the side of the upwind direction (WENO: dl holds it already) */
+        /* the side of the upwind direction: WENO's dl holds it already,
+         * the cheap schemes' is selected here (unconditional loads, so
+         * that the loop vectorises) */
         const double *restrict vv = v, *restrict L = dl, *restrict R = weno ? dl : dr;
         double *restrict ac = acc, *restrict cf = cfl;
-        if (first) /* 0 - x and 0 + x: the bits of accumulating from zero */
-            for (long j = 0; j < n; j++) {
-                const double l = L[j], r = R[j]; /* unconditional loads: vectorises */
-                const double D = vv[j] > 0 ? l : r;
-                ac[j] = 0.0 - vv[j] * D;
-                cf[j] = 0.0 + fabs(vv[j]) * idx;
-            }
-        else
-            for (long j = 0; j < n; j++) {
-                const double l = L[j], r = R[j]; /* unconditional loads: vectorises */
-                const double D = vv[j] > 0 ? l : r;
-                ac[j] -= vv[j] * D;
-                cf[j] += fabs(vv[j]) * idx;
-            }
+#define CONV_ACC(OP0, OP1, SEL)                      \
+    for (long j = 0; j < n; j++) {                   \
+        const double l = L[j], r = R[j];             \
+        const double D = SEL;                        \
+        (void)r;                                     \
+        ac[j] = OP0 vv[j] * D;                       \
+        cf[j] = OP1 fabs(vv[j]) * idx;               \
+    }
+        /* first: 0 - x and 0 + x, the bits of accumulating from zero */
+        if (weno && first) CONV_ACC(0.0 -, 0.0 +, l)
+        else if (weno) CONV_ACC(ac[j] -, cf[j] +, l)
+        else if (first) CONV_ACC(0.0 -, 0.0 +, vv[j] > 0 ? l : r)
+        else CONV_ACC(ac[j] -, cf[j] +, vv[j] > 0 ? l : r)
+#undef CONV_ACC
         first = 0;
     }
     if (first)
