@@ -53,7 +53,7 @@ static void first_differences(const double *restrict p, ptrdiff_t s, long n, dou
 
 /* Branch-free select c ? a : b on the bits (exact); gcc does not
  * if-convert the nested selections of ENO3 by itself. */
-static inline double sel(int c, double a, double b)
+static inline __attribute__((always_inline)) double sel(int c, double a, double b)
 {
     uint64_t ua, ub;
     memcpy(&ua, &a, sizeof ua);
@@ -85,7 +85,8 @@ void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx
 
 /* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
  * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
-static inline double weno5(double v1, double v2, double v3, double v4, double v5, double c1, double c2, double c3,
+static inline __attribute__((always_inline)) double weno5(double v1, double v2, double v3, double v4, double v5,
+                                                          double c1, double c2, double c3,
                            double epsg)
 {
     const double t1 = v1 - 2 * v2 + v3, u1 = v1 - 4 * v2 + 3 * v3;
@@ -115,7 +116,7 @@ static inline double weno5(double v1, double v2, double v3, double v4, double v5
 
 /* WENO3 from v1, v2, v3 (v1 farthest upwind): candidates -v1/2 + 3 v2/2
  * and (v2 + v3)/2, ideal weights 1/3 and 2/3, eps = 1e-6. */
-static inline double weno3(double v1, double v2, double v3)
+static inline __attribute__((always_inline)) double weno3(double v1, double v2, double v3)
 {
     const double eps = 1e-6, s1 = eps + (v2 - v1) * (v2 - v1), s2 = eps + (v3 - v2) * (v3 - v2);
     const double a1 = (1.0 / 3) / (s1 * s1), a2 = (2.0 / 3) / (s2 * s2);
@@ -132,8 +133,7 @@ static inline double weno3(double v1, double v2, double v3)
  * the division by 3 so that the direct form can take the same decisions
  * bit for bit. */
 #define TABLE                                                                        \
-    const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], \
-                 p2 = D[5][i];                                                       \
+    const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5);  \
     const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), \
                  e2p1 = 0.5 * (p1 - z0), e2p2 = 0.5 * (p2 - p1);                     \
     const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20, f3p1 = e2p2 - e2p1;
@@ -158,37 +158,33 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
             for (long i = n8_; i < n; i++) __VA_ARGS__                                     \
     } while (0)
 
-HJ_LS_CLONES
-void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *restrict dl,
-                          double *restrict dr, double *w)
+/* The outputs of node i from its left and right derivatives L, R: L and
+ * R (mode 0), or the mean (L + R)/2 and the difference R - L (mode 1, as
+ * the Lax-Friedrichs term uses them: the same expressions). */
+#define STORE2(i, L, R)                          \
+    do {                                         \
+        const double l_ = (L), r_ = (R);         \
+        if (mode) {                              \
+            dl[i] = 0.5 * (l_ + r_);             \
+            dr[i] = r_ - l_;                     \
+        } else {                                 \
+            dl[i] = l_;                          \
+            dr[i] = r_;                          \
+        }                                        \
+    } while (0)
+
+/* The schemes that read the first differences only (ENO3, WENO5,
+ * WENO3): D[k][i] = D1_{i+k-3+1/2}, k = 0..5 (WENO3 reads 1..4). */
+static inline __attribute__((always_inline)) void upwind_diffs(int mode, int reg, int scheme, const double *const *D,
+                                                              const double *p, ptrdiff_t s, double inv, long n,
+                                                              double eps, double *restrict dl, double *restrict dr)
 {
-    const double *D[6];
-    for (int k = 0; k < 6; k++) D[k] = w + (size_t)k * (size_t)n;
+    /* D1_{i+k-3+1/2}: from the rows D (reg 0) or in registers from the
+     * values p along stride s (reg 1), the same expression as
+     * first_differences */
+#define DV(k) (reg ? (p[i + ((k) - 2) * s] - p[i + ((k) - 3) * s]) * inv : D[k][i])
     switch (scheme) {
-    case HJ_LS_UPWIND_FIRST: {
-        /* differences in registers, not through w (same expressions) */
-        const double inv = 1.0 / dx;
-        const double *restrict a = p - s, *restrict b = p + s;
-        ROWS({
-            dl[i] = (p[i] - a[i]) * inv;
-            dr[i] = (b[i] - p[i]) * inv;
-        });
-        break;
-    }
-    case HJ_LS_ENO2: {
-        const double inv = 1.0 / dx;
-        const double *restrict a = p - 2 * s, *restrict b = p - s, *restrict c = p + s, *restrict e = p + 2 * s;
-        ROWS({
-            const double m2 = (b[i] - a[i]) * inv, m1 = (p[i] - b[i]) * inv, z0 = (c[i] - p[i]) * inv,
-                         p1 = (e[i] - c[i]) * inv;
-            const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
-            dl[i] = m1 + AMIN(e2m1, e20);
-            dr[i] = z0 - AMIN(e20, e2p1);
-        });
-        break;
-    }
     case HJ_LS_ENO3A:
-        first_differences(p, s, n, dx, w, -3, 2);
         ROWS({
             TABLE
             /* all candidates, then branch-free selection (vectorises);
@@ -199,14 +195,12 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
             const double r2b = z0 - e2p1 + 2 * (f30 / 3), r1 = z0 - e2p1 + 2 * (f3p1 / 3);
             const double l1 = sel(fabs(f3m2) < fabs(f3m1), la, lb), l2 = sel(fabs(f3m1) < fabs(f30), lc, ld);
             const double q1 = sel(fabs(f3m1) < fabs(f30), r3, r2), q2 = sel(fabs(f30) < fabs(f3p1), r2b, r1);
-            dl[i] = sel(fabs(e2m1) < fabs(e20), l1, l2);
-            dr[i] = sel(fabs(e20) < fabs(e2p1), q1, q2);
+            STORE2(i, sel(fabs(e2m1) < fabs(e20), l1, l2), sel(fabs(e20) < fabs(e2p1), q1, q2));
         });
         break;
     case HJ_LS_ENO3B:
-        first_differences(p, s, n, dx, w, -3, 2);
         ROWS({
-            const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
+            const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5);
             /* Undivided differences of the v's: the same decisions as ENO3A. */
             const double u2m1 = m1 - m2, u20 = z0 - m1, u2p1 = p1 - z0;
             const double u3m2 = 0.5 * (m1 - m2) - 0.5 * (m2 - m3), u3m1 = 0.5 * u20 - 0.5 * u2m1;
@@ -215,42 +209,104 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
             const double d3 = PHI3(z0, m1, m2), d2 = PHI2(p1, z0, m1), d1 = PHI1(p2, p1, z0);
             const double l1 = sel(fabs(u3m2) < fabs(u3m1), c1, c2), l2 = sel(fabs(u3m1) < fabs(u30), c2, c3);
             const double q1 = sel(fabs(u3m1) < fabs(u30), d3, d2), q2 = sel(fabs(u30) < fabs(u3p1), d2, d1);
-            dl[i] = sel(fabs(u2m1) < fabs(u20), l1, l2);
-            dr[i] = sel(fabs(u20) < fabs(u2p1), q1, q2);
+            STORE2(i, sel(fabs(u2m1) < fabs(u20), l1, l2), sel(fabs(u20) < fabs(u2p1), q1, q2));
         });
         break;
     case HJ_LS_WENO5A:
-        first_differences(p, s, n, dx, w, -3, 2);
         ROWS({
             TABLE
             const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3), ld = m1 + e20 - f30 / 3;
             const double r1 = z0 - e2p1 + 2 * (f3p1 / 3), r2 = z0 - e2p1 + 2 * (f30 / 3), r3 = z0 - e20 - f3m1 / 3;
-            dl[i] = weno5(m3, m2, m1, z0, p1, la, lb, ld, eps);
-            dr[i] = weno5(p2, p1, z0, m1, m2, r1, r2, r3, eps);
+            STORE2(i, weno5(m3, m2, m1, z0, p1, la, lb, ld, eps), weno5(p2, p1, z0, m1, m2, r1, r2, r3, eps));
         });
         break;
     case HJ_LS_WENO5B:
-        first_differences(p, s, n, dx, w, -3, 2);
         ROWS({
-            const double m3 = D[0][i], m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i], p2 = D[5][i];
-            dl[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps);
-            dr[i] = weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps);
+            const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5);
+            STORE2(i, weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps), weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps));
         });
         break;
     case HJ_LS_WENO3:
-        first_differences(p, s, n, dx, w, -2, 1);
         ROWS({
-            const double m2 = D[1][i], m1 = D[2][i], z0 = D[3][i], p1 = D[4][i];
-            dl[i] = weno3(m2, m1, z0);
-            dr[i] = weno3(p1, z0, m1);
+            const double m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4);
+            STORE2(i, weno3(m2, m1, z0), weno3(p1, z0, m1));
         });
         break;
     default:
         break;
     }
 }
+#undef DV
+
+HJ_LS_CLONES
+void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double eps, int mean, double *restrict dl,
+                            double *restrict dr)
+{
+    if (mean) upwind_diffs(1, 0, scheme, D, NULL, 0, 0, n, eps, dl, dr);
+    else upwind_diffs(0, 0, scheme, D, NULL, 0, 0, n, eps, dl, dr);
+}
+
+/* Both one-sided derivatives of a row (mode 0: into dl, dr) or their
+ * mean and difference (mode 1: (D- + D+)/2 into dl, D+ - D- into dr). */
+static inline __attribute__((always_inline)) void upwind_row(int mode, int scheme, const double *p, ptrdiff_t s, long n,
+                                                            double dx, double eps, double *restrict dl,
+                                                            double *restrict dr, double *w)
+{
+    switch (scheme) {
+    case HJ_LS_UPWIND_FIRST: {
+        /* differences in registers, not through w (same expressions) */
+        const double inv = 1.0 / dx;
+        const double *restrict a = p - s, *restrict b = p + s;
+        ROWS({
+            STORE2(i, (p[i] - a[i]) * inv, (b[i] - p[i]) * inv);
+        });
+        return;
+    }
+    case HJ_LS_ENO2: {
+        const double inv = 1.0 / dx;
+        const double *restrict a = p - 2 * s, *restrict b = p - s, *restrict c = p + s, *restrict e = p + 2 * s;
+        ROWS({
+            const double m2 = (b[i] - a[i]) * inv, m1 = (p[i] - b[i]) * inv, z0 = (c[i] - p[i]) * inv,
+                         p1 = (e[i] - c[i]) * inv;
+            const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
+            STORE2(i, m1 + AMIN(e2m1, e20), z0 - AMIN(e20, e2p1));
+        });
+        return;
+    }
+    case HJ_LS_ENO3A: case HJ_LS_ENO3B: case HJ_LS_WENO5A: case HJ_LS_WENO5B: case HJ_LS_WENO3:
+        break;
+    default:
+        return;
+    }
+    const double *D[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
+    const double inv = 1.0 / dx;
+    if (s == 1) {
+        /* Along the row the six rows of differences are one row read at
+         * six offsets: D1_{i+k+1/2} is w[i + k + 3] (the same expression,
+         * computed once instead of six times). */
+        for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
+        for (int k = 0; k < 6; k++) D[k] = w + k;
+        upwind_diffs(mode, 0, scheme, D, p, s, inv, n, eps, dl, dr);
+    } else /* across rows: the differences in registers, not through w */
+        upwind_diffs(mode, 1, scheme, D, p, s, inv, n, eps, dl, dr);
+}
+
+HJ_LS_CLONES
+void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *restrict dl,
+                          double *restrict dr, double *w)
+{
+    upwind_row(0, scheme, p, s, n, dx, eps, dl, dr, w);
+}
+
+HJ_LS_CLONES
+void hj_ls_upwind_row_mean_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps,
+                               double *restrict mean, double *restrict diff, double *w)
+{
+    upwind_row(1, scheme, p, s, n, dx, eps, mean, diff, w);
+}
 
 #undef ROWS
+#undef STORE2
 
 void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v, double *out,
                              double *w)

@@ -81,6 +81,20 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
 void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *dl,
                           double *dr, double *w);
 
+/* The schemes computed from first differences only (ENO3A/B, WENO5A/B,
+ * WENO3), from D[k][i] = D1_{i+k-3+1/2} (k = 0..5; WENO3 reads 1..4) of
+ * n nodes: the same bits as hj_ls_upwind_row_eps, for callers that keep
+ * the differences from row to row (the rows along a dimension other than
+ * 0 share five of their six rows of differences with the previous row).
+ * Other schemes leave dl and dr untouched. */
+void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double eps, int mean, double *dl, double *dr);
+/* mean = 1 above, and hj_ls_upwind_row_mean_eps: instead of D- and D+,
+ * their mean (D- + D+)/2 into dl (mean) and their difference D+ - D- into
+ * dr (diff), computed as a caller would from D- and D+ (the same bits):
+ * what a Lax-Friedrichs term reads of them. */
+void hj_ls_upwind_row_mean_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *mean,
+                               double *diff, double *w);
+
 /* ToolboxLS's WENO5 epsilon along dimension d ('maxOverGrid' in
  * upwindFirstWENO5a): 1e-6 max (D1)^2 + 1e-99 over every first difference
  * along d of the interior rows extended by three ghost nodes at each end

@@ -226,6 +226,12 @@ static void fill_lines(double *p, ptrdiff_t s, long n, long m, double dx, const 
 
 void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a) { hj_ls_fill_ghosts_width(g, a, HJ_LS_GHOST); }
 
+/* Ghost nodes of one dimension below which its fill runs on one thread:
+ * a few tens of microseconds of work, about what waking a second thread
+ * costs on a loaded machine (each node is set independently: the same
+ * values either way). */
+#define HJ_LS_FILL_PARALLEL 32768
+
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 {
     width = width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
@@ -235,7 +241,7 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
         if (d == 0) {
             const size_t nlines = g->total / (size_t)g->ext[0];
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 32)
+#pragma omp parallel for schedule(dynamic, 32) if (nlines * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
 #endif
             for (size_t l = 0; l < nlines; l++)
                 fill_line(a + (size_t)HJ_LS_GHOST + l * (size_t)g->ext[0], 1, g->N[0], g->dx[0], &g->bc[0]);
@@ -246,7 +252,7 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
             const size_t inner = (size_t)g->stride[d], outer = g->total / (inner * (size_t)g->ext[d]);
             const size_t piece = 512, pieces = (inner + piece - 1) / piece;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (outer * inner * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
 #endif
             for (size_t q = 0; q < outer * pieces; q++) {
                 const size_t o = q / pieces, i0 = (q % pieces) * piece;

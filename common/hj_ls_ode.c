@@ -67,8 +67,10 @@ static int combine(const hj_ls_grid *g, double *dst, double a, const double *y, 
     int bad = 0;
     double m = 0;
     const long n = g->N[0];
+    /* A small grid on one thread: a streaming pass of microseconds costs
+     * less than waking another thread (the same values either way). */
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 32) reduction(| : bad) reduction(max : m)
+#pragma omp parallel for schedule(dynamic, 32) reduction(| : bad) reduction(max : m) if (g->nodes >= 65536)
 #endif
     for (size_t r = 0; r < g->rows; r++) {
         long idx[HJ_LS_MAXDIM];

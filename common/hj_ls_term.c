@@ -7,6 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 /* AVX-512 and AVX2 clones of the row loops where the CPU has them
  * (-std=c11 contracts no multiply-add: the bits are the SSE2 code's). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
@@ -34,6 +38,25 @@ typedef struct {
     int filled; /* the evaluator's per-thread constants are in ws */
 } row_ctx;
 
+/* The offset of row r's first node and its index in idx: one odometer
+ * step from row prev (offset kprev, index in idx) when r follows it, as
+ * inside a chunk of rows, else hj_ls_row's divisions. */
+static size_t row_next(const hj_ls_grid *g, size_t r, size_t prev, size_t kprev, long *idx)
+{
+    if (prev != (size_t)-1 && r == prev + 1) {
+        size_t k = kprev;
+        for (int d = 1; d < g->dim; d++) {
+            if (idx[d] + 1 < g->N[d]) {
+                idx[d]++;
+                return k + (size_t)g->stride[d];
+            }
+            k -= (size_t)(g->N[d] - 1) * (size_t)g->stride[d];
+            idx[d] = 0;
+        }
+    }
+    return hj_ls_row(g, r, idx);
+}
+
 /* A row evaluator: writes ydot on the row, *inv = the row's largest inverse
  * CFL bound (NaN if one was NaN); returns 0 or an error code with the node
  * j of the row that failed. */
@@ -54,6 +77,15 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
     size_t bad_row = (size_t)-1;
     long bad_j = -1;
     int bad_code = 0;
+    /* Chunks of up to 32 consecutive rows (neighbours in dimension 1 share
+     * differences), at least 8 per thread so that a small grid keeps both
+     * threads busy to the end. */
+    int nth = 1;
+#ifdef _OPENMP
+    nth = omp_get_max_threads();
+#endif
+    size_t chunk = g->rows / (8 * (size_t)nth);
+    chunk = chunk < 4 ? 4 : chunk > 32 ? 32 : chunk;
 #ifdef _OPENMP
 #pragma omp parallel reduction(max : m) reduction(| : nan_seen, nomem)
 #endif
@@ -69,12 +101,14 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
             rc.head = 0;
             rc.filled = 0;
             for (int d = 0; d < HJ_LS_MAXDIM; d++) rc.dmax[d] = 0;
+            size_t prev = (size_t)-1;
+            rc.k = 0;
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 32)
+#pragma omp for schedule(dynamic, chunk)
 #endif
             for (size_t r = 0; r < g->rows; r++) {
-                rc.k = hj_ls_row(g, r, rc.idx);
-                rc.r = r;
+                rc.k = row_next(g, r, prev, rc.k, rc.idx);
+                rc.r = prev = r;
                 hj_ls_coord(g, rc.idx, rc.x);
                 double inv = 0;
                 long j = -1;
@@ -192,7 +226,8 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     /* acc is the row of ydot itself (no copy at the end) */
-    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *w = dl + n;
+    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *dr = dl + n, *w = dr + n;
+    const int weno = c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3;
     int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
         if (c->velocity_fn || c->velocity_array[d]) {
@@ -206,7 +241,7 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             if (c->velocity[d] == 0) continue;
             for (long j = 0; j < n; j++) v[j] = c->velocity[d];
         }
-        if (d == 1 && (c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3)) {
+        if (d == 1 && weno) {
             /* Rows r - 1 and r are neighbours in dimension 1 (rows are
              * numbered with dimension 1 fastest): five of the six rows of
              * differences are the previous row's, shifted by one. */
@@ -225,19 +260,31 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             const double *D[6];
             for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
             hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], v, dl);
-        } else
+        } else if (weno) /* the upwind side only */
             hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
+        else { /* cheap schemes: both sides, selected in the loop below */
+            hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
+        }
         const double idx = 1 / g->dx[d];
-        if (first) /* 0 - x and 0 + x: the bits of accumulating from zero */
-            for (long j = 0; j < n; j++) {
-                acc[j] = 0.0 - v[j] * dl[j];
-                cfl[j] = 0.0 + fabs(v[j]) * idx;
-            }
-        else
-            for (long j = 0; j < n; j++) {
-                acc[j] -= v[j] * dl[j];
-                cfl[j] += fabs(v[j]) * idx;
-            }
+        /* the side of the upwind direction: WENO's dl holds it already,
+         * the cheap schemes' is selected here (unconditional loads, so
+         * that the loop vectorises) */
+        const double *restrict vv = v, *restrict L = dl, *restrict R = weno ? dl : dr;
+        double *restrict ac = acc, *restrict cf = cfl;
+#define CONV_ACC(OP0, OP1, SEL)                      \
+    for (long j = 0; j < n; j++) {                   \
+        const double l = L[j], r = R[j];             \
+        const double D = SEL;                        \
+        (void)r;                                     \
+        ac[j] = OP0 vv[j] * D;                       \
+        cf[j] = OP1 fabs(vv[j]) * idx;               \
+    }
+        /* first: 0 - x and 0 + x, the bits of accumulating from zero */
+        if (weno && first) CONV_ACC(0.0 -, 0.0 +, l)
+        else if (weno) CONV_ACC(ac[j] -, cf[j] +, l)
+        else if (first) CONV_ACC(0.0 -, 0.0 +, vv[j] > 0 ? l : r)
+        else CONV_ACC(ac[j] -, cf[j] +, vv[j] > 0 ? l : r)
+#undef CONV_ACC
         first = 0;
     }
     if (first)
@@ -261,7 +308,7 @@ static int convection_eval(const hj_ls_term *term, double t, double *y, double *
     ps.c = c;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    int rc = for_rows(g, (size_t)(5 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, &ps, t, y, ydot, &m,
+    int rc = for_rows(g, (size_t)(6 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, &ps, t, y, ydot, &m,
                       NULL, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
@@ -531,10 +578,143 @@ static long first_nonfinite(const double *v, long bad)
 }
 
 
+/* F(j0, j1), a loop over the nodes [j0, j1) of a row of n nodes, run on
+ * whole blocks of 8 nodes and then on the last 8 nodes again instead of a
+ * scalar remainder: a scalar node costs about what a vector of them
+ * does, and a loop whose outputs do not alias its inputs gives the same
+ * bits when it recomputes a node. */
+#define BLOCKS8(n, F)                              \
+    do {                                           \
+        const long n8_ = (n) & ~7L;                \
+        F(0, n8_)                                  \
+        if (n8_ < (n) && (n) >= 8) F((n) - 8, (n)) \
+        else if (n8_ < (n)) F(n8_, (n))            \
+    } while (0)
+
+/* The end of a row of G (every partial known): per node, the dissipation
+ * sum_d alpha_d (p+_d - p-_d) / 2 and the CFL sum sum_d alpha_d / dx_d
+ * accumulated in dimension order from 0.0 (the bits of one loop per
+ * dimension), G = -(H - dissipation), clipped as the restriction asks
+ * (clip 1: G >= 0, -1: G <= 0), the largest CFL sum in *inv; returns 0,
+ * or non-zero when an alpha or H is not finite (a sum of v - v: 0 or
+ * NaN).  One vector loop over the row; dim is a constant where inlined
+ * (lf_finish_dim), so the loop over dimensions unrolls. */
+static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, long n, long j0, long j1,
+                                                                  const double *restrict A, const double *restrict DL,
+                                                                  const double *restrict DR, size_t ds_stride,
+                                                                  const double *restrict H, const double *hinv,
+                                                                  int clip, double *restrict out, double *restrict SP,
+                                                                  double *mp, double *nfp)
+{
+    double m = *mp, nf = *nfp;
+    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
+    for (long j = j0; j < j1; j++) {
+        double ds = 0.0, s = 0.0;
+        for (int d = 0; d < dim; d++) {
+            const double Aj = A[(size_t)d * (size_t)n + (size_t)j], a = fabs(Aj);
+            const size_t q = (size_t)d * ds_stride + (size_t)j;
+            nf += Aj - Aj;
+            ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
+            s += a * hinv[d];
+        }
+        nf += H[j] - H[j];
+        double v = -(H[j] - ds);
+        v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
+        out[j] = v;
+        SP[j] = s;
+        m = s > m ? s : m;
+    }
+    *mp = m, *nfp = nf;
+}
+
+/* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
+ * scalar remainder (recomputing a node gives the same bits; max and the
+ * finiteness sum do not change).
+ *
+ * The CFL sum s = sum_d |alpha_d| / dx_d is wanted only at the row's
+ * largest: the vector loop forms it with multiplications by 1 / dx_d (SP,
+ * within (dim + 2) 2^-53 relative of s, all terms being >= 0), and s
+ * itself, with its divisions and bits, is computed at the nodes whose SP
+ * lies within 1e-12 relative of the row's largest SP, which hold the
+ * largest s: three vector divisions per node were a third of the row's
+ * end. */
+static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, long n, const double *restrict A,
+                                                           const double *restrict DL, const double *restrict DR,
+                                                           size_t ds_stride, const double *restrict H,
+                                                           const double *dx, int clip, double *restrict out,
+                                                           double *restrict SP, double *inv)
+{
+    double hinv[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
+    double mp = 0, nf = 0;
+    const long n8 = n & ~7L;
+    lf_finish_range(diffs, dim, n, 0, n8, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    if (n8 < n && n >= 8)
+        lf_finish_range(diffs, dim, n, n - 8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    else if (n8 < n)
+        lf_finish_range(diffs, dim, n, n8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    /* (far from underflow and overflow, where the bound holds; else every
+     * node exactly) */
+    const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
+    double m = 0;
+    for (long j = 0; j < n; j++)
+        if (SP[j] >= thr) {
+            double s = 0.0;
+            for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)j]) / dx[d];
+            m = s > m ? s : m;
+        }
+    *inv = m;
+    return nf != 0;
+}
+
+HJ_LS_TERM_CLONES
+static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
+                         size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
+                         double *inv)
+{
+    if (diffs) switch (dim) {
+        case 2: return lf_finish(1, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+        case 3: return lf_finish(1, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+        default: return lf_finish(1, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+        }
+    switch (dim) {
+    case 2: return lf_finish(0, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+    case 3: return lf_finish(0, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+    default: return lf_finish(0, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+    }
+}
+
+/* Both one-sided derivatives along dimension 1 of the row of rc by a
+ * scheme of six rows of differences (ENO3, WENO5), the rows kept in a
+ * ring of 6 n doubles: rows r - 1 and r are neighbours in dimension 1
+ * (rows are numbered with dimension 1 fastest), so five of row r's six
+ * rows of differences are row r - 1's, shifted by one (the same bits as
+ * hj_ls_upwind_row_eps). */
+static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
+                         int mean, double *l, double *r)
+{
+    const long n = g->N[0];
+    const double *y0 = y + rc->k;
+    if (rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0) {
+        rc->head = (rc->head + 1) % 6;
+        double *slot = ring + (size_t)((rc->head + 5) % 6) * (size_t)n;
+        hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], 2, slot);
+    } else {
+        rc->head = 0;
+        for (int k = 0; k < 6; k++)
+            hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], k - 3, ring + (size_t)k * (size_t)n);
+    }
+    rc->cache_r = rc->r;
+    const double *D[6];
+    for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
+    hj_ls_upwind_diffs_eps(scheme, D, n, eps, mean, l, r);
+}
+
 /* One row of G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2):
  * derivatives, then the Hamiltonian and the partials over the whole row
- * (one call each), then the dissipation and the CFL bound in vector loops.
- * The arithmetic per node is the per-node form's, in the same order. */
+ * (one call each), then the dissipation, the CFL bound and the clipping
+ * in one vector loop.  The arithmetic per node is the per-node form's, in
+ * the same order. */
 HJ_LS_TERM_CLONES
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
@@ -546,22 +726,57 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const size_t dn = (size_t)dim * (size_t)n;
     double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
     double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
-    double *H = GH + dn, *A = H + n, *DS = A + n, *S = DS + n;
-    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM], *DL[HJ_LS_MAXDIM], *DR[HJ_LS_MAXDIM];
+    double *A = GH + dn, *H = A + dn, *ring = H + n;
+    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
+    const int six = c->scheme == HJ_LS_ENO3A || c->scheme == HJ_LS_ENO3B || c->scheme == HJ_LS_WENO5A ||
+                    c->scheme == HJ_LS_WENO5B;
+    const int local = c->dissipation != HJ_LS_GLF;
+    /* GLF with no kept derivatives reads only the mean of D- and D+ and
+     * their difference (into P and dr): no one-sided derivatives stored */
+    const int diffs = !local && !ps->cache;
+    /* dimension d's one-sided derivatives at DL + d ds_stride, DR + d
+     * ds_stride: the row's own, or those the range pass kept (per row and
+     * dimension, dl then dr) */
+    const double *DL = dl, *DR = dr;
+    size_t ds_stride = (size_t)n;
+    if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
-        double *pd = P + (size_t)d * (size_t)n, *ll = LL + (size_t)d * (size_t)n, *lh = LH + (size_t)d * (size_t)n;
+        double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
+                         *restrict lh = LH + (size_t)d * (size_t)n;
+        if (diffs) { /* the mean and D+ - D- straight from the kernel */
+            if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
+            else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
+            pp[d] = pd;
+            double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
+            const double a = ps->gmin[d], b = ps->gmax[d];
+            if (!rc->filled) /* the global range: the same for every row of this evaluation */
+                for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
+            lo[d] = gl, hi[d] = gh;
+            continue;
+        }
         if (ps->cache) /* the range pass computed them */
-            l = ps->cache + (rc->r * (size_t)dim + (size_t)d) * 2 * (size_t)n, r = l + n;
+            l = (double *)DL + (size_t)d * ds_stride, r = (double *)DR + (size_t)d * ds_stride;
+        else if (d == 1 && six)
+            lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 0, l, r);
         else
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
-        DL[d] = l, DR[d] = r;
-        for (long j = 0; j < n; j++) pd[j] = 0.5 * (l[j] + r[j]);
-        if (c->dissipation != HJ_LS_GLF) /* the local ranges */
-            for (long j = 0; j < n; j++) {
-                ll[j] = l[j] < r[j] ? l[j] : r[j];
-                lh[j] = l[j] < r[j] ? r[j] : l[j];
-            }
+        /* blocks of 8 nodes and the last 8 again (BLOCKS8) */
+#define LF_MEAN_RANGE(j0, j1)                                                                                      \
+    for (long j = (j0); j < (j1); j++) {                                                                           \
+        const double a = l[j], b = r[j];                                                                           \
+        pd[j] = 0.5 * (a + b);                                                                                     \
+        ll[j] = a < b ? a : b;                                                                                     \
+        lh[j] = a < b ? b : a;                                                                                     \
+    }
+#define LF_MEAN(j0, j1) \
+    for (long j = (j0); j < (j1); j++) pd[j] = 0.5 * (l[j] + r[j]);
+        if (local) /* the mean and the local ranges in one loop */
+            BLOCKS8(n, LF_MEAN_RANGE);
+        else
+            BLOCKS8(n, LF_MEAN);
+#undef LF_MEAN_RANGE
+#undef LF_MEAN
         pp[d] = pd;
         if (c->dissipation == HJ_LS_LLLF) lo[d] = ll, hi[d] = lh;
         else {
@@ -577,62 +792,35 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const double *phi = y + rc->k;
     if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
     else lf_ham_nodes(c, t, &row, phi, pp, H);
-    /* Non-finite values are flagged inside the vector loops; the node is
-     * looked for (first_nonfinite) only on the rare row that has one. */
-    long badj = n;
     for (int d = 0; d < dim; d++) {
-        const double *l = DL[d], *r = DR[d];
+        double *Ad = A + (size_t)d * (size_t)n;
         const double *sl = lo[d], *sh = hi[d];
         if (c->dissipation == HJ_LS_LLF) /* local range in d only */
             lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
-        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, A, c->ctx);
-        else lf_partial_nodes(c, t, &row, lo, hi, d, A);
+        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
+        else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
         lo[d] = sl, hi[d] = sh;
-        const double dx = g->dx[d];
-        double nf = 0; /* sum of A - A: 0, or NaN if an A is not finite */
-        if (d == 0) { /* 0.0 + x: the bits of accumulating from zero */
-            SIMD_REDUCE(+ : nf)
-            for (long j = 0; j < n; j++) {
-                const double a = fabs(A[j]);
-                nf += A[j] - A[j];
-                DS[j] = 0.0 + a * 0.5 * (r[j] - l[j]);
-                S[j] = 0.0 + a / dx;
-            }
-        } else {
-            SIMD_REDUCE(+ : nf)
-            for (long j = 0; j < n; j++) {
-                const double a = fabs(A[j]);
-                nf += A[j] - A[j];
-                DS[j] += a * 0.5 * (r[j] - l[j]);
-                S[j] += a / dx;
-            }
-        }
-        if (nf != 0) badj = first_nonfinite(A, badj);
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
+            const double dx = g->dx[d];
             double dm = rc->dmax[d];
             SIMD_REDUCE(max : dm)
             for (long j = 0; j < n; j++) {
-                const double a = fabs(A[j]) / dx;
+                const double a = fabs(Ad[j]) / dx;
                 dm = a > dm ? a : dm;
             }
             rc->dmax[d] = dm;
         }
     }
-    double m = 0, *out = ydot + rc->k;
-    double nf = 0;
-    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
-    for (long j = 0; j < n; j++) {
-        nf += H[j] - H[j];
-        out[j] = -(H[j] - DS[j]);
-        m = S[j] > m ? S[j] : m;
+    double m;
+    double *out = ydot + rc->k;
+    if (lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, ring + 6 * (size_t)n, &m)) {
+        /* the first node of the row with a non-finite alpha or H */
+        long badj = n;
+        for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
+        badj = first_nonfinite(H, badj);
+        *bad = badj;
+        return HJ_ENONFINITE;
     }
-    if (nf != 0) badj = first_nonfinite(H, badj);
-    if (badj < n) { *bad = badj; return HJ_ENONFINITE; }
-    /* restrict_eval's clipping, on the row while it is in cache */
-    if (ps->clip > 0)
-        for (long j = 0; j < n; j++) out[j] = out[j] > 0 ? out[j] : 0;
-    else if (ps->clip < 0)
-        for (long j = 0; j < n; j++) out[j] = out[j] < 0 ? out[j] : 0;
     *inv = m;
     return HJ_OK;
 }
@@ -699,7 +887,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(7 * g->dim + HJ_LS_ROW_WORK + 4) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
+    int rc = for_rows(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 8) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
                       "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);

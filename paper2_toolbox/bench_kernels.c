@@ -13,7 +13,10 @@ what the hardware could do:
 
 Per case: seconds with 1 and 2 threads and their ratio, node-stage updates
 per second (steps x RK stages x nodes / seconds), whether the 1- and
-2-thread states agree bit for bit, and a roofline line:
+2-thread states agree bit for bit, the CPU seconds of the best one-thread
+run (`cpu_s_1thread`: on a loaded machine wall time counts the waits for
+a core, CPU time much less, so before/after ratios are taken from it;
+`--threads 1` runs the one-thread figures only), and a roofline line:
 
 - bytes per node-stage: the compulsory traffic of the passes over the grid
   (a model, not a counter: this machine exposes no hardware counters):
@@ -51,6 +54,7 @@ bench` runs this; the tests never do.
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -218,7 +222,7 @@ static int run_case(const bench_case *c, setup *s, hj_ls_ode_stats *st, hj_error
 int main(int argc, char **argv)
 {
     const char *dir = NULL;
-    long repeat = 3, cases[NCASE], quick = 0;
+    long repeat = 3, cases[NCASE], quick = 0, maxth = 2;
     int ncases = 0;
     hj_error err;
     hj_cli_opt opts[] = {
@@ -231,6 +235,8 @@ int main(int argc, char **argv)
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &dir, .metavar = "DIR",
          .help = "where the benchmark's table goes (required)"},
         {.name = "--quick", .type = HJ_OPT_FLAG, .value = &quick, .help = "one run each, the 3-D case left out"},
+        {.name = "--threads", .type = HJ_OPT_LONG, .value = &maxth, .min = 1, .max = 2, .metavar = "K",
+         .help = "run the cases with 1 .. K threads (default 2; 1: one-thread figures only, no bitwise test)"},
     };
     hj_cli_spec spec = {PROG, "Benchmark: the level set kernel's demos against the machine's roofline, 1 and 2 threads.",
                         opts, (int)(sizeof opts / sizeof opts[0]), "See the comment at the top of bench_kernels.c.\n"};
@@ -271,30 +277,33 @@ int main(int argc, char **argv)
             "# bytes and flops per node-stage; roofline = min(peak, bw x flops/byte) with the triad bandwidth and\n"
             "# multiply-add peak measured here (1 thread: %.2f GB/s, %.2f GFLOP/s; 2 threads: %.2f GB/s, %.2f GFLOP/s);\n"
             "# frac = achieved flop rate / roofline; ref_s = ToolboxLS under Octave on one core of this machine kind\n"
-            "# (convection3d: MATLAB 2004, another machine); ratio = ref_s / s_1thread; load average %.2f at start\n"
+            "# (convection3d: MATLAB 2004, another machine); ratio = ref_s / s_1thread; cpu_s_1thread = the process's CPU\n"
+            "# seconds of the best one-thread run (less moved by the machine's load than wall time); load average %.2f at start\n"
             "case\tacc\tnodes\tsteps\tstages\ts_1thread\ts_2threads\tspeedup\tmnode_stage_per_s_1\tmnode_stage_per_s_2\t"
-            "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\n",
+            "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\n",
             bw[0], peak[0], bw[1], peak[1], load[0]);
     printf("%-13s %-9s %9s %6s %9s %9s %7s %8s %8s %6s %6s %6s %6s %7s %7s %s\n", "case", "acc", "nodes", "steps",
            "s_1thr", "s_2thr", "speedup", "Mns/s_1", "Mns/s_2", "B/ns", "F/ns", "roof1", "roof2", "ref_s", "ratio",
-           "bitwise");
+           "bitwise cpu_1thr");
     for (int ci = 0; ci < ncases; ci++) {
         const bench_case *c = &CASES[cases[ci]];
         setup s;
         p2_fail_if(PROG, make_setup(c, &s, &err), &err);
-        double secs[2] = {1e300, 1e300};
+        double secs[2] = {1e300, maxth > 1 ? 1e300 : NAN}, cpu1 = 1e300;
         hj_ls_ode_stats st = {0};
         int same = 1;
         const long reps = c->kind == CONV3D ? 1 : repeat;
-        for (int th = 0; th < 2; th++) {
+        for (int th = 0; th < maxth; th++) {
             set_threads(th + 1);
             for (long r = 0; r < reps; r++) {
                 hj_progress("\r%s %s, %d thread(s), run %ld of %ld   ", KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc),
                             th + 1, r + 1, reps);
                 const double t0 = now();
+                const clock_t c0 = clock();
                 p2_fail_if(PROG, run_case(c, &s, &st, &err), &err);
-                const double dt = now() - t0;
+                const double dt = now() - t0, cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
                 secs[th] = dt < secs[th] ? dt : secs[th];
+                if (th == 0) cpu1 = cpu < cpu1 ? cpu : cpu1; /* one thread: the process's CPU time, less moved by load */
             }
             if (th == 0) memcpy(s.first, s.y, sizeof(double) * s.g.total);
             else same = !memcmp(s.first, s.y, sizeof(double) * s.g.total);
@@ -315,14 +324,15 @@ int main(int argc, char **argv)
             frac[th] = rate[th] * flops / roof;
         }
         const double ratio = c->ref_s / secs[0];
-        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\n",
+        const char *bits = maxth < 2 ? "-" : same ? "yes" : "NO";
+        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\t%.6g\n",
                 KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, order, secs[0], secs[1],
                 secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-                same ? "yes" : "NO");
-        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s\n",
+                bits, cpu1);
+        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s %.3f\n",
                KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, secs[0], secs[1],
                secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-               same ? "yes" : "NO");
+               bits, cpu1);
         fflush(stdout);
         hj_ls_free(s.y0), hj_ls_free(s.y), hj_ls_free(s.first);
     }

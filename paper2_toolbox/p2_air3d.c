@@ -50,6 +50,25 @@ int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p
     return HJ_OK;
 }
 
+/* F(j0, j1) over the nodes of a row of n: whole blocks of 8 nodes, then
+ * the last 8 again rather than a scalar remainder (the same bits: the
+ * outputs do not alias the inputs). */
+#define BLOCKS8(n, F)                              \
+    do {                                           \
+        const long n8_ = (n) & ~7L;                \
+        F(0, n8_)                                  \
+        if (n8_ < (n) && (n) >= 8) F((n) - 8, (n)) \
+        else if (n8_ < (n)) F(n8_, (n))            \
+    } while (0)
+
+/* AVX-512 and AVX2 clones of the callbacks where the CPU has them, as the
+ * kernel's row loops (-std=c11 contracts no multiply-add: the same bits). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
+#define CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define CLONES
+#endif
+
 /* The callbacks read cos psi, sin psi and y by node index (time
  * independent: computed once, in p2_air3d_solve), from tables built
  * mirror-symmetric (cos(-psi) = cos psi, sin(-psi) = -sin psi,
@@ -61,6 +80,7 @@ typedef struct {
     double *cs, *sn, *ys, *xs; /* xs[j] = min[0] + j dx[0]: no int-to-double conversion per node */
 } cb_ctx;
 
+CLONES
 static void ham_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
                     void *ctx)
 {
@@ -68,16 +88,21 @@ static void ham_row(double t, const hj_ls_row_info *row, const double *phi, cons
     const cb_ctx *c = ctx;
     const p2_air3d_par *q = c->q;
     const double cs = c->cs[row->idx[2]], sn = c->sn[row->idx[2]], y = c->ys[row->idx[1]];
-    const double va = q->va, vb = q->vb, A = q->A, B = q->B, *xs = c->xs;
-    const double *p0 = p[0], *p1 = p[1], *p2 = p[2];
-    for (long j = 0; j < row->n; j++) {
-        const double x = xs[j];
-        const double h = -va * p0[j] + vb * (cs * p0[j] + sn * p1[j]) + A * fabs(y * p0[j] - x * p1[j] - p2[j]) -
-                         B * fabs(p2[j]);
-        H[j] = -h;
+    const double va = q->va, vb = q->vb, A = q->A, B = q->B, *restrict xs = c->xs;
+    const double *restrict p0 = p[0], *restrict p1 = p[1], *restrict p2 = p[2];
+    double *restrict Hr = H;
+#define HAM(j0, j1)                                                                                                \
+    for (long j = (j0); j < (j1); j++) {                                                                           \
+        const double x = xs[j];                                                                                    \
+        const double h = -va * p0[j] + vb * (cs * p0[j] + sn * p1[j]) + A * fabs(y * p0[j] - x * p1[j] - p2[j]) - \
+                         B * fabs(p2[j]);                                                                          \
+        Hr[j] = -h;                                                                                                \
     }
+    BLOCKS8(row->n, HAM);
+#undef HAM
 }
 
+CLONES
 static void partial_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
                         int d, double *alpha, void *ctx)
 {
@@ -86,8 +111,12 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
     const p2_air3d_par *q = c->q;
     const long n = row->n;
     if (d == 1) {
-        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, *xs = c->xs;
-        for (long j = 0; j < n; j++) alpha[j] = s + A * fabs(xs[j]);
+        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, *restrict xs = c->xs;
+        double *restrict al = alpha;
+#define PARTIAL(j0, j1) \
+    for (long j = (j0); j < (j1); j++) al[j] = s + A * fabs(xs[j]);
+        BLOCKS8(n, PARTIAL);
+#undef PARTIAL
         return;
     }
     const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;

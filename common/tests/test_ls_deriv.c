@@ -218,6 +218,63 @@ static void select_equals_two_sided(void **state)
     hj_ls_free(a);
 }
 
+/* The row kernel's forms give the same bits: along the row (stride 1,
+ * where the six rows of differences are one row read at six offsets) and
+ * across rows (the same values laid out with a stride), the mean and
+ * difference form against (D- + D+)/2 and D+ - D-, and the form from
+ * given rows of differences; rows shorter than, not a multiple of, and a
+ * multiple of a vector block. */
+static void kernel_forms_bitwise(void **state)
+{
+    (void)state;
+    const long sizes[3] = {5, 13, 16};
+    for (int si = 0; si < 3; si++) {
+        const long n = sizes[si], S = n + 2;
+        const double dx = 0.03;
+        double *c = malloc(sizeof(double) * (size_t)(n + 6)), *q = malloc(sizeof(double) * (size_t)(7 * S));
+        double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n), *out[8], *D[6];
+        for (int k = 0; k < 8; k++) out[k] = malloc(sizeof(double) * (size_t)n);
+        for (int k = 0; k < 6; k++) D[k] = malloc(sizeof(double) * (size_t)n);
+        for (long i = -3; i < n + 3; i++) {
+            const double x = (double)i * dx;
+            c[i + 3] = noisy(&x, NULL) + kinked(&(double){x + 0.2}, NULL);
+        }
+        /* q: row k + 3 holds node i's neighbour at offset k (i + k) */
+        for (int k = -3; k <= 3; k++)
+            for (long i = 0; i < n; i++) q[(k + 3) * S + i] = c[i + k + 3];
+        for (int s = 0; s < HJ_LS_NSCHEMES; s++) {
+            double *l1 = out[0], *r1 = out[1], *l2 = out[2], *r2 = out[3], *m = out[4], *df = out[5];
+            hj_ls_upwind_row_eps(s, c + 3, 1, n, dx, -1, l1, r1, w);
+            hj_ls_upwind_row_eps(s, q + 3 * S, S, n, dx, -1, l2, r2, w);
+            assert_memory_equal(l1, l2, sizeof(double) * (size_t)n);
+            assert_memory_equal(r1, r2, sizeof(double) * (size_t)n);
+            for (int stride = 0; stride < 2; stride++) {
+                if (stride) hj_ls_upwind_row_mean_eps(s, q + 3 * S, S, n, dx, -1, m, df, w);
+                else hj_ls_upwind_row_mean_eps(s, c + 3, 1, n, dx, -1, m, df, w);
+                for (long i = 0; i < n; i++) {
+                    const double want_m = 0.5 * (l1[i] + r1[i]), want_d = r1[i] - l1[i];
+                    assert_memory_equal(&m[i], &want_m, sizeof want_m);
+                    assert_memory_equal(&df[i], &want_d, sizeof want_d);
+                }
+            }
+            if (s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2) continue;
+            for (int k = 0; k < 6; k++) hj_ls_upwind_difference_row(q + 3 * S, S, n, dx, k - 3, D[k]);
+            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, -1, 0, l2, r2);
+            assert_memory_equal(l1, l2, sizeof(double) * (size_t)n);
+            assert_memory_equal(r1, r2, sizeof(double) * (size_t)n);
+            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, -1, 1, m, df);
+            for (long i = 0; i < n; i++) {
+                const double want_m = 0.5 * (l1[i] + r1[i]), want_d = r1[i] - l1[i];
+                assert_memory_equal(&m[i], &want_m, sizeof want_m);
+                assert_memory_equal(&df[i], &want_d, sizeof want_d);
+            }
+        }
+        for (int k = 0; k < 8; k++) free(out[k]);
+        for (int k = 0; k < 6; k++) free(D[k]);
+        free(c), free(q), free(w);
+    }
+}
+
 /* Centered derivatives of phi = sin(2 pi x) cos(2 pi y) + x y^2 on a 2-D
  * periodic grid: second order for the first derivative, the Hessian and the
  * Laplacian. */
@@ -361,5 +418,6 @@ static void gradient_norm(void **state)
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_orders),
                         cmocka_unit_test(strided_equals_contiguous), cmocka_unit_test(six_dimensions),
                         cmocka_unit_test(forms_agree), cmocka_unit_test(select_equals_two_sided),
+                        cmocka_unit_test(kernel_forms_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
                         cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))

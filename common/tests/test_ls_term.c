@@ -360,6 +360,102 @@ static void lax_friedrichs_rows_equal_nodes(void **state)
     free(work);
 }
 
+/* The row pipeline gives the bits of the definition, node by node:
+ * one-sided derivatives of hj_ls_upwind, p = (p- + p+)/2, the boxes of
+ * each dissipation, G = -(H - sum_d alpha_d (p+_d - p-_d)/2) and
+ * sum_d alpha_d / dx_d summed in dimension order, the bound 1 / max of
+ * the sums; the restriction's clip of G after.  Rows shorter than a
+ * vector block (5 nodes), with a partial block (13) and whole blocks (16);
+ * 1 and 2 threads. */
+static void lax_friedrichs_matches_definition(void **state)
+{
+    (void)state;
+    const long sizes[3] = {5, 13, 16};
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int si = 0; si < 3; si++) {
+        hj_ls_grid g = hj_test_grid(3, sizes[si], -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+        double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *ref = hj_ls_alloc(&g);
+        double *dl[3], *dr[3];
+        for (int d = 0; d < 3; d++) dl[d] = hj_ls_alloc(&g), dr[d] = hj_ls_alloc(&g);
+        hj_ls_fill(&g, y, bump3, NULL);
+        const double t = 0.3;
+        for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++) {
+            /* the reference */
+            double gmin[3], gmax[3], m = 0;
+            for (int d = 0; d < 3; d++) {
+                assert_int_equal(hj_ls_upwind(&g, HJ_LS_ENO3A, y, d, dl[d], dr[d], NULL), HJ_OK);
+                gmin[d] = INFINITY, gmax[d] = -INFINITY;
+            }
+            long idx[3];
+            for (size_t r = 0; r < g.rows; r++) {
+                const size_t k0 = hj_ls_row(&g, r, idx);
+                for (long j = 0; j < g.N[0]; j++)
+                    for (int d = 0; d < 3; d++) {
+                        const double l = dl[d][k0 + (size_t)j], h = dr[d][k0 + (size_t)j];
+                        gmin[d] = fmin(gmin[d], fmin(l, h)), gmax[d] = fmax(gmax[d], fmax(l, h));
+                    }
+            }
+            for (size_t r = 0; r < g.rows; r++) {
+                const size_t k0 = hj_ls_row(&g, r, idx);
+                for (long j = 0; j < g.N[0]; j++) {
+                    const size_t k = k0 + (size_t)j;
+                    idx[0] = j;
+                    double x[3], p[3], lo[3], hi[3], ds = 0.0, sum = 0.0;
+                    hj_ls_coord(&g, idx, x);
+                    for (int d = 0; d < 3; d++) {
+                        p[d] = 0.5 * (dl[d][k] + dr[d][k]);
+                        lo[d] = diss == HJ_LS_LLLF ? fmin(dl[d][k], dr[d][k]) : gmin[d];
+                        hi[d] = diss == HJ_LS_LLLF ? fmax(dl[d][k], dr[d][k]) : gmax[d];
+                    }
+                    const double H = ham_mix(t, x, y[k], p, NULL);
+                    for (int d = 0; d < 3; d++) {
+                        double l2[3], h2[3];
+                        memcpy(l2, lo, sizeof lo), memcpy(h2, hi, sizeof hi);
+                        if (diss == HJ_LS_LLF) l2[d] = fmin(dl[d][k], dr[d][k]), h2[d] = fmax(dl[d][k], dr[d][k]);
+                        const double a = fabs(partial_mix(t, x, l2, h2, d, NULL));
+                        ds += a * 0.5 * (dr[d][k] - dl[d][k]);
+                        sum += a / g.dx[d];
+                    }
+                    ref[k] = -(H - ds);
+                    m = fmax(m, sum);
+                }
+            }
+            for (int form = 0; form < 2 * threads; form++) {
+#ifdef _OPENMP
+                omp_set_num_threads(1 + form / 2);
+#endif
+                for (int clip = 0; clip < 2; clip++) {
+                    hj_ls_lax_friedrichs lf;
+                    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO3A, diss, ham_mix, partial_mix, NULL);
+                    if (form % 2) lf.ham = NULL, lf.partial = NULL, lf.ham_row = ham_mix_row, lf.partial_row = partial_mix_row;
+                    hj_ls_restrict rs;
+                    hj_ls_restrict_init(&rs, &g, &lf.base, 0);
+                    const hj_ls_term *term = clip ? &rs.base : &lf.base;
+                    double b;
+                    assert_int_equal(term->eval(term, t, y, f, &b, NULL), HJ_OK);
+                    const double bref = 1 / m;
+                    assert_memory_equal(&b, &bref, sizeof b);
+                    for (size_t r = 0; r < g.rows; r++) {
+                        const size_t k0 = hj_ls_row(&g, r, idx);
+                        for (long j = 0; j < g.N[0]; j++) {
+                            const double v = ref[k0 + (size_t)j], want = clip ? (v < 0 ? v : 0) : v;
+                            assert_memory_equal(&f[k0 + (size_t)j], &want, sizeof want);
+                        }
+                    }
+                }
+            }
+        }
+#ifdef _OPENMP
+        omp_set_num_threads(1);
+#endif
+        for (int d = 0; d < 3; d++) hj_ls_free(dl[d]), hj_ls_free(dr[d]);
+        hj_ls_free(y), hj_ls_free(f), hj_ls_free(ref);
+    }
+}
+
 /* A NaN from a batched callback names its node as a per-node one does. */
 static void partial_nan_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
                             int d, double *alpha, void *ctx)
@@ -648,7 +744,8 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_arrays_equal_callback),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
-                        cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(callback_errors_rows),
+                        cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
+                        cmocka_unit_test(callback_errors_rows),
                         cmocka_unit_test(lax_friedrichs_range_free),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
