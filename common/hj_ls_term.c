@@ -165,6 +165,29 @@ static inline double scalar_at(const hj_ls_scalar *s, double t, const double *x,
     return s->fn ? s->fn(t, x, phi, s->ctx) : s->array ? s->array[k] : s->value;
 }
 
+/* The six rows of differences along dimension 1 (offsets -3 .. 2) of the
+ * row of rc, kept in a ring of 6 n doubles: rows r - 1 and r are
+ * neighbours in dimension 1 (rows are numbered with dimension 1
+ * fastest), so five of row r's six rows are row r - 1's, shifted by one,
+ * and only the sixth is computed (the same bits as computing all six).
+ * D[k]: the row of offset k - 3. */
+static void dim1_ring(const hj_ls_grid *g, const double *y, row_ctx *rc, double *ring, const double *D[6])
+{
+    const long n = g->N[0];
+    const double *y0 = y + rc->k;
+    if (rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0) {
+        rc->head = (rc->head + 1) % 6;
+        double *slot = ring + (size_t)((rc->head + 5) % 6) * (size_t)n;
+        hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], 2, slot);
+    } else {
+        rc->head = 0;
+        for (int k = 0; k < 6; k++)
+            hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], k - 3, ring + (size_t)k * (size_t)n);
+    }
+    rc->cache_r = rc->r;
+    for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
+}
+
 /* The scalar over a row into a[0..n-1] when it has a batched callback;
  * returns 0 (and leaves a alone) otherwise, for scalar_at per node. */
 static int scalar_row(const hj_ls_scalar *s, double t, const hj_ls_grid *g, const row_ctx *rc, const double *y,
@@ -245,20 +268,8 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
             /* Rows r - 1 and r are neighbours in dimension 1 (rows are
              * numbered with dimension 1 fastest): five of the six rows of
              * differences are the previous row's, shifted by one. */
-            double *ring = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
-            const double *y0 = y + rc->k;
-            if (rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0) {
-                rc->head = (rc->head + 1) % 6;
-                double *slot = ring + (size_t)((rc->head + 5) % 6) * (size_t)n;
-                hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], 2, slot);
-            } else {
-                rc->head = 0;
-                for (int k = 0; k < 6; k++)
-                    hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], k - 3, ring + (size_t)k * (size_t)n);
-            }
-            rc->cache_r = rc->r;
             const double *D[6];
-            for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
+            dim1_ring(g, y, rc, w + (size_t)HJ_LS_ROW_WORK * (size_t)n, D);
             hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], v, dl);
         } else if (weno) /* the upwind side only */
             hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
@@ -578,18 +589,6 @@ static long first_nonfinite(const double *v, long bad)
 }
 
 
-/* F(j0, j1), a loop over the nodes [j0, j1) of a row of n nodes, run on
- * whole blocks of 8 nodes and then on the last 8 nodes again instead of a
- * scalar remainder: a scalar node costs about what a vector of them
- * does, and a loop whose outputs do not alias its inputs gives the same
- * bits when it recomputes a node. */
-#define BLOCKS8(n, F)                              \
-    do {                                           \
-        const long n8_ = (n) & ~7L;                \
-        F(0, n8_)                                  \
-        if (n8_ < (n) && (n) >= 8) F((n) - 8, (n)) \
-        else if (n8_ < (n)) F(n8_, (n))            \
-    } while (0)
 
 /* The end of a row of G (every partial known): per node, the dissipation
  * sum_d alpha_d (p+_d - p-_d) / 2 and the CFL sum sum_d alpha_d / dx_d
@@ -685,37 +684,16 @@ static int lf_finish_dim(int diffs, int dim, long n, const double *A, const doub
 }
 
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
- * scheme of six rows of differences (ENO3, WENO5), the rows kept in a
- * ring of 6 n doubles: rows r - 1 and r are neighbours in dimension 1
- * (rows are numbered with dimension 1 fastest), so five of row r's six
- * rows of differences are row r - 1's, shifted by one (the same bits as
- * hj_ls_upwind_row_eps). */
+ * scheme of six rows of differences (ENO3, WENO5), the rows from
+ * dim1_ring. */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
                          int mean, double *l, double *r)
 {
-    const long n = g->N[0];
-    const double *y0 = y + rc->k;
-    if (rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0) {
-        rc->head = (rc->head + 1) % 6;
-        double *slot = ring + (size_t)((rc->head + 5) % 6) * (size_t)n;
-        hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], 2, slot);
-    } else {
-        rc->head = 0;
-        for (int k = 0; k < 6; k++)
-            hj_ls_upwind_difference_row(y0, g->stride[1], n, g->dx[1], k - 3, ring + (size_t)k * (size_t)n);
-    }
-    rc->cache_r = rc->r;
     const double *D[6];
-    for (int k = 0; k < 6; k++) D[k] = ring + (size_t)((rc->head + k) % 6) * (size_t)n;
-    hj_ls_upwind_diffs_eps(scheme, D, n, eps, mean, l, r);
+    dim1_ring(g, y, rc, ring, D);
+    hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
 }
 
-/* One row of G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2):
- * derivatives, then the Hamiltonian and the partials over the whole row
- * (one call each), then the dissipation, the CFL bound and the clipping
- * in one vector loop.  The arithmetic per node is the per-node form's, in
- * the same order. */
-HJ_LS_TERM_CLONES
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
@@ -761,7 +739,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 0, l, r);
         else
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
-        /* blocks of 8 nodes and the last 8 again (BLOCKS8) */
+        /* blocks of 8 nodes and the last 8 again (HJ_LS_ROW_BLOCKS8) */
 #define LF_MEAN_RANGE(j0, j1)                                                                                      \
     for (long j = (j0); j < (j1); j++) {                                                                           \
         const double a = l[j], b = r[j];                                                                           \
@@ -772,9 +750,9 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
 #define LF_MEAN(j0, j1) \
     for (long j = (j0); j < (j1); j++) pd[j] = 0.5 * (l[j] + r[j]);
         if (local) /* the mean and the local ranges in one loop */
-            BLOCKS8(n, LF_MEAN_RANGE);
+            HJ_LS_ROW_BLOCKS8(n, LF_MEAN_RANGE);
         else
-            BLOCKS8(n, LF_MEAN);
+            HJ_LS_ROW_BLOCKS8(n, LF_MEAN);
 #undef LF_MEAN_RANGE
 #undef LF_MEAN
         pp[d] = pd;

@@ -76,6 +76,19 @@ typedef struct {
     const long *idx;
     size_t k;
 } hj_ls_row_info;
+/* F(j0, j1), a loop over the nodes [j0, j1) of a row of n nodes, run on
+ * whole blocks of 8 nodes and then on the last 8 again instead of a
+ * scalar remainder (n < 8: the n nodes once): a scalar node costs about
+ * what a vector of them does, and a loop whose outputs do not alias its
+ * inputs gives the same bits when it recomputes a node.  The kernel's row
+ * loops use it; batched callbacks may too. */
+#define HJ_LS_ROW_BLOCKS8(n, F)                    \
+    do {                                           \
+        const long n8_ = (n) & ~7L;                \
+        F(0, n8_)                                  \
+        if (n8_ < (n) && (n) >= 8) F((n) - 8, (n)) \
+        else if (n8_ < (n)) F(n8_, (n))            \
+    } while (0)
 /* A scalar parameter a(t, x, phi): row_fn if set, else fn, else array (on
  * the grid) if set, else the constant value (the toolbox's scalar / array
  * / scalarGridFunc choices).  row_fn is fn batched over a row (one call,

@@ -50,17 +50,6 @@ int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p
     return HJ_OK;
 }
 
-/* F(j0, j1) over the nodes of a row of n: whole blocks of 8 nodes, then
- * the last 8 again rather than a scalar remainder (the same bits: the
- * outputs do not alias the inputs). */
-#define BLOCKS8(n, F)                              \
-    do {                                           \
-        const long n8_ = (n) & ~7L;                \
-        F(0, n8_)                                  \
-        if (n8_ < (n) && (n) >= 8) F((n) - 8, (n)) \
-        else if (n8_ < (n)) F(n8_, (n))            \
-    } while (0)
-
 /* AVX-512 and AVX2 clones of the callbacks where the CPU has them, as the
  * kernel's row loops (-std=c11 contracts no multiply-add: the same bits). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && !defined(__clang__)
@@ -98,7 +87,7 @@ static void ham_row(double t, const hj_ls_row_info *row, const double *phi, cons
                          B * fabs(p2[j]);                                                                          \
         Hr[j] = -h;                                                                                                \
     }
-    BLOCKS8(row->n, HAM);
+    HJ_LS_ROW_BLOCKS8(row->n, HAM);
 #undef HAM
 }
 
@@ -115,7 +104,7 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
         double *restrict al = alpha;
 #define PARTIAL(j0, j1) \
     for (long j = (j0); j < (j1); j++) al[j] = s + A * fabs(xs[j]);
-        BLOCKS8(n, PARTIAL);
+        HJ_LS_ROW_BLOCKS8(n, PARTIAL);
 #undef PARTIAL
         return;
     }
