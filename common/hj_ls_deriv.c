@@ -223,7 +223,8 @@ static inline __attribute__((always_inline)) void upwind_diffs(int mode, int reg
     case HJ_LS_WENO5B:
         ROWS({
             const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5);
-            STORE2(i, weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps), weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps));
+            STORE2(i, weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps),
+                   weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps));
         });
         break;
     case HJ_LS_WENO3:

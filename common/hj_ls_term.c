@@ -627,8 +627,8 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
 }
 
 /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
- * scalar remainder (recomputing a node gives the same bits; max and the
- * finiteness sum do not change).
+ * scalar remainder (HJ_LS_ROW_BLOCKS8: recomputing a node gives the same
+ * bits; max and the finiteness sum do not change).
  *
  * The CFL sum s = sum_d |alpha_d| / dx_d is wanted only at the row's
  * largest: the vector loop forms it with multiplications by 1 / dx_d (SP,
@@ -646,12 +646,10 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, l
     double hinv[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
     double mp = 0, nf = 0;
-    const long n8 = n & ~7L;
-    lf_finish_range(diffs, dim, n, 0, n8, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
-    if (n8 < n && n >= 8)
-        lf_finish_range(diffs, dim, n, n - 8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
-    else if (n8 < n)
-        lf_finish_range(diffs, dim, n, n8, n, A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+#define LF_RANGE(j0, j1) \
+    lf_finish_range(diffs, dim, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
+    HJ_LS_ROW_BLOCKS8(n, LF_RANGE);
+#undef LF_RANGE
     /* (far from underflow and overflow, where the bound holds; else every
      * node exactly) */
     const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
