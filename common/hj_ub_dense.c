@@ -69,12 +69,15 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
     ws->nthreads = 1;
 #endif
     ws->bufper = buf_size(d, n);
-    ws->w1 = malloc(ws->total * sizeof *ws->w1);
-    ws->w2 = d >= 4 ? malloc(ws->total * sizeof *ws->w2) : NULL; /* d = 2, 3: one intermediate grid at most */
+    /* per thread, d >= 3: the intermediate plane, mu, A, two P (n^2
+     * each), Q, the boundary row and the dynamics of a row */
+    ws->planeper = d >= 3 ? 5 * (size_t)n * (size_t)n + (size_t)(2 + d) * (size_t)n : 0;
+    ws->w1 = d != 3 ? malloc(ws->total * sizeof *ws->w1) : NULL; /* d = 3: no intermediate grid */
     ws->vmin = malloc(ws->total * sizeof *ws->vmin);
     ws->xlast = malloc((size_t)(n + 2) * sizeof *ws->xlast);
     ws->buf = malloc((size_t)ws->nthreads * ws->bufper * sizeof *ws->buf);
-    if (!ws->w1 || (d >= 4 && !ws->w2) || !ws->vmin || !ws->xlast || !ws->buf) {
+    ws->planes = d >= 3 ? malloc((size_t)ws->nthreads * ws->planeper * sizeof *ws->planes) : NULL;
+    if ((d != 3 && !ws->w1) || !ws->vmin || !ws->xlast || !ws->buf || (d >= 3 && !ws->planes)) {
         hj_ub_dense_free(ws);
         return hj_error_set(err, HJ_ENOMEM, "out of memory: UB workspace of %.3g GB", total * 24 / 1e9);
     }
@@ -89,7 +92,7 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
 void hj_ub_dense_free(hj_ub_dense *ws)
 {
     free(ws->w1);
-    free(ws->w2);
+    free(ws->planes);
     free(ws->vmin);
     free(ws->xlast);
     free(ws->buf);
@@ -263,26 +266,30 @@ static void row_faces(long len, const double *restrict r0, const double *restric
 /* The last direction's update of a padded row (w[j] = W_j, mu[j], A[j],
  * P[j], Q[j] for j = -1 .. n, n = len): mode 0 stores it into vmin, mode 1
  * the minimum with vmin; mode 2 is the last control's: the minimum over the
- * controls (vmin NULL: a single control), the min with V^n for the target
- * problem, and the snap to +-1, into v (V^n on entry). */
+ * controls (vmin NULL: a single control), the min with V^n = vn for the
+ * target problem, and the snap to +-1, into out.  out may be vmin or vn
+ * itself (each node reads its own entries before writing: ivdep). */
 HJ_UB_CLONES
 static void row_last(long len, const double *restrict w, const double *restrict mu, const double *restrict A,
-                     const double *restrict P, const double *restrict Q, int mode, double *restrict vmin, int target,
-                     double snap, double *restrict v)
+                     const double *restrict P, const double *restrict Q, int mode, double *vmin, int target,
+                     double snap, const double *vn, double *out)
 {
     if (mode == 0)
+#pragma GCC ivdep
         for (long j = 0; j < len; j++) vmin[j] = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
     else if (mode == 1)
+#pragma GCC ivdep
         for (long j = 0; j < len; j++) {
             const double u = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
             vmin[j] = u < vmin[j] ? u : vmin[j];
         }
     else
+#pragma GCC ivdep
         for (long j = 0; j < len; j++) {
             double u = node_step(w[j], mu[j], A[j], P[j - 1], Q[j + 1]);
             u = !vmin || u < vmin[j] ? u : vmin[j];
-            u = target && v[j] < u ? v[j] : u;
-            v[j] = u > 1 - snap ? 1 : u < -1 + snap ? -1 : u;
+            u = target && vn[j] < u ? vn[j] : u;
+            out[j] = u > 1 - snap ? 1 : u < -1 + snap ? -1 : u;
         }
 }
 
@@ -293,12 +300,20 @@ static double *buf_f(const hj_ub_dense *ws, double *b, int slot)
 /* W_0 of the padded row */
 static double *last_row_in(const hj_ub_dense *ws, double *b) { return buf_f(ws, b, 2) + 3; }
 
+/* What the last direction's sweep does with its rows: mode 0 / 1 / 2 of
+ * row_last (first: no minimum over the controls yet); V^n is v, the last
+ * control's values go to out (v, or vmin when V^n is still to be read). */
+typedef struct {
+    double *v, *out;
+    int mode, first;
+    double snap;
+} fused;
+
 /* The last direction's sweep of row r from the padded row of buffer b
  * (W_0 .. W_{n-1} filled by the caller) with the dynamics of the row f
  * (d (n + 2) values: nodes -1 .. n): pads with the boundary value, faces,
- * update (row_last's modes; first: no minimum over controls yet). */
-static void last_row(hj_ub_dense *ws, double *b, const double *f, size_t r, double *v, int mode, int first, double snap,
-                     double dt)
+ * update (row_last's modes). */
+static void last_row(hj_ub_dense *ws, double *b, const double *f, size_t r, const fused *fz, double dt)
 {
     const hj_ub_problem *pb = ws->pb;
     const int d = pb->d, n = pb->n, k = d - 1;
@@ -307,12 +322,12 @@ static void last_row(hj_ub_dense *ws, double *b, const double *f, size_t r, doub
     /* node j = -1 .. n at index j + 1 */
     row_faces(n + 2, w - 3, w - 2, w - 1, w, w + 1, f + (size_t)k * (size_t)(n + 2), dt / ws->dx[k], mu, A, P, Q);
     const size_t o = r * (size_t)n;
-    row_last(n, w, mu + 1, A + 1, P + 1, Q + 1, mode, mode == 2 && first ? NULL : ws->vmin + o, pb->target, snap, v + o);
+    row_last(n, w, mu + 1, A + 1, P + 1, Q + 1, fz->mode, fz->mode == 2 && fz->first ? NULL : ws->vmin + o, pb->target,
+             fz->snap, fz->v + o, fz->out + o);
 }
 
 /* Sweep in the last direction alone (d = 2): every row on its own. */
-static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, int first, double snap, int a, double t,
-                       double dt)
+static void sweep_last(hj_ub_dense *ws, const double *src, const fused *fz, int a, double t, double dt)
 {
     const int n = ws->pb->n;
     const size_t rows = ws->total / (size_t)n;
@@ -323,44 +338,27 @@ static void sweep_last(hj_ub_dense *ws, const double *src, double *v, int mode, 
         row_coords(ws, r, 0, 0, x);
         row_dyn(ws, t, x, ws->xlast, n + 2, a, f);
         memcpy(last_row_in(ws, b), src + r * (size_t)n, (size_t)n * sizeof *src);
-        last_row(ws, b, f, r, v, mode, first, snap, dt);
+        last_row(ws, b, f, r, fz, dt);
     }
 }
 
-/* The last sweep fused into sweep_rows (last != NULL): each row of the
- * sweep in direction d - 2 goes straight to last_row, without a grid
- * between the two, with the dynamics the sweep evaluated for it. */
-typedef struct {
-    double *v;
-    int mode, first;
-    double snap;
-} fused;
-
-/* Sweep in direction k < d - 1: lines of rows along k, each walked with
- * row_pipe, in segments of SEG columns (whole rows when the last sweep is
- * fused). */
-static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, int a, double t, double dt, const fused *last)
+/* One line of a sweep in direction k < d - 1: the rows i = 0 .. n-1 along
+ * k, row i at src0 + i sstride (columns j0 .. j0 + len - 1), grid row base
+ * + i stride, walked with row_pipe into dst (or, last != NULL, each row
+ * straight to the last direction's sweep, without a grid between the two,
+ * with the dynamics evaluated here for it: whole rows, j0 = 0). */
+static void sweep_line(hj_ub_dense *ws, double *b, int k, const double *src0, size_t sstride, size_t base, size_t stride,
+                       size_t j0, long len, size_t SEGL, double *dst, int a, double t, double dt, const fused *last)
 {
-    const hj_ub_problem *pb = ws->pb;
-    const int d = pb->d, n = pb->n;
-    size_t stride = 1; /* rows between neighbours in direction k */
-    for (int q = k + 1; q < d - 1; q++) stride *= (size_t)n;
-    const size_t SEGL = last ? (size_t)n : SEG; /* whole rows when the last sweep follows */
-    const size_t lines = ws->total / ((size_t)n * (size_t)n), nseg = ((size_t)n + SEGL - 1) / SEGL;
-    const double bnd = pb->boundary, c = dt / ws->dx[k];
-#pragma omp parallel for num_threads(ws->nthreads) schedule(static)
-    for (size_t item = 0; item < lines * nseg; item++) {
-        const size_t line = item / nseg, j0 = (item % nseg) * SEGL;
-        const long len = (long)((size_t)n - j0 < SEGL ? (size_t)n - j0 : SEGL);
-        const size_t base = (line / stride) * (size_t)n * stride + line % stride;
-        double *b = ws->buf + (size_t)thread_id() * ws->bufper;
-        double *mu = b, *A = b + SEGL, *P[2] = {b + 2 * SEGL, b + 3 * SEGL}, *brow = b + 4 * SEGL, *Q = b + 5 * SEGL;
-        /* fused: the dynamics of the whole row (nodes -1 .. n) are kept for
-         * the last direction's sweep of that row */
-        const long fn = last ? n + 2 : len, fo = last ? 1 : 0;
-        for (long j = 0; j < len; j++) brow[j] = bnd;
-#define ROW(i) ((i) < 0 || (i) >= n ? brow : src + (base + (size_t)(i) * stride) * (size_t)n + j0)
-        /* the dynamics of row i (-1 .. n) into slot i & 1; its f_k */
+    const int n = ws->pb->n;
+    const double c = dt / ws->dx[k];
+    double *mu = b, *A = b + SEGL, *P[2] = {b + 2 * SEGL, b + 3 * SEGL}, *brow = b + 4 * SEGL, *Q = b + 5 * SEGL;
+    /* fused: the dynamics of the whole row (nodes -1 .. n) are kept for
+     * the last direction's sweep of that row */
+    const long fn = last ? n + 2 : len, fo = last ? 1 : 0;
+    for (long j = 0; j < len; j++) brow[j] = ws->pb->boundary;
+#define ROW(i) ((i) < 0 || (i) >= n ? brow : src0 + (size_t)(i) * sstride)
+    /* the dynamics of row i (-1 .. n) into slot i & 1; its f_k */
 #define FILL(i, fk)                                                                                     \
     do {                                                                                                \
         double x_[HJ_BAND_DMAX] = {0}, *f_ = buf_f(ws, b, (i) & 1);                                     \
@@ -368,39 +366,149 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
         row_dyn(ws, t, x_, ws->xlast + 1 - fo + j0, fn, a, f_);                                        \
         fk = f_ + (long)k * fn + fo;                                                                    \
     } while (0)
-        const double *fk;
-        /* P_{-1}; mu_0, A_0, P_0 */
-        FILL(-1, fk);
-        row_faces(len, ROW(-3), ROW(-2), ROW(-1), ROW(0), ROW(1), fk, c, mu, A, P[1], Q);
-        FILL(0, fk);
-        row_faces(len, ROW(-2), ROW(-1), ROW(0), ROW(1), ROW(2), fk, c, mu, A, P[0], Q);
-        for (int i = 0; i < n; i++) {
-            /* the row the next iteration brings in, one grid plane away
-             * for k = 0: ask for it now (the hardware does not follow) */
-            if (i + 4 < n) {
-                const char *nx = (const char *)ROW(i + 4);
-                for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(nx + j);
-            }
-            /* and the row of the grid written two steps on: the
-             * intermediate grid, or the running minimum (and V for the
-             * last control) of the fused last sweep */
-            if (i + 2 < n) {
-                const size_t o = (base + (size_t)(i + 2) * stride) * (size_t)n + j0;
-                const char *wr = (const char *)(last ? (last->mode == 2 ? last->v : ws->vmin) + o : dst + o);
-                for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(wr + j, 1);
-                if (last && last->mode == 2 && !last->first)
-                    for (long j = 0; j < len * (long)sizeof(double); j += 64)
-                        __builtin_prefetch((const char *)(ws->vmin + o) + j);
-            }
-            FILL(i + 1, fk);
-            const size_t row = base + (size_t)i * stride;
-            double *out = last ? last_row_in(ws, b) : dst + row * (size_t)n + j0;
-            row_pipe(len, ROW(i - 1), ROW(i), ROW(i + 1), ROW(i + 2), ROW(i + 3), fk, c, mu, A, P[(i + 1) & 1], out);
-            if (last)
-                last_row(ws, b, buf_f(ws, b, i & 1), row, last->v, last->mode, last->first, last->snap, dt);
+    const double *fk;
+    /* P_{-1}; mu_0, A_0, P_0 */
+    FILL(-1, fk);
+    row_faces(len, ROW(-3), ROW(-2), ROW(-1), ROW(0), ROW(1), fk, c, mu, A, P[1], Q);
+    FILL(0, fk);
+    row_faces(len, ROW(-2), ROW(-1), ROW(0), ROW(1), ROW(2), fk, c, mu, A, P[0], Q);
+    for (int i = 0; i < n; i++) {
+        /* the row the next iteration brings in, one grid plane away
+         * for k = 0: ask for it now (the hardware does not follow) */
+        if (i + 4 < n) {
+            const char *nx = (const char *)ROW(i + 4);
+            for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(nx + j);
         }
+        /* and the row of the grid written two steps on: the
+         * intermediate grid, or the running minimum (and V for the
+         * last control) of the fused last sweep */
+        if (i + 2 < n) {
+            const size_t o = (base + (size_t)(i + 2) * stride) * (size_t)n + j0;
+            const char *wr = (const char *)(last ? (last->mode == 2 ? last->out : ws->vmin) + o : dst + o);
+            for (long j = 0; j < len * (long)sizeof(double); j += 64) __builtin_prefetch(wr + j, 1);
+            if (last && last->mode == 2 && !last->first && last->out != ws->vmin)
+                for (long j = 0; j < len * (long)sizeof(double); j += 64)
+                    __builtin_prefetch((const char *)(ws->vmin + o) + j);
+        }
+        FILL(i + 1, fk);
+        const size_t row = base + (size_t)i * stride;
+        double *out = last ? last_row_in(ws, b) : dst + row * (size_t)n + j0;
+        row_pipe(len, ROW(i - 1), ROW(i), ROW(i + 1), ROW(i + 2), ROW(i + 3), fk, c, mu, A, P[(i + 1) & 1], out);
+        if (last) last_row(ws, b, buf_f(ws, b, i & 1), row, last, dt);
+    }
 #undef FILL
 #undef ROW
+}
+
+/* Sweep in direction k < d - 1 over the grid into dst: lines of rows
+ * along k, in segments of SEG columns. */
+static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, int a, double t, double dt)
+{
+    const hj_ub_problem *pb = ws->pb;
+    const int d = pb->d, n = pb->n;
+    size_t stride = 1; /* rows between neighbours in direction k */
+    for (int q = k + 1; q < d - 1; q++) stride *= (size_t)n;
+    const size_t lines = ws->total / ((size_t)n * (size_t)n), nseg = ((size_t)n + SEG - 1) / SEG;
+#pragma omp parallel for num_threads(ws->nthreads) schedule(static)
+    for (size_t item = 0; item < lines * nseg; item++) {
+        const size_t line = item / nseg, j0 = (item % nseg) * SEG;
+        const long len = (long)((size_t)n - j0 < SEG ? (size_t)n - j0 : SEG);
+        const size_t base = (line / stride) * (size_t)n * stride + line % stride;
+        sweep_line(ws, ws->buf + (size_t)thread_id() * ws->bufper, k, src + base * (size_t)n + j0, stride * (size_t)n,
+                   base, stride, j0, len, SEG, dst, a, t, dt, NULL);
+    }
+}
+
+/* The last three directions K = d - 3, d - 2, d - 1 of one control, plane
+ * by plane: a plane is the n^2 nodes of one index i along K (and of one
+ * index along direction 0 for d = 4).  The sweep in K steps from plane i
+ * to plane i + 1 as sweep_line does from row to row, with the faces of a
+ * whole plane kept (per thread: mu, A, two P, n^2 each), and writes plane
+ * i of the intermediate grid into a buffer of one plane, in cache; the
+ * plane's line along d - 2 then runs at once, each row to the last
+ * direction.  No intermediate grid: per node and control the step reads
+ * src and the running minimum and writes the minimum.
+ *
+ * The planes along K are cut into one range per thread (each starts with
+ * the faces of its first two planes), so that d = 3 shares work among
+ * threads.  For d = 3, src is V^n itself: the last control's values go to
+ * vmin first (it is read there, then written), and back into v once no
+ * thread reads V^n there: a plane q of the range [p0, p1) after step q + 1
+ * unless the neighbouring ranges read it (q < p0 + 3 or q >= p1 - 3: after
+ * a barrier). */
+static void sweep_planes(hj_ub_dense *ws, const double *src, int a, double t, double dt, const fused *fz)
+{
+    const hj_ub_problem *pb = ws->pb;
+    const int d = pb->d, n = pb->n, K = d - 3;
+    const size_t nn = (size_t)n * (size_t)n, nouter = ws->total / (nn * (size_t)n);
+    const int inplace = fz->mode == 2 && fz->out != fz->v;
+    const double c = dt / ws->dx[K];
+#pragma omp parallel num_threads(ws->nthreads)
+    {
+#ifdef _OPENMP
+        const int nt = omp_get_num_threads();
+#else
+        const int nt = 1;
+#endif
+        const int tid = thread_id();
+        double *b = ws->buf + (size_t)tid * ws->bufper, *pl = ws->planes + (size_t)tid * ws->planeper;
+        double *w = pl, *mu = pl + nn, *A = pl + 2 * nn, *P[2] = {pl + 3 * nn, pl + 4 * nn}, *Q = pl + 5 * nn,
+               *brow = Q + n, *fr = brow + n;
+        for (int j = 0; j < n; j++) brow[j] = pb->boundary;
+        /* ranges: nouter x nt, cyclic over the threads */
+        const size_t items = nouter * (size_t)nt;
+        for (size_t item = (size_t)tid; item < items; item += (size_t)nt) {
+            const size_t o = item / (size_t)nt;
+            const int ch = (int)(item % (size_t)nt), p0 = (int)((long)n * ch / nt), p1 = (int)((long)n * (ch + 1) / nt);
+            const double *so = src + o * nn * (size_t)n;
+            /* the rows of plane i, row i1; the absolute row index */
+#define PROW(i, i1) ((i) < 0 || (i) >= n ? brow : so + ((size_t)(i) * nn + (size_t)(i1) * (size_t)n))
+#define GROW(i, i1) ((o * (size_t)n + (size_t)(i)) * (size_t)n + (size_t)(i1))
+#define FILL(i, i1, fk)                                                                                        \
+    do {                                                                                                       \
+        double x_[HJ_BAND_DMAX] = {0};                                                                         \
+        row_coords(ws, GROW((i) < 0 ? 0 : (i) >= n ? n - 1 : (i), i1), K, (i), x_);                           \
+        row_dyn(ws, t, x_, ws->xlast + 1, n, a, fr);                                                           \
+        fk = fr + (long)K * n;                                                                                 \
+    } while (0)
+            if (p0 >= p1) continue;
+            const double *fk;
+            /* P_{p0-1}; mu, A, P of p0 */
+            for (int i1 = 0; i1 < n; i1++) {
+                const size_t r = (size_t)i1 * (size_t)n;
+                FILL(p0 - 1, i1, fk);
+                row_faces(n, PROW(p0 - 3, i1), PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), fk, c,
+                          mu + r, A + r, P[(p0 + 1) & 1] + r, Q);
+                FILL(p0, i1, fk);
+                row_faces(n, PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), PROW(p0 + 2, i1), fk, c,
+                          mu + r, A + r, P[p0 & 1] + r, Q);
+            }
+            for (int i = p0; i < p1; i++) {
+                for (int i1 = 0; i1 < n; i1++) {
+                    const size_t r = (size_t)i1 * (size_t)n;
+                    FILL(i + 1, i1, fk);
+                    row_pipe(n, PROW(i - 1, i1), PROW(i, i1), PROW(i + 1, i1), PROW(i + 2, i1), PROW(i + 3, i1), fk, c,
+                             mu + r, A + r, P[(i + 1) & 1] + r, w + r);
+                }
+                sweep_line(ws, b, d - 2, w, (size_t)n, GROW(i, 0), 1, 0, n, seg_max(n), NULL, a, t, dt, fz);
+                const int q = i - 1;
+                if (inplace && q >= p0 + 3 && q < p1 - 3)
+                    memcpy(fz->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
+            }
+        }
+        if (inplace) {
+#pragma omp barrier
+            for (size_t item = (size_t)tid; item < items; item += (size_t)nt) {
+                const size_t o = item / (size_t)nt;
+                const int ch = (int)(item % (size_t)nt), p0 = (int)((long)n * ch / nt), p1 = (int)((long)n * (ch + 1) / nt);
+                for (int q = p0; q < p1; q++)
+                    if (q < p0 + 3 || q >= p1 - 3)
+                        memcpy(fz->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
+            }
+        }
+#undef FILL
+#undef GROW
+#undef PROW
     }
 }
 
@@ -411,18 +519,16 @@ int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *
     const int d = pb->d;
     const double snap = pb->snap > 0 ? pb->snap : 1e-12;
     for (int a = 0; a < pb->ncontrols; a++) {
-        const double *src = v;
-        double *tmp[2] = {ws->w1, ws->w2};
         const int last = a == pb->ncontrols - 1;
-        const fused fz = {.v = v, .mode = last ? 2 : a == 0 ? 0 : 1, .first = a == 0, .snap = snap};
-        /* d >= 3: the last sweep inside the sweep in direction d - 2 (its
-         * lines are many enough to share among threads); d = 2: apart */
-        for (int k = 0; k < d - 1; k++) {
-            const int fuse = d >= 3 && k == d - 2;
-            sweep_rows(ws, k, src, tmp[k % 2], a, t, dt, fuse ? &fz : NULL);
-            src = tmp[k % 2];
-        }
-        if (d == 2) sweep_last(ws, src, v, fz.mode, fz.first, snap, a, t, dt);
+        /* d = 3 reads V^n plane by plane while the last control writes:
+         * its values wait in vmin (sweep_planes) */
+        const fused fz = {.v = v, .out = d == 3 ? ws->vmin : v, .mode = last ? 2 : a == 0 ? 0 : 1, .first = a == 0,
+                          .snap = snap};
+        /* d = 2, 4: direction 0 into w1, then the last direction row by
+         * row (d = 2) or the last three plane by plane (d = 4) */
+        if (d != 3) sweep_rows(ws, 0, v, ws->w1, a, t, dt);
+        if (d == 2) sweep_last(ws, ws->w1, &fz, a, t, dt);
+        else sweep_planes(ws, d == 3 ? v : ws->w1, a, t, dt, &fz);
     }
     return HJ_OK;
 }

@@ -49,10 +49,12 @@ typedef struct {
     int nthreads;            /* OpenMP threads of the sweeps (the maximum when set up) */
     size_t total;            /* n^d */
     double dx[HJ_BAND_DMAX];
-    double *w1, *w2, *vmin;  /* intermediate sweeps, minimum over controls */
+    double *w1, *vmin;       /* the sweep in direction 0 (d = 2, 4), minimum over controls */
     double *xlast;           /* last coordinate of nodes -1 .. n */
     double *buf;             /* per-thread row buffers */
     size_t bufper;
+    double *planes;          /* per-thread plane buffers (d >= 3) */
+    size_t planeper;
     int autonomous;          /* set by the caller: 1 when f does not depend on t */
     int rate_known;          /* the CFL rate max |f_k| / dx_k is ws->rate (autonomous f) */
     double rate;
