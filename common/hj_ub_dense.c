@@ -25,6 +25,11 @@ enum { SEG = 256 };
 #define HJ_UB_CLONES
 #endif
 
+/* The planes' faces of a group of controls that share a pass of the d = 3
+ * step (sweep_planes), per thread: in the last level cache with the rows
+ * they read. */
+#define GROUP_BYTES 4e6
+
 static size_t seg_max(int n) { return (size_t)n > SEG ? (size_t)n : SEG; }
 
 /* Per-thread buffer, in doubles from its start (s = seg_max(n)):
@@ -69,9 +74,15 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
     ws->nthreads = 1;
 #endif
     ws->bufper = buf_size(d, n);
-    /* per thread, d >= 3: the intermediate plane, mu, A, two P (n^2
-     * each), Q, the boundary row and the dynamics of a row */
-    ws->planeper = d >= 3 ? 5 * (size_t)n * (size_t)n + (size_t)(2 + d) * (size_t)n : 0;
+    /* d = 3: controls in groups whose planes' faces take about
+     * GROUP_BYTES per thread; d = 4: one (each has its own w1) */
+    const double face_bytes = 4.0 * n * n * sizeof(double);
+    ws->group = d == 3 && GROUP_BYTES / face_bytes > 1 ? (int)(GROUP_BYTES / face_bytes) : 1;
+    if (ws->group > pb->ncontrols) ws->group = pb->ncontrols;
+    /* per thread, d >= 3: the intermediate plane, mu, A, two P for each
+     * control of a group (n^2 each), Q, the boundary row and the dynamics
+     * of a row */
+    ws->planeper = d >= 3 ? (1 + 4 * (size_t)ws->group) * (size_t)n * (size_t)n + (size_t)(2 + d) * (size_t)n : 0;
     ws->w1 = d != 3 ? malloc(ws->total * sizeof *ws->w1) : NULL; /* d = 3: no intermediate grid */
     ws->vmin = malloc(ws->total * sizeof *ws->vmin);
     ws->xlast = malloc((size_t)(n + 2) * sizeof *ws->xlast);
@@ -419,29 +430,30 @@ static void sweep_rows(hj_ub_dense *ws, int k, const double *src, double *dst, i
     }
 }
 
-/* The last three directions K = d - 3, d - 2, d - 1 of one control, plane
- * by plane: a plane is the n^2 nodes of one index i along K (and of one
- * index along direction 0 for d = 4).  The sweep in K steps from plane i
- * to plane i + 1 as sweep_line does from row to row, with the faces of a
- * whole plane kept (per thread: mu, A, two P, n^2 each), and writes plane
- * i of the intermediate grid into a buffer of one plane, in cache; the
- * plane's line along d - 2 then runs at once, each row to the last
- * direction.  No intermediate grid: per node and control the step reads
- * src and the running minimum and writes the minimum.
+/* The last three directions K = d - 3, d - 2, d - 1 of the controls a0 ..
+ * a1-1, plane by plane: a plane is the n^2 nodes of one index i along K
+ * (and of one index along direction 0 for d = 4).  For each control, the
+ * sweep in K steps from plane i to plane i + 1 as sweep_line does from row
+ * to row, with the faces of a plane kept (per thread and control: mu, A,
+ * two P), and writes plane i of the intermediate grid into a buffer of
+ * one plane; the plane's line along d - 2 then runs at once, each row to
+ * the last direction.  No intermediate grid, and the controls of a group
+ * share the pass: the running minimum and src are read from memory once
+ * per group, and the other controls find them in cache.
  *
  * The planes along K are cut into one range per thread (each starts with
  * the faces of its first two planes), so that d = 3 shares work among
  * threads.  For d = 3, src is V^n itself: the last control's values go to
- * vmin first (it is read there, then written), and back into v once no
- * thread reads V^n there: a plane q of the range [p0, p1) after step q + 1
- * unless the neighbouring ranges read it (q < p0 + 3 or q >= p1 - 3: after
- * a barrier). */
-static void sweep_planes(hj_ub_dense *ws, const double *src, int a, double t, double dt, const fused *fz)
+ * vmin first (read there, then written), and back into v once no thread
+ * reads V^n there: a plane q of the range [p0, p1) after step q + 1
+ * unless the neighbouring ranges read it (q < p0 + 3 or q >= p1 - 3:
+ * after a barrier). */
+static void sweep_planes(hj_ub_dense *ws, const double *src, int a0, int a1, double t, double dt, double snap)
 {
     const hj_ub_problem *pb = ws->pb;
-    const int d = pb->d, n = pb->n, K = d - 3;
+    const int d = pb->d, n = pb->n, K = d - 3, na = pb->ncontrols;
     const size_t nn = (size_t)n * (size_t)n, nouter = ws->total / (nn * (size_t)n);
-    const int inplace = fz->mode == 2 && fz->out != fz->v;
+    const int inplace = d == 3 && a1 == na;
     const double c = dt / ws->dx[K];
 #pragma omp parallel num_threads(ws->nthreads)
     {
@@ -452,8 +464,7 @@ static void sweep_planes(hj_ub_dense *ws, const double *src, int a, double t, do
 #endif
         const int tid = thread_id();
         double *b = ws->buf + (size_t)tid * ws->bufper, *pl = ws->planes + (size_t)tid * ws->planeper;
-        double *w = pl, *mu = pl + nn, *A = pl + 2 * nn, *P[2] = {pl + 3 * nn, pl + 4 * nn}, *Q = pl + 5 * nn,
-               *brow = Q + n, *fr = brow + n;
+        double *w = pl, *Q = pl + (1 + 4 * (size_t)ws->group) * nn, *brow = Q + n, *fr = brow + n;
         for (int j = 0; j < n; j++) brow[j] = pb->boundary;
         /* ranges: nouter x nt, cyclic over the threads */
         const size_t items = nouter * (size_t)nt;
@@ -474,26 +485,35 @@ static void sweep_planes(hj_ub_dense *ws, const double *src, int a, double t, do
             if (p0 >= p1) continue;
             const double *fk;
             /* P_{p0-1}; mu, A, P of p0 */
-            for (int i1 = 0; i1 < n; i1++) {
-                const size_t r = (size_t)i1 * (size_t)n;
-                FILL(p0 - 1, i1, fk);
-                row_faces(n, PROW(p0 - 3, i1), PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), fk, c,
-                          mu + r, A + r, P[(p0 + 1) & 1] + r, Q);
-                FILL(p0, i1, fk);
-                row_faces(n, PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), PROW(p0 + 2, i1), fk, c,
-                          mu + r, A + r, P[p0 & 1] + r, Q);
-            }
-            for (int i = p0; i < p1; i++) {
+            for (int a = a0; a < a1; a++) {
+                double *mu = pl + (1 + 4 * (size_t)(a - a0)) * nn, *A = mu + nn, *P[2] = {A + nn, A + 2 * nn};
                 for (int i1 = 0; i1 < n; i1++) {
                     const size_t r = (size_t)i1 * (size_t)n;
-                    FILL(i + 1, i1, fk);
-                    row_pipe(n, PROW(i - 1, i1), PROW(i, i1), PROW(i + 1, i1), PROW(i + 2, i1), PROW(i + 3, i1), fk, c,
-                             mu + r, A + r, P[(i + 1) & 1] + r, w + r);
+                    FILL(p0 - 1, i1, fk);
+                    row_faces(n, PROW(p0 - 3, i1), PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), fk,
+                              c, mu + r, A + r, P[(p0 + 1) & 1] + r, Q);
+                    FILL(p0, i1, fk);
+                    row_faces(n, PROW(p0 - 2, i1), PROW(p0 - 1, i1), PROW(p0, i1), PROW(p0 + 1, i1), PROW(p0 + 2, i1), fk,
+                              c, mu + r, A + r, P[p0 & 1] + r, Q);
                 }
-                sweep_line(ws, b, d - 2, w, (size_t)n, GROW(i, 0), 1, 0, n, seg_max(n), NULL, a, t, dt, fz);
+            }
+            for (int i = p0; i < p1; i++) {
+                for (int a = a0; a < a1; a++) {
+                    double *mu = pl + (1 + 4 * (size_t)(a - a0)) * nn, *A = mu + nn, *P[2] = {A + nn, A + 2 * nn};
+                    for (int i1 = 0; i1 < n; i1++) {
+                        const size_t r = (size_t)i1 * (size_t)n;
+                        FILL(i + 1, i1, fk);
+                        row_pipe(n, PROW(i - 1, i1), PROW(i, i1), PROW(i + 1, i1), PROW(i + 2, i1), PROW(i + 3, i1), fk,
+                                 c, mu + r, A + r, P[(i + 1) & 1] + r, w + r);
+                    }
+                    /* d = 3: the last control's values wait in vmin */
+                    const fused fz = {.v = ws->v, .out = d == 3 ? ws->vmin : ws->v, .mode = a == na - 1 ? 2 : a == 0 ? 0 : 1,
+                                      .first = a == 0, .snap = snap};
+                    sweep_line(ws, b, d - 2, w, (size_t)n, GROW(i, 0), 1, 0, n, seg_max(n), NULL, a, t, dt, &fz);
+                }
                 const int q = i - 1;
                 if (inplace && q >= p0 + 3 && q < p1 - 3)
-                    memcpy(fz->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
+                    memcpy(ws->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
             }
         }
         if (inplace) {
@@ -503,7 +523,7 @@ static void sweep_planes(hj_ub_dense *ws, const double *src, int a, double t, do
                 const int ch = (int)(item % (size_t)nt), p0 = (int)((long)n * ch / nt), p1 = (int)((long)n * (ch + 1) / nt);
                 for (int q = p0; q < p1; q++)
                     if (q < p0 + 3 || q >= p1 - 3)
-                        memcpy(fz->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
+                        memcpy(ws->v + GROW(q, 0) * (size_t)n, ws->vmin + GROW(q, 0) * (size_t)n, nn * sizeof(double));
             }
         }
 #undef FILL
@@ -516,19 +536,22 @@ int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *
 {
     const hj_ub_problem *pb = ws->pb;
     if (!(dt > 0)) return hj_error_set(err, HJ_EINVAL, "UB step: dt must be > 0");
-    const int d = pb->d;
+    const int d = pb->d, na = pb->ncontrols;
     const double snap = pb->snap > 0 ? pb->snap : 1e-12;
-    for (int a = 0; a < pb->ncontrols; a++) {
-        const int last = a == pb->ncontrols - 1;
-        /* d = 3 reads V^n plane by plane while the last control writes:
-         * its values wait in vmin (sweep_planes) */
-        const fused fz = {.v = v, .out = d == 3 ? ws->vmin : v, .mode = last ? 2 : a == 0 ? 0 : 1, .first = a == 0,
-                          .snap = snap};
-        /* d = 2, 4: direction 0 into w1, then the last direction row by
-         * row (d = 2) or the last three plane by plane (d = 4) */
-        if (d != 3) sweep_rows(ws, 0, v, ws->w1, a, t, dt);
-        if (d == 2) sweep_last(ws, ws->w1, &fz, a, t, dt);
-        else sweep_planes(ws, d == 3 ? v : ws->w1, a, t, dt, &fz);
-    }
+    ws->v = v;
+    if (d == 3)
+        for (int a = 0; a < na; a += ws->group) sweep_planes(ws, v, a, a + ws->group < na ? a + ws->group : na, t, dt, snap);
+    else
+        for (int a = 0; a < na; a++) {
+            /* d = 2, 4: direction 0 into w1, then the last direction row by
+             * row (d = 2) or the last three plane by plane (d = 4) */
+            sweep_rows(ws, 0, v, ws->w1, a, t, dt);
+            if (d == 4) sweep_planes(ws, ws->w1, a, a + 1, t, dt, snap);
+            else {
+                const fused fz = {.v = v, .out = v, .mode = a == na - 1 ? 2 : a == 0 ? 0 : 1, .first = a == 0, .snap = snap};
+                sweep_last(ws, ws->w1, &fz, a, t, dt);
+            }
+        }
+    ws->v = NULL;
     return HJ_OK;
 }
