@@ -55,7 +55,7 @@ typedef struct {
     size_t bufper;
     double *planes;          /* per-thread plane buffers (d >= 3) */
     size_t planeper;
-    int group;               /* controls sharing a pass (d = 3) */
+    int group;               /* controls sharing a pass (d = 3; may be lowered after init) */
     double *v;               /* V during a step */
     int autonomous;          /* set by the caller: 1 when f does not depend on t */
     int rate_known;          /* the CFL rate max |f_k| / dx_k is ws->rate (autonomous f) */

@@ -2,7 +2,8 @@
  * bitwise the values of hj_ub_step on the FS store (every flux branch:
  * both signs of mu, mu = 0, inflow through the grid's edge, several
  * controls, the target problem), the batched dynamics the same as the
- * per-node ones, the same bits for 1 and 2 OpenMP threads, and the rate
+ * per-node ones, the same bits for 1, 2 and 3 OpenMP threads and for
+ * controls in groups of any size, and the rate
  * of autonomous dynamics computed once with the same time steps. */
 #include "hj_test.h"
 
@@ -127,8 +128,9 @@ static void equals_fs_store(void **state)
         }
 }
 
-/* 1 and 2 threads: the same bits (the rows are shared among threads, each
- * node's value depends on its stencil only). */
+/* 1, 2 and 3 threads: the same bits (the rows, or the planes of d >= 3,
+ * are shared among threads, each node's value depends on its stencil
+ * only; three uneven ranges of planes for d = 3). */
 static void threads_bitwise(void **state)
 {
     (void)state;
@@ -137,9 +139,9 @@ static void threads_bitwise(void **state)
     int m;
     cases(cs, &m);
     for (int i = 0; i < m; i++) {
-        double *v[2] = {NULL, NULL};
+        double *v[3] = {NULL, NULL, NULL};
         size_t total = 0;
-        for (int th = 1; th <= 2; th++) {
+        for (int th = 1; th <= 3; th++) {
             omp_set_num_threads(th);
             /* 2-D: rows longer than one segment, so that segments are shared */
             hj_ub_problem pb = problem(&cs[i], cs[i].d == 2 ? 300 : cs[i].d == 3 ? 40 : 14);
@@ -161,9 +163,52 @@ static void threads_bitwise(void **state)
             hj_ub_dense_free(&ws);
         }
         assert_memory_equal(v[0], v[1], total * sizeof *v[0]);
-        free(v[0]);
-        free(v[1]);
+        assert_memory_equal(v[0], v[2], total * sizeof *v[0]);
+        for (int th = 0; th < 3; th++) free(v[th]);
     }
+    omp_set_num_threads(1);
+#endif
+}
+
+/* d = 3 with the controls in groups smaller than all (a group's planes
+ * share a pass): groups of 1 and 2 of the 3 controls give the FS store's
+ * bits, at 1 and 2 threads. */
+static void control_groups(void **state)
+{
+    (void)state;
+    dcase c = {3, 2, {0.3, -0.5, -0.4, 0}, {1.1, 0.5, 0.2, 0}};
+    for (int th = 1; th <= 2; th++)
+        for (int g = 1; g <= 2; g++) {
+#ifdef _OPENMP
+            omp_set_num_threads(th);
+#else
+            if (th > 1) continue;
+#endif
+            hj_ub_problem pb = problem(&c, 17);
+            hj_ub_solver sv;
+            hj_ub_dense ws;
+            assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
+            assert_int_equal(hj_ub_dense_init(&ws, &pb, dyn_row, NULL), HJ_OK);
+            assert_int_equal(ws.group, 3); /* a small grid: every control in one group */
+            ws.group = g;
+            double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
+            fs_values(&sv, v);
+            const double T = 0.6;
+            double t = 0;
+            for (int st = 0; st < 6 && t < T; st++) {
+                const double dt = hj_ub_dense_dt(&ws, t, T);
+                assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
+                t = dt == T - t ? T : t + dt;
+                assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
+                fs_values(&sv, ref);
+                assert_memory_equal(v, ref, ws.total * sizeof *v);
+            }
+            free(v);
+            free(ref);
+            hj_ub_dense_free(&ws);
+            hj_ub_free(&sv);
+        }
+#ifdef _OPENMP
     omp_set_num_threads(1);
 #endif
 }
@@ -232,6 +277,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(equals_fs_store),
         cmocka_unit_test(threads_bitwise),
+        cmocka_unit_test(control_groups),
         cmocka_unit_test(autonomous_rate),
         cmocka_unit_test(bad_input),
     };
