@@ -90,7 +90,7 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
     ws->planes = d >= 3 ? malloc((size_t)ws->nthreads * ws->planeper * sizeof *ws->planes) : NULL;
     if ((d != 3 && !ws->w1) || !ws->vmin || !ws->xlast || !ws->buf || (d >= 3 && !ws->planes)) {
         hj_ub_dense_free(ws);
-        return hj_error_set(err, HJ_ENOMEM, "out of memory: UB workspace of %.3g GB", total * 24 / 1e9);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory: UB workspace of %.3g GB", total * 16 / 1e9);
     }
     /* as hj_ub_centre, and the cells beside the ends as mu_beside: x -+ dx */
     const int l = d - 1;

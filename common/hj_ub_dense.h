@@ -13,20 +13,27 @@
  * row of nodes per call (hj_ub_row_fn), so that the user's code vectorises
  * too; without it the problem's per-node dyn is called.
  *
- * Why the controls' loop is outside the sweeps: with dimension splitting a
- * control's second sweep needs its first sweep on the neighbouring rows,
- * so running every control inside the row loop would hold one intermediate
- * grid per control (11 grids for Table 5).  Each control instead runs its d
- * sweeps over the grid; for d >= 3 the last sweep runs row by row inside
- * the sweep in direction d - 2 (each of its rows goes straight to the last
- * direction, in cache), and takes the minimum over the controls (and the
- * final min with V^n, the snap) in the same pass, with the dynamics the
- * sweep in direction d - 2 evaluated for the row.  The row kernels are
- * built for AVX-512 and AVX2 besides the baseline, chosen at run time.
+ * The controls and the memory: with dimension splitting a control's
+ * second sweep needs its first sweep on the neighbouring rows, so the
+ * controls cannot run inside the row loop without one intermediate grid
+ * each.  For d >= 3 the last three directions run plane by plane instead
+ * (a plane: the last two indices): the sweep in direction d - 3 steps from
+ * plane to plane keeping a plane's faces, and hands each plane, in cache,
+ * to the sweep in d - 2, whose rows go straight to the last direction;
+ * the minimum over the controls (and the final min with V^n, the snap)
+ * is taken in the same pass.  For d = 3 the controls run in groups (as
+ * many as keep their planes' faces in about 4 MB per thread), every
+ * control of a group on each plane in turn, so that the running minimum
+ * and V^n are read from memory once per group: about 24 B per node per
+ * group, against 40-48 B per node and control with a grid between the
+ * sweeps.  d = 4 sweeps direction 0 into one intermediate grid per
+ * control first; d = 2 sweeps each row of it.  The row kernels are built
+ * for AVX-512 and AVX2 besides the baseline, chosen at run time.
  *
- * OpenMP: the rows (or row segments) of a sweep are shared among the
- * threads; each node's value depends on its stencil only, so results are
- * bitwise the same for any thread count (unit test).
+ * OpenMP: the rows (or row segments) of a sweep, and for d >= 3 the planes
+ * (one range of planes per thread), are shared among the threads; each
+ * node's value depends on its stencil only, so results are bitwise the
+ * same for any thread count (unit test).
  *
  * Library code: returns HJ_* codes, never prints.
  */
@@ -63,8 +70,9 @@ typedef struct {
 } hj_ub_dense;
 
 /* Set up the workspace for problem pb (pb->avg0, uniform, reached, bbox and
- * front_sub are not used).  Holds 2 n^d doubles besides the caller's V
- * (3 n^d for d = 4). */
+ * front_sub are not used).  Holds n^d doubles besides the caller's V
+ * (2 n^d for d = 2, 4), and per thread for d >= 3 the planes' faces (4 n^2
+ * doubles per control of a group) and a plane. */
 int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_row, hj_error *err);
 void hj_ub_dense_free(hj_ub_dense *ws);
 

@@ -14,10 +14,12 @@ control, its d sweeps; the band step counts the nodes of D^{n+1/2}), the
 model's bytes and floating point operations per node update, and the
 achieved fraction of the bandwidth of a triad a = b + s c measured here
 with the same thread count.  Bytes per node update of the dense step:
-the sweep in direction 0 reads V and writes an intermediate grid (16 B),
-the sweep in direction 1 reads it (8 B) and hands each row to the last
-direction's sweep in cache, whose minimum over the controls reads and
-writes the running minimum (16 B).  Flops of the dense step: per node
+the last three directions run plane by plane without a grid between
+them, the controls in groups of G (as many as fit the workspace's cache
+budget: 3 at 200^3, all 11 at 100^3), and each group's pass reads V^n
+and the running minimum over the controls and writes the minimum (24 B
+per node), the other controls of the group finding them in cache: 24
+ceil(11 / G) / 11 B per node update.  Flops of the dense step: per node
 and sweep mu = c f (1), the flux (4, one division) and the update (3),
 and the minimum over controls (1); compares and selects, about 25 per
 node and sweep, are not counted, and they, not the bandwidth, bound the
@@ -124,14 +126,16 @@ static double triad(size_t m)
 }
 
 /* Best wall and CPU seconds of one dense step (its time step included),
- * from the ball's averages (7b); the values after the steps in v (n^3). */
-static int dense(int n, int steps, double *v, double *secs, double *cpu, hj_error *err)
+ * from the ball's averages (7b); the values after the steps in v (n^3);
+ * the controls per pass in *group. */
+static int dense(int n, int steps, double *v, double *secs, double *cpu, int *group, hj_error *err)
 {
     hj_ub_problem pb = problem(n);
     hj_ub_dense ws;
     int rc = hj_ub_dense_init(&ws, &pb, dyn_row, err);
     if (rc) return rc;
     ws.autonomous = 1; /* f does not depend on t: the CFL rate once */
+    *group = ws.group;
     for (size_t l = 0; l < ws.total; l++) {
         const int idx[3] = {(int)(l / ((size_t)n * n)), (int)(l / n % n), (int)(l % n)};
         double blo[3], bhi[3];
@@ -186,9 +190,9 @@ int main(int argc, char **argv)
     char line[4][512];
     int nl = 0;
     const char *head = "kernel\tN\tthreads\twall_s_step\tcpu_s_step\tMupd_per_s\tMupd_per_cpu_s\tB_per_upd\tflop_per_upd\ttriad_GB_s\tbw_fraction\n";
-    /* dense: sweep 0 (read + write), sweep 1 (read), the min over controls
-     * (read + write); the last sweep works on rows in cache */
-    const double dense_bytes = 16.0 + 8.0 + 16.0, dense_flops = 8.0 * 3 + 1;
+    /* dense: per pass of a group of controls, V^n (read) and the min over
+     * the controls (read + write); the rest works on planes in cache */
+    const double dense_flops = 8.0 * 3 + 1;
     const size_t total = (size_t)n * (size_t)n * (size_t)n;
     double *v[2] = {malloc(total * sizeof(double)), malloc(total * sizeof(double))};
     if (!v[0] || !v[1]) {
@@ -199,10 +203,12 @@ int main(int argc, char **argv)
     for (int th = 1; th <= 2; th++) {
         set_threads(th);
         double secs = 0, cpu = 0;
+        int group = 1;
         hj_progress("bench_ub: dense N=%d, %d thread(s) ...\n", n, th);
-        if (dense(n, steps, v[th - 1], &secs, &cpu, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+        if (dense(n, steps, v[th - 1], &secs, &cpu, &group, &err)) { hj_out_abort(&out); p3_die(a.prog, &err); }
+        const double dense_bytes = 24.0 * ((NA + group - 1) / group) / NA;
         const double upd = (double)n * n * n * NA / secs, bw = triad((size_t)1 << 24);
-        snprintf(line[nl++], sizeof line[0], "UB dense\t%d\t%d\t%.4g\t%.4g\t%.4g\t%.4g\t%.0f\t%.0f\t%.4g\t%.3f\n", n, th,
+        snprintf(line[nl++], sizeof line[0], "UB dense\t%d\t%d\t%.4g\t%.4g\t%.4g\t%.4g\t%.3g\t%.0f\t%.4g\t%.3f\n", n, th,
                  secs, cpu, upd / 1e6, (double)n * n * n * NA / cpu / 1e6, dense_bytes, dense_flops, bw / 1e9, upd * dense_bytes / bw);
     }
     /* the check: the same bits for 1 and 2 threads */
