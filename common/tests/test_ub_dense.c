@@ -14,7 +14,8 @@
 
 typedef struct {
     int d;
-    int kind;              /* 0 constant (f_1 = 0: mu = 0), 1 rotation, 2 three controls, 3 inflow */
+    int kind;              /* 0 constant (f_1 = 0: mu = 0), 1 rotation, 2 three controls, 3 inflow,
+                              4 diverging along x1 (mu changes sign between neighbours) */
     double blo[4], bhi[4]; /* the initial box */
 } dcase;
 
@@ -25,7 +26,8 @@ static void dyn(double t, const double *x, int a, double *f, void *vctx)
     case 0: f[0] = -1.3; f[1] = 0; f[2] = 0.7; f[3] = 0.2; break;
     case 1: f[0] = -x[1]; f[1] = x[0]; f[2] = 0.3 + 0.1 * t; f[3] = 0.5; break;
     case 2: f[0] = a - 1.0; f[1] = 1; f[2] = a == 1 ? -0.5 : 0.5; f[3] = 0; break;
-    default: f[0] = 0.9; f[1] = 0.3 * x[0]; f[2] = 0.2; f[3] = 0.1; break;
+    case 3: f[0] = 0.9; f[1] = 0.3 * x[0]; f[2] = 0.2; f[3] = 0.1; break;
+    default: f[0] = x[0] - 0.35; f[1] = 0.4; f[2] = -0.3; f[3] = 0.2; break;
     }
 }
 
@@ -80,7 +82,7 @@ static void cases(dcase *cs, int *m)
 {
     *m = 0;
     for (int d = 2; d <= 4; d++)
-        for (int kind = 0; kind < 4; kind++) {
+        for (int kind = 0; kind < 5; kind++) {
             dcase c = {d, kind, {0.3, -0.5, -0.4, -0.3}, {1.1, 0.5, 0.2, 0.6}};
             if (kind == 3) { c.blo[0] = -3; c.bhi[0] = 0.1; } /* the box crosses the edge x1 = -2: inflow of 1 */
             cs[(*m)++] = c;
@@ -92,7 +94,7 @@ static void equals_fs_store(void **state)
 {
     (void)state;
     hj_test_one_thread();
-    dcase cs[12];
+    dcase cs[15];
     int m;
     cases(cs, &m);
     for (int i = 0; i < m; i++)
@@ -135,7 +137,7 @@ static void threads_bitwise(void **state)
 {
     (void)state;
 #ifdef _OPENMP
-    dcase cs[12];
+    dcase cs[15];
     int m;
     cases(cs, &m);
     for (int i = 0; i < m; i++) {
