@@ -215,6 +215,70 @@ static void control_groups(void **state)
 #endif
 }
 
+/* Values from a few levels (-1, -1/2, 0, 1/2, 1), drawn at random, into
+ * the FS store: many equal neighbours, so that the flux's equality tests
+ * take both ways, and values that move everywhere. */
+static int quantize(const int *idx, double *v, void *vctx)
+{
+    (void)idx;
+    unsigned *seed = vctx;
+    *seed = *seed * 1103515245u + 12345u;
+    *v = (double)((*seed >> 16) % 5) / 2 - 1;
+    return 0;
+}
+
+/* Quantized random data, diverging and converging flows and three
+ * controls in groups of 1, 2 and 3, at 1 and 2 threads: the FS store's
+ * bits after every step (every node reads its stencil's V^n, also where
+ * the last control's values are written back plane by plane). */
+static void random_levels(void **state)
+{
+    (void)state;
+    const int kinds[2] = {2, 4};
+    for (int d = 2; d <= 4; d++)
+        for (int ki = 0; ki < 2; ki++)
+            for (int th = 1; th <= 2; th++)
+                for (int g = 1; g <= 3; g++) {
+                    if ((kinds[ki] != 2 || d != 3) && g > 1) continue; /* groups: d = 3, several controls */
+#ifdef _OPENMP
+                    omp_set_num_threads(th);
+#else
+                    if (th > 1) continue;
+#endif
+                    dcase c = {d, kinds[ki], {0.3, -0.5, -0.4, -0.3}, {1.1, 0.5, 0.2, 0.6}};
+                    hj_ub_problem pb = problem(&c, d == 2 ? 31 : d == 3 ? 19 : 9);
+                    hj_ub_solver sv;
+                    hj_ub_dense ws;
+                    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
+                    assert_int_equal(hj_ub_dense_init(&ws, &pb, dyn_row, NULL), HJ_OK);
+                    ws.group = g < ws.group ? g : ws.group;
+                    unsigned seed = 12345u + (unsigned)(d * 10 + ki);
+                    assert_int_equal(hj_band_foreach(sv.s, quantize, &seed), 0);
+                    double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
+                    fs_values(&sv, v);
+                    const double T = 0.5;
+                    double t = 0;
+                    for (int st = 0; st < 3 && t < T; st++) {
+                        const double dt = hj_ub_dense_dt(&ws, t, T);
+                        assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
+                        t = dt == T - t ? T : t + dt;
+                        assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
+                        fs_values(&sv, ref);
+                        for (size_t k = 0; k < ws.total; k++)
+                            if (memcmp(&v[k], &ref[k], sizeof v[k]))
+                                fail_msg("d %d kind %d threads %d group %d step %d node %zu: %.17g, FS %.17g", d,
+                                         kinds[ki], th, g, st, k, v[k], ref[k]);
+                    }
+                    free(v);
+                    free(ref);
+                    hj_ub_dense_free(&ws);
+                    hj_ub_free(&sv);
+                }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+}
+
 /* f independent of t (kinds 0, 2, 3): with ws.autonomous the rate is
  * computed once, and every step's dt is the same as without. */
 static void autonomous_rate(void **state)
@@ -280,6 +344,7 @@ int main(void)
         cmocka_unit_test(equals_fs_store),
         cmocka_unit_test(threads_bitwise),
         cmocka_unit_test(control_groups),
+        cmocka_unit_test(random_levels),
         cmocka_unit_test(autonomous_rate),
         cmocka_unit_test(bad_input),
     };
