@@ -1,10 +1,11 @@
 /* Unit tests of common/hj_ub_dense: the row-by-row UB-HJB step gives
  * bitwise the values of hj_ub_step on the FS store (every flux branch:
  * both signs of mu, mu = 0, inflow through the grid's edge, several
- * controls, the target problem), the batched dynamics the same as the
- * per-node ones, the same bits for 1, 2 and 3 OpenMP threads and for
- * controls in groups of any size, and the rate
- * of autonomous dynamics computed once with the same time steps. */
+ * controls, the target problem, flows that change sign between
+ * neighbours, random data from a few levels), the batched dynamics the
+ * same as the per-node ones, the same bits for 1, 2 and 3 OpenMP threads
+ * and for controls in groups of any size, and the rate of autonomous
+ * dynamics computed once with the same time steps. */
 #include "hj_test.h"
 
 #include <stdlib.h>
