@@ -89,12 +89,16 @@ int main(int argc, char **argv)
     const long *sizes = a.nsizes ? a.sizes : published;
     const int ns = a.nsizes ? a.nsizes : a.quick ? 2 : 6;
     hj_error err;
-    hj_out out;
+    hj_out out = {0};
+    p3_plan plan = {0};
+    if (a.plan) goto plan;
     if (p3_open(&out, a.out_dir, "table5.tsv", &err)) p3_die(a.prog, &err);
     fprintf(out.fp, "# table5: CPU seconds of one UB-HJB step (mean of %d), 11 controls, computed by hjbstep%s\n", STEPS,
             a.quick ? " --quick" : "");
     fprintf(out.fp, "N\tD0\tFLS\tFLS_ratio\tSSD\tSSD_ratio\tSSD_over_FLS\tSSDA\tSSDA_over_FLS\tSSD_ns_node\tSSD_B_node\t"
                     "SSD_MB\tpeak_MB\n");
+plan: /* --plan: the two walks of p3_plan (p3_prog.h), then print */
+    for (plan.world = 0; plan.world < (a.plan ? 2 : 1); plan.world++) {
     double prev[2] = {NAN, NAN};
     double last[3][2] = {{NAN, NAN}, {NAN, NAN}, {NAN, NAN}}; /* the last two step times of each store */
     int stopped[3] = {0, 0, 0};
@@ -107,6 +111,7 @@ int main(int argc, char **argv)
         for (int k = 0; k < 3; k++) {
             /* the paper's values: FLS to N = 400, SSD at every size, SSDA none */
             const int pub = a.extra || a.nsizes || k == 1 || (k == 0 && sizes[i] <= 400);
+            const int was_stopped = stopped[k];
             if (!pub && !stopped[k]) {
                 const double growth = last[k][0] > 0 ? last[k][1] / last[k][0] : 8;
                 const double n3 = (double)sizes[i] * (double)sizes[i] * (double)sizes[i];
@@ -118,6 +123,21 @@ int main(int argc, char **argv)
                              sizes[i]);
                 }
             }
+            if (a.plan) {
+                char label[96];
+                snprintf(label, sizeof label, "table5 N=%ld %s\t%s", sizes[i], hj_band_kind_name(kinds[k]),
+                         k == 1 || (k == 0 && sizes[i] <= 400) ? "published" : "no published value");
+                const char *why = !(!pub && stopped[k]) ? "run" : was_stopped ? "skip: a smaller size is not run"
+                                  : k == 0 && 9 * (double)sizes[i] * (double)sizes[i] * (double)sizes[i] > 1e9
+                                      ? "skip: full store above 1 GB"
+                                      : "skip: predicted above 2 s";
+                if (p3_plan_note(&plan, label, why, &err)) p3_die(a.prog, &err);
+                if (!(!pub && stopped[k])) {
+                    last[k][0] = last[k][1];
+                    last[k][1] = p3_plan_time(&plan);
+                }
+                continue;
+            }
             if (!pub && stopped[k]) continue;
             hj_progress("table5 N=%ld %s ...\n", sizes[i], hj_band_kind_name(kinds[k]));
             const int rc = run(kinds[k], (int)sizes[i], &t[k], &d0, &bytes[k], &nodes[k], &err);
@@ -126,6 +146,7 @@ int main(int argc, char **argv)
             last[k][0] = last[k][1];
             last[k][1] = t[k];
         }
+        if (a.plan) continue;
         char b[11][32];
         fprintf(out.fp, "%ld\t%zu\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.0f\n", sizes[i], d0, p3_num(b[0], t[0]),
                 p3_num(b[1], t[0] / prev[0]), p3_num(b[2], t[1]), p3_num(b[3], t[1] / prev[1]), p3_num(b[4], t[1] / t[0]),
@@ -135,9 +156,21 @@ int main(int argc, char **argv)
         prev[0] = t[0];
         prev[1] = t[1];
     }
+    char note[512] = "";
     if (skipped[0])
-        fprintf(out.fp, "# not run, no published value and predicted above %g s of CPU or FLS above 1 GB "
-                        "(hjbstep --extra, make paper3 P3_EXTRA=1 runs them): %s\n", EXTRA_BUDGET, skipped);
+        snprintf(note, sizeof note, "# not run, no published value and predicted above %g s of CPU or FLS above 1 GB "
+                                    "(hjbstep --extra, make paper3 P3_EXTRA=1 runs them): %s", EXTRA_BUDGET, skipped);
+    if (a.plan) {
+        if (p3_plan_note(&plan, "table5 closing comment\t", note[0] ? note : "(none)", &err)) p3_die(a.prog, &err);
+        continue;
+    }
+    if (note[0]) fprintf(out.fp, "%s\n", note);
+    }
+    if (a.plan) {
+        if (p3_plan_print(&plan, stdout, &err)) p3_die(a.prog, &err);
+        p3_plan_free(&plan);
+        return 0;
+    }
     if (hj_out_commit(&out, &err)) p3_die(a.prog, &err);
     return 0;
 }

@@ -18,6 +18,7 @@ void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const
     a->max_n = 0;
     a->ntables = 0;
     a->extra = 0;
+    a->plan = 0;
     hj_cli_opt opts[] = {
         {.name = "--quick", .type = HJ_OPT_FLAG, .value = &a->quick, .help = "reduced sizes (CI)"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &a->out_dir, .metavar = "DIR",
@@ -31,8 +32,11 @@ void p3_args_parse(p3_args *a, int argc, char **argv, const char *summary, const
          .max = (double)last_table, .metavar = "T,T,...", .help = "only these tables (numbers)", .count = &a->ntables,
          .maxn = P3_MAX_SIZES, .dflt = "all"},
         {.name = "--extra", .type = HJ_OPT_FLAG, .value = &a->extra, .help = a->extra_help},
+        {.name = "--plan", .type = HJ_OPT_FLAG, .value = &a->plan,
+         .help = "print for each table and cell whether it would run and why (published value, predicted CPU time, "
+                 "store above 1 GB), then exit without running anything"},
     };
-    const int nopts = (int)(sizeof opts / sizeof opts[0]) - (a->extra_help == NULL); /* --extra is last */
+    const int nopts = (int)(sizeof opts / sizeof opts[0]) - 2 * (a->extra_help == NULL); /* --extra, --plan are last */
     hj_cli_spec spec = {a->prog, summary, opts, nopts, extra};
     hj_cli_parse_or_exit(&spec, argc, argv);
     if (a->quick && a->nsizes) hj_cli_fail(a->prog, HJ_EXIT_USAGE, "give --quick or --sizes, not both");
@@ -98,4 +102,58 @@ int p3_ball3_uniform(const double *blo, const double *bhi, void *ctx)
 {
     (void)ctx;
     return hj_ub_ball_uniform(3, blo, bhi, BALL3_CENTRE, 1.0);
+}
+
+double p3_plan_time(const p3_plan *p) { return p->world ? P3_PLAN_DEAR : 0.0; }
+
+int p3_plan_note(p3_plan *p, const char *label, const char *text, hj_error *err)
+{
+    const int w = p->world;
+    if (p->n[w] == p->cap[w]) {
+        const int cap = p->cap[w] ? 2 * p->cap[w] : 256;
+        char **l = realloc(p->label[w], (size_t)cap * sizeof *l);
+        if (l) p->label[w] = l;
+        char **t = realloc(p->text[w], (size_t)cap * sizeof *t);
+        if (t) p->text[w] = t;
+        if (!l || !t) return hj_error_set(err, HJ_ENOMEM, "out of memory (plan)");
+        p->cap[w] = cap;
+    }
+    char *l = strdup(label), *t = strdup(text);
+    if (!l || !t) {
+        free(l);
+        free(t);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory (plan)");
+    }
+    p->label[w][p->n[w]] = l;
+    p->text[w][p->n[w]++] = t;
+    return HJ_OK;
+}
+
+int p3_plan_print(const p3_plan *p, FILE *fp, hj_error *err)
+{
+    if (p->n[0] != p->n[1]) return hj_error_set(err, HJ_EFORMAT, "plan: the two walks noted %d and %d cells", p->n[0], p->n[1]);
+    for (int i = 0; i < p->n[0]; i++) {
+        if (strcmp(p->label[0][i], p->label[1][i]))
+            return hj_error_set(err, HJ_EFORMAT, "plan: cell %d is %s in one walk, %s in the other", i, p->label[0][i],
+                                p->label[1][i]);
+        if (!strcmp(p->text[0][i], p->text[1][i])) fprintf(fp, "%s\t%s\n", p->label[0][i], p->text[0][i]);
+        else
+            fprintf(fp, "%s\tdepends on measured time (if cheap: %s; if dear: %s)\n", p->label[0][i], p->text[0][i],
+                    p->text[1][i]);
+    }
+    if (fflush(fp) || ferror(fp)) return hj_error_set(err, HJ_EIO, "write error (plan)");
+    return HJ_OK;
+}
+
+void p3_plan_free(p3_plan *p)
+{
+    for (int w = 0; w < 2; w++) {
+        for (int i = 0; i < p->n[w]; i++) {
+            free(p->label[w][i]);
+            free(p->text[w][i]);
+        }
+        free(p->label[w]);
+        free(p->text[w]);
+    }
+    memset(p, 0, sizeof *p);
 }

@@ -36,7 +36,8 @@ typedef struct {
     long tables[P3_MAX_SIZES]; /* --tables: only these table numbers (none: all) */
     int ntables;
     int extra;                /* --extra: also the cells the paper has no value for, whatever their cost */
-    const char *extra_help;   /* set before parsing: the program offers --extra (NULL: not) */
+    int plan;                 /* --plan: print which cells would run and why, run nothing */
+    const char *extra_help;   /* set before parsing: the program offers --extra and --plan (NULL: not) */
 } p3_args;
 
 /* Whether table number t was asked for (all when --tables is absent). */
@@ -66,5 +67,37 @@ int p3_fig_block(FILE *fp, int d, int n, double lo, double dx, const int *i0, co
 
 /* "%.4g", or "-" for a NaN (no value). */
 const char *p3_num(char *buf, double v);
+
+/* --plan: which cells of the timing tables would run, without timing
+ * anything.  Whether a cell runs may depend on the times measured at the
+ * smaller sizes; so the program walks its tables twice, once as if every
+ * measured time were 0 s (world 0, the cheapest) and once as if it were
+ * P3_PLAN_DEAR s (world 1), noting each decision as text ("run" or
+ * "skip: why") under a label.  A cell whose text is the same in both
+ * worlds is decided by the rule alone; one whose text differs depends on
+ * the measured times ("depends on measured time").  Under the rule of
+ * p3_prog.c a cell that runs in world 1 runs whatever the times, and one
+ * skipped in world 0 is skipped whatever the times. */
+#define P3_PLAN_DEAR 1e30
+
+typedef struct {
+    int world; /* 0 or 1: the world being walked */
+    int n[2];
+    int cap[2];
+    char **label[2], **text[2];
+} p3_plan;
+
+/* The time a cell "measures" in the current world. */
+double p3_plan_time(const p3_plan *p);
+/* Note the decision about one cell (or a table's closing comment line)
+ * in the current world; HJ_ENOMEM if it cannot be stored. */
+int p3_plan_note(p3_plan *p, const char *label, const char *text, hj_error *err);
+/* Print "label<TAB>text" for each note of world 0, or "label<TAB>depends
+ * on measured time (if cheap: <text 0>; if dear: <text 1>)" where the
+ * two worlds differ; HJ_EFORMAT if the worlds did not note the same
+ * labels in the same order, HJ_EIO on a write error.  A label holds what
+ * does not depend on the world (e.g. whether the paper has a value). */
+int p3_plan_print(const p3_plan *p, FILE *fp, hj_error *err);
+void p3_plan_free(p3_plan *p);
 
 #endif

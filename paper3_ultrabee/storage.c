@@ -120,11 +120,40 @@ static void skipped_add(hj_band_kind kind, const char *key, int value, long n)
         snprintf(SKIPPED + len, sizeof SKIPPED - len, "%s%s %s=%d N>=%ld", len ? ", " : "", hj_band_kind_name(kind), key, value, n);
 }
 
-static void skipped_write(FILE *fp)
+/* --plan: the decisions are noted here instead of running the cells. */
+static int PLANNING = 0;
+static p3_plan PLAN;
+
+static void plan_note(const p3_args *a, const char *label, const char *text)
 {
+    hj_error err;
+    if (p3_plan_note(&PLAN, label, text, &err)) p3_die(a->prog, &err);
+}
+
+/* Note the decision about a cell: whether the paper has a value for it,
+ * run or skip, and why (may be NULL for a run). */
+static void plan_cell(const p3_args *a, const char *table, const char *key, int value, long n, hj_band_kind kind, int pub,
+                      int run, const char *why)
+{
+    char label[96], text[160];
+    snprintf(label, sizeof label, "%s %s=%d N=%ld %s\t%s", table, key, value, n, hj_band_kind_name(kind),
+             pub ? "published" : "no published value");
+    snprintf(text, sizeof text, "%s%s%s", run ? "run" : "skip", why ? ": " : "", why ? why : "");
+    plan_note(a, label, text);
+}
+
+static void skipped_write(const p3_args *a, const char *table, FILE *fp)
+{
+    char line[2560] = "";
     if (SKIPPED[0])
-        fprintf(fp, "# not run, no published value and predicted above %g s of CPU or a full store above 1 GB "
-                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s\n", EXTRA_BUDGET, SKIPPED);
+        snprintf(line, sizeof line, "# not run, no published value and predicted above %g s of CPU or a full store above 1 GB "
+                                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s", EXTRA_BUDGET, SKIPPED);
+    if (PLANNING) {
+        char label[64];
+        snprintf(label, sizeof label, "%s closing comment\t", table);
+        plan_note(a, label, line[0] ? line : "(none)");
+    } else if (line[0])
+        fprintf(fp, "%s\n", line);
     SKIPPED[0] = 0;
 }
 
@@ -405,6 +434,15 @@ static int affordable(const double *prev, int i, int d, int published, int big)
     return !big && within(prev, i, d, EXTRA_BUDGET < BUDGET ? EXTRA_BUDGET : BUDGET);
 }
 
+/* Why affordable() refused a cell, for --plan. */
+static const char *skip_why(char *buf, const double *prev, int i, int published, int big)
+{
+    if (i > 0 && isnan(prev[i - 1])) return "a smaller size is not run";
+    if (!published && !EXTRA_ALL && big) return "full store above 1 GB";
+    snprintf(buf, 64, "predicted above %g s", published || EXTRA_ALL ? BUDGET : EXTRA_BUDGET < BUDGET ? EXTRA_BUDGET : BUDGET);
+    return buf;
+}
+
 static const hj_band_kind SEARCH_KINDS[] = {HJ_BAND_FS, HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NSK = 7 };
 
@@ -429,15 +467,17 @@ static mem_cell MEM_SEEN[NSK][4];
 static void search_table(const p3_args *a, const char *table, int example, hj_error *err)
 {
     static const long s2[] = {400, 800, 1600}, s3[] = {100, 200, 400, 800}, s4[] = {25, 50, 100, 200};
-    hj_out out;
+    hj_out out = {0};
     char name[64];
     snprintf(name, sizeof name, "%s.tsv", table);
+    if (PLANNING) goto rows;
     if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
     fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
             example, a->quick ? " --quick" : "");
     fprintf(out.fp, "d\tN\tN_nb");
     for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
     fprintf(out.fp, "\tSSD_over_FLS\n");
+rows:
     for (int d = example == 1 ? 2 : 3; d <= 4; d++) {
         const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
         const int ns = a->quick ? 2 : d == 2 ? 3 : 4;
@@ -446,14 +486,22 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {example, d, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
             size_t nb = 0;
-            fprintf(out.fp, "%d\t%ld", d, sizes[i]);
+            if (!PLANNING) fprintf(out.fp, "%d\t%ld", d, sizes[i]);
             char line[1024] = "";
             for (int k = 0; k < NSK; k++) {
                 t[k][i] = NAN;
                 const int big = full_store_big(SEARCH_KINDS[k], d, f.n);
                 const int pub = i <= PUB_SEARCH[example - 1][d - 2][k];
                 if (!affordable(t[k], i, d, pub, big)) {
+                    char why[64];
+                    if (PLANNING) plan_cell(a, table, "d", d, sizes[i], SEARCH_KINDS[k], pub, 0, skip_why(why, t[k], i, pub, big));
                     if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(SEARCH_KINDS[k], "d", d, sizes[i]);
+                    continue;
+                }
+                if (PLANNING) {
+                    plan_cell(a, table, "d", d, sizes[i], SEARCH_KINDS[k], pub, 1, NULL);
+                    t[k][i] = p3_plan_time(&PLAN);
+                    if (example == 1 && d == 3) MEM_SEEN[k][i] = (mem_cell){1, NAN, 0};
                     continue;
                 }
                 hj_band *s;
@@ -468,6 +516,7 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
                 hj_band_free(s);
                 if (big) memlock_set(0);
             }
+            if (PLANNING) continue;
             for (int k = 0; k < NSK; k++) {
                 char b1[32], b2[32];
                 size_t len = strlen(line);
@@ -479,8 +528,8 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
             fflush(out.fp);
         }
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, table, out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 static const hj_band_kind UPDATE_KINDS[] = {HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
@@ -493,19 +542,33 @@ static const signed char PUB_UPDATE[2][NUK] = {{3, 4, 3, 4, -1, -1}, {3, 4, 4, 4
 static void update_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {50, 100, 200, 400, 800};
-    hj_out out;
+    hj_out out = {0};
+    if (PLANNING) goto rows;
     if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
     fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
             a->quick ? " --quick" : "");
     fprintf(out.fp, "ex\tN\tN_nb");
     for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
     fprintf(out.fp, "\tSSD_over_FLS\n");
+rows:
     for (int ex = 1; ex <= 2; ex++) {
         const int ns = a->quick ? 2 : 5;
         double t[NUK][5];
         for (int i = 0; i < ns; i++) {
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {ex, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
+            if (PLANNING) {
+                for (int k = 0; k < NUK; k++) {
+                    t[k][i] = NAN;
+                    const int pub = i <= PUB_UPDATE[ex - 1][k], big = full_store_big(UPDATE_KINDS[k], 3, f.n);
+                    char why[64];
+                    const int run = affordable(t[k], i, 3, pub, big);
+                    plan_cell(a, "table3", "ex", ex, sizes[i], UPDATE_KINDS[k], pub, run, run ? NULL : skip_why(why, t[k], i, pub, big));
+                    if (run) t[k][i] = p3_plan_time(&PLAN);
+                    else if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(UPDATE_KINDS[k], "ex", ex, sizes[i]);
+                }
+                continue;
+            }
             build_ctx count = {NULL, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f.n, 3};
             p3_front_band(&f, add_node, &count, err);
             fprintf(out.fp, "%d\t%ld\t%zu", ex, sizes[i], count.nb);
@@ -534,8 +597,8 @@ static void update_table(const p3_args *a, hj_error *err)
             fflush(out.fp);
         }
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, "table3", out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 /* Try to build a full store under a 4 GB address-space limit: 4e9 bytes,
@@ -566,26 +629,36 @@ static const signed char PUB_MEMORY[NSK] = {2, 2, 3, 3, 3, -1, -1};
 static void memory_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {100, 200, 400, 800};
-    hj_out out;
+    hj_out out = {0};
+    if (PLANNING) goto rows;
     if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
     fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
             a->quick ? " --quick" : "");
     fprintf(out.fp, "d\tN\tN_nb");
     for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
     fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
+rows:;
     double mb[NSK][4];
     const int ns = a->quick ? 2 : 4;
     for (int i = 0; i < ns; i++) {
         if (a->max_n && sizes[i] > a->max_n) break;
         p3_front f = {1, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
         size_t nb = 0;
-        fprintf(out.fp, "3\t%ld", sizes[i]);
+        if (!PLANNING) fprintf(out.fp, "3\t%ld", sizes[i]);
         for (int k = 0; k < NSK; k++) {
             hj_band *s;
             mb[k][i] = NAN;
-            if (MEM_SEEN[k][i].have) { mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue; }
+            if (MEM_SEEN[k][i].have) {
+                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], i <= PUB_MEMORY[k], 1, "measured by table1");
+                mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue;
+            }
             const int big = full_store_big(SEARCH_KINDS[k], 3, f.n);
-            if (big && !EXTRA_ALL && i > PUB_MEMORY[k]) { skipped_add(SEARCH_KINDS[k], "d", 3, sizes[i]); continue; }
+            if (big && !EXTRA_ALL && i > PUB_MEMORY[k]) {
+                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], 0, 0, "full store above 1 GB");
+                skipped_add(SEARCH_KINDS[k], "d", 3, sizes[i]);
+                continue;
+            }
+            if (PLANNING) { plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], i <= PUB_MEMORY[k], 1, NULL); continue; }
             hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
             if (big) memlock_set(1);
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
@@ -595,6 +668,7 @@ static void memory_table(const p3_args *a, hj_error *err)
             hj_band_free(s);
             if (big) memlock_set(0);
         }
+        if (PLANNING) continue;
         fprintf(out.fp, "\t%zu", nb);
         for (int k = 0; k < NSK; k++) {
             char b1[32], b2[32];
@@ -605,8 +679,8 @@ static void memory_table(const p3_args *a, hj_error *err)
                 under_4gb(HJ_BAND_FLS, f.n));
         fflush(out.fp);
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, "table4", out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 /* Figure 5: the band F+ u F- of both fronts in d = 2 on the 100^2 grid,
@@ -649,6 +723,19 @@ int main(int argc, char **argv)
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
     if (a.quick) BUDGET = 5.0;
     EXTRA_ALL = a.extra;
+    if (a.plan) { /* the two walks of p3_plan, as the tables would run in one process */
+        PLANNING = 1;
+        for (PLAN.world = 0; PLAN.world < 2; PLAN.world++) {
+            memset(MEM_SEEN, 0, sizeof MEM_SEEN);
+            if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
+            if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
+            if (p3_want(&a, 3)) update_table(&a, &err);
+            if (p3_want(&a, 4)) memory_table(&a, &err);
+        }
+        if (p3_plan_print(&PLAN, stdout, &err)) p3_die(a.prog, &err);
+        p3_plan_free(&PLAN);
+        return 0;
+    }
     char lock[4096];
     if (snprintf(lock, sizeof lock, "%s/.memlock", a.out_dir) < (int)sizeof lock) {
         if (hj_mkdirs(a.out_dir, &err)) p3_die(a.prog, &err);
