@@ -6,8 +6,10 @@
 #ifndef P3_PROG_H
 #define P3_PROG_H
 
+#include <math.h>
 #include <stdio.h>
 
+#include "hj_band.h"
 #include "hj_error.h"
 #include "hj_io.h"
 
@@ -37,7 +39,8 @@ typedef struct {
     int ntables;
     int extra;                /* --extra: also the cells the paper has no value for, whatever their cost */
     int plan;                 /* --plan: print which cells would run and why, run nothing */
-    const char *extra_help;   /* set before parsing: the program offers --extra and --plan (NULL: not) */
+    const char *published;    /* --published: the directory of the paper's tables (published/tableN.tsv) */
+    const char *extra_help;   /* set before parsing: the program offers --extra, --plan and --published (NULL: not) */
 } p3_args;
 
 /* Whether table number t was asked for (all when --tables is absent). */
@@ -67,6 +70,76 @@ int p3_fig_block(FILE *fp, int d, int n, double lo, double dx, const int *i0, co
 
 /* "%.4g", or "-" for a NaN (no value). */
 const char *p3_num(char *buf, double v);
+
+/* ---- which cells of the timing tables run (storage, hjbstep) ----------
+ *
+ * Every cell the paper has a value for runs, unless its predicted CPU time
+ * exceeds the program's budget.  A cell the paper has no value for (its
+ * '-' cells, and our own columns) is compared with nothing: it runs only
+ * when predicted under P3_EXTRA_BUDGET seconds and when it is not a full
+ * store above 1 GB, unless --extra asks for all of them.  The prediction
+ * is the time measured at the previous size times the growth between the
+ * two sizes before (the ratio of their times, or 2^d with fewer than two,
+ * at least 2).  A size after one that did not run (or gave no value) does
+ * not run either. */
+
+#define P3_EXTRA_BUDGET 2.0 /* CPU seconds */
+
+/* The paper's values of one table: DIR/<table>.tsv, the file the check
+ * reads (hjcheck), whose '# key:' header names the key columns. */
+typedef struct {
+    hj_table t;
+    int nkey;
+    int key[4]; /* the key columns' indices */
+} p3_pub;
+
+/* Read DIR/NAME.tsv; HJ_EIO / HJ_EFORMAT (no usable '# key:') otherwise. */
+int p3_pub_read(p3_pub *p, const char *dir, const char *name, hj_error *err);
+void p3_pub_free(p3_pub *p);
+/* Whether the paper gives a value for the quantity q (in its column q or
+ * q_ratio: seconds, megabytes or their "Order") in the row whose key
+ * columns hold the integers key[0 .. nkey-1]. */
+int p3_pub_has(const p3_pub *p, const long *key, const char *q);
+
+/* Whether a store of the given kind on n^d nodes is a full one (FS, FLS:
+ * 9 bytes a node) above 1 GB. */
+int p3_store_big(hj_band_kind kind, int d, long n);
+
+typedef struct {
+    double budget; /* CPU seconds a cell with a published value may be predicted to take; INFINITY: any */
+    int extra;     /* --extra: every cell as one with a published value */
+    double scale;  /* the predicted seconds are scale x the recorded time x the growth */
+} p3_rule;
+
+/* One column of a table (one store across the sizes): the times recorded
+ * at the sizes before, NaN where the cell did not run or gave no value. */
+typedef struct {
+    int n;          /* sizes recorded */
+    double t1, t2;  /* the last and the one before */
+} p3_col;
+
+#define P3_COL_INIT {0, NAN, NAN}
+
+/* Record a cell's time (NaN: not run or no value). */
+void p3_col_record(p3_col *c, double t);
+
+typedef enum {
+    P3_RUN,
+    P3_SKIP_SMALLER, /* a smaller size of the column did not run */
+    P3_SKIP_BIG,     /* no published value, and a full store above 1 GB */
+    P3_SKIP_COST     /* predicted above the budget */
+} p3_decision;
+
+/* Whether the next cell of column c runs: d is the dimension (the growth
+ * 2^d), published whether the paper has a value for it, big whether it
+ * is a full store above 1 GB.  A column that is never timed (memory)
+ * passes an empty one. */
+p3_decision p3_rule_decide(const p3_rule *r, const p3_col *c, int d, int published, int big);
+/* "run" or "skip: why", as --plan shows it. */
+const char *p3_decision_text(char *buf, size_t size, const p3_rule *r, p3_decision dec, int published);
+/* Whether a skipped cell is named in the table's closing comment line:
+ * no published value, and the first skipped size of its column. */
+int p3_rule_listed(p3_decision dec, int published);
 
 /* --plan: which cells of the timing tables would run, without timing
  * anything.  Whether a cell runs may depend on the times measured at the

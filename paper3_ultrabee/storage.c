@@ -98,16 +98,17 @@ both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 #include "p3_front.h"
 #include "p3_prog.h"
 
-static double BUDGET = 100.0; /* seconds; 5 with --quick (see the header) */
+/* Which cells run (p3_prog.h): a published one within 100 s predicted (5
+ * with --quick, see the header), one the paper has no value for (its '-'
+ * cells, and the SSDC and SSDA columns) within P3_EXTRA_BUDGET and not a
+ * full store above 1 GB, unless --extra (`make paper3 P3_EXTRA=1`) asks
+ * for all of them within the 100 s.  The cells left out are listed in a
+ * comment line at the end of each table. */
+static p3_rule RULE = {100.0, 0, 1.0};
 
-/* Cells the paper has no value for (its '-' cells, and the SSDC and SSDA
- * columns) are compared with nothing: they run only when predicted cheap,
- * EXTRA_BUDGET seconds and no full store above 1 GB, unless --extra
- * (`make paper3 P3_EXTRA=1`) asks for all of them (then within BUDGET, as
- * the published ones).  Every published cell runs as before.  The cells
- * left out are listed in a comment line at the end of each table. */
-static const double EXTRA_BUDGET = 2.0;
-static int EXTRA_ALL = 0;
+/* The paper's tables 1-4 (published/tableN.tsv): which cells it has a
+ * value for. */
+static p3_pub PUB[4];
 
 /* The cells skipped as extra, for the table's closing comment. */
 static char SKIPPED[2048];
@@ -131,15 +132,25 @@ static void plan_note(const p3_args *a, const char *label, const char *text)
 }
 
 /* Note the decision about a cell: whether the paper has a value for it,
- * run or skip, and why (may be NULL for a run). */
+ * run or skip and why (text: NULL for the rule's own). */
 static void plan_cell(const p3_args *a, const char *table, const char *key, int value, long n, hj_band_kind kind, int pub,
-                      int run, const char *why)
+                      p3_decision dec, const char *text)
 {
-    char label[96], text[160];
+    char label[96], buf[96];
     snprintf(label, sizeof label, "%s %s=%d N=%ld %s\t%s", table, key, value, n, hj_band_kind_name(kind),
              pub ? "published" : "no published value");
-    snprintf(text, sizeof text, "%s%s%s", run ? "run" : "skip", why ? ": " : "", why ? why : "");
-    plan_note(a, label, text);
+    plan_note(a, label, text ? text : p3_decision_text(buf, sizeof buf, &RULE, dec, pub));
+}
+
+/* Whether a cell of the rule runs; a skipped one is noted for the closing
+ * comment as the rule says, every one for --plan. */
+static int cell_runs(const p3_args *a, const char *table, const char *key, int value, long n, hj_band_kind kind, int d,
+                     const p3_col *c, int pub, int big)
+{
+    const p3_decision dec = p3_rule_decide(&RULE, c, d, pub, big);
+    if (PLANNING) plan_cell(a, table, key, value, n, kind, pub, dec, NULL);
+    if (p3_rule_listed(dec, pub)) skipped_add(kind, key, value, n);
+    return dec == P3_RUN;
 }
 
 static void skipped_write(const p3_args *a, const char *table, FILE *fp)
@@ -147,7 +158,7 @@ static void skipped_write(const p3_args *a, const char *table, FILE *fp)
     char line[2560] = "";
     if (SKIPPED[0])
         snprintf(line, sizeof line, "# not run, no published value and predicted above %g s of CPU or a full store above 1 GB "
-                                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s", EXTRA_BUDGET, SKIPPED);
+                                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s", P3_EXTRA_BUDGET, SKIPPED);
     if (PLANNING) {
         char label[64];
         snprintf(label, sizeof label, "%s closing comment\t", table);
@@ -166,13 +177,6 @@ static void skipped_write(const p3_args *a, const char *table, FILE *fp)
  * of them do not fit in this machine's 24 GB.  The lock is taken before
  * the build, so a wait never enters a timing. */
 static int MEMLOCK_FD = -1;
-
-static int full_store_big(hj_band_kind kind, int d, int n)
-{
-    double total = 1;
-    for (int i = 0; i < d; i++) total *= n;
-    return (kind == HJ_BAND_FS || kind == HJ_BAND_FLS) && total * 9.0 > 1e9;
-}
 
 static void memlock_set(int on)
 {
@@ -395,7 +399,7 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 {
     hj_band *s;
     size_t nb;
-    const int big = full_store_big(kind, f->d, f->n);
+    const int big = p3_store_big(kind, f->d, f->n);
     if (big) memlock_set(1);
     int rc = build(&s, kind, f, &nb, err);
     if (rc) { if (big) memlock_set(0); return rc; }
@@ -418,41 +422,8 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 
 /* ---- tables ----------------------------------------------------------------- */
 
-/* Whether a run predicted from the previous ones stays within the budget. */
-static int within(const double *prev, int i, int d, double budget)
-{
-    if (i == 0 || isnan(prev[i - 1])) return i == 0;
-    const double growth = i >= 2 && !isnan(prev[i - 2]) && prev[i - 2] > 0 ? prev[i - 1] / prev[i - 2] : (double)(1 << d);
-    return prev[i - 1] * (growth > 2 ? growth : 2) <= budget;
-}
-
-/* Whether to run a cell: published is whether the paper has a value for
- * it; big whether its store is a full one above 1 GB. */
-static int affordable(const double *prev, int i, int d, int published, int big)
-{
-    if (published || EXTRA_ALL) return within(prev, i, d, BUDGET);
-    return !big && within(prev, i, d, EXTRA_BUDGET < BUDGET ? EXTRA_BUDGET : BUDGET);
-}
-
-/* Why affordable() refused a cell, for --plan. */
-static const char *skip_why(char *buf, const double *prev, int i, int published, int big)
-{
-    if (i > 0 && isnan(prev[i - 1])) return "a smaller size is not run";
-    if (!published && !EXTRA_ALL && big) return "full store above 1 GB";
-    snprintf(buf, 64, "predicted above %g s", published || EXTRA_ALL ? BUDGET : EXTRA_BUDGET < BUDGET ? EXTRA_BUDGET : BUDGET);
-    return buf;
-}
-
 static const hj_band_kind SEARCH_KINDS[] = {HJ_BAND_FS, HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NSK = 7 };
-
-/* The largest size index with a published value (published/table1.tsv,
- * table2.tsv: seconds or ratio), by d = 2, 3, 4 and SEARCH_KINDS; -1:
- * none (SSDC and SSDA are ours; Table 2 publishes FLS and SSD only). */
-static const signed char PUB_SEARCH[2][3][NSK] = {
-    {{2, 2, 2, 2, 2, -1, -1}, {2, 2, 2, 2, 3, -1, -1}, {2, 2, 1, 1, 3, -1, -1}},
-    {{-1, -1, -1, -1, -1, -1, -1}, {-1, 2, -1, -1, 3, -1, -1}, {-1, 2, -1, -1, 3, -1, -1}},
-};
 
 /* Table 4 measures the stores of Table 1's d = 3 rows (Example 1, n = 100
  * ... 800): the bytes of each store Table 1 builds are kept here (NAN: it
@@ -482,6 +453,8 @@ rows:
         const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
         const int ns = a->quick ? 2 : d == 2 ? 3 : 4;
         double t[NSK][4];
+        p3_col col[NSK];
+        for (int k = 0; k < NSK; k++) col[k] = (p3_col)P3_COL_INIT;
         for (int i = 0; i < ns; i++) {
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {example, d, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
@@ -490,18 +463,15 @@ rows:
             char line[1024] = "";
             for (int k = 0; k < NSK; k++) {
                 t[k][i] = NAN;
-                const int big = full_store_big(SEARCH_KINDS[k], d, f.n);
-                const int pub = i <= PUB_SEARCH[example - 1][d - 2][k];
-                if (!affordable(t[k], i, d, pub, big)) {
-                    char why[64];
-                    if (PLANNING) plan_cell(a, table, "d", d, sizes[i], SEARCH_KINDS[k], pub, 0, skip_why(why, t[k], i, pub, big));
-                    if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(SEARCH_KINDS[k], "d", d, sizes[i]);
-                    continue;
-                }
-                if (PLANNING) {
-                    plan_cell(a, table, "d", d, sizes[i], SEARCH_KINDS[k], pub, 1, NULL);
+                const int big = p3_store_big(SEARCH_KINDS[k], d, f.n);
+                const int pub = p3_pub_has(&PUB[example - 1], (const long[]){d, sizes[i]}, hj_band_kind_name(SEARCH_KINDS[k]));
+                const int runs = cell_runs(a, table, "d", d, sizes[i], SEARCH_KINDS[k], d, &col[k], pub, big);
+                if (runs && PLANNING) {
                     t[k][i] = p3_plan_time(&PLAN);
                     if (example == 1 && d == 3) MEM_SEEN[k][i] = (mem_cell){1, NAN, 0};
+                }
+                if (!runs || PLANNING) {
+                    p3_col_record(&col[k], t[k][i]);
                     continue;
                 }
                 hj_band *s;
@@ -510,9 +480,14 @@ rows:
                 const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
                 mem_cell *m = example == 1 && d == 3 ? &MEM_SEEN[k][i] : NULL;
                 if (m && (rc == HJ_OK || rc == HJ_ENOMEM)) *m = (mem_cell){1, rc ? NAN : (double)hj_band_bytes(s) / 1e6, nb};
-                if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; } /* beyond this machine: no value */
+                if (rc == HJ_ENOMEM) { /* beyond this machine: no value */
+                    if (big) memlock_set(0);
+                    p3_col_record(&col[k], NAN);
+                    continue;
+                }
                 if (rc) p3_die(a->prog, err);
                 t[k][i] = time_search(s, &f);
+                p3_col_record(&col[k], t[k][i]);
                 hj_band_free(s);
                 if (big) memlock_set(0);
             }
@@ -535,10 +510,6 @@ rows:
 static const hj_band_kind UPDATE_KINDS[] = {HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NUK = 6 };
 
-/* Table 3's largest size index with a published value, by example and
- * UPDATE_KINDS (FLS and CRS of Example 1 at N = 800 have none). */
-static const signed char PUB_UPDATE[2][NUK] = {{3, 4, 3, 4, -1, -1}, {3, 4, 4, 4, -1, -1}};
-
 static void update_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {50, 100, 200, 400, 800};
@@ -553,22 +524,21 @@ static void update_table(const p3_args *a, hj_error *err)
 rows:
     for (int ex = 1; ex <= 2; ex++) {
         const int ns = a->quick ? 2 : 5;
-        double t[NUK][5];
+        p3_col col[NUK];
+        for (int k = 0; k < NUK; k++) col[k] = (p3_col)P3_COL_INIT;
         for (int i = 0; i < ns; i++) {
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {ex, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
-            if (PLANNING) {
-                for (int k = 0; k < NUK; k++) {
-                    t[k][i] = NAN;
-                    const int pub = i <= PUB_UPDATE[ex - 1][k], big = full_store_big(UPDATE_KINDS[k], 3, f.n);
-                    char why[64];
-                    const int run = affordable(t[k], i, 3, pub, big);
-                    plan_cell(a, "table3", "ex", ex, sizes[i], UPDATE_KINDS[k], pub, run, run ? NULL : skip_why(why, t[k], i, pub, big));
-                    if (run) t[k][i] = p3_plan_time(&PLAN);
-                    else if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(UPDATE_KINDS[k], "ex", ex, sizes[i]);
-                }
-                continue;
+            double t[NUK];
+            int runs[NUK];
+            for (int k = 0; k < NUK; k++) { /* decided first: --plan needs no band */
+                const int pub = p3_pub_has(&PUB[2], (const long[]){ex, sizes[i]}, hj_band_kind_name(UPDATE_KINDS[k]));
+                runs[k] = cell_runs(a, "table3", "ex", ex, sizes[i], UPDATE_KINDS[k], 3, &col[k], pub,
+                                    p3_store_big(UPDATE_KINDS[k], 3, f.n));
+                t[k] = runs[k] && PLANNING ? p3_plan_time(&PLAN) : NAN;
+                if (!runs[k] || PLANNING) p3_col_record(&col[k], t[k]);
             }
+            if (PLANNING) continue;
             build_ctx count = {NULL, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f.n, 3};
             p3_front_band(&f, add_node, &count, err);
             fprintf(out.fp, "%d\t%ld\t%zu", ex, sizes[i], count.nb);
@@ -576,24 +546,20 @@ rows:
             int rc = update_lists(&f, &u, err);
             if (rc) p3_die(a->prog, err);
             for (int k = 0; k < NUK; k++) {
-                t[k][i] = NAN;
-                const int pub = i <= PUB_UPDATE[ex - 1][k];
-                if (!affordable(t[k], i, 3, pub, full_store_big(UPDATE_KINDS[k], 3, f.n))) {
-                    if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(UPDATE_KINDS[k], "ex", ex, sizes[i]);
-                    continue;
-                }
+                if (!runs[k]) continue;
                 hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], hj_band_kind_name(UPDATE_KINDS[k]));
-                rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k][i], err);
-                if (rc == HJ_ENOMEM) { t[k][i] = NAN; continue; }
-                if (rc) p3_die(a->prog, err);
+                rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k], err);
+                if (rc == HJ_ENOMEM) t[k] = NAN;
+                else if (rc) p3_die(a->prog, err);
+                p3_col_record(&col[k], t[k]);
             }
             update_ops_free(&u);
             for (int k = 0; k < NUK; k++) {
                 char b1[32], b2[32];
-                fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k][i]), p3_num(b2, i ? t[k][i] / t[k][i - 1] : NAN));
+                fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k]), p3_num(b2, i ? t[k] / col[k].t2 : NAN));
             }
             char b3[32];
-            fprintf(out.fp, "\t%s\n", p3_num(b3, t[3][i] / t[0][i]));
+            fprintf(out.fp, "\t%s\n", p3_num(b3, t[3] / t[0]));
             fflush(out.fp);
         }
     }
@@ -621,11 +587,6 @@ static const char *under_4gb(hj_band_kind kind, int n)
     return rc == HJ_ENOMEM ? "out_of_memory" : rc ? "error" : "ok";
 }
 
-/* Table 4's largest size index with a published value, by SEARCH_KINDS
- * (FS and FLS "Out of mem." at N = 800).  A store is only built here, so
- * an unpublished one is left out only when it is a full store above 1 GB. */
-static const signed char PUB_MEMORY[NSK] = {2, 2, 3, 3, 3, -1, -1};
-
 static void memory_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {100, 200, 400, 800};
@@ -648,17 +609,15 @@ rows:;
         for (int k = 0; k < NSK; k++) {
             hj_band *s;
             mb[k][i] = NAN;
+            const int pub = p3_pub_has(&PUB[3], (const long[]){3, sizes[i]}, hj_band_kind_name(SEARCH_KINDS[k]));
             if (MEM_SEEN[k][i].have) {
-                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], i <= PUB_MEMORY[k], 1, "measured by table1");
+                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], pub, P3_RUN, "run: measured by table1");
                 mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue;
             }
-            const int big = full_store_big(SEARCH_KINDS[k], 3, f.n);
-            if (big && !EXTRA_ALL && i > PUB_MEMORY[k]) {
-                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], 0, 0, "full store above 1 GB");
-                skipped_add(SEARCH_KINDS[k], "d", 3, sizes[i]);
-                continue;
-            }
-            if (PLANNING) { plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], i <= PUB_MEMORY[k], 1, NULL); continue; }
+            /* a store is only built here, not timed: no prediction */
+            const p3_col none = P3_COL_INIT;
+            const int big = p3_store_big(SEARCH_KINDS[k], 3, f.n);
+            if (!cell_runs(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], 3, &none, pub, big) || PLANNING) continue;
             hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
             if (big) memlock_set(1);
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
@@ -721,8 +680,13 @@ int main(int argc, char **argv)
     p3_args_parse(&a, argc, argv, "Tables 1-4: neighbour search, update and memory of FS, FLS, LS, CRS, SSD.", NULL, 1, 4);
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
-    if (a.quick) BUDGET = 5.0;
-    EXTRA_ALL = a.extra;
+    if (a.quick) RULE.budget = 5.0;
+    RULE.extra = a.extra;
+    for (int t = 1; t <= 4; t++) {
+        char name[16];
+        snprintf(name, sizeof name, "table%d", t);
+        if (p3_want(&a, t) && p3_pub_read(&PUB[t - 1], a.published, name, &err)) p3_die(a.prog, &err);
+    }
     if (a.plan) { /* the two walks of p3_plan, as the tables would run in one process */
         PLANNING = 1;
         for (PLAN.world = 0; PLAN.world < 2; PLAN.world++) {
@@ -734,6 +698,7 @@ int main(int argc, char **argv)
         }
         if (p3_plan_print(&PLAN, stdout, &err)) p3_die(a.prog, &err);
         p3_plan_free(&PLAN);
+        for (int t = 0; t < 4; t++) p3_pub_free(&PUB[t]);
         return 0;
     }
     char lock[4096];
@@ -747,5 +712,6 @@ int main(int argc, char **argv)
     if (p3_want(&a, 3)) update_table(&a, &err);
     if (p3_want(&a, 4)) memory_table(&a, &err);
     free(BAND.code);
+    for (int t = 0; t < 4; t++) p3_pub_free(&PUB[t]);
     return 0;
 }
