@@ -24,12 +24,15 @@ N = 1600 it still shows FLS at N = 800).  An extra column runs the same
 step on SSDA (contiguous arrays per line).
 
 **Cost.** The cells the paper has no value for (FLS at N = 800, the SSDA
-column) run only when predicted cheap: at most EXTRA_BUDGET CPU seconds
-for the steps (the last step time times the growth between the last two
-sizes, or 8), and FLS only while its 9 N^3 bytes stay under 1 GB; the
-others are listed in a comment line at the end of the table.  `--extra`
-(`make paper3 P3_EXTRA=1`) runs them all; so does `--sizes`.  Every
-published cell (FLS to N = 400, SSD to N = 1600) runs as before.
+column) run only when predicted cheap: at most P3_EXTRA_BUDGET CPU
+seconds for the steps (the last step time times the growth between the
+last two sizes, or 8), and FLS only while its 9 N^3 bytes stay under 1
+GB; the others are listed in a comment line at the end of the table.
+`--extra` (`make paper3 P3_EXTRA=1`) runs them all; so does `--sizes`.
+Every published cell (FLS to N = 400, SSD to N = 1600, as
+published/table5.tsv says) runs, whatever its cost.  The rule is
+storage's (p3_rule_decide, p3_prog.h); `--plan` prints each cell's
+decision without running any.
 
 **Parameters.** N = 50, 100, 200, 400, 800, 1600; `--quick`: 50, 100.
 

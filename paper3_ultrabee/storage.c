@@ -62,10 +62,14 @@ The cells the paper has no value for (its '-' cells: FS and FLS at
 800^3 and 200^4, CRS and FLS in Table 3 at n = 800, LS and CRS where
 they exceed the budget; Table 2's FS, LS and CRS columns; our SSDC and
 SSDA) are compared with nothing: they run only when predicted under
-EXTRA_BUDGET (2 s) and without a full store above 1 GB, and the table's
+P3_EXTRA_BUDGET (2 s) and without a full store above 1 GB, and the table's
 closing comment line lists the ones left out; --extra (`make paper3
 P3_EXTRA=1`) runs them all within the 100 s, as every published cell
-runs.  This took Table 1 from 683 to about 450 CPU seconds, Table 2
+runs.  The rule is p3_rule_decide (p3_prog.h), shared with hjbstep; which
+cells the paper has a value for is read from published/table1-4.tsv, the
+files the check compares against.  `--plan` prints, without timing
+anything, each cell's decision and why, or "depends on measured time"
+where the prediction decides.  This took Table 1 from 683 to about 450 CPU seconds, Table 2
 from 327 to 18, Tables 3-4 from 156 to 44 (26 November 2026).
 With `make paper3` the tables run as three processes (Table 1, Table 2,
 Tables 3-4; rules.mk); a full store above 1 GB is built only under a lock
