@@ -445,14 +445,14 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
     hj_out out = {0};
     char name[64];
     snprintf(name, sizeof name, "%s.tsv", table);
-    if (PLANNING) goto rows;
-    if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
-            example, a->quick ? " --quick" : "");
-    fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
-    fprintf(out.fp, "\tSSD_over_FLS\n");
-rows:
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
+                example, a->quick ? " --quick" : "");
+        fprintf(out.fp, "d\tN\tN_nb");
+        for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
+        fprintf(out.fp, "\tSSD_over_FLS\n");
+    }
     for (int d = example == 1 ? 2 : 3; d <= 4; d++) {
         const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
         const int ns = a->quick ? 2 : d == 2 ? 3 : 4;
@@ -518,14 +518,14 @@ static void update_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {50, 100, 200, 400, 800};
     hj_out out = {0};
-    if (PLANNING) goto rows;
-    if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
-            a->quick ? " --quick" : "");
-    fprintf(out.fp, "ex\tN\tN_nb");
-    for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
-    fprintf(out.fp, "\tSSD_over_FLS\n");
-rows:
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
+                a->quick ? " --quick" : "");
+        fprintf(out.fp, "ex\tN\tN_nb");
+        for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
+        fprintf(out.fp, "\tSSD_over_FLS\n");
+    }
     for (int ex = 1; ex <= 2; ex++) {
         const int ns = a->quick ? 2 : 5;
         p3_col col[NUK];
@@ -560,6 +560,7 @@ rows:
             update_ops_free(&u);
             for (int k = 0; k < NUK; k++) {
                 char b1[32], b2[32];
+                /* col[k].t2: the time at the size before */
                 fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k]), p3_num(b2, i ? t[k] / col[k].t2 : NAN));
             }
             char b3[32];
@@ -595,14 +596,14 @@ static void memory_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {100, 200, 400, 800};
     hj_out out = {0};
-    if (PLANNING) goto rows;
-    if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
-            a->quick ? " --quick" : "");
-    fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
-    fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
-rows:;
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
+                a->quick ? " --quick" : "");
+        fprintf(out.fp, "d\tN\tN_nb");
+        for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
+        fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
+    }
     double mb[NSK][4];
     const int ns = a->quick ? 2 : 4;
     for (int i = 0; i < ns; i++) {
