@@ -1,7 +1,8 @@
 /* p3_prog.h -- what the paper-3 programs share: the command line
- * (--help, --quick, --out-dir, --sizes, --max-n, --tables, --extra), the closed
- * sets of the examples and the output tables (CPU time and peak memory
- * come from hj_sys.h).  p3_args_parse() and p3_die() are for main()
+ * (--help, --quick, --out-dir, --sizes, --max-n, --tables, --extra,
+ * --plan, --published), the closed sets of the examples, the output
+ * tables (CPU time and peak memory come from hj_sys.h), and the rule
+ * that decides which cells of the timing tables run (storage, hjbstep).  p3_args_parse() and p3_die() are for main()
  * only (they print and exit, as hj_cli_fail does); the rest returns codes. */
 #ifndef P3_PROG_H
 #define P3_PROG_H
