@@ -62,10 +62,14 @@ The cells the paper has no value for (its '-' cells: FS and FLS at
 800^3 and 200^4, CRS and FLS in Table 3 at n = 800, LS and CRS where
 they exceed the budget; Table 2's FS, LS and CRS columns; our SSDC and
 SSDA) are compared with nothing: they run only when predicted under
-EXTRA_BUDGET (2 s) and without a full store above 1 GB, and the table's
+P3_EXTRA_BUDGET (2 s) and without a full store above 1 GB, and the table's
 closing comment line lists the ones left out; --extra (`make paper3
 P3_EXTRA=1`) runs them all within the 100 s, as every published cell
-runs.  This took Table 1 from 683 to about 450 CPU seconds, Table 2
+runs.  The rule is p3_rule_decide (p3_prog.h), shared with hjbstep; which
+cells the paper has a value for is read from published/table1-4.tsv, the
+files the check compares against.  `--plan` prints, without timing
+anything, each cell's decision and why, or "depends on measured time"
+where the prediction decides.  This took Table 1 from 683 to about 450 CPU seconds, Table 2
 from 327 to 18, Tables 3-4 from 156 to 44 (26 November 2026).
 With `make paper3` the tables run as three processes (Table 1, Table 2,
 Tables 3-4; rules.mk); a full store above 1 GB is built only under a lock
@@ -98,16 +102,17 @@ both fronts in d = 2 on the 100^2 grid (x y side), drawn as Figure 5
 #include "p3_front.h"
 #include "p3_prog.h"
 
-static double BUDGET = 100.0; /* seconds; 5 with --quick (see the header) */
+/* Which cells run (p3_prog.h): a published one within 100 s predicted (5
+ * with --quick, see the header), one the paper has no value for (its '-'
+ * cells, and the SSDC and SSDA columns) within P3_EXTRA_BUDGET and not a
+ * full store above 1 GB, unless --extra (`make paper3 P3_EXTRA=1`) asks
+ * for all of them within the 100 s.  The cells left out are listed in a
+ * comment line at the end of each table. */
+static p3_rule RULE = {100.0, 0, 1.0};
 
-/* Cells the paper has no value for (its '-' cells, and the SSDC and SSDA
- * columns) are compared with nothing: they run only when predicted cheap,
- * EXTRA_BUDGET seconds and no full store above 1 GB, unless --extra
- * (`make paper3 P3_EXTRA=1`) asks for all of them (then within BUDGET, as
- * the published ones).  Every published cell runs as before.  The cells
- * left out are listed in a comment line at the end of each table. */
-static const double EXTRA_BUDGET = 2.0;
-static int EXTRA_ALL = 0;
+/* The paper's tables 1-4 (published/tableN.tsv): which cells it has a
+ * value for. */
+static p3_pub PUB[4];
 
 /* The cells skipped as extra, for the table's closing comment. */
 static char SKIPPED[2048];
@@ -120,11 +125,50 @@ static void skipped_add(hj_band_kind kind, const char *key, int value, long n)
         snprintf(SKIPPED + len, sizeof SKIPPED - len, "%s%s %s=%d N>=%ld", len ? ", " : "", hj_band_kind_name(kind), key, value, n);
 }
 
-static void skipped_write(FILE *fp)
+/* --plan: the decisions are noted here instead of running the cells. */
+static int PLANNING = 0;
+static p3_plan PLAN;
+
+static void plan_note(const p3_args *a, const char *label, const char *text)
 {
+    hj_error err;
+    if (p3_plan_note(&PLAN, label, text, &err)) p3_die(a->prog, &err);
+}
+
+/* Note the decision about a cell: whether the paper has a value for it,
+ * run or skip and why (text: NULL for the rule's own). */
+static void plan_cell(const p3_args *a, const char *table, const char *key, int value, long n, hj_band_kind kind, int pub,
+                      p3_decision dec, const char *text)
+{
+    char label[96], buf[96];
+    snprintf(label, sizeof label, "%s %s=%d N=%ld %s\t%s", table, key, value, n, hj_band_kind_name(kind),
+             pub ? "published" : "no published value");
+    plan_note(a, label, text ? text : p3_decision_text(buf, sizeof buf, &RULE, dec, pub));
+}
+
+/* Whether a cell of the rule runs; a skipped one is noted for the closing
+ * comment as the rule says, every one for --plan. */
+static int cell_runs(const p3_args *a, const char *table, const char *key, int value, long n, hj_band_kind kind, int d,
+                     const p3_col *c, int pub, int big)
+{
+    const p3_decision dec = p3_rule_decide(&RULE, c, d, pub, big);
+    if (PLANNING) plan_cell(a, table, key, value, n, kind, pub, dec, NULL);
+    if (p3_rule_listed(dec, pub)) skipped_add(kind, key, value, n);
+    return dec == P3_RUN;
+}
+
+static void skipped_write(const p3_args *a, const char *table, FILE *fp)
+{
+    char line[2560] = "";
     if (SKIPPED[0])
-        fprintf(fp, "# not run, no published value and predicted above %g s of CPU or a full store above 1 GB "
-                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s\n", EXTRA_BUDGET, SKIPPED);
+        snprintf(line, sizeof line, "# not run, no published value and predicted above %g s of CPU or a full store above 1 GB "
+                                    "(storage --extra, make paper3 P3_EXTRA=1 runs them): %s", P3_EXTRA_BUDGET, SKIPPED);
+    if (PLANNING) {
+        char label[64];
+        snprintf(label, sizeof label, "%s closing comment\t", table);
+        plan_note(a, label, line[0] ? line : "(none)");
+    } else if (line[0])
+        fprintf(fp, "%s\n", line);
     SKIPPED[0] = 0;
 }
 
@@ -137,13 +181,6 @@ static void skipped_write(FILE *fp)
  * of them do not fit in this machine's 24 GB.  The lock is taken before
  * the build, so a wait never enters a timing. */
 static int MEMLOCK_FD = -1;
-
-static int full_store_big(hj_band_kind kind, int d, int n)
-{
-    double total = 1;
-    for (int i = 0; i < d; i++) total *= n;
-    return (kind == HJ_BAND_FS || kind == HJ_BAND_FLS) && total * 9.0 > 1e9;
-}
 
 static void memlock_set(int on)
 {
@@ -366,7 +403,7 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 {
     hj_band *s;
     size_t nb;
-    const int big = full_store_big(kind, f->d, f->n);
+    const int big = p3_store_big(kind, f->d, f->n);
     if (big) memlock_set(1);
     int rc = build(&s, kind, f, &nb, err);
     if (rc) { if (big) memlock_set(0); return rc; }
@@ -389,32 +426,8 @@ static int time_update(hj_band_kind kind, const p3_front *f, const update_ops *u
 
 /* ---- tables ----------------------------------------------------------------- */
 
-/* Whether a run predicted from the previous ones stays within the budget. */
-static int within(const double *prev, int i, int d, double budget)
-{
-    if (i == 0 || isnan(prev[i - 1])) return i == 0;
-    const double growth = i >= 2 && !isnan(prev[i - 2]) && prev[i - 2] > 0 ? prev[i - 1] / prev[i - 2] : (double)(1 << d);
-    return prev[i - 1] * (growth > 2 ? growth : 2) <= budget;
-}
-
-/* Whether to run a cell: published is whether the paper has a value for
- * it; big whether its store is a full one above 1 GB. */
-static int affordable(const double *prev, int i, int d, int published, int big)
-{
-    if (published || EXTRA_ALL) return within(prev, i, d, BUDGET);
-    return !big && within(prev, i, d, EXTRA_BUDGET < BUDGET ? EXTRA_BUDGET : BUDGET);
-}
-
 static const hj_band_kind SEARCH_KINDS[] = {HJ_BAND_FS, HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NSK = 7 };
-
-/* The largest size index with a published value (published/table1.tsv,
- * table2.tsv: seconds or ratio), by d = 2, 3, 4 and SEARCH_KINDS; -1:
- * none (SSDC and SSDA are ours; Table 2 publishes FLS and SSD only). */
-static const signed char PUB_SEARCH[2][3][NSK] = {
-    {{2, 2, 2, 2, 2, -1, -1}, {2, 2, 2, 2, 3, -1, -1}, {2, 2, 1, 1, 3, -1, -1}},
-    {{-1, -1, -1, -1, -1, -1, -1}, {-1, 2, -1, -1, 3, -1, -1}, {-1, 2, -1, -1, 3, -1, -1}},
-};
 
 /* Table 4 measures the stores of Table 1's d = 3 rows (Example 1, n = 100
  * ... 800): the bytes of each store Table 1 builds are kept here (NAN: it
@@ -429,31 +442,40 @@ static mem_cell MEM_SEEN[NSK][4];
 static void search_table(const p3_args *a, const char *table, int example, hj_error *err)
 {
     static const long s2[] = {400, 800, 1600}, s3[] = {100, 200, 400, 800}, s4[] = {25, 50, 100, 200};
-    hj_out out;
+    hj_out out = {0};
     char name[64];
     snprintf(name, sizeof name, "%s.tsv", table);
-    if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
-            example, a->quick ? " --quick" : "");
-    fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
-    fprintf(out.fp, "\tSSD_over_FLS\n");
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, name, err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# %s: neighbour search, Example %d, seconds per sweep over the band (FS: over the grid), by storage%s\n", table,
+                example, a->quick ? " --quick" : "");
+        fprintf(out.fp, "d\tN\tN_nb");
+        for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
+        fprintf(out.fp, "\tSSD_over_FLS\n");
+    }
     for (int d = example == 1 ? 2 : 3; d <= 4; d++) {
         const long *sizes = d == 2 ? s2 : d == 3 ? s3 : s4;
         const int ns = a->quick ? 2 : d == 2 ? 3 : 4;
         double t[NSK][4];
+        p3_col col[NSK];
+        for (int k = 0; k < NSK; k++) col[k] = (p3_col)P3_COL_INIT;
         for (int i = 0; i < ns; i++) {
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {example, d, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
             size_t nb = 0;
-            fprintf(out.fp, "%d\t%ld", d, sizes[i]);
+            if (!PLANNING) fprintf(out.fp, "%d\t%ld", d, sizes[i]);
             char line[1024] = "";
             for (int k = 0; k < NSK; k++) {
                 t[k][i] = NAN;
-                const int big = full_store_big(SEARCH_KINDS[k], d, f.n);
-                const int pub = i <= PUB_SEARCH[example - 1][d - 2][k];
-                if (!affordable(t[k], i, d, pub, big)) {
-                    if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(SEARCH_KINDS[k], "d", d, sizes[i]);
+                const int big = p3_store_big(SEARCH_KINDS[k], d, f.n);
+                const int pub = p3_pub_has(&PUB[example - 1], (const long[]){d, sizes[i]}, hj_band_kind_name(SEARCH_KINDS[k]));
+                const int runs = cell_runs(a, table, "d", d, sizes[i], SEARCH_KINDS[k], d, &col[k], pub, big);
+                if (runs && PLANNING) {
+                    t[k][i] = p3_plan_time(&PLAN);
+                    if (example == 1 && d == 3) MEM_SEEN[k][i] = (mem_cell){1, NAN, 0};
+                }
+                if (!runs || PLANNING) {
+                    p3_col_record(&col[k], t[k][i]);
                     continue;
                 }
                 hj_band *s;
@@ -462,12 +484,18 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
                 const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
                 mem_cell *m = example == 1 && d == 3 ? &MEM_SEEN[k][i] : NULL;
                 if (m && (rc == HJ_OK || rc == HJ_ENOMEM)) *m = (mem_cell){1, rc ? NAN : (double)hj_band_bytes(s) / 1e6, nb};
-                if (rc == HJ_ENOMEM) { if (big) memlock_set(0); continue; } /* beyond this machine: no value */
+                if (rc == HJ_ENOMEM) { /* beyond this machine: no value */
+                    if (big) memlock_set(0);
+                    p3_col_record(&col[k], NAN);
+                    continue;
+                }
                 if (rc) p3_die(a->prog, err);
                 t[k][i] = time_search(s, &f);
+                p3_col_record(&col[k], t[k][i]);
                 hj_band_free(s);
                 if (big) memlock_set(0);
             }
+            if (PLANNING) continue;
             for (int k = 0; k < NSK; k++) {
                 char b1[32], b2[32];
                 size_t len = strlen(line);
@@ -479,33 +507,42 @@ static void search_table(const p3_args *a, const char *table, int example, hj_er
             fflush(out.fp);
         }
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, table, out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 static const hj_band_kind UPDATE_KINDS[] = {HJ_BAND_FLS, HJ_BAND_LS, HJ_BAND_CRS, HJ_BAND_SSD, HJ_BAND_SSDC, HJ_BAND_SSDA};
 enum { NUK = 6 };
 
-/* Table 3's largest size index with a published value, by example and
- * UPDATE_KINDS (FLS and CRS of Example 1 at N = 800 have none). */
-static const signed char PUB_UPDATE[2][NUK] = {{3, 4, 3, 4, -1, -1}, {3, 4, 4, 4, -1, -1}};
-
 static void update_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {50, 100, 200, 400, 800};
-    hj_out out;
-    if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
-            a->quick ? " --quick" : "");
-    fprintf(out.fp, "ex\tN\tN_nb");
-    for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
-    fprintf(out.fp, "\tSSD_over_FLS\n");
+    hj_out out = {0};
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, "table3.tsv", err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# table3: update (insert the ND neighbours of F+, remove F-), d = 3, seconds, by storage%s\n",
+                a->quick ? " --quick" : "");
+        fprintf(out.fp, "ex\tN\tN_nb");
+        for (int k = 0; k < NUK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(UPDATE_KINDS[k]), hj_band_kind_name(UPDATE_KINDS[k]));
+        fprintf(out.fp, "\tSSD_over_FLS\n");
+    }
     for (int ex = 1; ex <= 2; ex++) {
         const int ns = a->quick ? 2 : 5;
-        double t[NUK][5];
+        p3_col col[NUK];
+        for (int k = 0; k < NUK; k++) col[k] = (p3_col)P3_COL_INIT;
         for (int i = 0; i < ns; i++) {
             if (a->max_n && sizes[i] > a->max_n) break;
             p3_front f = {ex, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
+            double t[NUK];
+            int runs[NUK];
+            for (int k = 0; k < NUK; k++) { /* decided first: --plan needs no band */
+                const int pub = p3_pub_has(&PUB[2], (const long[]){ex, sizes[i]}, hj_band_kind_name(UPDATE_KINDS[k]));
+                runs[k] = cell_runs(a, "table3", "ex", ex, sizes[i], UPDATE_KINDS[k], 3, &col[k], pub,
+                                    p3_store_big(UPDATE_KINDS[k], 3, f.n));
+                t[k] = runs[k] && PLANNING ? p3_plan_time(&PLAN) : NAN;
+                if (!runs[k] || PLANNING) p3_col_record(&col[k], t[k]);
+            }
+            if (PLANNING) continue;
             build_ctx count = {NULL, err, 0, 0, NULL, 0, 0, NULL, 0, 0, f.n, 3};
             p3_front_band(&f, add_node, &count, err);
             fprintf(out.fp, "%d\t%ld\t%zu", ex, sizes[i], count.nb);
@@ -513,29 +550,26 @@ static void update_table(const p3_args *a, hj_error *err)
             int rc = update_lists(&f, &u, err);
             if (rc) p3_die(a->prog, err);
             for (int k = 0; k < NUK; k++) {
-                t[k][i] = NAN;
-                const int pub = i <= PUB_UPDATE[ex - 1][k];
-                if (!affordable(t[k], i, 3, pub, full_store_big(UPDATE_KINDS[k], 3, f.n))) {
-                    if (!pub && (i == 0 || !isnan(t[k][i - 1]))) skipped_add(UPDATE_KINDS[k], "ex", ex, sizes[i]);
-                    continue;
-                }
+                if (!runs[k]) continue;
                 hj_progress("table3 ex=%d N=%ld %s ...\n", ex, sizes[i], hj_band_kind_name(UPDATE_KINDS[k]));
-                rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k][i], err);
-                if (rc == HJ_ENOMEM) { t[k][i] = NAN; continue; }
-                if (rc) p3_die(a->prog, err);
+                rc = time_update(UPDATE_KINDS[k], &f, &u, &t[k], err);
+                if (rc == HJ_ENOMEM) t[k] = NAN;
+                else if (rc) p3_die(a->prog, err);
+                p3_col_record(&col[k], t[k]);
             }
             update_ops_free(&u);
             for (int k = 0; k < NUK; k++) {
                 char b1[32], b2[32];
-                fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k][i]), p3_num(b2, i ? t[k][i] / t[k][i - 1] : NAN));
+                /* col[k].t2: the time at the size before */
+                fprintf(out.fp, "\t%s\t%s", p3_num(b1, t[k]), p3_num(b2, i ? t[k] / col[k].t2 : NAN));
             }
             char b3[32];
-            fprintf(out.fp, "\t%s\n", p3_num(b3, t[3][i] / t[0][i]));
+            fprintf(out.fp, "\t%s\n", p3_num(b3, t[3] / t[0]));
             fflush(out.fp);
         }
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, "table3", out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 /* Try to build a full store under a 4 GB address-space limit: 4e9 bytes,
@@ -558,34 +592,37 @@ static const char *under_4gb(hj_band_kind kind, int n)
     return rc == HJ_ENOMEM ? "out_of_memory" : rc ? "error" : "ok";
 }
 
-/* Table 4's largest size index with a published value, by SEARCH_KINDS
- * (FS and FLS "Out of mem." at N = 800).  A store is only built here, so
- * an unpublished one is left out only when it is a full store above 1 GB. */
-static const signed char PUB_MEMORY[NSK] = {2, 2, 3, 3, 3, -1, -1};
-
 static void memory_table(const p3_args *a, hj_error *err)
 {
     static const long sizes[] = {100, 200, 400, 800};
-    hj_out out;
-    if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
-    fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
-            a->quick ? " --quick" : "");
-    fprintf(out.fp, "d\tN\tN_nb");
-    for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
-    fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
+    hj_out out = {0};
+    if (!PLANNING) { /* --plan writes no table */
+        if (p3_open(&out, a->out_dir, "table4.tsv", err)) p3_die(a->prog, err);
+        fprintf(out.fp, "# table4: memory of the band structures, Example 1, d = 3, MB = 1e6 bytes allocated by the structure%s\n",
+                a->quick ? " --quick" : "");
+        fprintf(out.fp, "d\tN\tN_nb");
+        for (int k = 0; k < NSK; k++) fprintf(out.fp, "\t%s\t%s_ratio", hj_band_kind_name(SEARCH_KINDS[k]), hj_band_kind_name(SEARCH_KINDS[k]));
+        fprintf(out.fp, "\tSSD_B_node\tFS_4GB\tFLS_4GB\n");
+    }
     double mb[NSK][4];
     const int ns = a->quick ? 2 : 4;
     for (int i = 0; i < ns; i++) {
         if (a->max_n && sizes[i] > a->max_n) break;
         p3_front f = {1, 3, (int)sizes[i], 4.0 / (double)(sizes[i] - 1)};
         size_t nb = 0;
-        fprintf(out.fp, "3\t%ld", sizes[i]);
+        if (!PLANNING) fprintf(out.fp, "3\t%ld", sizes[i]);
         for (int k = 0; k < NSK; k++) {
             hj_band *s;
             mb[k][i] = NAN;
-            if (MEM_SEEN[k][i].have) { mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue; }
-            const int big = full_store_big(SEARCH_KINDS[k], 3, f.n);
-            if (big && !EXTRA_ALL && i > PUB_MEMORY[k]) { skipped_add(SEARCH_KINDS[k], "d", 3, sizes[i]); continue; }
+            const int pub = p3_pub_has(&PUB[3], (const long[]){3, sizes[i]}, hj_band_kind_name(SEARCH_KINDS[k]));
+            if (MEM_SEEN[k][i].have) {
+                if (PLANNING) plan_cell(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], pub, P3_RUN, "run: measured by table1");
+                mb[k][i] = MEM_SEEN[k][i].mb; nb = MEM_SEEN[k][i].nb; continue;
+            }
+            /* a store is only built here, not timed: no prediction */
+            const p3_col none = P3_COL_INIT;
+            const int big = p3_store_big(SEARCH_KINDS[k], 3, f.n);
+            if (!cell_runs(a, "table4", "d", 3, sizes[i], SEARCH_KINDS[k], 3, &none, pub, big) || PLANNING) continue;
             hj_progress("table4 N=%ld %s ...\n", sizes[i], hj_band_kind_name(SEARCH_KINDS[k]));
             if (big) memlock_set(1);
             const int rc = build(&s, SEARCH_KINDS[k], &f, &nb, err);
@@ -595,6 +632,7 @@ static void memory_table(const p3_args *a, hj_error *err)
             hj_band_free(s);
             if (big) memlock_set(0);
         }
+        if (PLANNING) continue;
         fprintf(out.fp, "\t%zu", nb);
         for (int k = 0; k < NSK; k++) {
             char b1[32], b2[32];
@@ -605,8 +643,8 @@ static void memory_table(const p3_args *a, hj_error *err)
                 under_4gb(HJ_BAND_FLS, f.n));
         fflush(out.fp);
     }
-    skipped_write(out.fp);
-    if (hj_out_commit(&out, err)) p3_die(a->prog, err);
+    skipped_write(a, "table4", out.fp);
+    if (!PLANNING && hj_out_commit(&out, err)) p3_die(a->prog, err);
 }
 
 /* Figure 5: the band F+ u F- of both fronts in d = 2 on the 100^2 grid,
@@ -647,8 +685,27 @@ int main(int argc, char **argv)
     p3_args_parse(&a, argc, argv, "Tables 1-4: neighbour search, update and memory of FS, FLS, LS, CRS, SSD.", NULL, 1, 4);
     hj_error err;
     if (a.nsizes) hj_cli_fail(a.prog, HJ_EXIT_USAGE, "--sizes is not supported here (the tables have fixed sizes); use --max-n");
-    if (a.quick) BUDGET = 5.0;
-    EXTRA_ALL = a.extra;
+    if (a.quick) RULE.budget = 5.0;
+    RULE.extra = a.extra;
+    for (int t = 1; t <= 4; t++) {
+        char name[16];
+        snprintf(name, sizeof name, "table%d", t);
+        if (p3_want(&a, t) && p3_pub_read(&PUB[t - 1], a.published, name, &err)) p3_die(a.prog, &err);
+    }
+    if (a.plan) { /* the two walks of p3_plan, as the tables would run in one process */
+        PLANNING = 1;
+        for (PLAN.world = 0; PLAN.world < 2; PLAN.world++) {
+            memset(MEM_SEEN, 0, sizeof MEM_SEEN);
+            if (p3_want(&a, 1)) search_table(&a, "table1", 1, &err);
+            if (p3_want(&a, 2)) search_table(&a, "table2", 2, &err);
+            if (p3_want(&a, 3)) update_table(&a, &err);
+            if (p3_want(&a, 4)) memory_table(&a, &err);
+        }
+        if (p3_plan_print(&PLAN, stdout, &err)) p3_die(a.prog, &err);
+        p3_plan_free(&PLAN);
+        for (int t = 0; t < 4; t++) p3_pub_free(&PUB[t]);
+        return 0;
+    }
     char lock[4096];
     if (snprintf(lock, sizeof lock, "%s/.memlock", a.out_dir) < (int)sizeof lock) {
         if (hj_mkdirs(a.out_dir, &err)) p3_die(a.prog, &err);
@@ -660,5 +717,6 @@ int main(int argc, char **argv)
     if (p3_want(&a, 3)) update_table(&a, &err);
     if (p3_want(&a, 4)) memory_table(&a, &err);
     free(BAND.code);
+    for (int t = 0; t < 4; t++) p3_pub_free(&PUB[t]);
     return 0;
 }
