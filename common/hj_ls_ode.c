@@ -83,6 +83,28 @@ static int combine(const hj_ls_grid *g, double *dst, double a, const double *y, 
     return bad;
 }
 
+/* A stage after the first: dst = a y0 + b (u + dt G(t, u)), fused into
+ * the term's pass where the term has that form (hj_ls_term_stage: one
+ * pass over the grid instead of two, the same bits; *fused = 1), else the
+ * term into f and combine (*fused = 0).  dst is y0 (the last stage: each
+ * node written after its reads) or f (a middle stage: then, unfused, the
+ * stage goes into u in place, since f holds G).  *bad and *amax as
+ * combine's. */
+static int stage(const hj_ls_grid *g, const hj_ls_term *term, double t, double a, double *y0, double b, double *u,
+                 double dt, double *dst, double *f, int *fused, double *bound, int *bad, double *amax, hj_error *err)
+{
+    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
+    int rc = hj_ls_term_stage(term, t, u, &st, bound, fused, err);
+    if (rc) return rc;
+    if (*fused) {
+        *amax = st.amax, *bad = st.bad;
+        return HJ_OK;
+    }
+    if ((rc = term->eval(term, t, u, f, bound, err))) return rc;
+    *bad = combine(g, dst == f ? u : dst, a, y0, b, u, dt, f, amax);
+    return HJ_OK;
+}
+
 /* The scale against which growth counts as a blow-up: the larger of
  * max |y0| and the domain's diameter (a signed distance never exceeds it). */
 static double blowup_scale(const hj_ls_grid *g, const double *y)
@@ -159,18 +181,22 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                 bad = combine(g, y, 0, y, 1, y, dt, f, &amax);
             else {
                 combine(g, u, 0, y, 1, y, dt, f, &amax);
-                if ((rc = term->eval(term, t + dt, u, f, &b, err))) goto done;
-                st.evals++;
-                st.cfl_violations += b < dt / o.factor_cfl;
-                if (order == 2)
-                    bad = combine(g, y, 0.5, y, 0.5, u, dt, f, &amax);
-                else {
-                    combine(g, u, 0.75, y, 0.25, u, dt, f, &amax);
-                    if ((rc = term->eval(term, t + 0.5 * dt, u, f, &b, err))) goto done;
+                int fused;
+                if (order == 3) {
+                    if ((rc = stage(g, term, t + dt, 0.75, y, 0.25, u, dt, f, f, &fused, &b, &bad, &amax, err)))
+                        goto done;
+                    if (fused) { /* the stage is in f, which held no G: u and f trade places */
+                        double *s = u;
+                        u = f, f = s;
+                    }
                     st.evals++;
                     st.cfl_violations += b < dt / o.factor_cfl;
-                    bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f, &amax);
                 }
+                const double tl = order == 2 ? t + dt : t + 0.5 * dt, al = order == 2 ? 0.5 : 1.0 / 3,
+                             bl = order == 2 ? 0.5 : 2.0 / 3;
+                if ((rc = stage(g, term, tl, al, y, bl, u, dt, y, f, &fused, &b, &bad, &amax, err))) goto done;
+                st.evals++;
+                st.cfl_violations += b < dt / o.factor_cfl;
             }
             if (g->dist) {
                 double v[2] = {amax, bad};
