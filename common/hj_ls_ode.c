@@ -3,6 +3,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <string.h>
 #include <time.h>
 
 void hj_ls_ode_defaults(hj_ls_ode_opts *o)
@@ -133,6 +134,17 @@ static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *er
     return HJ_OK;
 }
 
+/* The step for bound b: FactorCFL b, at most MaxStep and the time left
+ * (*last = 1 when the time left is taken). */
+static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
+{
+    double dt = o->factor_cfl * b;
+    dt = dt < o->max_step ? dt : o->max_step;
+    *last = 0;
+    if (dt >= left) dt = left, *last = 1;
+    return dt;
+}
+
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
               const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
@@ -162,26 +174,48 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
         goto done;
     }
     double t = tspan[0];
+    double bprev = NAN; /* the previous step's bound */
+    int same = 0;  /* steps it repeated for */
+    int guess = 1; /* 0: the term has no fused form */
+    int hold = 0;  /* steps without guessing left after a miss */
     for (int k = 1; k < ntspan && rc == HJ_OK; k++) {
         const double tk = tspan[k];
         /* Steps shorter than this are round-off of the previous step. */
         const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
         while (tk - t > small) {
-            double b;
-            if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
-            st.evals++;
-            if ((rc = check_bound(b, t, &o, err))) goto done;
-            double dt = o.factor_cfl * b;
-            dt = dt < o.max_step ? dt : o.max_step;
-            int last = 0;
-            if (dt >= tk - t) dt = tk - t, last = 1;
-            int bad;
+            double b, dt;
+            int last = 0, bad, fused, guessed = 0;
             double amax;
+            if (hold) hold--;
+            if (order > 1 && guess && same >= 2 && !hold) {
+                /* The bound repeated bit for bit over the last steps (air3D's
+                 * does not depend on t or y): the first stage is fused too,
+                 * with the step of that bound, and kept only if the bound
+                 * the stage returns is the same (then every value is what
+                 * the unfused stage gives); a miss is evaluated again,
+                 * unfused, and guessing waits many steps. */
+                dt = step_of(bprev, tk - t, &o, &last);
+                hj_ls_stage s1 = {0, 1, dt, y, u, 0, 0};
+                if ((rc = hj_ls_term_stage(term, t, y, &s1, &b, &fused, err))) goto done;
+                if (!fused) guess = 0; /* no fused form: never again */
+                else {
+                    st.evals++;
+                    guessed = !memcmp(&b, &bprev, sizeof b);
+                    if (!guessed) hold = 16;
+                }
+            }
+            if (!guessed) {
+                if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
+                st.evals++;
+                if ((rc = check_bound(b, t, &o, err))) goto done;
+                dt = step_of(b, tk - t, &o, &last);
+            }
+            same = memcmp(&b, &bprev, sizeof b) ? 0 : same + 1;
+            bprev = b;
             if (order == 1)
                 bad = combine(g, y, 0, y, 1, y, dt, f, &amax);
             else {
-                combine(g, u, 0, y, 1, y, dt, f, &amax);
-                int fused;
+                if (!guessed) combine(g, u, 0, y, 1, y, dt, f, &amax);
                 if (order == 3) {
                     if ((rc = stage(g, term, t + dt, 0.75, y, 0.25, u, dt, f, f, &fused, &b, &bad, &amax, err)))
                         goto done;

@@ -709,12 +709,23 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
      * node exactly) */
     const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
     double m = 0;
-    for (long j = 0; j < n; j++)
-        if (SP[j] >= thr) {
-            double s = 0.0;
-            for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)j]) / dx[d];
-            m = s > m ? s : m;
-        }
+    /* the candidates found 8 nodes at a time (one vector compare), the
+     * few that pass handled one by one */
+#define LF_EXACT(j)                                                                                  \
+    if (SP[j] >= thr) {                                                                              \
+        double s = 0.0;                                                                              \
+        for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)(j)]) / dx[d]; \
+        m = s > m ? s : m;                                                                           \
+    }
+    long j = 0;
+    for (; j + 8 <= n; j += 8) {
+        int hit = 0;
+        for (int q = 0; q < 8; q++) hit |= SP[j + q] >= thr;
+        if (hit)
+            for (int q = 0; q < 8; q++) LF_EXACT(j + q)
+    }
+    for (; j < n; j++) LF_EXACT(j)
+#undef LF_EXACT
     *inv = m;
     return nf != 0;
 }
