@@ -232,32 +232,54 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a) { hj_ls_fill_ghosts_width
  * values either way). */
 #define HJ_LS_FILL_PARALLEL 32768
 
+/* Offset of the q-th combination (dimension d + 1 fastest) of interior
+ * indices of the dimensions above d, the indices of d and below being 0
+ * in the ghosted numbering (the first ghost). */
+static size_t above_offset(const hj_ls_grid *g, int d, size_t q)
+{
+    size_t k = 0;
+    for (int e = d + 1; e < g->dim; e++) {
+        k += (q % (size_t)g->N[e] + (size_t)HJ_LS_GHOST) * (size_t)g->stride[e];
+        q /= (size_t)g->N[e];
+    }
+    return k;
+}
+
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 {
     width = width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
+    /* Lines along d over the full (ghosted) extent of the dimensions below
+     * d, so that corners take the ghosts already filled there, and over
+     * the interior of the dimensions above d only: the ghosts of those
+     * are filled later from their interior planes, which overwrites
+     * whatever a line through them would have written (the same values
+     * as filling every line, with fewer lines). */
     for (int d = 0; d < g->dim; d++) {
-        /* Lines along d over the full extent of the other dimensions, so
-         * that corners take the ghosts already filled in earlier dimensions. */
+        size_t above = 1;
+        for (int e = d + 1; e < g->dim; e++) above *= (size_t)g->N[e];
         if (d == 0) {
-            const size_t nlines = g->total / (size_t)g->ext[0];
+            /* planes of the dimensions above 1, each n1 lines apart by stride 1 */
+            const size_t n1 = g->dim > 1 ? (size_t)g->N[1] : 1, s1 = g->dim > 1 ? (size_t)g->stride[1] : 0;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 32) if (nlines * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
+#pragma omp parallel for schedule(dynamic, 1) if (above * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
 #endif
-            for (size_t l = 0; l < nlines; l++)
-                fill_line(a + (size_t)HJ_LS_GHOST + l * (size_t)g->ext[0], 1, g->N[0], g->dx[0], &g->bc[0]);
+            for (size_t q = 0; q < above / n1; q++) {
+                double *p = a + above_offset(g, 1, q) + (size_t)HJ_LS_GHOST * (s1 + 1);
+                for (size_t l = 0; l < n1; l++) fill_line(p + l * s1, 1, g->N[0], g->dx[0], &g->bc[0]);
+            }
         } else {
             /* Along d > 0 the lines through one plane of the dimensions
-             * below d are contiguous: planes (outer index over the
-             * dimensions above d) cut into pieces of `piece` lines. */
-            const size_t inner = (size_t)g->stride[d], outer = g->total / (inner * (size_t)g->ext[d]);
+             * below d are contiguous: planes (one per combination of the
+             * interior indices above d) cut into pieces of `piece` lines. */
+            const size_t inner = (size_t)g->stride[d];
             const size_t piece = 512, pieces = (inner + piece - 1) / piece;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 4) if (outer * inner * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
+#pragma omp parallel for schedule(dynamic, 4) if (above * inner * 2 * HJ_LS_GHOST >= HJ_LS_FILL_PARALLEL)
 #endif
-            for (size_t q = 0; q < outer * pieces; q++) {
+            for (size_t q = 0; q < above * pieces; q++) {
                 const size_t o = q / pieces, i0 = (q % pieces) * piece;
                 const size_t m = inner - i0 < piece ? inner - i0 : piece;
-                double *p = a + o * inner * (size_t)g->ext[d] + (size_t)HJ_LS_GHOST * inner + i0;
+                double *p = a + above_offset(g, d, o) + (size_t)HJ_LS_GHOST * inner + i0;
                 fill_lines(p, g->stride[d], g->N[d], (long)m, g->dx[d], &g->bc[d]);
             }
         }

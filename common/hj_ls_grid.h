@@ -24,8 +24,9 @@
  *                 |phi_b - phi_{b-1}| directed away from zero:
  *                 ghost k = phi_b + k sign(phi_b) |phi_b - phi_{b-1}|;
  *   EXTRAP_TOWARD the same toward zero (sign flipped).
- * Ghosts are filled dimension by dimension over the full (ghosted) extent of
- * the other dimensions, so corner ghosts are defined too.
+ * Ghosts are filled dimension by dimension, along d over the full (ghosted)
+ * extent of the dimensions below d, so corner ghosts are defined too (the
+ * ghosts of the dimensions above d are filled later, from their interior).
  */
 #ifndef HJ_LS_GRID_H
 #define HJ_LS_GRID_H

@@ -3,6 +3,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <string.h>
 #include <time.h>
 
 void hj_ls_ode_defaults(hj_ls_ode_opts *o)
@@ -83,6 +84,28 @@ static int combine(const hj_ls_grid *g, double *dst, double a, const double *y, 
     return bad;
 }
 
+/* A stage after the first: dst = a y0 + b (u + dt G(t, u)), fused into
+ * the term's pass where the term has that form (hj_ls_term_stage: one
+ * pass over the grid instead of two, the same bits; *fused = 1), else the
+ * term into f and combine (*fused = 0).  dst is y0 (the last stage: each
+ * node written after its reads) or f (a middle stage: then, unfused, the
+ * stage goes into u in place, since f holds G).  *bad and *amax as
+ * combine's. */
+static int stage(const hj_ls_grid *g, const hj_ls_term *term, double t, double a, double *y0, double b, double *u,
+                 double dt, double *dst, double *f, int *fused, double *bound, int *bad, double *amax, hj_error *err)
+{
+    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
+    int rc = hj_ls_term_stage(term, t, u, &st, bound, fused, err);
+    if (rc) return rc;
+    if (*fused) {
+        *amax = st.amax, *bad = st.bad;
+        return HJ_OK;
+    }
+    if ((rc = term->eval(term, t, u, f, bound, err))) return rc;
+    *bad = combine(g, dst == f ? u : dst, a, y0, b, u, dt, f, amax);
+    return HJ_OK;
+}
+
 /* The scale against which growth counts as a blow-up: the larger of
  * max |y0| and the domain's diameter (a signed distance never exceeds it). */
 static double blowup_scale(const hj_ls_grid *g, const double *y)
@@ -109,6 +132,17 @@ static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *er
     if (b == INFINITY && !(o->max_step < DBL_MAX))
         return hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", t);
     return HJ_OK;
+}
+
+/* The step for bound b: FactorCFL b, at most MaxStep and the time left
+ * (*last = 1 when the time left is taken). */
+static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
+{
+    double dt = o->factor_cfl * b;
+    dt = dt < o->max_step ? dt : o->max_step;
+    *last = 0;
+    if (dt >= left) dt = left, *last = 1;
+    return dt;
 }
 
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
@@ -140,37 +174,63 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
         goto done;
     }
     double t = tspan[0];
+    double bprev = NAN; /* the previous step's bound */
+    int same = 0;  /* steps it repeated for */
+    int guess = 1; /* 0: the term has no fused form */
+    int hold = 0;  /* steps without guessing left after a miss */
     for (int k = 1; k < ntspan && rc == HJ_OK; k++) {
         const double tk = tspan[k];
         /* Steps shorter than this are round-off of the previous step. */
         const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
         while (tk - t > small) {
-            double b;
-            if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
-            st.evals++;
-            if ((rc = check_bound(b, t, &o, err))) goto done;
-            double dt = o.factor_cfl * b;
-            dt = dt < o.max_step ? dt : o.max_step;
-            int last = 0;
-            if (dt >= tk - t) dt = tk - t, last = 1;
-            int bad;
+            double b, dt;
+            int last = 0, bad, fused, guessed = 0;
             double amax;
+            if (hold) hold--;
+            if (order > 1 && guess && same >= 2 && !hold) {
+                /* The bound repeated bit for bit over the last steps (air3D's
+                 * does not depend on t or y): the first stage is fused too,
+                 * with the step of that bound, and kept only if the bound
+                 * the stage returns is the same (then every value is what
+                 * the unfused stage gives); a miss is evaluated again,
+                 * unfused, and guessing waits many steps. */
+                dt = step_of(bprev, tk - t, &o, &last);
+                hj_ls_stage s1 = {0, 1, dt, y, u, 0, 0};
+                if ((rc = hj_ls_term_stage(term, t, y, &s1, &b, &fused, err))) goto done;
+                if (!fused) guess = 0; /* no fused form: never again */
+                else {
+                    st.evals++;
+                    guessed = !memcmp(&b, &bprev, sizeof b);
+                    if (!guessed) hold = 16;
+                }
+            }
+            if (!guessed) {
+                if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
+                st.evals++;
+                if ((rc = check_bound(b, t, &o, err))) goto done;
+                dt = step_of(b, tk - t, &o, &last);
+            }
+            same = memcmp(&b, &bprev, sizeof b) ? 0 : same + 1;
+            bprev = b;
             if (order == 1)
                 bad = combine(g, y, 0, y, 1, y, dt, f, &amax);
             else {
-                combine(g, u, 0, y, 1, y, dt, f, &amax);
-                if ((rc = term->eval(term, t + dt, u, f, &b, err))) goto done;
-                st.evals++;
-                st.cfl_violations += b < dt / o.factor_cfl;
-                if (order == 2)
-                    bad = combine(g, y, 0.5, y, 0.5, u, dt, f, &amax);
-                else {
-                    combine(g, u, 0.75, y, 0.25, u, dt, f, &amax);
-                    if ((rc = term->eval(term, t + 0.5 * dt, u, f, &b, err))) goto done;
+                if (!guessed) combine(g, u, 0, y, 1, y, dt, f, &amax);
+                if (order == 3) {
+                    if ((rc = stage(g, term, t + dt, 0.75, y, 0.25, u, dt, f, f, &fused, &b, &bad, &amax, err)))
+                        goto done;
+                    if (fused) { /* the stage is in f, which held no G: u and f trade places */
+                        double *s = u;
+                        u = f, f = s;
+                    }
                     st.evals++;
                     st.cfl_violations += b < dt / o.factor_cfl;
-                    bad = combine(g, y, 1.0 / 3, y, 2.0 / 3, u, dt, f, &amax);
                 }
+                const double tl = order == 2 ? t + dt : t + 0.5 * dt, al = order == 2 ? 0.5 : 1.0 / 3,
+                             bl = order == 2 ? 0.5 : 2.0 / 3;
+                if ((rc = stage(g, term, tl, al, y, bl, u, dt, y, f, &fused, &b, &bad, &amax, err))) goto done;
+                st.evals++;
+                st.cfl_violations += b < dt / o.factor_cfl;
             }
             if (g->dist) {
                 double v[2] = {amax, bad};

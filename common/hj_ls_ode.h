@@ -15,6 +15,14 @@
  * Memory: the state y plus two arrays (one stage, one time derivative),
  * whatever the order.
  *
+ * Stages after the first are fused into the term's pass where the term
+ * has that form (hj_ls_term_stage: Lax-Friedrichs, alone or restricted):
+ * one pass over the grid per stage instead of two, the same bits.  When
+ * the bound has repeated bit for bit over two steps (one independent of t
+ * and y), the first stage is fused too, with the step of that bound, and
+ * kept only if the bound it returns is the same again; a miss costs one
+ * evaluation more (counted in evals) and guessing then pauses 16 steps.
+ *
  * Errors (returned, never printed): a NaN or infinite bound without a
  * finite MaxStep, a zero bound, the term's own errors, and a blow-up: NaN
  * or Inf in the state after a step, or finite growth beyond blowup_factor

@@ -36,6 +36,8 @@ typedef struct {
     double dmax[HJ_LS_MAXDIM]; /* per dimension: running maximum of the
                                 * speed over dx_d (the toolbox's rule) */
     int filled; /* the evaluator's per-thread constants are in ws */
+    double smax; /* a fused RK stage (hj_ls_stage): running max |dst| */
+    int sbad;    /* and whether a value of dst was not finite */
 } row_ctx;
 
 /* The offset of row r's first node and its index in idx: one odometer
@@ -68,10 +70,24 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
+static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                          double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, const char *what,
+                          hj_error *err);
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
 {
-    double m = 0;
+    return for_rows_stage(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, NULL, what, err);
+}
+
+/* for_rows, and for a fused RK stage (st not NULL; the rows leave their
+ * max |dst| and non-finite flag in rc->smax, rc->sbad) st->amax and
+ * st->bad: a maximum and an or, the same for any order of the rows. */
+static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                          double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, const char *what,
+                          hj_error *err)
+{
+    double m = 0, smax = 0;
+    int sbad = 0;
     double dm[HJ_LS_MAXDIM] = {0};
     int nan_seen = 0, nomem = 0;
     size_t bad_row = (size_t)-1;
@@ -87,10 +103,11 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
     size_t chunk = g->rows / (8 * (size_t)nth);
     chunk = chunk < 4 ? 4 : chunk > 32 ? 32 : chunk;
 #ifdef _OPENMP
-#pragma omp parallel reduction(max : m) reduction(| : nan_seen, nomem)
+#pragma omp parallel reduction(max : m, smax) reduction(| : nan_seen, nomem, sbad)
 #endif
     {
         row_ctx rc;
+        rc.smax = 0, rc.sbad = 0;
         const long n = g->N[0];
         rc.ws = malloc(sizeof(double) * (ws_doubles + (size_t)n));
         if (!rc.ws) nomem = 1;
@@ -132,9 +149,12 @@ static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void
 #pragma omp critical(hj_ls_term_dmax)
 #endif
             for (int d = 0; d < g->dim; d++) dm[d] = rc.dmax[d] > dm[d] ? rc.dmax[d] : dm[d];
+            smax = rc.smax > smax ? rc.smax : smax;
+            sbad |= rc.sbad;
         }
         free(rc.ws);
     }
+    if (st) st->amax = smax, st->bad = sbad;
     if (nomem) return hj_error_set(err, HJ_ENOMEM, "out of memory for the %s workspace", what);
     if (bad_code) {
         char pos[256];
@@ -516,6 +536,7 @@ typedef struct {
     double eps[HJ_LS_MAXDIM];                      /* WENO5 epsilons (weno_eps) */
     double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
     int clip;      /* a restriction of this term (hj_ls_restrict): 1 G >= 0, -1 G <= 0, 0 none */
+    const hj_ls_stage *stage; /* a fused RK stage, or NULL: G into ydot */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -590,23 +611,42 @@ static long first_nonfinite(const double *v, long bad)
 
 
 
+/* A fused RK stage on one row (hj_ls_stage): dst = a y0 + b (u + dt G),
+ * u the row of the term's input; max |dst| and sum (dst - dst) (0, or NaN
+ * where a value is not finite) accumulate in smax, sbad.  In place (dst
+ * = y0, the last stage) y0 is read through dst, so that dst stays a
+ * restrict pointer, which the row's vector loop needs to be fast. */
+typedef struct {
+    double a, b, dt;
+    const double *y0, *u;
+    double smax, sbad;
+    int inplace;
+} lf_stage_row;
+
 /* The end of a row of G (every partial known): per node, the dissipation
  * sum_d alpha_d (p+_d - p-_d) / 2 and the CFL sum sum_d alpha_d / dx_d
  * accumulated in dimension order from 0.0 (the bits of one loop per
  * dimension), G = -(H - dissipation), clipped as the restriction asks
  * (clip 1: G >= 0, -1: G <= 0), the largest CFL sum in *inv; returns 0,
  * or non-zero when an alpha or H is not finite (a sum of v - v: 0 or
- * NaN).  One vector loop over the row; dim is a constant where inlined
- * (lf_finish_dim), so the loop over dimensions unrolls. */
-static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, long n, long j0, long j1,
-                                                                  const double *restrict A, const double *restrict DL,
+ * NaN).  With stage set, out receives the stage's combination instead of
+ * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
+ * from out).  One vector loop over the row; dim and stage are constants
+ * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
+ * the plain G path carries no stage. */
+static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int stage, long n, long j0,
+                                                                  long j1, const double *restrict A,
+                                                                  const double *restrict DL,
                                                                   const double *restrict DR, size_t ds_stride,
                                                                   const double *restrict H, const double *hinv,
                                                                   int clip, double *restrict out, double *restrict SP,
-                                                                  double *mp, double *nfp)
+                                                                  lf_stage_row *sr, double *mp, double *nfp)
 {
     double m = *mp, nf = *nfp;
-    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
+    double smax = 0, sbad = 0, sa = 0, sb = 0, sdt = 0;
+    const double *restrict y0 = NULL, *restrict u = NULL;
+    if (stage) smax = sr->smax, sbad = sr->sbad, sa = sr->a, sb = sr->b, sdt = sr->dt, y0 = sr->y0, u = sr->u;
+    SIMD_CLAUSES(reduction(max : m, smax) reduction(+ : nf, sbad))
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
         for (int d = 0; d < dim; d++) {
@@ -619,16 +659,25 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
         nf += H[j] - H[j];
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
+        if (stage) {
+            v = sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
+            sbad += v - v;
+            const double av = v < 0 ? -v : v;
+            smax = av > smax ? av : smax;
+        }
         out[j] = v;
         SP[j] = s;
         m = s > m ? s : m;
     }
     *mp = m, *nfp = nf;
+    if (stage) sr->smax = smax, sr->sbad = sbad;
 }
 
 /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
  * scalar remainder (HJ_LS_ROW_BLOCKS8: recomputing a node gives the same
- * bits; max and the finiteness sum do not change).
+ * bits; max and the finiteness sum do not change).  A fused stage in
+ * place must not recompute a node (its y0 is overwritten): there the
+ * remainder runs once.
  *
  * The CFL sum s = sum_d |alpha_d| / dx_d is wanted only at the row's
  * largest: the vector loop forms it with multiplications by 1 / dx_d (SP,
@@ -637,29 +686,46 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
  * lies within 1e-12 relative of the row's largest SP, which hold the
  * largest s: three vector divisions per node were a third of the row's
  * end. */
-static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, long n, const double *restrict A,
-                                                           const double *restrict DL, const double *restrict DR,
-                                                           size_t ds_stride, const double *restrict H,
-                                                           const double *dx, int clip, double *restrict out,
-                                                           double *restrict SP, double *inv)
+static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int stage, long n,
+                                                           const double *restrict A, const double *restrict DL,
+                                                           const double *restrict DR, size_t ds_stride,
+                                                           const double *restrict H, const double *dx, int clip,
+                                                           double *restrict out, double *restrict SP,
+                                                           lf_stage_row *sr, double *inv)
 {
     double hinv[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
     double mp = 0, nf = 0;
 #define LF_RANGE(j0, j1) \
-    lf_finish_range(diffs, dim, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, &mp, &nf);
-    HJ_LS_ROW_BLOCKS8(n, LF_RANGE);
+    lf_finish_range(diffs, dim, stage, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, &nf);
+    if (stage == 2) {
+        const long n8 = n & ~7L;
+        LF_RANGE(0, n8)
+        if (n8 < n) LF_RANGE(n8, n)
+    } else
+        HJ_LS_ROW_BLOCKS8(n, LF_RANGE);
 #undef LF_RANGE
     /* (far from underflow and overflow, where the bound holds; else every
      * node exactly) */
     const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
     double m = 0;
-    for (long j = 0; j < n; j++)
-        if (SP[j] >= thr) {
-            double s = 0.0;
-            for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)j]) / dx[d];
-            m = s > m ? s : m;
-        }
+    /* the candidates found 8 nodes at a time (one vector compare), the
+     * few that pass handled one by one */
+#define LF_EXACT(j)                                                                                  \
+    if (SP[j] >= thr) {                                                                              \
+        double s = 0.0;                                                                              \
+        for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)(j)]) / dx[d]; \
+        m = s > m ? s : m;                                                                           \
+    }
+    long j = 0;
+    for (; j + 8 <= n; j += 8) {
+        int hit = 0;
+        for (int q = 0; q < 8; q++) hit |= SP[j + q] >= thr;
+        if (hit)
+            for (int q = 0; q < 8; q++) LF_EXACT(j + q)
+    }
+    for (; j < n; j++) LF_EXACT(j)
+#undef LF_EXACT
     *inv = m;
     return nf != 0;
 }
@@ -667,18 +733,27 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, l
 HJ_LS_TERM_CLONES
 static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
                          size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
-                         double *inv)
+                         lf_stage_row *sr, double *inv)
 {
-    if (diffs) switch (dim) {
-        case 2: return lf_finish(1, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
-        case 3: return lf_finish(1, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
-        default: return lf_finish(1, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
-        }
-    switch (dim) {
-    case 2: return lf_finish(0, 2, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
-    case 3: return lf_finish(0, 3, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
-    default: return lf_finish(0, dim, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, inv);
+#define LF_FINISH(DIFFS, DIM, STAGE) lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, sr, inv)
+#define LF_FINISH_DIMS(DIFFS, STAGE)                      \
+    switch (dim) {                                        \
+    case 2: return LF_FINISH(DIFFS, 2, STAGE);            \
+    case 3: return LF_FINISH(DIFFS, 3, STAGE);            \
+    default: return LF_FINISH(DIFFS, dim, STAGE);         \
     }
+    if (sr && sr->inplace) {
+        if (diffs) LF_FINISH_DIMS(1, 2)
+        LF_FINISH_DIMS(0, 2)
+    }
+    if (sr) {
+        if (diffs) LF_FINISH_DIMS(1, 1)
+        LF_FINISH_DIMS(0, 1)
+    }
+    if (diffs) LF_FINISH_DIMS(1, 0)
+    LF_FINISH_DIMS(0, 0)
+#undef LF_FINISH_DIMS
+#undef LF_FINISH
 }
 
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
@@ -788,8 +863,18 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         }
     }
     double m;
-    double *out = ydot + rc->k;
-    if (lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, ring + 6 * (size_t)n, &m)) {
+    double *out;
+    lf_stage_row sr, *srp = NULL;
+    if (ps->stage) { /* ydot is NULL */
+        const hj_ls_stage *st = ps->stage;
+        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst};
+        srp = &sr, out = st->dst + rc->k;
+    } else
+        out = ydot + rc->k;
+    const int nonfinite =
+        lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, ring + 6 * (size_t)n, srp, &m);
+    if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
+    if (nonfinite) {
         /* the first node of the row with a non-finite alpha or H */
         long badj = n;
         for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
@@ -804,7 +889,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
 /* The evaluation, its output clipped as hj_ls_restrict would (clip 1:
  * G >= 0, -1: G <= 0, 0: not), in the same pass. */
 static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, int clip,
-                        hj_error *err)
+                        hj_ls_stage *stage, hj_error *err)
 {
     const hj_ls_lax_friedrichs *c = (const hj_ls_lax_friedrichs *)term;
     const hj_ls_grid *g = c->grid;
@@ -817,6 +902,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
     lf_pass ps;
     ps.lf = c;
     ps.clip = clip;
+    ps.stage = stage;
     const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;
     ps.cache = ranged ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
@@ -863,8 +949,8 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 8) * (size_t)n, lf_row, &ps, t, y, ydot, &m, dm,
-                      "Hamiltonian or partial callback", err);
+    int rc = for_rows_stage(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 8) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
+                            dm, stage, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
@@ -872,7 +958,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
 
 static int lf_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
 {
-    return lf_eval_clip(term, t, y, ydot, bound, 0, err);
+    return lf_eval_clip(term, t, y, ydot, bound, 0, NULL, err);
 }
 
 size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g) { return 2 * (size_t)g->dim * g->nodes; }
@@ -1035,7 +1121,8 @@ static int restrict_eval(const hj_ls_term *term, double t, double *y, double *yd
     const hj_ls_grid *g = c->grid;
     /* A Lax-Friedrichs term (reachability) clips in its own row pass:
      * the same values, one pass over the grid fewer. */
-    if (c->inner->eval == lf_eval) return lf_eval_clip(c->inner, t, y, ydot, bound, c->positive ? 1 : -1, err);
+    if (c->inner->eval == lf_eval)
+        return lf_eval_clip(c->inner, t, y, ydot, bound, c->positive ? 1 : -1, NULL, err);
     int rc = c->inner->eval(c->inner, t, y, ydot, bound, err);
     if (rc) return rc;
 #ifdef _OPENMP
@@ -1048,6 +1135,23 @@ static int restrict_eval(const hj_ls_term *term, double t, double *y, double *yd
             for (long j = 0; j < g->N[0]; j++) p[j] = p[j] > 0 ? p[j] : 0;
         else
             for (long j = 0; j < g->N[0]; j++) p[j] = p[j] < 0 ? p[j] : 0;
+    }
+    return HJ_OK;
+}
+
+int hj_ls_term_stage(const hj_ls_term *term, double t, double *y, hj_ls_stage *st, double *step_bound, int *done,
+                     hj_error *err)
+{
+    *done = 0;
+    if (term->eval == lf_eval) {
+        *done = 1;
+        return lf_eval_clip(term, t, y, NULL, step_bound, 0, st, err);
+    }
+    if (term->eval == restrict_eval) {
+        const hj_ls_restrict *c = (const hj_ls_restrict *)term;
+        if (c->inner->eval != lf_eval) return HJ_OK;
+        *done = 1;
+        return lf_eval_clip(c->inner, t, y, NULL, step_bound, c->positive ? 1 : -1, st, err);
     }
     return HJ_OK;
 }

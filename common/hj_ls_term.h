@@ -225,6 +225,27 @@ size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
  * after all returns NaN (an HJ_ENONFINITE error) rather than a silently
  * wrong bound.  Default 0. */
 
+/* ---- an explicit Runge-Kutta stage fused into a term's pass over the
+ * grid (what hj_ls_ode runs where it can, stages after the first): instead
+ * of G = G(t, y) into an array and a second pass that combines,
+ *     dst = a y0 + b (y + dt G)
+ * at every interior node, the expression of hj_ls_ode's combination (the
+ * same bits), with st->amax = max |dst| and st->bad = 1 if a value of dst
+ * is not finite.  dst is either y0 itself (in place) or an array apart
+ * from y0, and never y (the stencils read y's neighbours).  Lax-Friedrichs terms, alone or restricted (hj_ls_restrict),
+ * have the fused form; for any other term *done = 0, nothing is written,
+ * and the caller evaluates and combines.  *step_bound is the term's bound
+ * at y, as eval returns it. */
+typedef struct {
+    double a, b, dt;
+    const double *y0;
+    double *dst;
+    double amax; /* out */
+    int bad;     /* out */
+} hj_ls_stage;
+int hj_ls_term_stage(const hj_ls_term *term, double t, double *y, hj_ls_stage *st, double *step_bound, int *done,
+                     hj_error *err);
+
 /* ---- mean curvature (6): G = b kappa |grad phi|, centered second order
  * (hj_ls_curvature_at).  CFL bound 1 / max_x 2 b sum_d 1/dx_d^2. */
 typedef struct {

@@ -19,12 +19,15 @@ a core, CPU time much less, so before/after ratios are taken from it;
 `--threads 1` runs the one-thread figures only), and a roofline line:
 
 - bytes per node-stage: the compulsory traffic of the passes over the grid
-  (a model, not a counter: this machine exposes no hardware counters):
-  the term reads phi and writes G (air3D's partials ignore the gradient
-  range, so the global Lax-Friedrichs makes no pass for it: `range_free`
-  in `p2_air3d.c`); reachability adds the
-  restriction's read and write of G; the RK combination reads phi and G
-  (and the stage array after the first stage) and writes the new state;
+  (a model, not a counter: this machine exposes no hardware counters).
+  Convection: the term reads phi and writes G; the RK combination reads
+  phi and G (and the stage array after the first stage) and writes the
+  new state.  air3D (`range_free` in `p2_air3d.c`: no pass for the
+  gradient range; the restriction clips in the term's pass): each RK
+  stage of order 2 and 3 is one pass that reads its input and the state
+  it combines with and writes the stage (`hj_ls_term_stage`; the first
+  stage, whose two are the same array, 16 bytes, the others 24); order 1
+  is the term's pass (16) and the combination (24);
 - flops per node-stage: an operation count of the scheme (per dimension,
   both one-sided derivatives of upwind first order 4, ENO2 16, ENO3 40,
   WENO5 165; convection computes only the upwind side, half of these, plus
@@ -311,9 +314,11 @@ int main(int argc, char **argv)
         hj_progress("\r%60s\r", "");
         const int order = hj_ls_accuracy_order(c->acc), dim = s.g.dim;
         const double stages = (double)st.steps * order, ns = stages * (double)s.g.nodes;
-        /* bytes: term reads and writes, restriction, RK combination (24 B first stage, 32 B later) */
+        /* bytes: convection's term reads and writes, RK combination (24 B first stage, 32 B later);
+         * air3D's fused stages (16 B the first, 24 B later), order 1 unfused */
         const double combine = (24.0 + 32.0 * (order - 1)) / order;
-        const double bytes = c->kind == AIR3D ? 8 + 8 + 16 + combine : 8 + 8 + combine;
+        const double fused = order == 1 ? 16 + 24 : (16.0 + 24.0 * (order - 1)) / order;
+        const double bytes = c->kind == AIR3D ? fused : 8 + 8 + combine;
         /* flops: the rotation moves no node along x_3 in 3-D: two dimensions carry flow */
         const double flops = c->kind == AIR3D ? dim * (deriv_flops(c->acc) + 8) + 20 + 5
                                               : 2 * (deriv_flops(c->acc) / 2 + 6) + 5;

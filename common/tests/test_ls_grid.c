@@ -104,6 +104,72 @@ static void ghosts_2d(void **state)
     hj_ls_free(a);
 }
 
+/* The ghost value of every boundary condition at distance k from the
+ * boundary node b (neighbour b1 inward), as fill_line has it. */
+static double ghost_ref(const hj_ls_bc *bc, const double *p, ptrdiff_t s, long n, double dx, long k, int upper)
+{
+    const double *b = upper ? p + (n - 1) * s : p, *b1 = upper ? b - s : b + s;
+    switch (bc->type) {
+    case HJ_LS_BC_PERIODIC: return upper ? p[((k - 1) % n) * s] : p[((n - k % n) % n) * s];
+    case HJ_LS_BC_DIRICHLET: return upper ? bc->hi : bc->lo;
+    case HJ_LS_BC_NEUMANN: return *b + (double)k * dx * (upper ? bc->hi : bc->lo);
+    default: {
+        const double dir = bc->type == HJ_LS_BC_EXTRAP_AWAY ? 1.0 : -1.0;
+        const double sg = *b > 0 ? 1.0 : (*b < 0 ? -1.0 : 0.0);
+        return *b + (double)k * dir * sg * fabs(*b - *b1);
+    }
+    }
+}
+
+/* 3-D, a different condition per dimension: every node, ghosts and
+ * corners included, holds the bits of the plain definition (every line
+ * along d through the full ghosted extent of all other dimensions, d in
+ * order), which the fill reaches with fewer lines; 1 and 2 threads. */
+static void ghosts_3d_reference(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[3] = {0, -1, 2}, mx[3] = {1, 1, 3};
+    long N[3] = {7, 5, 6};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_NEUMANN, 0.5, -2}, {HJ_LS_BC_PERIODIC, 0, 0}};
+    for (int variant = 0; variant < 2; variant++) {
+        if (variant) bc[0].type = HJ_LS_BC_DIRICHLET, bc[0].lo = 3, bc[0].hi = -4, bc[2].type = HJ_LS_BC_EXTRAP_TOWARD;
+        assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, N, bc, NULL), HJ_OK);
+        double *ref = hj_ls_alloc(&g), *a = hj_ls_alloc(&g);
+        assert_non_null(ref), assert_non_null(a);
+        for (size_t q = 0; q < g.total; q++) ref[q] = sin(0.37 * (double)q) + (q % 3 == 0 ? 0.0 : 0.5);
+        memcpy(a, ref, sizeof(double) * g.total); /* the same stale ghosts */
+        for (int d = 0; d < 3; d++) {
+            const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+            for (long i1 = -HJ_LS_GHOST; i1 < g.N[e1] + HJ_LS_GHOST; i1++)
+                for (long i2 = -HJ_LS_GHOST; i2 < g.N[e2] + HJ_LS_GHOST; i2++) {
+                    long ix[3];
+                    ix[d] = 0, ix[e1] = i1, ix[e2] = i2;
+                    double *p = ref + hj_ls_index(&g, ix);
+                    const ptrdiff_t s = g.stride[d];
+                    for (long k = 1; k <= HJ_LS_GHOST; k++) {
+                        p[-k * s] = ghost_ref(&g.bc[d], p, s, g.N[d], g.dx[d], k, 0);
+                        p[(g.N[d] - 1 + k) * s] = ghost_ref(&g.bc[d], p, s, g.N[d], g.dx[d], k, 1);
+                    }
+                }
+        }
+        for (int th = 1; th <= 2; th++) {
+#ifdef _OPENMP
+            omp_set_num_threads(th);
+#endif
+            double *b = hj_ls_alloc(&g);
+            memcpy(b, a, sizeof(double) * g.total);
+            hj_ls_fill_ghosts(&g, b);
+            assert_memory_equal(b, ref, sizeof(double) * g.total);
+            hj_ls_free(b);
+        }
+#ifdef _OPENMP
+        omp_set_num_threads(1);
+#endif
+        hj_ls_free(ref), hj_ls_free(a);
+    }
+}
+
 static void coords_and_rows(void **state)
 {
     (void)state;
@@ -354,6 +420,6 @@ static void period_grid(void **state)
                      HJ_EINVAL);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d),
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

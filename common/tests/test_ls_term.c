@@ -687,6 +687,90 @@ static void restrict_lax_friedrichs(void **state)
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
 
+/* The Runge-Kutta stage fused into a Lax-Friedrichs pass (hj_ls_term_stage)
+ * gives the bits of the term's G combined afterwards, dst = a y0 + b (y +
+ * dt G), in place (dst = y0) and into another array, alone and restricted
+ * (both signs), every dissipation, with 1 and 2 threads; the bound, max
+ * |dst| and the non-finite flag as a separate pass has them.  Other terms
+ * have no fused form and write nothing. */
+static void lax_friedrichs_fused_stage(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *dst = hj_ls_alloc(&g);
+    double *ref = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, bump3, NULL);
+    hj_ls_fill(&g, y0, bump3, NULL);
+    long idx[3];
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
+    }
+    const double a = 0.75, b = 0.25, dt = 0.0123;
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
+        for (int scheme = HJ_LS_ENO2; scheme <= HJ_LS_WENO5A; scheme += HJ_LS_WENO5A - HJ_LS_ENO2)
+            for (int clip = -1; clip <= 1; clip++)
+                for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+                    omp_set_num_threads(th);
+#endif
+                    hj_ls_lax_friedrichs lf;
+                    hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_mix, NULL);
+                    hj_ls_restrict rs;
+                    hj_ls_restrict_init(&rs, &g, &lf.base, clip > 0);
+                    const hj_ls_term *term = clip ? &rs.base : &lf.base;
+                    double b0, b1;
+                    assert_int_equal(term->eval(term, 0.3, y, f, &b0, NULL), HJ_OK);
+                    double amax = 0;
+                    for (size_t r = 0; r < g.rows; r++) {
+                        const size_t k = hj_ls_row(&g, r, idx);
+                        for (long j = 0; j < g.N[0]; j++) {
+                            const size_t q = k + (size_t)j;
+                            ref[q] = a * y0[q] + b * (y[q] + dt * f[q]);
+                            amax = fabs(ref[q]) > amax ? fabs(ref[q]) : amax;
+                        }
+                    }
+                    for (int inplace = 0; inplace < 2; inplace++) {
+                        if (inplace) memcpy(dst, y0, sizeof(double) * g.total);
+                        hj_ls_stage st = {a, b, dt, inplace ? dst : y0, dst, -1, -1};
+                        int done = 0;
+                        assert_int_equal(hj_ls_term_stage(term, 0.3, y, &st, &b1, &done, NULL), HJ_OK);
+                        assert_int_equal(done, 1);
+                        assert_memory_equal(&b0, &b1, sizeof b0);
+                        assert_interior_equal(&g, ref, dst);
+                        assert_memory_equal(&amax, &st.amax, sizeof amax);
+                        assert_int_equal(st.bad, 0);
+                        memset(dst, 0, sizeof(double) * g.total);
+                    }
+                }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    /* a non-finite y0 is flagged */
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_mix, partial_mix, NULL);
+    y0[g.offset + 5] = INFINITY;
+    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
+    int done = 0;
+    double bd;
+    assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
+    assert_int_equal(done, 1);
+    assert_int_equal(st.bad, 1);
+    /* convection: no fused form, nothing written */
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    memset(dst, 0, sizeof(double) * g.total);
+    st.dst = dst, st.y0 = y0;
+    assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
+    assert_int_equal(done, 0);
+    for (size_t q = 0; q < g.total; q++) assert_true(dst[q] == 0);
+    hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
+}
+
 static void restrict_and_sum(void **state)
 {
     (void)state;
@@ -749,4 +833,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(lax_friedrichs_range_free),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
-                        cmocka_unit_test(restrict_lax_friedrichs), cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
+                        cmocka_unit_test(restrict_lax_friedrichs), cmocka_unit_test(lax_friedrichs_fused_stage),
+                        cmocka_unit_test(restrict_and_sum), cmocka_unit_test(dissipation_names))
