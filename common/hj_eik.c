@@ -420,7 +420,10 @@ static inline int add_term(const eik_work *w, int o, double T0, const double *x,
  * equation, so on resolved data v and v1 differ by O(h^2) and
  *   - v lies within f h (in T) of v1, and
  *   - T0 v is later than the earliest neighbour (causality: the front
- *     reaches a node after the neighbour it comes from).
+ *     reaches a node after the neighbour it comes from), unless the
+ *     first order value is not either: next to a point source between
+ *     nodes the node nearest to it is earlier than its neighbours (the
+ *     test fired there once on the tests' sin map, 2-D, order 5).
  * Where the slowness jumps from cell to cell the WENO extrapolations
  * follow the noise and neither need hold.  A clamp to [v1 - lim, v1 +
  * lim] alone did not stop the iteration from running away on such maps
@@ -436,7 +439,7 @@ static inline int add_term(const eik_work *w, int o, double T0, const double *x,
 static inline int safeguard_ok(double v, double v1, double Tmin, double T0, double fh)
 {
     const double lim = fh / T0;
-    return v >= v1 - lim && v <= v1 + lim && T0 * v > Tmin;
+    return v >= v1 - lim && v <= v1 + lim && (T0 * v > Tmin || !(T0 * v1 > Tmin));
 }
 
 /* New tau at padded node k (padded index ip, coordinates x) with the
