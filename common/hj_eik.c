@@ -101,7 +101,20 @@
  * speed varies by a large factor over a few cells WENO5's weights can
  * still swing from sweep to sweep and the iteration cycle; when the
  * largest change stops decreasing, the nodes that still move switch to
- * WENO3 (demote_cycling).  An iteration that converges never does. */
+ * WENO3 (demote_cycling).  An iteration that converges never does.
+ *
+ * Under-resolved data.  On slowness maps with noise at the grid scale
+ * no scheme has its order and the high order iterations cycled or ran
+ * away (T = -1e153 at a grid corner of a 200 x 150 map of random
+ * pixels).  Three safeguards degrade the order locally instead, each
+ * node to the first order Godunov update, which is upwind and monotone:
+ * nodes where f is rough at the grid scale, from the start
+ * (mark_rough); a node whose high order value comes before its earliest
+ * neighbour (safeguard_ok); and,
+ * if the iteration still stops converging, the nodes that still move
+ * (demote_first, every node in its last round).  None of them acts on
+ * the convergence study's cases; hj_eik_stats.first_order counts the
+ * nodes they touched. */
 #include "hj_eik.h"
 
 #include <math.h>
@@ -130,6 +143,8 @@ enum { GH = 3 };                                  /* ghost layers: WENO5 reaches
  * demotion (3-D 40^3, speed 1 + 0.5 sin(x/7) cos(y/5): 154 iterations
  * instead of 108). */
 enum { STALL_SPAN = 8, STALL_ROUNDS = 8 };
+/* Rounds of demote_first, the last one demoting every node. */
+enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
 #define STALL_FRAC 0.01
 enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
@@ -162,6 +177,9 @@ typedef struct {
                             * where fronts of two sources meet) */
     int *lab;              /* first order phase: the source whose front
                             * reached the node first (-1: none, fixed data) */
+    unsigned char *fo;     /* 1: the first order update from now on (the
+                            * high order one was found untrustworthy
+                            * there; see safeguard); NULL at order 1 */
     unsigned char *state;
     int *stamp;            /* last sweep that changed the node (locking) */
     float *chg;            /* order 5: largest change of T per node in the
@@ -185,6 +203,7 @@ static void work_free(eik_work *w)
     free(w->own);
     free(w->lab);
     free(w->low);
+    free(w->fo);
     free(w->state);
     free(w->stamp);
     free(w->calc);
@@ -394,16 +413,43 @@ static inline int add_term(const eik_work *w, int o, double T0, const double *x,
     return side;
 }
 
+/* Is the high order value v (tau) of a node causal?  v1: the first order
+ * Godunov value of the same neighbours, Tmin: the earliest of those
+ * neighbours' times (T - t0), T0: the node's factor.  The front reaches
+ * a node after the neighbour it comes from, so T0 v must be later than
+ * Tmin, unless the first order value is not either: next to a point
+ * source between nodes the node nearest to it is earlier than its
+ * neighbours (the test fired there once on the tests' sin map, 2-D,
+ * order 5, before this exception).  Where the slowness jumps from cell
+ * to cell the WENO extrapolations follow the noise and can break this:
+ * the clamp of local_update (within f h of v1) alone did not stop the
+ * iteration from running away on such maps (T = -1e153 at a grid corner
+ * of a 200 x 150 map of random pixels): v1 - f h is up to 0.3 f h before
+ * the earliest neighbour, so nodes that feed each other's WENO stencils
+ * could sink by that much at every sweep, and the factored first order
+ * value amplifies a negative time outwards (by T0(x) / T0(neighbour)
+ * per node).  A node that fails is switched to the first order update
+ * for good (visit): upwind and monotone there, while the rest of the
+ * grid keeps its order. */
+static inline int safeguard_ok(double v, double v1, double Tmin, double T0)
+{
+    return T0 * v > Tmin || !(T0 * v1 > Tmin);
+}
+
 /* New tau at padded node k (padded index ip, coordinates x) with the
  * scheme of `order` in sweep orientation sw.  A higher order term
  * relaxed downwind (see the head of this file) keeps at least half the
  * plain slope: near a source p can cancel most of T0 c / h.
- * A higher order value is clamped to within f h (in T) of the first order
- * update of the same stencil: on smooth data the two differ by O(h^2), so
- * the clamp only acts where WENO's extrapolations go wild (kinks, corners
- * next to obstacles) and keeps the iteration from running away there; a
- * clamp rather than a switch keeps the update continuous. */
-static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw)
+ * A higher order value that fails safeguard_ok is replaced by the first
+ * order one and *fell is set.  Else it is clamped to within f h (in T)
+ * of the first order update of the same stencil: on smooth data the two
+ * differ by O(h^2), so the clamp only acts where WENO's extrapolations go
+ * wild (kinks, corners next to obstacles, fronts crossing in a smooth
+ * but strongly varying medium); a clamp rather than a switch keeps the
+ * update continuous there (a switch made 11 nodes of a smooth 8-bit
+ * speed image first order at order 5). */
+static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw,
+                           int *fell)
 {
     const int o = w->own[k];
     const double T0 = w->T0[k];
@@ -412,12 +458,15 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
     double al[3] = {0, 0, 0}, bl[3] = {0, 0, 0}, ar[3] = {0, 0, 0}, br[3] = {0, 0, 0};
     int sd[3] = {-1, -1, -1};
     int m = 0, m1 = 0, high = 0;
+    double Tmin = INFINITY; /* earliest neighbour (safeguard_ok) */
     for (int d = 0; d < w->dim; d++) {
         const long st = w->st[d];
         const double h = w->h[d];
         double nl1, nr1, Tl1, Tr1; /* first order neighbour values and times */
         neighbour(w, o, k - st, x, d, -h, &nl1, &Tl1);
         neighbour(w, o, k + st, x, d, h, &nr1, &Tr1);
+        Tmin = Tl1 < Tmin ? Tl1 : Tmin;
+        Tmin = Tr1 < Tmin ? Tr1 : Tmin;
         const int side = add_term(w, o, T0, x, d, nl1, nr1, Tl1, Tr1, -1, a1, b1, &m1);
         if (order == 1) continue;
         double xn[3] = {x[0], x[1], x[2]};
@@ -480,6 +529,10 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
     const double v1 = m1 > 0 ? godunov_solve(m1, a1, b1, w->fs[k]) : INFINITY;
     if (order == 1 || !high) return v1;
     const double v = godunov_max(w->dim, a, b, m, al, bl, ar, br, sd, w->fs[k]);
+    if (!safeguard_ok(v, v1, Tmin, T0)) {
+        *fell = 1;
+        return v1;
+    }
     double hmin = w->h[0];
     for (int d = 1; d < w->dim; d++) hmin = w->h[d] < hmin ? w->h[d] : hmin;
     const double lim = w->fs[k] * hmin / T0;
@@ -551,7 +604,9 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
     double x[3];
     node_x(w, ip, x);
     const double old = w->tau[k];
-    double v = local_update(w, k, ip, x, order, sw);
+    int fell = 0;
+    double v = local_update(w, k, ip, x, w->fo && w->fo[k] ? 1 : order, sw, &fell);
+    if (fell) w->fo[k] = 1; /* the node's own flag: the same for any thread count */
     (*nup)++;
     if (first) {
         w->calc[k] = q;
@@ -964,6 +1019,78 @@ static void demote_cycling(eik_work *w, double change, int q)
     for (size_t k = 0; k < np; k++) m[k] = m[k] ? 1 : 0;
 }
 
+/* Slowness maps with noise at the grid scale (independent random pixels,
+ * layers a cell apart) are not resolved: T's gradient jumps from cell to
+ * cell, no scheme has its order there, and the WENO extrapolations follow
+ * the jumps (the iterations cycled, or ran away at a grid corner).  Such
+ * nodes take the first order update from the start.  Along each axis,
+ * with D1 the largest |first difference| of f over i-3..i+3 (WENO5's
+ * reach) and D2 the largest |second difference| centred on i-1..i+1
+ * (neighbours in obstacles or outside the grid left out), node i is
+ * rough where
+ *     D2 > ROUGH_RATIO D1   and   D2 > ROUGH_FLOOR f(i).
+ * Resolved data has D2 / D1 of about k h (k the wave number) and at most
+ * about 0.4 next to an extremum of f (D2 = f'' h^2 there, D1 = 2.5 f''
+ * h^2): 0 on the tests' 1 + 0.5 sin(x / 7) cos(y / 5), where 0.5 over
+ * i-2..i+2 caught 8 % of the nodes at the extrema; zero for linear and
+ * constant fields.  Independent pixels give D2 / D1 of 1 to 2 (D2 <= 2 D1
+ * always): 97.4-99.6 % of the nodes of the 200 x 150 random maps.  The
+ * floor leaves alone noise too small to matter, in particular the 8-bit
+ * steps of a smooth image (a step of 2 / 255 in speed is 1.6 % of f at
+ * speed 0.5, and D2 reaches two steps: a floor of 1 % marked 10 % of
+ * the nodes of 1 + 0.5 sin(x / 15) cos(y / 11) stored as an 8-bit PGM,
+ * 5 % none; maps whose noise stays below it converged at both orders
+ * before these safeguards). */
+#define ROUGH_RATIO 0.6
+#define ROUGH_FLOOR 0.05
+static void mark_rough(eik_work *w)
+{
+    for (size_t k = 0; k < w->npad; k++) {
+        if (w->state[k] != ST_FREE) continue;
+        int rough = 0;
+        for (int d = 0; d < w->dim && !rough; d++) {
+            const long st = w->st[d];
+            double fv[7];
+            for (int r = -3; r <= 3; r++) {
+                const long kk = (long)k + r * st;
+                const unsigned char sk = w->state[kk];
+                fv[r + 3] = sk == ST_GHOST || sk == ST_OBST ? NAN : w->fs[kk];
+            }
+            double D1 = 0, D2 = 0;
+            for (int j = 0; j < 6; j++) {
+                const double e = fabs(fv[j + 1] - fv[j]);
+                if (e > D1) D1 = e; /* NaN compares false: left out */
+            }
+            for (int j = 2; j <= 4; j++) {
+                const double e = fabs(fv[j + 1] - 2 * fv[j] + fv[j - 1]);
+                if (e > D2) D2 = e;
+            }
+            rough = D2 > ROUGH_RATIO * D1 && D2 > ROUGH_FLOOR * w->fs[k];
+        }
+        w->fo[k] = (unsigned char)rough;
+    }
+}
+
+/* The last resort against a cycle (after demote_cycling's rounds at
+ * order 5, after the relaxation is dropped at order 3): the nodes whose
+ * last change was at least STALL_FRAC of the iteration's largest
+ * (change), and those within 3 nodes of them, use the first order update
+ * from now on (all of them when `all`), and all nodes are made active
+ * (sweep q).  The first order update is monotone, so with every node
+ * demoted the iteration is the first order one and converges; each round
+ * leaves the nodes that stopped moving at their order.  A converging
+ * iteration never gets here. */
+static void demote_first(eik_work *w, double change, int q, int all)
+{
+    const size_t np = w->npad;
+    const float lim = (float)(STALL_FRAC * change);
+    for (size_t k = 0; k < np; k++) {
+        w->fo[k] = all || w->fo[k] || w->chg[k] >= lim;
+        w->stamp[k] = q;
+    }
+    dilate_box3(w, w->fo); /* leaves 0 / 1 */
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -1239,12 +1366,13 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
-        if (opt->order == 5 && !(w.chg = calloc(np, sizeof(float)))) {
+        if (!(w.chg = calloc(np, sizeof(float))) || !(w.fo = calloc(np, 1))) {
             work_free(&w);
-            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np * 4 / 1e6);
+            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np * 5 / 1e6);
         }
+        mark_rough(&w);
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
-        int demoted = 0, nblk = 0;
+        int demoted = 0, fell = 0, nblk = 0;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
@@ -1276,16 +1404,21 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 /* a plateau at rounding level (below 1e-12 of the
                  * scale: a tolerance too small to reach) is no cycle */
                 const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
-                if (stall && w.chg && demoted < STALL_ROUNDS) {
+                if (stall && opt->order == 5 && demoted < STALL_ROUNDS) {
                     demote_cycling(&w, change, q);
                     w.relax = 1;
                     demoted++;
                     blk[1] = 0; /* the next block starts afresh */
-                } else if (stall && !w.chg && w.relax) {
+                } else if (stall && opt->order == 3 && w.relax) {
                     /* order 3: the plain update from here on (the wall
                      * of eik_convergence at N = 40: changes of 3.5e-12
                      * of the scale for 1000 iterations with it) */
                     w.relax = 0;
+                    blk[1] = 0;
+                } else if (stall && fell < FALL_ROUNDS) {
+                    /* still cycling: the nodes that still move use the
+                     * first order update (demote_first) */
+                    demote_first(&w, change, q, ++fell == FALL_ROUNDS);
                     blk[1] = 0;
                 }
                 blk[0] = blk[1];
@@ -1295,6 +1428,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
     }
     st->converged = conv;
+    if (w.fo)
+        for (size_t k = 0; k < np; k++) st->first_order += w.fo[k] && w.state[k] == ST_FREE;
 
     for (long c = 0; c < n2; c++)
         for (long b = 0; b < n1; b++)

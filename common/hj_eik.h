@@ -60,6 +60,10 @@ typedef struct {
     long fo_iterations; /* iterations of the first order start (included
                          * in iterations) */
     size_t updates;     /* local solves done (active nodes only) */
+    size_t first_order; /* orders 3 and 5: nodes left at the first order
+                         * update, where the high order one failed its
+                         * safeguard or kept the iteration from
+                         * converging (under-resolved data) */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);

@@ -22,7 +22,9 @@ unless `--domain` gives the box, whose sides need not make dx = dy.
 **Method.** The library solver common/hj_eik.h: fast sweeping at order 1,
 3 or 5, factored near point sources (full order at the source), stopped
 when an iteration changes T by at most `--tol` times max |T| (scale-free:
-pixel units or metres alike).
+pixel units or metres alike).  Where the map varies from node to node (noise
+at the pixel scale) orders 3 and 5 use the first order update at those
+nodes; the count is printed on stderr and in the output's header.
 
 **Output.** 2-D: a TSV grid (x, y, T; a blank line after each row, as
 gnuplot's splot wants) or `--format matrix` (one row of T per line,
@@ -572,8 +574,10 @@ int main(int argc, char **argv)
 
     /* ---- output ---- */
     const int fmt = format ? format : dim == 3 ? 3 : 1;
-    char title[256];
-    snprintf(title, sizeof title, "eikonal: T, order %d, %ld iterations%s, change %.3g of max |T|", opt.order,
+    char title[320], fell[96] = "";
+    if (st.first_order > 0)
+        snprintf(fell, sizeof fell, ", %zu nodes at first order (map not resolved there)", st.first_order);
+    snprintf(title, sizeof title, "eikonal: T, order %d%s, %ld iterations%s, change %.3g of max |T|", opt.order, fell,
              st.iterations, converged ? "" : " (not converged: the last iterate)", st.change);
     if (fmt == 3) {
         if (hj_vol_write_vtk(out_path, g.n, g.x0, g.dx, title, "T", T, -1, &err)) {
@@ -592,6 +596,13 @@ int main(int argc, char **argv)
         if (fp == stdout && fflush(stdout)) { free(T); hj_cli_fail(prog, HJ_EXIT_RUN, "error writing stdout"); }
     }
     free(T);
+    /* the loss of order is stated, not an error: the result is still the
+     * upwind (first order) solution there */
+    if (st.first_order > 0)
+        fprintf(stderr, "%s: note: the order %d scheme fell back to the first order update at %zu of %ld nodes "
+                        "(%.1f %%), where the map varies from node to node (not resolved by the grid) or the high "
+                        "order update was not trustworthy; T is first order accurate there\n",
+                prog, opt.order, st.first_order, total, 100.0 * (double)st.first_order / (double)total);
     if (!converged) {
         fprintf(stderr, "%s: warning: not converged after %ld iterations (last change %.3g of max |T|, --tol %g); the "
                         "last iterate is written, exit status %d\n",
