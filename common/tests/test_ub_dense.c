@@ -90,6 +90,34 @@ static void cases(dcase *cs, int *m)
         }
 }
 
+/* Up to nsteps steps towards T of the dense step (ws) and of hj_ub_step
+ * on the FS store (sv), from the store's values: the same bits after
+ * every step; with `moved`, some node off +-1 (the front on the grid).
+ * `what` names the case in a failure. */
+static void steps_match_fs(hj_ub_dense *ws, hj_ub_solver *sv, double T, int nsteps, int moved, const char *what)
+{
+    double *v = malloc(ws->total * sizeof *v), *ref = malloc(ws->total * sizeof *ref);
+    fs_values(sv, v);
+    double t = 0;
+    for (int st = 0; st < nsteps && t < T; st++) {
+        const double dt = hj_ub_dense_dt(ws, t, T);
+        assert_int_equal(hj_ub_dense_step(ws, v, t, dt, NULL), HJ_OK);
+        t = dt == T - t ? T : t + dt;
+        assert_int_equal(hj_ub_step(sv, T, NULL), HJ_OK);
+        assert_true(sv->t == t);
+        fs_values(sv, ref);
+        size_t off = 0;
+        for (size_t k = 0; k < ws->total; k++) {
+            if (memcmp(&v[k], &ref[k], sizeof v[k]))
+                fail_msg("%s step %d node %zu: %.17g, FS %.17g", what, st, k, v[k], ref[k]);
+            off += v[k] != 1 && v[k] != -1;
+        }
+        if (moved) assert_true(off > 0);
+    }
+    free(v);
+    free(ref);
+}
+
 /* Steps of hj_ub_step on FS and of the dense step, compared bit for bit. */
 static void equals_fs_store(void **state)
 {
@@ -105,27 +133,9 @@ static void equals_fs_store(void **state)
             hj_ub_dense ws;
             assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_FS, NULL), HJ_OK);
             assert_int_equal(hj_ub_dense_init(&ws, &pb, batched ? dyn_row : NULL, NULL), HJ_OK);
-            double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
-            fs_values(&sv, v);
-            const double T = 0.6;
-            double t = 0;
-            for (int st = 0; st < 10 && t < T; st++) {
-                const double dt = hj_ub_dense_dt(&ws, t, T);
-                assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
-                t = dt == T - t ? T : t + dt;
-                assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
-                assert_true(sv.t == t);
-                fs_values(&sv, ref);
-                size_t moved = 0;
-                for (size_t k = 0; k < ws.total; k++) {
-                    if (memcmp(&v[k], &ref[k], sizeof v[k]))
-                        fail_msg("d %d kind %d step %d node %zu: %.17g, FS %.17g", cs[i].d, cs[i].kind, st, k, v[k], ref[k]);
-                    moved += v[k] != 1 && v[k] != -1;
-                }
-                assert_true(moved > 0); /* the front is on the grid */
-            }
-            free(v);
-            free(ref);
+            char what[64];
+            snprintf(what, sizeof what, "d %d kind %d batched %d", cs[i].d, cs[i].kind, batched);
+            steps_match_fs(&ws, &sv, 0.6, 10, 1, what);
             hj_ub_dense_free(&ws);
             hj_ub_free(&sv);
         }
@@ -194,20 +204,9 @@ static void control_groups(void **state)
             assert_int_equal(hj_ub_dense_init(&ws, &pb, dyn_row, NULL), HJ_OK);
             assert_int_equal(ws.group, 3); /* a small grid: every control in one group */
             ws.group = g;
-            double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
-            fs_values(&sv, v);
-            const double T = 0.6;
-            double t = 0;
-            for (int st = 0; st < 6 && t < T; st++) {
-                const double dt = hj_ub_dense_dt(&ws, t, T);
-                assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
-                t = dt == T - t ? T : t + dt;
-                assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
-                fs_values(&sv, ref);
-                assert_memory_equal(v, ref, ws.total * sizeof *v);
-            }
-            free(v);
-            free(ref);
+            char what[64];
+            snprintf(what, sizeof what, "threads %d group %d", th, g);
+            steps_match_fs(&ws, &sv, 0.6, 6, 0, what);
             hj_ub_dense_free(&ws);
             hj_ub_free(&sv);
         }
@@ -255,23 +254,9 @@ static void random_levels(void **state)
                     ws.group = g < ws.group ? g : ws.group;
                     unsigned seed = 12345u + (unsigned)(d * 10 + ki);
                     assert_int_equal(hj_band_foreach(sv.s, quantize, &seed), 0);
-                    double *v = malloc(ws.total * sizeof *v), *ref = malloc(ws.total * sizeof *ref);
-                    fs_values(&sv, v);
-                    const double T = 0.5;
-                    double t = 0;
-                    for (int st = 0; st < 3 && t < T; st++) {
-                        const double dt = hj_ub_dense_dt(&ws, t, T);
-                        assert_int_equal(hj_ub_dense_step(&ws, v, t, dt, NULL), HJ_OK);
-                        t = dt == T - t ? T : t + dt;
-                        assert_int_equal(hj_ub_step(&sv, T, NULL), HJ_OK);
-                        fs_values(&sv, ref);
-                        for (size_t k = 0; k < ws.total; k++)
-                            if (memcmp(&v[k], &ref[k], sizeof v[k]))
-                                fail_msg("d %d kind %d threads %d group %d step %d node %zu: %.17g, FS %.17g", d,
-                                         kinds[ki], th, g, st, k, v[k], ref[k]);
-                    }
-                    free(v);
-                    free(ref);
+                    char what[64];
+                    snprintf(what, sizeof what, "d %d kind %d threads %d group %d", d, kinds[ki], th, g);
+                    steps_match_fs(&ws, &sv, 0.5, 3, 0, what);
                     hj_ub_dense_free(&ws);
                     hj_ub_free(&sv);
                 }
