@@ -255,11 +255,37 @@ static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y,
 #endif
 #define HJ_LS_STR(x) #x
 
-/* A convection evaluation: the term and its WENO5 epsilons (weno_eps). */
+/* A convection evaluation: the term, its WENO5 epsilons (weno_eps) and a
+ * fused RK stage (hj_ls_stage) or NULL (G into ydot). */
 typedef struct {
     const hj_ls_convection *c;
     double eps[HJ_LS_MAXDIM];
+    const hj_ls_stage *stage;
 } conv_pass;
+
+/* The fused stage on one row: dst = a y0 + b (u + dt G), hj_ls_ode's
+ * combination (the same bits), its max |dst| into *smax and whether a
+ * value was not finite into *sbad.  dst may be y0 (each node read before
+ * it is written); the stencils read u, never dst. */
+static void conv_stage_row(long n, const hj_ls_stage *st, size_t k, const double *u, const double *G, double *smax,
+                           int *sbad)
+{
+    const double a = st->a, b = st->b, dt = st->dt;
+    const double *y0 = st->y0 + k;
+    double *dst = st->dst + k;
+    double m = *smax;
+    int bad = 0;
+    SIMD_CLAUSES(reduction(max : m) reduction(| : bad))
+    for (long j = 0; j < n; j++) {
+        const double v = a * y0[j] + b * (u[j] + dt * G[j]);
+        dst[j] = v;
+        bad |= !(v - v == 0);
+        const double av = v < 0 ? -v : v;
+        m = av > m ? av : m;
+    }
+    *smax = m;
+    *sbad |= bad;
+}
 
 HJ_LS_TERM_CLONES
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
@@ -268,8 +294,10 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    /* acc is the row of ydot itself (no copy at the end) */
-    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *dr = dl + n, *w = dr + n;
+    /* acc is the row of ydot itself (no copy at the end), or for a fused
+     * stage a row of the workspace (after the ring of dim1_ring) */
+    double *cfl = rc->ws, *v = cfl + n, *dl = v + n, *dr = dl + n, *w = dr + n;
+    double *acc = ps->stage ? w + (size_t)(HJ_LS_ROW_WORK + 6) * (size_t)n : ydot + rc->k;
     const int weno = c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3;
     int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
@@ -320,6 +348,7 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     }
     if (first)
         for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
+    if (ps->stage) conv_stage_row(n, ps->stage, rc->k, y + rc->k, acc, &rc->smax, &rc->sbad);
     /* Elementwise running maximum (no reduction chain in the row loop); a
      * NaN or infinite velocity shows up there as a non-finite bound. */
     double *tm = rc->tmax;
@@ -329,21 +358,28 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     return HJ_OK;
 }
 
-static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+/* G into ydot (stage NULL) or the fused stage (ydot NULL). */
+static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
+                           double *bound, hj_error *err)
 {
-    const hj_ls_convection *c = (const hj_ls_convection *)term;
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
     hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     conv_pass ps;
     ps.c = c;
+    ps.stage = stage;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    int rc = for_rows(g, (size_t)(6 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, &ps, t, y, ydot, &m,
-                      NULL, "convection velocity", err);
+    int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], convection_row, &ps, t, y,
+                            ydot, &m, NULL, stage, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;
+}
+
+static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    return convection_pass((const hj_ls_convection *)term, t, y, ydot, NULL, bound, err);
 }
 
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
@@ -1146,6 +1182,10 @@ int hj_ls_term_stage(const hj_ls_term *term, double t, double *y, hj_ls_stage *s
     if (term->eval == lf_eval) {
         *done = 1;
         return lf_eval_clip(term, t, y, NULL, step_bound, 0, st, err);
+    }
+    if (term->eval == convection_eval) {
+        *done = 1;
+        return convection_pass((const hj_ls_convection *)term, t, y, NULL, st, step_bound, err);
     }
     if (term->eval == restrict_eval) {
         const hj_ls_restrict *c = (const hj_ls_restrict *)term;
