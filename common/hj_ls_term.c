@@ -261,30 +261,38 @@ typedef struct {
     const hj_ls_convection *c;
     double eps[HJ_LS_MAXDIM];
     const hj_ls_stage *stage;
+    const double *vcache; /* the steady velocity's rows, or NULL */
 } conv_pass;
 
 /* The fused stage on one row: dst = a y0 + b (u + dt G), hj_ls_ode's
  * combination (the same bits), its max |dst| into *smax and whether a
- * value was not finite into *sbad.  dst may be y0 (each node read before
- * it is written); the stencils read u, never dst. */
-static void conv_stage_row(long n, const hj_ls_stage *st, size_t k, const double *u, const double *G, double *smax,
-                           int *sbad)
+ * value was not finite into *sbad.  The stencils read u, never dst.  In
+ * place (dst = y0, the last stage) y0 is read through dst, so that every
+ * pointer stays restrict and the loop vectorises. */
+static inline __attribute__((always_inline)) void conv_stage_row(long n, const hj_ls_stage *st, size_t k,
+                                                                 const double *restrict u,
+                                                                 const double *restrict G, double *smax, int *sbad)
 {
     const double a = st->a, b = st->b, dt = st->dt;
-    const double *y0 = st->y0 + k;
-    double *dst = st->dst + k;
-    double m = *smax;
-    int bad = 0;
-    SIMD_CLAUSES(reduction(max : m) reduction(| : bad))
-    for (long j = 0; j < n; j++) {
-        const double v = a * y0[j] + b * (u[j] + dt * G[j]);
-        dst[j] = v;
-        bad |= !(v - v == 0);
-        const double av = v < 0 ? -v : v;
-        m = av > m ? av : m;
+    double *restrict dst = st->dst + k;
+    double m = *smax, nf = 0;
+#define CONV_STAGE(Y0)                                            \
+    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))            \
+    for (long j = 0; j < n; j++) {                                \
+        const double v = a * Y0[j] + b * (u[j] + dt * G[j]);     \
+        dst[j] = v;                                               \
+        nf += v - v;                                              \
+        const double av = v < 0 ? -v : v;                         \
+        m = av > m ? av : m;                                      \
     }
+    if (st->y0 == st->dst) CONV_STAGE(dst)
+    else {
+        const double *restrict y0 = st->y0 + k;
+        CONV_STAGE(y0)
+    }
+#undef CONV_STAGE
     *smax = m;
-    *sbad |= bad;
+    *sbad |= nf != 0;
 }
 
 HJ_LS_TERM_CLONES
@@ -301,12 +309,14 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     const int weno = c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3;
     int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
+        const double *vel = v; /* the row of v_d: v, or read in place */
         if (c->velocity_fn || c->velocity_array[d]) {
-            if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
-            else memcpy(v, c->velocity_array[d] + rc->k, sizeof(double) * (size_t)n);
+            if (ps->vcache) vel = ps->vcache + ((size_t)rc->r * (size_t)g->dim + (size_t)d) * (size_t)n;
+            else if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
+            else vel = c->velocity_array[d] + rc->k;
             int flow = 0; /* NaN counts as flow: it reaches the CFL bound */
             SIMD_REDUCE(| : flow)
-            for (long j = 0; j < n; j++) flow |= v[j] != 0;
+            for (long j = 0; j < n; j++) flow |= vel[j] != 0;
             if (!flow) continue; /* no flow along d on this row: no derivative */
         } else {
             if (c->velocity[d] == 0) continue;
@@ -318,9 +328,9 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
              * differences are the previous row's, shifted by one. */
             const double *D[6];
             dim1_ring(g, y, rc, w + (size_t)HJ_LS_ROW_WORK * (size_t)n, D);
-            hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], v, dl);
+            hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], vel, dl);
         } else if (weno) /* the upwind side only */
-            hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
+            hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], vel, dl, w);
         else { /* cheap schemes: both sides, selected in the loop below */
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         }
@@ -328,7 +338,7 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
         /* the side of the upwind direction: WENO's dl holds it already,
          * the cheap schemes' is selected here (unconditional loads, so
          * that the loop vectorises) */
-        const double *restrict vv = v, *restrict L = dl, *restrict R = weno ? dl : dr;
+        const double *restrict vv = vel, *restrict L = dl, *restrict R = weno ? dl : dr;
         double *restrict ac = acc, *restrict cf = cfl;
 #define CONV_ACC(OP0, OP1, SEL)                      \
     for (long j = 0; j < n; j++) {                   \
@@ -358,6 +368,34 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     return HJ_OK;
 }
 
+/* The steady velocity's rows, v_d of row r at (r dim + d) n: evaluated
+ * into a new cache on the first call (velocity_fn as convection_row calls
+ * it, the same bits), NULL where there is none (no flag, no callback, over
+ * the cap, no memory: the callback per stage then). */
+static const double *convection_vcache(hj_ls_convection *c, double t)
+{
+    const hj_ls_grid *g = c->grid;
+    if (!c->velocity_steady || !c->velocity_fn) return NULL;
+    if (c->velocity_cache) return c->velocity_cache;
+    const size_t len = g->rows * (size_t)g->dim * (size_t)g->N[0];
+    if (len == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
+    double *v = malloc(sizeof(double) * len);
+    if (!v) return NULL;
+    const long n = g->N[0];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        hj_ls_row(g, r, idx);
+        hj_ls_coord(g, idx, x);
+        for (int d = 0; d < g->dim; d++)
+            c->velocity_fn(t, x, g->dx[0], n, d, v + (r * (size_t)g->dim + (size_t)d) * (size_t)n, c->ctx);
+    }
+    return c->velocity_cache = v;
+}
+
 /* G into ydot (stage NULL) or the fused stage (ydot NULL). */
 static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
                            double *bound, hj_error *err)
@@ -368,6 +406,9 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     conv_pass ps;
     ps.c = c;
     ps.stage = stage;
+    /* the cache is the term's own state, filled once (terms are not const
+     * objects; an evaluation has the term to itself) */
+    ps.vcache = convection_vcache((hj_ls_convection *)c, t);
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
     int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], convection_row, &ps, t, y,
@@ -388,6 +429,13 @@ void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
     c->base.eval = convection_eval;
     c->grid = g;
     c->scheme = scheme;
+    c->velocity_cache_max = (size_t)1 << 30;
+}
+
+void hj_ls_convection_free(hj_ls_convection *c)
+{
+    free(c->velocity_cache);
+    c->velocity_cache = NULL;
 }
 
 /* ---- normal motion and reinitialization ------------------------------ */
