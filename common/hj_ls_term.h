@@ -243,7 +243,8 @@ size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
  * at every interior node, the expression of hj_ls_ode's combination (the
  * same bits), with st->amax = max |dst| and st->bad = 1 if a value of dst
  * is not finite.  dst is either y0 itself (in place) or an array apart
- * from y0, and never y (the stencils read y's neighbours).  Lax-Friedrichs terms, alone or restricted (hj_ls_restrict),
+ * from y0, and never y (the stencils read y's neighbours).  Convection
+ * terms and Lax-Friedrichs terms, alone or restricted (hj_ls_restrict),
  * have the fused form; for any other term *done = 0, nothing is written,
  * and the caller evaluates and combines.  *step_bound is the term's bound
  * at y, as eval returns it. */
