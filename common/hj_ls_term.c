@@ -255,11 +255,45 @@ static void weno_eps(const hj_ls_grid *g, int mode, int scheme, const double *y,
 #endif
 #define HJ_LS_STR(x) #x
 
-/* A convection evaluation: the term and its WENO5 epsilons (weno_eps). */
+/* A convection evaluation: the term, its WENO5 epsilons (weno_eps) and a
+ * fused RK stage (hj_ls_stage) or NULL (G into ydot). */
 typedef struct {
     const hj_ls_convection *c;
     double eps[HJ_LS_MAXDIM];
+    const hj_ls_stage *stage;
+    const double *vcache; /* the steady velocity's rows, or NULL */
 } conv_pass;
+
+/* The fused stage on one row: dst = a y0 + b (u + dt G), hj_ls_ode's
+ * combination (the same bits), its max |dst| into *smax and whether a
+ * value was not finite into *sbad.  The stencils read u, never dst.  In
+ * place (dst = y0, the last stage) y0 is read through dst, so that every
+ * pointer stays restrict and the loop vectorises. */
+static inline __attribute__((always_inline)) void conv_stage_row(long n, const hj_ls_stage *st, size_t k,
+                                                                 const double *restrict u,
+                                                                 const double *restrict G, double *smax, int *sbad)
+{
+    const double a = st->a, b = st->b, dt = st->dt;
+    double *restrict dst = st->dst + k;
+    double m = *smax, nf = 0;
+#define CONV_STAGE(Y0)                                            \
+    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))            \
+    for (long j = 0; j < n; j++) {                                \
+        const double v = a * Y0[j] + b * (u[j] + dt * G[j]);     \
+        dst[j] = v;                                               \
+        nf += v - v;                                              \
+        const double av = v < 0 ? -v : v;                         \
+        m = av > m ? av : m;                                      \
+    }
+    if (st->y0 == st->dst) CONV_STAGE(dst)
+    else {
+        const double *restrict y0 = st->y0 + k;
+        CONV_STAGE(y0)
+    }
+#undef CONV_STAGE
+    *smax = m;
+    *sbad |= nf != 0;
+}
 
 HJ_LS_TERM_CLONES
 static int convection_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
@@ -268,17 +302,21 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    /* acc is the row of ydot itself (no copy at the end) */
-    double *acc = ydot + rc->k, *cfl = rc->ws, *v = cfl + n, *dl = v + n, *dr = dl + n, *w = dr + n;
+    /* acc is the row of ydot itself (no copy at the end), or for a fused
+     * stage a row of the workspace (after the ring of dim1_ring) */
+    double *cfl = rc->ws, *v = cfl + n, *dl = v + n, *dr = dl + n, *w = dr + n;
+    double *acc = ps->stage ? w + (size_t)(HJ_LS_ROW_WORK + 6) * (size_t)n : ydot + rc->k;
     const int weno = c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B || c->scheme == HJ_LS_WENO3;
     int first = 1; /* no dimension has flow yet: acc and cfl not written */
     for (int d = 0; d < g->dim; d++) {
+        const double *vel = v; /* the row of v_d: v, or read in place */
         if (c->velocity_fn || c->velocity_array[d]) {
-            if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
-            else memcpy(v, c->velocity_array[d] + rc->k, sizeof(double) * (size_t)n);
+            if (ps->vcache) vel = ps->vcache + ((size_t)rc->r * (size_t)g->dim + (size_t)d) * (size_t)n;
+            else if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
+            else vel = c->velocity_array[d] + rc->k;
             int flow = 0; /* NaN counts as flow: it reaches the CFL bound */
             SIMD_REDUCE(| : flow)
-            for (long j = 0; j < n; j++) flow |= v[j] != 0;
+            for (long j = 0; j < n; j++) flow |= vel[j] != 0;
             if (!flow) continue; /* no flow along d on this row: no derivative */
         } else {
             if (c->velocity[d] == 0) continue;
@@ -290,9 +328,9 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
              * differences are the previous row's, shifted by one. */
             const double *D[6];
             dim1_ring(g, y, rc, w + (size_t)HJ_LS_ROW_WORK * (size_t)n, D);
-            hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], v, dl);
+            hj_ls_upwind_select_diffs_eps(c->scheme, D, n, ps->eps[d], vel, dl);
         } else if (weno) /* the upwind side only */
-            hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], v, dl, w);
+            hj_ls_upwind_row_select_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], vel, dl, w);
         else { /* cheap schemes: both sides, selected in the loop below */
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], dl, dr, w);
         }
@@ -300,7 +338,7 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
         /* the side of the upwind direction: WENO's dl holds it already,
          * the cheap schemes' is selected here (unconditional loads, so
          * that the loop vectorises) */
-        const double *restrict vv = v, *restrict L = dl, *restrict R = weno ? dl : dr;
+        const double *restrict vv = vel, *restrict L = dl, *restrict R = weno ? dl : dr;
         double *restrict ac = acc, *restrict cf = cfl;
 #define CONV_ACC(OP0, OP1, SEL)                      \
     for (long j = 0; j < n; j++) {                   \
@@ -320,6 +358,7 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     }
     if (first)
         for (long j = 0; j < n; j++) acc[j] = cfl[j] = 0;
+    if (ps->stage) conv_stage_row(n, ps->stage, rc->k, y + rc->k, acc, &rc->smax, &rc->sbad);
     /* Elementwise running maximum (no reduction chain in the row loop); a
      * NaN or infinite velocity shows up there as a non-finite bound. */
     double *tm = rc->tmax;
@@ -329,21 +368,59 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     return HJ_OK;
 }
 
-static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+/* The steady velocity's rows, v_d of row r at (r dim + d) n: evaluated
+ * into a new cache on the first call (velocity_fn as convection_row calls
+ * it, the same bits), NULL where there is none (no flag, no callback, over
+ * the cap, no memory: the callback per stage then). */
+static const double *convection_vcache(hj_ls_convection *c, double t)
 {
-    const hj_ls_convection *c = (const hj_ls_convection *)term;
+    const hj_ls_grid *g = c->grid;
+    if (!c->velocity_steady || !c->velocity_fn) return NULL;
+    if (c->velocity_cache) return c->velocity_cache;
+    const size_t len = g->rows * (size_t)g->dim * (size_t)g->N[0];
+    if (len == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
+    double *v = malloc(sizeof(double) * len);
+    if (!v) return NULL;
+    const long n = g->N[0];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 32)
+#endif
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        hj_ls_row(g, r, idx);
+        hj_ls_coord(g, idx, x);
+        for (int d = 0; d < g->dim; d++)
+            c->velocity_fn(t, x, g->dx[0], n, d, v + (r * (size_t)g->dim + (size_t)d) * (size_t)n, c->ctx);
+    }
+    return c->velocity_cache = v;
+}
+
+/* G into ydot (stage NULL) or the fused stage (ydot NULL). */
+static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
+                           double *bound, hj_error *err)
+{
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
     hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     conv_pass ps;
     ps.c = c;
+    ps.stage = stage;
+    /* the cache is the term's own state, filled once (terms are not const
+     * objects; an evaluation has the term to itself) */
+    ps.vcache = convection_vcache((hj_ls_convection *)c, t);
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    int rc = for_rows(g, (size_t)(6 + HJ_LS_ROW_WORK + 6) * (size_t)g->N[0], convection_row, &ps, t, y, ydot, &m,
-                      NULL, "convection velocity", err);
+    int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], convection_row, &ps, t, y,
+                            ydot, &m, NULL, stage, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;
+}
+
+static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    return convection_pass((const hj_ls_convection *)term, t, y, ydot, NULL, bound, err);
 }
 
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
@@ -352,6 +429,13 @@ void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
     c->base.eval = convection_eval;
     c->grid = g;
     c->scheme = scheme;
+    c->velocity_cache_max = (size_t)1 << 30;
+}
+
+void hj_ls_convection_free(hj_ls_convection *c)
+{
+    free(c->velocity_cache);
+    c->velocity_cache = NULL;
 }
 
 /* ---- normal motion and reinitialization ------------------------------ */
@@ -1146,6 +1230,10 @@ int hj_ls_term_stage(const hj_ls_term *term, double t, double *y, hj_ls_stage *s
     if (term->eval == lf_eval) {
         *done = 1;
         return lf_eval_clip(term, t, y, NULL, step_bound, 0, st, err);
+    }
+    if (term->eval == convection_eval) {
+        *done = 1;
+        return convection_pass((const hj_ls_convection *)term, t, y, NULL, st, step_bound, err);
     }
     if (term->eval == restrict_eval) {
         const hj_ls_restrict *c = (const hj_ls_restrict *)term;

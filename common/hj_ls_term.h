@@ -117,6 +117,9 @@ typedef struct {
     hj_ls_velocity_fn velocity_fn; /* v_d(t, x), overrides the above */
     void *ctx;
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
+    int velocity_steady; /* 1: velocity_fn does not depend on t (below) */
+    size_t velocity_cache_max; /* bytes the cache may take (default 1 GiB) */
+    double *velocity_cache;    /* the term's own, set by its evaluation */
 } hj_ls_convection;
 /* CFL bound: 1 / max_x sum_d |v_d| / dx_d.  Rows on which v_d vanishes
  * skip the derivative in d; only the upwind side is computed, and WENO
@@ -124,6 +127,14 @@ typedef struct {
  * bits as hj_ls_upwind).  A NaN or infinite velocity is reported as a
  * non-finite CFL bound. */
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme);
+/* velocity_steady = 1 (default 0) declares that velocity_fn returns the
+ * same values at every t: the first evaluation then calls it once per row
+ * and dimension into a cache of dim nodes doubles that later evaluations
+ * read instead (the same bits, no callback per stage).  When the cache
+ * would exceed velocity_cache_max bytes or cannot be allocated, the term
+ * calls velocity_fn per stage as without the flag.  The cache belongs to
+ * the term: hj_ls_convection_free releases it (harmless without one). */
+void hj_ls_convection_free(hj_ls_convection *c);
 
 /* ---- normal motion (3): G = -a |grad phi|, Godunov upwinding
  * (|grad phi|^2 = sum_d max(max(D-,0)^2, min(D+,0)^2) for a > 0, with the
@@ -232,7 +243,8 @@ size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
  * at every interior node, the expression of hj_ls_ode's combination (the
  * same bits), with st->amax = max |dst| and st->bad = 1 if a value of dst
  * is not finite.  dst is either y0 itself (in place) or an array apart
- * from y0, and never y (the stencils read y's neighbours).  Lax-Friedrichs terms, alone or restricted (hj_ls_restrict),
+ * from y0, and never y (the stencils read y's neighbours).  Convection
+ * terms and Lax-Friedrichs terms, alone or restricted (hj_ls_restrict),
  * have the fused form; for any other term *done = 0, nothing is written,
  * and the caller evaluates and combines.  *step_bound is the term's bound
  * at y, as eval returns it. */

@@ -216,10 +216,13 @@ static int run_case(const bench_case *c, setup *s, hj_ls_ode_stats *st, hj_error
     hj_ls_convection_init(&term, &s->g, hj_ls_accuracy_scheme(c->acc));
     term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
+    term.velocity_steady = 1; /* the rotation does not depend on t */
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
     opts.max_step = 1.0 / (P2_NT - 1);
-    return p2_solve(NULL, c->acc, &s->g, &term.base, 1, s->y, &opts, NULL, st, err);
+    const int rc = p2_solve(NULL, c->acc, &s->g, &term.base, 1, s->y, &opts, NULL, st, err);
+    hj_ls_convection_free(&term);
+    return rc;
 }
 
 int main(int argc, char **argv)

@@ -167,6 +167,8 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
     hj_ls_convection_init(&term, &g, hj_ls_accuracy_scheme(c->acc));
     term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
+    /* the forward flows do not depend on t: their rows are evaluated once */
+    term.velocity_steady = c->flow == P2_CONSTANT || c->flow == P2_LINEAR;
 
     hj_ls_seq seq;
     hj_ls_seq_init(&seq, NULL, &g, "phi", 10);
@@ -182,6 +184,7 @@ static void run(const cfg *c, const char *seq_path, const char *voxel_path, cons
     opts.max_step = 1.0 / (P2_NT - 1); /* a zero field (1-D 'linear') has no CFL bound */
     if (p2_solve(seq_path, c->acc, &g, &term.base, 1, y, &opts, &seq, &st, &err))
         hj_cli_fail(PROG, HJ_EXIT_RUN, "%s %s: %s", p2_flow_name[c->flow], hj_ls_accuracy_name(c->acc), err.msg);
+    hj_ls_convection_free(&term);
     if (voxel_path) p2_fail_if(PROG, hj_out_commit(&vox.out, &err), &err);
     if (vtk_path) {
         const char *names[2] = {"phi0", "phi1"};

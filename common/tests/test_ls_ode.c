@@ -329,6 +329,66 @@ static void fused_stages_bitwise(void **state)
     hj_ls_free(a), hj_ls_free(b);
 }
 
+static void rotation(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t, (void)ctx;
+    for (long j = 0; j < n; j++) v[j] = d == 0 ? 2 * x[1] : -2 * (x[0] + (double)j * dx0) + 0.3;
+}
+
+/* RK2 and RK3 with a convection term (stages fused into its pass; a
+ * velocity independent of t, called per stage or cached by
+ * velocity_steady, fuses the first stage too) give the bits and steps of
+ * the term evaluated and combined in separate passes, 1 and 2 threads; a
+ * velocity that changes with t (swirl) changes the bound, and the fused
+ * run costs no more evaluations than the guesses that missed. */
+static void convection_fused_bitwise(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    long N[2] = {37, 29};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.23};
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int flow = 0; flow < 3; flow++) /* swirl; rotation; rotation, steady */
+        for (int order = 2; order <= 3; order++)
+            for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+                omp_set_num_threads(th);
+#endif
+                hj_ls_convection c;
+                hj_ls_convection_init(&c, &g, order == 3 ? HJ_LS_WENO5A : HJ_LS_ENO2);
+                c.velocity_fn = flow ? rotation : swirl;
+                c.velocity_steady = flow == 2;
+                plain_term pt = {{plain_eval}, &c.base};
+                hj_ls_ode_stats s0, s1;
+                hj_ls_fill(&g, a, bump, NULL);
+                hj_ls_fill(&g, b, bump, NULL);
+                assert_int_equal(hj_ls_ode(order, &g, &pt.base, span, 3, a, NULL, NULL, NULL, &s0, NULL), HJ_OK);
+                assert_int_equal(hj_ls_ode(order, &g, &c.base, span, 3, b, NULL, NULL, NULL, &s1, NULL), HJ_OK);
+                hj_ls_convection_free(&c);
+                assert_true(s0.steps > 10);
+                assert_int_equal(s0.steps, s1.steps);
+                assert_int_equal(s0.cfl_violations, s1.cfl_violations);
+                if (flow) assert_int_equal(s1.evals, s0.evals); /* every guess kept */
+                else assert_true(s1.evals <= s0.evals + 1);
+                long idx[2];
+                for (size_t r = 0; r < g.rows; r++) {
+                    const size_t k = hj_ls_row(&g, r, idx);
+                    assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
+                }
+            }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_ls_free(a), hj_ls_free(b);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(error_reports),
-                        cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise))
+                        cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
+                        cmocka_unit_test(convection_fused_bitwise))

@@ -760,15 +760,144 @@ static void lax_friedrichs_fused_stage(void **state)
     assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
     assert_int_equal(done, 1);
     assert_int_equal(st.bad, 1);
-    /* convection: no fused form, nothing written */
-    hj_ls_convection c;
-    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    /* curvature: no fused form, nothing written */
+    hj_ls_curvature_term c;
+    hj_ls_curvature_term_init(&c, &g);
+    c.b.value = 0.5;
     memset(dst, 0, sizeof(double) * g.total);
     st.dst = dst, st.y0 = y0;
     assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
     assert_int_equal(done, 0);
     for (size_t q = 0; q < g.total; q++) assert_true(dst[q] == 0);
     hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
+}
+
+/* A 3-D velocity for the convection tests (every dimension flows, both
+ * signs); ctx, if set, counts the calls (one thread). */
+static void swirl3(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t;
+    if (ctx) ++*(long *)ctx;
+    for (long j = 0; j < n; j++) {
+        const double x0 = x[0] + (double)j * dx0;
+        v[j] = d == 0 ? x[1] - 0.2 * x[2] : d == 1 ? -x0 + 0.1 : 0.5 * x0 * x[1] - 0.3;
+    }
+}
+
+/* The convection term's fused stage gives the bits of G combined
+ * afterwards (dst = a y0 + b (y + dt G)), in place and into another
+ * array, for the cheap schemes and WENO5 (whose dimension 1 reuses the
+ * neighbouring row's differences), with 1 and 2 threads, the velocity
+ * called per stage or cached (velocity_steady); the bound, max |dst| and
+ * the non-finite flag as a separate pass has them. */
+static void convection_fused_stage(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *dst = hj_ls_alloc(&g);
+    double *ref = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, blob, NULL);
+    hj_ls_fill(&g, y0, blob, NULL);
+    long idx[3];
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
+    }
+    const double a = 0.75, b = 0.25, dt = 0.0123;
+    const int schemes[3] = {HJ_LS_ENO2, HJ_LS_ENO3B, HJ_LS_WENO5A};
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int q = 0; q < 3; q++)
+        for (int steady = 0; steady < 2; steady++)
+            for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+                omp_set_num_threads(th);
+#endif
+                hj_ls_convection c;
+                hj_ls_convection_init(&c, &g, schemes[q]);
+                c.velocity_fn = swirl3;
+                c.velocity_steady = steady;
+                double b0, b1;
+                assert_int_equal(c.base.eval(&c.base, 0.3, y, f, &b0, NULL), HJ_OK);
+                assert_true(steady ? c.velocity_cache != NULL : c.velocity_cache == NULL);
+                double amax = 0;
+                for (size_t r = 0; r < g.rows; r++) {
+                    const size_t k = hj_ls_row(&g, r, idx);
+                    for (long j = 0; j < g.N[0]; j++) {
+                        const size_t p = k + (size_t)j;
+                        ref[p] = a * y0[p] + b * (y[p] + dt * f[p]);
+                        amax = fabs(ref[p]) > amax ? fabs(ref[p]) : amax;
+                    }
+                }
+                for (int inplace = 0; inplace < 2; inplace++) {
+                    if (inplace) memcpy(dst, y0, sizeof(double) * g.total);
+                    hj_ls_stage st = {a, b, dt, inplace ? dst : y0, dst, -1, -1};
+                    int done = 0;
+                    assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &b1, &done, NULL), HJ_OK);
+                    assert_int_equal(done, 1);
+                    assert_memory_equal(&b0, &b1, sizeof b0);
+                    assert_interior_equal(&g, ref, dst);
+                    assert_memory_equal(&amax, &st.amax, sizeof amax);
+                    assert_int_equal(st.bad, 0);
+                    memset(dst, 0, sizeof(double) * g.total);
+                }
+                hj_ls_convection_free(&c);
+            }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    /* a non-finite y0 is flagged */
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    c.velocity_fn = swirl3;
+    y0[g.offset + 5] = INFINITY;
+    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
+    int done = 0;
+    double bd;
+    assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
+    assert_int_equal(done, 1);
+    assert_int_equal(st.bad, 1);
+    hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
+}
+
+/* velocity_steady: the callback runs once per row and dimension in the
+ * first evaluation and never after, with the bits of the callback per
+ * evaluation; over velocity_cache_max the term falls back to the callback
+ * per evaluation (same bits); free releases the cache. */
+static void convection_steady_cache(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, blob, NULL);
+    const long per_eval = (long)g.rows * g.dim;
+    for (int capped = 0; capped < 2; capped++) {
+        long calls = 0;
+        hj_ls_convection c, plain;
+        hj_ls_convection_init(&plain, &g, HJ_LS_WENO5A);
+        plain.velocity_fn = swirl3;
+        hj_ls_convection_init(&c, &g, HJ_LS_WENO5A);
+        c.velocity_fn = swirl3;
+        c.ctx = &calls;
+        c.velocity_steady = 1;
+        if (capped) c.velocity_cache_max = sizeof(double) * g.rows * (size_t)g.dim * (size_t)g.N[0] - 1;
+        double b0, b1;
+        assert_int_equal(plain.base.eval(&plain.base, 0.5, y, f0, &b0, NULL), HJ_OK);
+        for (int e = 1; e <= 3; e++) {
+            memset(f1, 0, sizeof(double) * g.total);
+            assert_int_equal(c.base.eval(&c.base, 0.1 * e, y, f1, &b1, NULL), HJ_OK);
+            assert_int_equal(calls, capped ? e * per_eval : per_eval);
+            assert_memory_equal(&b0, &b1, sizeof b0);
+            assert_interior_equal(&g, f0, f1);
+        }
+        assert_true(capped ? c.velocity_cache == NULL : c.velocity_cache != NULL);
+        hj_ls_convection_free(&c);
+        assert_null(c.velocity_cache);
+        hj_ls_convection_free(&c); /* harmless twice */
+    }
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
 
 static void restrict_and_sum(void **state)
@@ -826,6 +955,7 @@ static void dissipation_names(void **state)
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_orders),
                         cmocka_unit_test(convection_equals_upwind_sum),
                         cmocka_unit_test(convection_arrays_equal_callback),
+                        cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
