@@ -190,9 +190,11 @@ typedef struct {
     int nsrc;
     double eps3, eps5[3];
     double lock_tol; /* a change below this (in T) does not unlock neighbours */
-    int relax;       /* downwind relaxation: 2 full, 1 no stronger than
-                      * with the linear weights (after demote_cycling),
-                      * 0 none (an order 3 iteration that stalled) */
+    int relax;       /* downwind relaxation: 2 with the downwind change
+                      * extrapolated, 1 the downwind nodes moving by the
+                      * node's change and no stronger than with the
+                      * linear weights (after demote_cycling), 0 none
+                      * (an order 3 iteration that stalled) */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -484,7 +486,7 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
                 cm = cm < cl ? cl : cm;
                 cp = cp < cl ? cl : cp;
             }
-            if (w->relax != 2) em = ep = 0; /* downwind nodes moving by the node's change */
+            if (w->relax != 2) em = ep = 0; /* the downwind nodes move by the node's change */
             const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
