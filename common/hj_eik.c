@@ -131,6 +131,7 @@
  * the convergence study's cases; hj_eik_stats.first_order counts the
  * nodes they touched. */
 #include "hj_eik.h"
+#include "hj_eik_guard.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -1392,6 +1393,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             break;
         }
     }
+    const double fo_scale = scale; /* the guard's scale: the first order iteration cannot blow up */
     for (size_t k = 0; k < np; k++)
         if (w.state[k] == ST_FREE && !(w.tau[k] < INFINITY)) {
             w.state[k] = ST_UNREACH;
@@ -1492,7 +1494,27 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 T[a + n0 * (b + n1 * c)] =
                     (w.state[k] == ST_OBST || !(v < INFINITY)) ? INFINITY : src_tb(&w, w.own[k]) + w.T0[k] * v;
             }
+    /* The stopping rule is relative to max |T|, which a blown-up iterate
+     * inflates: check the result (hj_eik_guard.h).  low's first n bytes
+     * are free now; they hold which nodes a front reached. */
+    double t_min = INFINITY;
+    for (int s = 0; s < nsrc; s++) t_min = src[s].t0 < t_min ? src[s].t0 : t_min;
+    for (size_t u = 0; fixed && u < (size_t)(n0 * n1 * n2); u++)
+        if (fixed[u] < t_min) t_min = fixed[u]; /* NaN (free) compares false */
+    for (long c = 0; c < n2; c++)
+        for (long b = 0; b < n1; b++)
+            for (long a = 0; a < n0; a++) {
+                const unsigned char sk =
+                    w.state[(a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2]];
+                w.low[a + n0 * (b + n1 * c)] = sk == ST_FREE || sk == ST_FIXED || sk == ST_SRC;
+            }
+    const long nn[3] = {n0, n1, n2};
+    rc = hj_eik_guard(T, w.low, nn, t_min, fo_scale, err);
     work_free(&w);
+    if (rc != HJ_OK) {
+        st->converged = 0;
+        return rc;
+    }
     if (!conv)
         return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations (last change %.3g of the solution's "
                                              "scale > tol %.3g); the last iterate is kept", st->iterations, st->change,
