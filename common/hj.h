@@ -26,6 +26,7 @@
  * maps read from files, inflow curves */
 #include "hj_fsm.h"
 #include "hj_eik.h"
+#include "hj_eik_guard.h"
 #include "hj_map.h"
 #include "hj_vol.h"
 #include "hj_curve.h"

@@ -47,19 +47,34 @@
  * point source, order 3: 24, 30, 40, 56, 94 iterations for N = 40 ...
  * 640; order 5: 32 ... 114).  Where the sweep runs along dimension d in
  * the direction of the side's flow, the downwind nodes come after the
- * node in that sweep and will move about as much as it does, so the
- * term is linearised with the node and its downwind nodes moving
- * together: slope T0 c / h + p instead of T0 / h + p, c the own plus
- * downwind coefficient of h D^- with the weights held (0.5 + w for
- * WENO3, 5/6 with the linear weights; 47/60 for WENO5), right-hand side
- * such that the term is unchanged at the current tau, so the converged
- * solution is the same.  In 1-D with the linear weights this bounds the
- * amplification of such a sweep by 1/2 (WENO3) and 2/3 (WENO5) at every
- * wave number, where it was 1 for smooth errors; the iteration count
- * then stays about flat in N in 2-D (23-27 at order 3, 30-43 at order
- * 5, N = 40 ... 640; in 3-D it still grows, more slowly: order 3 13-23
- * for N = 20 ... 160, 14-31 before).  In the sweeps against the flow the downwind nodes are
- * already new and the plain slope is kept: the relaxed slope there
+ * node in that sweep and will move with it.  The term is linearised
+ * with the change of tau extrapolated linearly along d from the upwind
+ * neighbour's change du in this sweep: the node moves by D, the
+ * downwind node j nodes away by (j + 1) D - j du.  The slope is then
+ * T0 (c + e) / h + p instead of T0 / h + p, with c the own plus downwind
+ * coefficient of h D^- and e = sum_j j a_j over its downwind
+ * coefficients a_j, the weights held (WENO3: c = 0.5 + w, e = (1 - w) / 2;
+ * 5/6 and 1/3 with the linear weights; WENO5 47/60 and 2/5), and the
+ * right-hand side holds -e du and leaves the term unchanged at the
+ * current tau when du = 0, so the converged solution is the same.  In
+ * 1-D with the linear weights a sweep along the flow then damps a
+ * smooth error by O(h k) (k its wave number) and every wave number by
+ * at least 2 (WENO3; 1.6 for WENO5).  Moving the downwind nodes by D
+ * alone (e = 0, the first form of this relaxation) damped every wave
+ * number by 2 (WENO3) and 3/2 (WENO5) but reversed smooth errors
+ * instead of removing them (amplification -1/2 as k -> 0): the error
+ * then alternated in sign from one iteration to the next along the
+ * characteristics into the outflow corner, decaying by only 0.24 to 0.33
+ * per iteration, and the 3-D counts still grew (order 3 13, 16, 21, 23
+ * iterations for N = 20 ... 160; 14 ... 31 with no relaxation at all).
+ * Now the counts are about flat in N (linear speed, tol 1e-12, first
+ * order start included: order 3 12, 12, 14, 16 iterations in 3-D for
+ * N = 20 ... 160, 18, 19, 21, 20 in 2-D for N = 40 ... 320; see
+ * paper1_fastsweeping/eik/notes).  Where the upwind neighbour did not
+ * change in this sweep (a fixed node, a locked one) du = 0 is its true
+ * change.  After demote_cycling the first form (e = 0) is kept.  In the
+ * sweeps against the flow the downwind nodes are already new and the
+ * plain slope is kept: the relaxed slope there
  * amplifies short waves (1-D WENO5: by 3.6 per sweep) and the WENO5
  * iteration cycled.  Stencils reaching the ghost layers keep it too (the
  * ghost values are extrapolations of the node itself): relaxed there,
@@ -116,6 +131,7 @@
  * the convergence study's cases; hj_eik_stats.first_order counts the
  * nodes they touched. */
 #include "hj_eik.h"
+#include "hj_eik_guard.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -185,14 +201,19 @@ typedef struct {
     float *chg;            /* order 5: largest change of T per node in the
                             * current iteration (NULL otherwise) */
     int *calc;             /* first order phase: last sweep that computed
-                            * the node (-1: none yet) */
+                            * the node (-1: none yet); higher order phase:
+                            * last sweep that changed it */
+    float *dl;             /* higher order phase: tau's change in sweep
+                            * calc (downwind relaxation) */
     src_info *src;
     int nsrc;
     double eps3, eps5[3];
     double lock_tol; /* a change below this (in T) does not unlock neighbours */
-    int relax;       /* downwind relaxation: 2 full, 1 no stronger than
-                      * with the linear weights (after demote_cycling),
-                      * 0 none (an order 3 iteration that stalled) */
+    int relax;       /* downwind relaxation: 2 with the downwind change
+                      * extrapolated, 1 the downwind nodes moving by the
+                      * node's change and no stronger than with the
+                      * linear weights (after demote_cycling), 0 none
+                      * (an order 3 iteration that stalled) */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -208,6 +229,7 @@ static void work_free(eik_work *w)
     free(w->stamp);
     free(w->calc);
     free(w->chg);
+    free(w->dl);
     free(w->src);
 }
 
@@ -244,8 +266,10 @@ static inline double tau_in(const eik_work *w, int o, long nb, const double *x)
 /* WENO3 (Zhang, Zhao & Qian 2006): v[0..4] = tau at i-2..i+2; *hm = h D^-,
  * *hp = h D^+ (undivided).  *cm, *cp: how much hm and -hp grow when the
  * node and its downwind neighbours (i..i+2 for hm, i-2..i for hp) all
- * move by 1, the weights held (see local_update). */
-static inline void weno3(const double *v, double eps, double *hm, double *hp, double *cm, double *cp)
+ * move by 1, the weights held; *em, *ep: how much they grow when the
+ * downwind neighbour j nodes away moves by j (see local_update). */
+static inline void weno3(const double *v, double eps, double *hm, double *hp, double *cm, double *cp, double *em,
+                         double *ep)
 {
     const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
     const double den = eps + dc * dc;
@@ -256,11 +280,15 @@ static inline void weno3(const double *v, double eps, double *hm, double *hp, do
     *hp = (1 - wp) * cen + wp * 0.5 * (-3 * v[2] + 4 * v[3] - v[4]);
     *cm = 0.5 + wm;
     *cp = 0.5 + wp;
+    *em = 0.5 * (1 - wm);
+    *ep = 0.5 * (1 - wp);
 }
 
 /* WENO5 of Jiang & Peng on the undivided differences d1..d5; *c: the
- * derivative of the result in d3 with the weights held. */
-static inline double weno5_one(double d1, double d2, double d3, double d4, double d5, double eps, double *c)
+ * derivative of the result in d3 with the weights held, *c45: in d4 and
+ * d5 together. */
+static inline double weno5_one(double d1, double d2, double d3, double d4, double d5, double eps, double *c,
+                               double *c45)
 {
     const double p1 = d1 / 3 - 7 * d2 / 6 + 11 * d3 / 6;
     const double p2 = -d2 / 6 + 5 * d3 / 6 + d4 / 3;
@@ -276,19 +304,22 @@ static inline double weno5_one(double d1, double d2, double d3, double d4, doubl
     const double a3 = 0.3 / ((eps + s3) * (eps + s3));
     const double as = a1 + a2 + a3;
     *c = (11.0 / 6 * a1 + 5.0 / 6 * a2 + a3 / 3) / as;
+    *c45 = (a2 / 3 + 2 * a3 / 3) / as;
     return (a1 * p1 + a2 * p2 + a3 * p3) / as;
 }
 
 /* v[0..6] = tau at i-3..i+3 (Jiang & Peng 2000, as in Xiong et al. 2010);
- * *cm, *cp as in weno3: moving the node and its downwind neighbours by 1
- * moves only the difference v[3] - v[2] (hp: v[4] - v[3]), the third
- * argument of weno5_one. */
-static inline void weno5(const double *v, double eps, double *hm, double *hp, double *cm, double *cp)
+ * *cm, *cp, *em, *ep as in weno3: moving the node and its downwind
+ * neighbours by 1 moves only the difference v[3] - v[2] (hp: v[4] - v[3]),
+ * the third argument of weno5_one; moving the downwind neighbour j nodes
+ * away by j moves the fourth and fifth by 1. */
+static inline void weno5(const double *v, double eps, double *hm, double *hp, double *cm, double *cp, double *em,
+                         double *ep)
 {
     const double d0 = v[1] - v[0], d1 = v[2] - v[1], d2 = v[3] - v[2];
     const double d3 = v[4] - v[3], d4 = v[5] - v[4], d5 = v[6] - v[5];
-    *hm = weno5_one(d0, d1, d2, d3, d4, eps, cm);
-    *hp = weno5_one(d5, d4, d3, d2, d1, eps, cp);
+    *hm = weno5_one(d0, d1, d2, d3, d4, eps, cm, em);
+    *hp = weno5_one(d5, d4, d3, d2, d1, eps, cp, ep);
 }
 
 /* ---- the local Godunov solve ------------------------------------------- */
@@ -440,6 +471,8 @@ static inline int safeguard_ok(double v, double v1, double Tmin, double T0)
  * scheme of `order` in sweep orientation sw.  A higher order term
  * relaxed downwind (see the head of this file) keeps at least half the
  * plain slope: near a source p can cancel most of T0 c / h.
+ * qs is the number of the current sweep: the downwind relaxation uses an
+ * upwind neighbour's change (dl) only if that sweep made it.
  * A higher order value that fails safeguard_ok is replaced by the first
  * order one and *fell is set.  Else it is clamped to within f h (in T)
  * of the first order update of the same stencil: on smooth data the two
@@ -448,7 +481,7 @@ static inline int safeguard_ok(double v, double v1, double Tmin, double T0)
  * but strongly varying medium); a clamp rather than a switch keeps the
  * update continuous there (a switch made 11 nodes of a smooth 8-bit
  * speed image first order at order 5). */
-static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw,
+static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw, int qs,
                            int *fell)
 {
     const int o = w->own[k];
@@ -489,9 +522,9 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
             ord = 3;
         }
         if (ok) {
-            double hm, hp, cm, cp;
-            if (ord == 5) weno5(v, w->eps5[d], &hm, &hp, &cm, &cp);
-            else weno3(v, w->eps3, &hm, &hp, &cm, &cp);
+            double hm, hp, cm, cp, em, ep;
+            if (ord == 5) weno5(v, w->eps5[d], &hm, &hp, &cm, &cp, &em, &ep);
+            else weno3(v, w->eps3, &hm, &hp, &cm, &cp, &em, &ep);
             const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
             const double tk = w->tau[k], nl = tk - hm, nr = tk + hp, Tk = T0 * tk;
             /* downwind moving along: the stencil lies inside the grid
@@ -505,20 +538,35 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
                 cm = cm < cl ? cl : cm;
                 cp = cp < cl ? cl : cp;
             }
+            if (w->relax != 2) em = ep = 0; /* the downwind nodes move by the node's change */
             const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
              * along d); a later neighbour's side has a small a near a
              * source, and taking it let values run away there */
             if (T0 / h + p > 0 && (side == 0 || Tl1 < Tk)) {
-                const double A = T0 / h + p, Ac = T0 * cm / h + p;
-                al[d] = inner && fwd ? (Ac > 0.5 * A ? Ac : 0.5 * A) : A;
-                bl[d] = al[d] == A ? T0 * nl / h : al[d] * tk - (p * tk + T0 * hm / h);
+                const double A = T0 / h + p;
+                if (inner && fwd) {
+                    /* downwind changes extrapolated linearly from the
+                     * upwind neighbour's change du in this sweep */
+                    const double du = w->calc[k - st] == qs ? w->dl[k - st] : 0, Ac = T0 * (cm + em) / h + p;
+                    al[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
+                    bl[d] = al[d] * tk - (p * tk + T0 * (hm - em * du) / h);
+                } else {
+                    al[d] = A;
+                    bl[d] = T0 * nl / h;
+                }
             }
             if (T0 / h - p > 0 && (side == 1 || Tr1 < Tk)) {
-                const double A = T0 / h - p, Ac = T0 * cp / h - p;
-                ar[d] = inner && !fwd ? (Ac > 0.5 * A ? Ac : 0.5 * A) : A;
-                br[d] = ar[d] == A ? T0 * nr / h : ar[d] * tk + (p * tk + T0 * hp / h);
+                const double A = T0 / h - p;
+                if (inner && !fwd) {
+                    const double du = w->calc[k + st] == qs ? w->dl[k + st] : 0, Ac = T0 * (cp + ep) / h - p;
+                    ar[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
+                    br[d] = ar[d] * tk + (p * tk + T0 * (hp + ep * du) / h);
+                } else {
+                    ar[d] = A;
+                    br[d] = T0 * nr / h;
+                }
             }
             sd[d] = side;
             high = 1;
@@ -605,7 +653,7 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
     node_x(w, ip, x);
     const double old = w->tau[k];
     int fell = 0;
-    double v = local_update(w, k, ip, x, w->fo && w->fo[k] ? 1 : order, sw, &fell);
+    double v = local_update(w, k, ip, x, w->fo && w->fo[k] ? 1 : order, sw, q, &fell);
     if (fell) w->fo[k] = 1; /* the node's own flag: the same for any thread count */
     (*nup)++;
     if (first) {
@@ -618,6 +666,10 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
         return 0;
     }
     w->tau[k] = v;
+    if (!first) {
+        w->dl[k] = old < INFINITY ? (float)(v - old) : 0;
+        w->calc[k] = q;
+    }
     const double dT = old < INFINITY ? fabs(w->T0[k] * (old - v)) : INFINITY;
     /* First order phase: a change at rounding level (below FIRST_LOCK of
      * tau) does not unlock the neighbours.  Exact locking let values
@@ -1341,6 +1393,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             break;
         }
     }
+    const double fo_scale = scale; /* the guard's scale: the first order iteration cannot blow up */
     for (size_t k = 0; k < np; k++)
         if (w.state[k] == ST_FREE && !(w.tau[k] < INFINITY)) {
             w.state[k] = ST_UNREACH;
@@ -1366,9 +1419,11 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.lock_tol = 0.1 * opt->tol * scale;
         conv = 0;
         const int deg = 2; /* degrees 3 and 4 made the WENO5 iteration oscillate at the boundary */
-        if (!(w.chg = calloc(np, sizeof(float))) || !(w.fo = calloc(np, 1))) {
+        /* dl and chg: a float per node, fo: a byte */
+        if (!(w.dl = malloc(np * sizeof(float))) || !(w.chg = calloc(np, sizeof(float))) || !(w.fo = calloc(np, 1))) {
             work_free(&w);
-            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np * 5 / 1e6);
+            return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more",
+                                (double)np * (2 * sizeof(float) + 1) / 1e6);
         }
         mark_rough(&w);
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
@@ -1439,7 +1494,27 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 T[a + n0 * (b + n1 * c)] =
                     (w.state[k] == ST_OBST || !(v < INFINITY)) ? INFINITY : src_tb(&w, w.own[k]) + w.T0[k] * v;
             }
+    /* The stopping rule is relative to max |T|, which a blown-up iterate
+     * inflates: check the result (hj_eik_guard.h).  low's first n bytes
+     * are free now; they hold which nodes a front reached. */
+    double t_min = INFINITY;
+    for (int s = 0; s < nsrc; s++) t_min = src[s].t0 < t_min ? src[s].t0 : t_min;
+    for (size_t u = 0; fixed && u < (size_t)(n0 * n1 * n2); u++)
+        if (fixed[u] < t_min) t_min = fixed[u]; /* NaN (free) compares false */
+    for (long c = 0; c < n2; c++)
+        for (long b = 0; b < n1; b++)
+            for (long a = 0; a < n0; a++) {
+                const unsigned char sk =
+                    w.state[(a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2]];
+                w.low[a + n0 * (b + n1 * c)] = sk == ST_FREE || sk == ST_FIXED || sk == ST_SRC;
+            }
+    const long nn[3] = {n0, n1, n2};
+    rc = hj_eik_guard(T, w.low, nn, t_min, fo_scale, err);
     work_free(&w);
+    if (rc != HJ_OK) {
+        st->converged = 0;
+        return rc;
+    }
     if (!conv)
         return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations (last change %.3g of the solution's "
                                              "scale > tol %.3g); the last iterate is kept", st->iterations, st->change,

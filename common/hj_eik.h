@@ -72,7 +72,9 @@ hj_eik_options hj_eik_default_options(void);
  * a mask; src/nsrc: point sources; fixed: NULL or per node a value to hold
  * (NaN: free), e.g. boundary data along a curve.  T (caller-owned, one
  * double per node) receives the solution.  On HJ_ENOCONV T holds the last
- * iterate and st says how far it got.  Bad input (f <= 0 or non-finite
+ * iterate and st says how far it got: the iteration did not converge, or
+ * its result failed the check of hj_eik_guard.h (a blow-up: T below the
+ * earliest start, NaN, or not finite where a front arrives).  Bad input (f <= 0 or non-finite
  * outside obstacles, a source in an obstacle or outside the grid, no
  * source and no fixed node, ...) gives HJ_EINVAL with a message before any
  * sweep.  Messages number the sources from 1. */
