@@ -277,6 +277,28 @@ static int plain_eval(const hj_ls_term *term, double t, double *y, double *ydot,
     return c->inner->eval(c->inner, t, y, ydot, bound, err);
 }
 
+/* Integrates from `bump` over span with `term` evaluated and combined in
+ * separate passes (through plain_term) into a, and fused into b: the same
+ * steps, CFL violations and bits at every interior node; *s0, *s1 the
+ * two runs' statistics. */
+static void run_plain_and_fused(const hj_ls_grid *g, int order, const hj_ls_term *term, const double *span, double *a,
+                                double *b, hj_ls_ode_stats *s0, hj_ls_ode_stats *s1)
+{
+    plain_term pt = {{plain_eval}, term};
+    hj_ls_fill(g, a, bump, NULL);
+    hj_ls_fill(g, b, bump, NULL);
+    assert_int_equal(hj_ls_ode(order, g, &pt.base, span, 3, a, NULL, NULL, NULL, s0, NULL), HJ_OK);
+    assert_int_equal(hj_ls_ode(order, g, term, span, 3, b, NULL, NULL, NULL, s1, NULL), HJ_OK);
+    assert_true(s0->steps > 10);
+    assert_int_equal(s0->steps, s1->steps);
+    assert_int_equal(s0->cfl_violations, s1->cfl_violations);
+    long idx[2];
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g->N[0]);
+    }
+}
+
 /* RK2 and RK3 with a restricted Lax-Friedrichs term (stages fused into its
  * pass; with a constant bound the first stage too, guessed from the last
  * steps' bound) give the bits and steps of the same term evaluated and
@@ -307,21 +329,9 @@ static void fused_stages_bitwise(void **state)
                 lf.range_free = 1;
                 hj_ls_restrict rs;
                 hj_ls_restrict_init(&rs, &g, &lf.base, 0);
-                plain_term pt = {{plain_eval}, &rs.base};
                 hj_ls_ode_stats s0, s1;
-                hj_ls_fill(&g, a, bump, NULL);
-                hj_ls_fill(&g, b, bump, NULL);
-                assert_int_equal(hj_ls_ode(order, &g, &pt.base, span, 3, a, NULL, NULL, NULL, &s0, NULL), HJ_OK);
-                assert_int_equal(hj_ls_ode(order, &g, &rs.base, span, 3, b, NULL, NULL, NULL, &s1, NULL), HJ_OK);
-                assert_true(s0.steps > 10);
-                assert_int_equal(s0.steps, s1.steps);
-                assert_int_equal(s0.cfl_violations, s1.cfl_violations);
+                run_plain_and_fused(&g, order, &rs.base, span, a, b, &s0, &s1);
                 assert_int_equal(s1.evals, s0.evals + varying); /* the guess that missed */
-                long idx[2];
-                for (size_t r = 0; r < g.rows; r++) {
-                    const size_t k = hj_ls_row(&g, r, idx);
-                    assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
-                }
             }
 #ifdef _OPENMP
     omp_set_num_threads(1);
@@ -364,23 +374,11 @@ static void convection_fused_bitwise(void **state)
                 hj_ls_convection_init(&c, &g, order == 3 ? HJ_LS_WENO5A : HJ_LS_ENO2);
                 c.velocity_fn = flow ? rotation : swirl;
                 c.velocity_steady = flow == 2;
-                plain_term pt = {{plain_eval}, &c.base};
                 hj_ls_ode_stats s0, s1;
-                hj_ls_fill(&g, a, bump, NULL);
-                hj_ls_fill(&g, b, bump, NULL);
-                assert_int_equal(hj_ls_ode(order, &g, &pt.base, span, 3, a, NULL, NULL, NULL, &s0, NULL), HJ_OK);
-                assert_int_equal(hj_ls_ode(order, &g, &c.base, span, 3, b, NULL, NULL, NULL, &s1, NULL), HJ_OK);
+                run_plain_and_fused(&g, order, &c.base, span, a, b, &s0, &s1);
                 hj_ls_convection_free(&c);
-                assert_true(s0.steps > 10);
-                assert_int_equal(s0.steps, s1.steps);
-                assert_int_equal(s0.cfl_violations, s1.cfl_violations);
                 if (flow) assert_int_equal(s1.evals, s0.evals); /* every guess kept */
                 else assert_true(s1.evals <= s0.evals + 1);
-                long idx[2];
-                for (size_t r = 0; r < g.rows; r++) {
-                    const size_t k = hj_ls_row(&g, r, idx);
-                    assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
-                }
             }
 #ifdef _OPENMP
     omp_set_num_threads(1);

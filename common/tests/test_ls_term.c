@@ -687,6 +687,51 @@ static void restrict_lax_friedrichs(void **state)
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
 
+/* term's fused stage (hj_ls_term_stage) against its eval combined
+ * afterwards, ref = a y0 + b (y + dt G), in place (dst = y0) and into
+ * another array: the same bits at every interior node, the same bound,
+ * max |dst|, no non-finite flag.  f, dst, ref: work arrays. */
+static void stage_matches_eval(const hj_ls_grid *g, const hj_ls_term *term, double *y, const double *y0, double *f,
+                               double *dst, double *ref)
+{
+    const double a = 0.75, b = 0.25, dt = 0.0123;
+    double b0, b1, amax = 0;
+    long idx[3];
+    assert_int_equal(term->eval(term, 0.3, y, f, &b0, NULL), HJ_OK);
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++) {
+            const size_t q = k + (size_t)j;
+            ref[q] = a * y0[q] + b * (y[q] + dt * f[q]);
+            amax = fabs(ref[q]) > amax ? fabs(ref[q]) : amax;
+        }
+    }
+    for (int inplace = 0; inplace < 2; inplace++) {
+        if (inplace) memcpy(dst, y0, sizeof(double) * g->total);
+        hj_ls_stage st = {a, b, dt, inplace ? dst : y0, dst, -1, -1};
+        int done = 0;
+        assert_int_equal(hj_ls_term_stage(term, 0.3, y, &st, &b1, &done, NULL), HJ_OK);
+        assert_int_equal(done, 1);
+        assert_memory_equal(&b0, &b1, sizeof b0);
+        assert_interior_equal(g, ref, dst);
+        assert_memory_equal(&amax, &st.amax, sizeof amax);
+        assert_int_equal(st.bad, 0);
+        memset(dst, 0, sizeof(double) * g->total);
+    }
+}
+
+/* term's fused stage flags a non-finite value of y0 (set here). */
+static void stage_flags_nonfinite(const hj_ls_grid *g, const hj_ls_term *term, double *y, double *y0, double *dst)
+{
+    y0[g->offset + 5] = INFINITY;
+    hj_ls_stage st = {0.75, 0.25, 0.0123, y0, dst, 0, 0};
+    int done = 0;
+    double bd;
+    assert_int_equal(hj_ls_term_stage(term, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
+    assert_int_equal(done, 1);
+    assert_int_equal(st.bad, 1);
+}
+
 /* The Runge-Kutta stage fused into a Lax-Friedrichs pass (hj_ls_term_stage)
  * gives the bits of the term's G combined afterwards, dst = a y0 + b (y +
  * dt G), in place (dst = y0) and into another array, alone and restricted
@@ -706,7 +751,6 @@ static void lax_friedrichs_fused_stage(void **state)
         const size_t k = hj_ls_row(&g, r, idx);
         for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
     }
-    const double a = 0.75, b = 0.25, dt = 0.0123;
     int threads = 1;
 #ifdef _OPENMP
     threads = 2;
@@ -722,30 +766,7 @@ static void lax_friedrichs_fused_stage(void **state)
                     hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_mix, NULL);
                     hj_ls_restrict rs;
                     hj_ls_restrict_init(&rs, &g, &lf.base, clip > 0);
-                    const hj_ls_term *term = clip ? &rs.base : &lf.base;
-                    double b0, b1;
-                    assert_int_equal(term->eval(term, 0.3, y, f, &b0, NULL), HJ_OK);
-                    double amax = 0;
-                    for (size_t r = 0; r < g.rows; r++) {
-                        const size_t k = hj_ls_row(&g, r, idx);
-                        for (long j = 0; j < g.N[0]; j++) {
-                            const size_t q = k + (size_t)j;
-                            ref[q] = a * y0[q] + b * (y[q] + dt * f[q]);
-                            amax = fabs(ref[q]) > amax ? fabs(ref[q]) : amax;
-                        }
-                    }
-                    for (int inplace = 0; inplace < 2; inplace++) {
-                        if (inplace) memcpy(dst, y0, sizeof(double) * g.total);
-                        hj_ls_stage st = {a, b, dt, inplace ? dst : y0, dst, -1, -1};
-                        int done = 0;
-                        assert_int_equal(hj_ls_term_stage(term, 0.3, y, &st, &b1, &done, NULL), HJ_OK);
-                        assert_int_equal(done, 1);
-                        assert_memory_equal(&b0, &b1, sizeof b0);
-                        assert_interior_equal(&g, ref, dst);
-                        assert_memory_equal(&amax, &st.amax, sizeof amax);
-                        assert_int_equal(st.bad, 0);
-                        memset(dst, 0, sizeof(double) * g.total);
-                    }
+                    stage_matches_eval(&g, clip ? &rs.base : &lf.base, y, y0, f, dst, ref);
                 }
 #ifdef _OPENMP
     omp_set_num_threads(1);
@@ -753,19 +774,15 @@ static void lax_friedrichs_fused_stage(void **state)
     /* a non-finite y0 is flagged */
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_mix, partial_mix, NULL);
-    y0[g.offset + 5] = INFINITY;
-    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
-    int done = 0;
-    double bd;
-    assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
-    assert_int_equal(done, 1);
-    assert_int_equal(st.bad, 1);
+    stage_flags_nonfinite(&g, &lf.base, y, y0, dst);
     /* curvature: no fused form, nothing written */
     hj_ls_curvature_term c;
     hj_ls_curvature_term_init(&c, &g);
     c.b.value = 0.5;
     memset(dst, 0, sizeof(double) * g.total);
-    st.dst = dst, st.y0 = y0;
+    hj_ls_stage st = {0.75, 0.25, 0.0123, y0, dst, 0, 0};
+    int done = 0;
+    double bd;
     assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
     assert_int_equal(done, 0);
     for (size_t q = 0; q < g.total; q++) assert_true(dst[q] == 0);
@@ -803,7 +820,6 @@ static void convection_fused_stage(void **state)
         const size_t k = hj_ls_row(&g, r, idx);
         for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
     }
-    const double a = 0.75, b = 0.25, dt = 0.0123;
     const int schemes[3] = {HJ_LS_ENO2, HJ_LS_ENO3B, HJ_LS_WENO5A};
     int threads = 1;
 #ifdef _OPENMP
@@ -819,30 +835,8 @@ static void convection_fused_stage(void **state)
                 hj_ls_convection_init(&c, &g, schemes[q]);
                 c.velocity_fn = swirl3;
                 c.velocity_steady = steady;
-                double b0, b1;
-                assert_int_equal(c.base.eval(&c.base, 0.3, y, f, &b0, NULL), HJ_OK);
+                stage_matches_eval(&g, &c.base, y, y0, f, dst, ref);
                 assert_true(steady ? c.velocity_cache != NULL : c.velocity_cache == NULL);
-                double amax = 0;
-                for (size_t r = 0; r < g.rows; r++) {
-                    const size_t k = hj_ls_row(&g, r, idx);
-                    for (long j = 0; j < g.N[0]; j++) {
-                        const size_t p = k + (size_t)j;
-                        ref[p] = a * y0[p] + b * (y[p] + dt * f[p]);
-                        amax = fabs(ref[p]) > amax ? fabs(ref[p]) : amax;
-                    }
-                }
-                for (int inplace = 0; inplace < 2; inplace++) {
-                    if (inplace) memcpy(dst, y0, sizeof(double) * g.total);
-                    hj_ls_stage st = {a, b, dt, inplace ? dst : y0, dst, -1, -1};
-                    int done = 0;
-                    assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &b1, &done, NULL), HJ_OK);
-                    assert_int_equal(done, 1);
-                    assert_memory_equal(&b0, &b1, sizeof b0);
-                    assert_interior_equal(&g, ref, dst);
-                    assert_memory_equal(&amax, &st.amax, sizeof amax);
-                    assert_int_equal(st.bad, 0);
-                    memset(dst, 0, sizeof(double) * g.total);
-                }
                 hj_ls_convection_free(&c);
             }
 #ifdef _OPENMP
@@ -852,13 +846,7 @@ static void convection_fused_stage(void **state)
     hj_ls_convection c;
     hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
     c.velocity_fn = swirl3;
-    y0[g.offset + 5] = INFINITY;
-    hj_ls_stage st = {a, b, dt, y0, dst, 0, 0};
-    int done = 0;
-    double bd;
-    assert_int_equal(hj_ls_term_stage(&c.base, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
-    assert_int_equal(done, 1);
-    assert_int_equal(st.bad, 1);
+    stage_flags_nonfinite(&g, &c.base, y, y0, dst);
     hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
 }
 
