@@ -180,6 +180,7 @@ typedef struct {
     double x[3];
     double s0, t0;     /* slowness and time at the source */
     double g[3], H[3][3]; /* gradient and Hessian of the slowness there */
+    double fmin, fmax;    /* slowness range over the start region's box */
 } src_info;
 
 typedef struct {
@@ -896,6 +897,31 @@ static void source_taylor(const eik_work *w, src_info *s, const long ip[3])
     if (f > 0 && isfinite(f)) s->s0 = f;
 }
 
+/* Smallest and largest slowness over the nodes (obstacles aside) within
+ * hmax of source s along every dimension: the box that holds its start
+ * region (see source_time's caller). */
+static void source_range(const eik_work *w, src_info *s, double hmax)
+{
+    long lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int d = 0; d < w->dim; d++) {
+        const double u = (s->x[d] - w->x0[d]) / w->h[d], du = hmax / w->h[d] * (1 + 1e-12);
+        lo[d] = (long)ceil(u - du);
+        hi[d] = (long)floor(u + du);
+        lo[d] = lo[d] < 0 ? 0 : lo[d];
+        hi[d] = hi[d] > w->n[d] - 1 ? w->n[d] - 1 : hi[d];
+    }
+    s->fmin = INFINITY;
+    s->fmax = 0;
+    for (long c = lo[2]; c <= hi[2]; c++)
+        for (long b = lo[1]; b <= hi[1]; b++)
+            for (long a = lo[0]; a <= hi[0]; a++) {
+                const long k = (a + w->G[0]) * w->st[0] + (b + w->G[1]) * w->st[1] + (c + w->G[2]) * w->st[2];
+                if (w->state[k] == ST_OBST) continue;
+                if (w->fs[k] < s->fmin) s->fmin = w->fs[k];
+                if (w->fs[k] > s->fmax) s->fmax = w->fs[k];
+            }
+}
+
 /* Travel time from source s to x by the expansion of T in r = |x - s|
  * along e = (x - s) / r: T = t0 + f r + (g.e) r^2 / 2
  * + (e.H e / 6 - (|g|^2 - (g.e)^2) / (24 f)) r^3 + O(r^4), from
@@ -1307,6 +1333,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         const double L = (double)(w.n[d] - 1) * w.h[d];
         if (L > Lmax) Lmax = L;
     }
+    for (int s = 0; s < nsrc; s++) source_range(&w, &w.src[s], hmax);
     for (long c = 0; c < w.P[2]; c++)
         for (long b = 0; b < w.P[1]; b++)
             for (long a = 0; a < w.P[0]; a++) {
@@ -1332,7 +1359,19 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                         }
                         const double r = sqrt(r2);
                         if (!box && r > hmax * (1 + 1e-12)) continue;
-                        const double Tv = source_time(&w, &w.src[s], x);
+                        /* The exact T lies in [r fmin, r fmax] (after t0)
+                         * when the slowness there stays in the box's range;
+                         * where f jumps between pixels the expansion's
+                         * differenced derivatives leave it (T < 0 was seen).
+                         * Clamping moves such a value only to the nearest
+                         * admissible one and leaves every value inside the
+                         * range as it was (smooth data: it never acted in the
+                         * convergence study), where falling back to f0 r
+                         * would drop the expansion's terms whenever it is
+                         * barely outside. */
+                        const double Te = source_time(&w, &w.src[s], x), lo = w.src[s].t0 + r * w.src[s].fmin,
+                                     hi = w.src[s].t0 + r * w.src[s].fmax;
+                        const double Tv = Te < lo ? lo : Te > hi ? hi : Te;
                         if (Tv < Tbest) {
                             Tbest = Tv;
                             sbest = s;
