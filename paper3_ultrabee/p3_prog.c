@@ -168,6 +168,11 @@ int p3_pub_read(p3_pub *p, const char *dir, const char *name, hj_error *err)
     char path[4096];
     snprintf(path, sizeof path, "%s/%s.tsv", dir, name);
     int rc = hj_table_read(&p->t, path, err);
+    if (rc == HJ_EIO && err) { /* the default directory is relative to the repository's root */
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        return hj_error_set(err, rc, "%s (run from the repository's root or give --published DIR)", msg);
+    }
     if (rc) return rc;
     const char *key = hj_table_meta(&p->t, "key");
     char buf[256];
