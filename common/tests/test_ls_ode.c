@@ -277,6 +277,18 @@ static int plain_eval(const hj_ls_term *term, double t, double *y, double *ydot,
     return c->inner->eval(c->inner, t, y, ydot, bound, err);
 }
 
+/* The fused-stage runs' grid: 37 x 29 nodes on [-1, 1]^2 (unequal sides,
+ * rows not a multiple of the blocks of 8), extrapolated away. */
+static hj_ls_grid fused_grid(void)
+{
+    hj_ls_grid g;
+    double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    long N[2] = {37, 29};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    return g;
+}
+
 /* Integrates from `bump` over span with `term` evaluated and combined in
  * separate passes (through plain_term) into a, and fused into b: the same
  * steps, CFL violations and bits at every interior node; *s0, *s1 the
@@ -307,11 +319,7 @@ static void run_plain_and_fused(const hj_ls_grid *g, int order, const hj_ls_term
 static void fused_stages_bitwise(void **state)
 {
     (void)state;
-    hj_ls_grid g;
-    double mn[2] = {-1, -1}, mx[2] = {1, 1};
-    long N[2] = {37, 29};
-    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    hj_ls_grid g = fused_grid();
     double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.23};
     int threads = 1;
 #ifdef _OPENMP
@@ -354,11 +362,7 @@ static void rotation(double t, const double *x, double dx0, long n, int d, doubl
 static void convection_fused_bitwise(void **state)
 {
     (void)state;
-    hj_ls_grid g;
-    double mn[2] = {-1, -1}, mx[2] = {1, 1};
-    long N[2] = {37, 29};
-    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
-    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    hj_ls_grid g = fused_grid();
     double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.23};
     int threads = 1;
 #ifdef _OPENMP
