@@ -38,6 +38,7 @@ int main(int argc, char **argv)
     const double t = ttr[hj_ls_index(&g, (long[]){50, 40})], exact = T0(0.5, 0) - 1;
     printf("double_integrator: time-to-reach at (0.5, 0) = %.4f, exact %.4f\n", t, exact);
     FILE *fp = argc > 1 ? fopen(argv[1], "w") : NULL;
+    if (argc > 1 && !fp) return perror(argv[1]), 1;
     for (long j = 0; fp && j < 81; j++, fputc('\n', fp))
         for (long i = 0; i < 81; i++) fprintf(fp, "%g %g %g\n", -2 + 0.05 * (double)i, -2 + 0.05 * (double)j, ttr[hj_ls_index(&g, (long[]){i, j})]);
     if (fp) fclose(fp);

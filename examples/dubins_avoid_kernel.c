@@ -68,6 +68,7 @@ static int tube(long n, const char *slice, double *vol, double *edge)
     }
     *edge = (a + b) / 2;
     FILE *fp = slice ? fopen(slice, "w") : NULL; /* th = pi is node (n - 1) / 2 */
+    if (slice && !fp) return perror(slice), hj_ls_free(phi), 1;
     for (long j = 0; fp && j < n; j++, fputc('\n', fp))
         for (long i = 0; i < n; i++)
             fprintf(fp, "%g %g %g\n", g.min[0] + g.dx[0] * (double)i, g.min[1] + g.dx[1] * (double)j,
@@ -80,6 +81,8 @@ static int tube(long n, const char *slice, double *vol, double *edge)
 int main(int argc, char **argv)
 {
     double v21, e21, v41, e41;
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-'))
+        return fprintf(stderr, "usage: dubins_avoid_kernel [SLICE.dat]\n"), 2;
     if (tube(21, NULL, &v21, &e21) || tube(41, argc > 1 ? argv[1] : NULL, &v41, &e41)) return 1;
     printf("dubins_avoid_kernel: volume %.4f (21^2 x 20), %.4f (41^2 x 40); edge at y = 0, th = pi: %.4f, %.4f "
            "(exact sqrt(1.25) = %.4f)\n", v21, v41, e21, e41, sqrt(1.25));

@@ -40,6 +40,7 @@ int main(int argc, char **argv)
     const double in = hj_ctrl_value(&g, phi, (double[]){1.4, 0, HJ_PI}), out = hj_ctrl_value(&g, phi, (double[]){1.6, 0, HJ_PI});
     printf("dubins_reach_avoid: phi(1.4, 0, pi) = %.4f, phi(1.6, 0, pi) = %.4f (the set ends at 1.5)\n", in, out);
     FILE *fp = argc > 1 ? fopen(argv[1], "w") : NULL; /* the slice th = pi (node 20) */
+    if (argc > 1 && !fp) return perror(argv[1]), 1;
     for (long j = 0; fp && j < 41; j++, fputc('\n', fp))
         for (long i = 0; i < 41; i++) fprintf(fp, "%g %g %g\n", g.min[0] + g.dx[0] * (double)i, g.min[1] + g.dx[1] * (double)j, phi[hj_ls_index(&g, (long[]){i, j, 20})]);
     if (fp) fclose(fp);

@@ -35,6 +35,7 @@
 int main(int argc, char **argv)
 {
     hj_error err; hj_vol vol; hj_eik_stats st;
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) return fprintf(stderr, "usage: eikonal_volume [T.vtk]\n"), 2;
     TRY(hj_vol_read(&vol, "data/volume.txt", 0, 1, &err)); /* 0, 1: the PGM pixel range, unused for text */
     const hj_eik_grid g = {.dim = vol.dim, .n = {vol.n[0], vol.n[1], vol.n[2]}, .x0 = {0, 0, 0}, .dx = {1, 1, 1}};
     const size_t n = (size_t)g.n[0] * (size_t)g.n[1] * (size_t)g.n[2];

@@ -36,6 +36,7 @@ int main(int argc, char **argv)
     const double t = ttr[hj_ls_index(&g, (long[]){9, 6, 6, 6})], exact = sqrt(2 * (0.8 - 0.5)); /* x = 0.8 */
     printf("planar_double_integrator_4d: time-to-reach from rest at (0.8, 0) = %.4f, exact %.4f\n", t, exact);
     FILE *fp = argc > 1 ? fopen(argv[1], "w") : NULL;
+    if (argc > 1 && !fp) return perror(argv[1]), 1;
     for (long j = 0; fp && j < 13; j++, fputc('\n', fp))
         for (long i = 0; i < 13; i++) fprintf(fp, "%g %g %g\n", g.min[0] + g.dx[0] * (double)i, g.min[1] + g.dx[1] * (double)j, ttr[hj_ls_index(&g, (long[]){i, j, 6, 6})]);
     if (fp) fclose(fp);

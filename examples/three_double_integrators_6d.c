@@ -59,6 +59,7 @@ int main(int argc, char **argv)
     }
     printf("three_double_integrators_6d: %ld of %zu nodes inside the 6-D set, %ld differ from the product of the 2-D sets\n", inside, g6.nodes, differ);
     FILE *fp = argc > 1 ? fopen(argv[1], "w") : NULL;
+    if (argc > 1 && !fp) return perror(argv[1]), 1;
     for (long j = 0; fp && j < N; j++, fputc('\n', fp))
         for (long i = 0; i < N; i++) fprintf(fp, "%g %g %g %g\n", -1.5 + g2.dx[0] * (double)i, -1.5 + g2.dx[1] * (double)j, phi6[hj_ls_index(&g6, (long[]){i, j, 3, 3, 3, 3})], phi2[hj_ls_index(&g2, (long[]){i, j})]);
     if (fp) fclose(fp);
