@@ -886,12 +886,16 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const double *DL = dl, *DR = dr;
     size_t ds_stride = (size_t)n;
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
+    /* first order and ENO2: every dimension's in one call */
+    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, P, dr);
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
                          *restrict lh = LH + (size_t)d * (size_t)n;
         if (diffs) { /* the mean and D+ - D- straight from the kernel */
-            if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
+            if (all)
+                ;
+            else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
             else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
             pp[d] = pd;
             double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
