@@ -168,6 +168,10 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};
     const double start = wall();
     double *f = hj_ls_alloc(g), *u = order > 1 ? hj_ls_alloc(g) : NULL;
+    /* The state: y, or at order 1 after a kept guess the array the step
+     * went to (y and u then trade places; y receives the state at every
+     * output and on return). */
+    double *ys = y;
     int rc = HJ_OK;
     if (!f || (order > 1 && !u)) {
         rc = hj_error_set(err, HJ_ENOMEM, "out of memory for the integrator's stage arrays");
@@ -176,7 +180,9 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     double t = tspan[0];
     double bprev = NAN; /* the previous step's bound */
     int same = 0;  /* steps it repeated for */
-    int guess = 1; /* 0: the term has no fused form */
+    /* 0: the term has no fused form (order 1 with a PostTimestep: the
+     * callback sees the caller's array, as unfused) */
+    int guess = order > 1 || !o.post;
     int hold = 0;  /* steps without guessing left after a miss */
     for (int k = 1; k < ntspan && rc == HJ_OK; k++) {
         const double tk = tspan[k];
@@ -187,34 +193,41 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             int last = 0, bad, fused, guessed = 0;
             double amax;
             if (hold) hold--;
-            if (order > 1 && guess && same >= 2 && !hold) {
+            if (guess && same >= 2 && !hold && !u && !(u = hj_ls_alloc(g))) guess = 0; /* order 1: no room */
+            if (guess && same >= 2 && !hold) {
                 /* The bound repeated bit for bit over the last steps (air3D's
                  * does not depend on t or y): the first stage is fused too,
                  * with the step of that bound, and kept only if the bound
                  * the stage returns is the same (then every value is what
                  * the unfused stage gives); a miss is evaluated again,
-                 * unfused, and guessing waits many steps. */
+                 * unfused, and guessing waits many steps.  At order 1 the
+                 * stage is the step (its combination is combine's). */
                 dt = step_of(bprev, tk - t, &o, &last);
-                hj_ls_stage s1 = {0, 1, dt, y, u, 0, 0};
-                if ((rc = hj_ls_term_stage(term, t, y, &s1, &b, &fused, err))) goto done;
+                hj_ls_stage s1 = {0, 1, dt, ys, u, 0, 0};
+                if ((rc = hj_ls_term_stage(term, t, ys, &s1, &b, &fused, err))) goto done;
                 if (!fused) guess = 0; /* no fused form: never again */
                 else {
                     st.evals++;
                     guessed = !memcmp(&b, &bprev, sizeof b);
                     if (!guessed) hold = 16;
+                    else if (order == 1) {
+                        double *s = ys;
+                        ys = u, u = s;
+                        bad = s1.bad, amax = s1.amax;
+                    }
                 }
             }
             if (!guessed) {
-                if ((rc = term->eval(term, t, y, f, &b, err))) goto done;
+                if ((rc = term->eval(term, t, ys, f, &b, err))) goto done;
                 st.evals++;
                 if ((rc = check_bound(b, t, &o, err))) goto done;
                 dt = step_of(b, tk - t, &o, &last);
             }
             same = memcmp(&b, &bprev, sizeof b) ? 0 : same + 1;
             bprev = b;
-            if (order == 1)
-                bad = combine(g, y, 0, y, 1, y, dt, f, &amax);
-            else {
+            if (order == 1) {
+                if (!guessed) bad = combine(g, ys, 0, ys, 1, ys, dt, f, &amax);
+            } else {
                 if (!guessed) combine(g, u, 0, y, 1, y, dt, f, &amax);
                 if (order == 3) {
                     if ((rc = stage(g, term, t + dt, 0.75, y, 0.25, u, dt, f, f, &fused, &b, &bad, &amax, err)))
@@ -254,9 +267,17 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             if (o.post && (rc = o.post(t, y, o.post_ctx, err))) goto done;
             if (o.single_step) goto done;
         }
+        if (ys != y) { /* the state back into the caller's array */
+            hj_ls_copy(g, y, ys);
+            u = ys, ys = y;
+        }
         if (out && (rc = out(k, t, y, out_ctx, err))) goto done;
     }
 done:
+    if (ys != y) {
+        hj_ls_copy(g, y, ys);
+        u = ys;
+    }
     hj_ls_free(f);
     hj_ls_free(u);
     st.seconds = wall() - start;

@@ -22,6 +22,9 @@
  * and y), the first stage is fused too, with the step of that bound, and
  * kept only if the bound it returns is the same again; a miss costs one
  * evaluation more (counted in evals) and guessing then pauses 16 steps.
+ * At order 1 that stage is the whole step: it goes into the second array,
+ * which then holds the state (y receives it at every output time and on
+ * return); not with a PostTimestep, which sees y itself.
  *
  * Errors (returned, never printed): a NaN or infinite bound without a
  * finite MaxStep, a zero bound, the term's own errors, and a blow-up: NaN

@@ -38,6 +38,7 @@ typedef struct {
     int filled; /* the evaluator's per-thread constants are in ws */
     double smax; /* a fused RK stage (hj_ls_stage): running max |dst| */
     int sbad;    /* and whether a value of dst was not finite */
+    double imax; /* running maximum of the rows' exact *inv (Lax-Friedrichs) */
 } row_ctx;
 
 /* The offset of row r's first node and its index in idx: one odometer
@@ -107,7 +108,7 @@ static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, cons
 #endif
     {
         row_ctx rc;
-        rc.smax = 0, rc.sbad = 0;
+        rc.smax = 0, rc.sbad = 0, rc.imax = 0;
         const long n = g->N[0];
         rc.ws = malloc(sizeof(double) * (ws_doubles + (size_t)n));
         if (!rc.ws) nomem = 1;
@@ -712,8 +713,10 @@ typedef struct {
  * accumulated in dimension order from 0.0 (the bits of one loop per
  * dimension), G = -(H - dissipation), clipped as the restriction asks
  * (clip 1: G >= 0, -1: G <= 0), the largest CFL sum in *inv; returns 0,
- * or non-zero when an alpha or H is not finite (a sum of v - v: 0 or
- * NaN).  With stage set, out receives the stage's combination instead of
+ * or non-zero when an alpha or H may not be finite: a sum of q - q over
+ * q = SP + H, which is NaN where an alpha or H is not finite (SP, a sum
+ * of |alpha_d| / dx_d, is then NaN or Inf), and may also be where the sum
+ * overflows with every value finite (the caller looks for the node).  With stage set, out receives the stage's combination instead of
  * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
  * from out).  One vector loop over the row; dim and stage are constants
  * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
@@ -734,13 +737,13 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
         for (int d = 0; d < dim; d++) {
-            const double Aj = A[(size_t)d * (size_t)n + (size_t)j], a = fabs(Aj);
+            const double a = fabs(A[(size_t)d * (size_t)n + (size_t)j]);
             const size_t q = (size_t)d * ds_stride + (size_t)j;
-            nf += Aj - Aj;
             ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
             s += a * hinv[d];
         }
-        nf += H[j] - H[j];
+        const double sh = s + H[j];
+        nf += sh - sh;
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
         if (stage) {
@@ -769,13 +772,16 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
  * itself, with its divisions and bits, is computed at the nodes whose SP
  * lies within 1e-12 relative of the row's largest SP, which hold the
  * largest s: three vector divisions per node were a third of the row's
- * end. */
+ * end.  Nor is s wanted in a row whose largest SP lies below 1 - 1e-12
+ * times floor, an exact s of a row before it (the thread's running
+ * maximum): no node of the row can exceed floor, and *inv = 0 leaves
+ * the maximum as it is (most rows, once the largest is met). */
 static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int stage, long n,
                                                            const double *restrict A, const double *restrict DL,
                                                            const double *restrict DR, size_t ds_stride,
                                                            const double *restrict H, const double *dx, int clip,
                                                            double *restrict out, double *restrict SP,
-                                                           lf_stage_row *sr, double *inv)
+                                                           lf_stage_row *sr, double floor, double *inv)
 {
     double hinv[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
@@ -791,6 +797,10 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 #undef LF_RANGE
     /* (far from underflow and overflow, where the bound holds; else every
      * node exactly) */
+    if (floor > 1e-290 && floor < 1e290 && mp < floor * (1 - 1e-12)) {
+        *inv = 0;
+        return nf != 0;
+    }
     const double thr = mp > 1e-290 && mp < 1e290 ? mp * (1 - 1e-12) : 0;
     double m = 0;
     /* the candidates found 8 nodes at a time (one vector compare), the
@@ -817,9 +827,10 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 HJ_LS_TERM_CLONES
 static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
                          size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
-                         lf_stage_row *sr, double *inv)
+                         lf_stage_row *sr, double floor, double *inv)
 {
-#define LF_FINISH(DIFFS, DIM, STAGE) lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, sr, inv)
+#define LF_FINISH(DIFFS, DIM, STAGE) \
+    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, sr, floor, inv)
 #define LF_FINISH_DIMS(DIFFS, STAGE)                      \
     switch (dim) {                                        \
     case 2: return LF_FINISH(DIFFS, 2, STAGE);            \
@@ -875,12 +886,16 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const double *DL = dl, *DR = dr;
     size_t ds_stride = (size_t)n;
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
+    /* first order and ENO2: every dimension's in one call */
+    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, P, dr);
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
                          *restrict lh = LH + (size_t)d * (size_t)n;
         if (diffs) { /* the mean and D+ - D- straight from the kernel */
-            if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
+            if (all)
+                ;
+            else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
             else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
             pp[d] = pd;
             double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
@@ -955,17 +970,21 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         srp = &sr, out = st->dst + rc->k;
     } else
         out = ydot + rc->k;
-    const int nonfinite =
-        lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out, ring + 6 * (size_t)n, srp, &m);
+    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out,
+                                        ring + 6 * (size_t)n, srp, rc->imax, &m);
     if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
     if (nonfinite) {
-        /* the first node of the row with a non-finite alpha or H */
+        /* the first node of the row with a non-finite alpha or H (none:
+         * a sum overflowed, which the CFL bound reports) */
         long badj = n;
         for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
         badj = first_nonfinite(H, badj);
-        *bad = badj;
-        return HJ_ENONFINITE;
+        if (badj < n) {
+            *bad = badj;
+            return HJ_ENONFINITE;
+        }
     }
+    rc->imax = m > rc->imax ? m : rc->imax;
     *inv = m;
     return HJ_OK;
 }

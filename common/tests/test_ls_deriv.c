@@ -221,8 +221,8 @@ static void select_equals_two_sided(void **state)
 /* The row kernel's forms give the same bits: along the row (stride 1,
  * where the six rows of differences are one row read at six offsets) and
  * across rows (the same values laid out with a stride), the mean and
- * difference form against (D- + D+)/2 and D+ - D-, and the form from
- * given rows of differences; rows shorter than, not a multiple of, and a
+ * difference form against (D- + D+)/2 and D+ - D-, that form for every
+ * dimension in one call, and the form from given rows of differences; rows shorter than, not a multiple of, and a
  * multiple of a vector block. */
 static void kernel_forms_bitwise(void **state)
 {
@@ -256,6 +256,20 @@ static void kernel_forms_bitwise(void **state)
                     assert_memory_equal(&m[i], &want_m, sizeof want_m);
                     assert_memory_equal(&df[i], &want_d, sizeof want_d);
                 }
+            }
+            /* every dimension in one call (first order, ENO2): 2 and 3
+             * dimensions of stride S, each the single call's */
+            for (int dim = 2; dim <= 3; dim++) {
+                const ptrdiff_t st[3] = {S, S, S};
+                const double h[3] = {dx, dx, dx};
+                double *ms = malloc(sizeof(double) * 3 * (size_t)n), *ds = malloc(sizeof(double) * 3 * (size_t)n);
+                const int done = hj_ls_upwind_rows_mean(s, q + 3 * S, st, dim, n, h, ms, ds);
+                assert_int_equal(done, s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2);
+                for (int d = 0; done && d < dim; d++) {
+                    assert_memory_equal(ms + d * n, m, sizeof(double) * (size_t)n);
+                    assert_memory_equal(ds + d * n, df, sizeof(double) * (size_t)n);
+                }
+                free(ms), free(ds);
             }
             if (s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2) continue;
             for (int k = 0; k < 6; k++) hj_ls_upwind_difference_row(q + 3 * S, S, n, dx, k - 3, D[k]);

@@ -311,9 +311,9 @@ static void run_plain_and_fused(const hj_ls_grid *g, int order, const hj_ls_term
     }
 }
 
-/* RK2 and RK3 with a restricted Lax-Friedrichs term (stages fused into its
- * pass; with a constant bound the first stage too, guessed from the last
- * steps' bound) give the bits and steps of the same term evaluated and
+/* RK1, RK2 and RK3 with a restricted Lax-Friedrichs term (stages fused
+ * into its pass; with a constant bound the first stage too, guessed from
+ * the last steps' bound: at order 1 the whole step, into a second array) give the bits and steps of the same term evaluated and
  * combined in separate passes, with 1 and 2 threads; where the bound
  * changes the guess misses and costs one evaluation, not bits. */
 static void fused_stages_bitwise(void **state)
@@ -327,7 +327,7 @@ static void fused_stages_bitwise(void **state)
 #endif
     static int grows = 1;
     for (int varying = 0; varying < 2; varying++)
-        for (int order = 2; order <= 3; order++)
+        for (int order = 1; order <= 3; order++)
             for (int th = 1; th <= threads; th++) {
 #ifdef _OPENMP
                 omp_set_num_threads(th);
@@ -353,7 +353,7 @@ static void rotation(double t, const double *x, double dx0, long n, int d, doubl
     for (long j = 0; j < n; j++) v[j] = d == 0 ? 2 * x[1] : -2 * (x[0] + (double)j * dx0) + 0.3;
 }
 
-/* RK2 and RK3 with a convection term (stages fused into its pass; a
+/* RK1, RK2 and RK3 with a convection term (stages fused into its pass; a
  * velocity independent of t, called per stage or cached by
  * velocity_steady, fuses the first stage too) give the bits and steps of
  * the term evaluated and combined in separate passes, 1 and 2 threads; a
@@ -369,7 +369,7 @@ static void convection_fused_bitwise(void **state)
     threads = 2;
 #endif
     for (int flow = 0; flow < 3; flow++) /* swirl; rotation; rotation, steady */
-        for (int order = 2; order <= 3; order++)
+        for (int order = 1; order <= 3; order++)
             for (int th = 1; th <= threads; th++) {
 #ifdef _OPENMP
                 omp_set_num_threads(th);
