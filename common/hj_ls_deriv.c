@@ -83,35 +83,98 @@ void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx
  * toolbox's 1e-11 (paper2_toolbox/toolboxls.c). */
 #define AMIN(a, b) (fabs(a) < fabs(b) ? (a) : (b))
 
-/* WENO5 blend of candidates c1..c3 with the smoothness of v1..v5, O&F
- * (3.28)-(3.38); c1 is the candidate of the stencil farthest upwind. */
-static inline __attribute__((always_inline)) double weno5(double v1, double v2, double v3, double v4, double v5,
-                                                          double c1, double c2, double c3,
-                           double epsg)
+/* WENO5, O&F (3.28)-(3.38), by windows.  The five first differences
+ * w0..w4 = D1_{c-2}..D1_{c+2} around an interface c serve two
+ * derivatives: the left one at the node right of c (v1..v5 = w0..w4) and
+ * the right one at the node left of c (v1..v5 = w4..w0, mirrored).  Their
+ * epsilon, smoothness indicators (S1 of one is S3 of the other, S2 is
+ * shared) and hence weights are the same, computed once per window where
+ * a kernel walks the interfaces.  The forms below are invariant under the
+ * mirror (the same bits for a, b, c and c, b, a), so that a derivative has
+ * the same bits whichever way its window was computed. */
+
+/* S1 (3.32) of v1, v2, v3 = a, b, c and S3 (3.34) of v3, v4, v5 = c, b, a:
+ * 13/12 (a - 2b + c)^2 + 1/4 (a - 4b + 3c)^2. */
+static inline __attribute__((always_inline)) double smooth_end(double a, double b, double c)
 {
-    const double t1 = v1 - 2 * v2 + v3, u1 = v1 - 4 * v2 + 3 * v3;
-    const double t2 = v2 - 2 * v3 + v4, u2 = v2 - v4;
-    const double t3 = v3 - 2 * v4 + v5, u3 = 3 * v3 - 4 * v4 + v5;
-    const double s1 = 13.0 / 12 * t1 * t1 + 0.25 * u1 * u1;
-    const double s2 = 13.0 / 12 * t2 * t2 + 0.25 * u2 * u2;
-    const double s3 = 13.0 / 12 * t3 * t3 + 0.25 * u3 * u3;
-    double m = v1 * v1;
-    m = v2 * v2 > m ? v2 * v2 : m;
-    m = v3 * v3 > m ? v3 * v3 : m;
-    m = v4 * v4 > m ? v4 * v4 : m;
-    m = v5 * v5 > m ? v5 * v5 : m;
-    /* O&F (3.38): the largest v^2 of the five neighbours; or the caller's
-     * (the toolbox's 'maxOverGrid'), epsg >= 0 */
-    const double eps = epsg >= 0 ? epsg : 1e-6 * m + 1e-99;
-    /* alpha_k = d_k / (s_k + eps)^2, multiplied through by the product of
-     * the three (s_k + eps)^2 / eps^2 >= 1, which saves two divisions.
-     * Since s_k <= 21 m and eps >= 1e-6 m, each factor is at most about
-     * 5e14: no overflow, and no underflow even when phi is flat. */
-    const double ie = 1 / eps;
-    double q1 = s1 * ie + 1, q2 = s2 * ie + 1, q3 = s3 * ie + 1;
-    q1 *= q1, q2 *= q2, q3 *= q3;
-    const double a1 = 0.1 * q2 * q3, a2 = 0.6 * q1 * q3, a3 = 0.3 * q1 * q2;
+    const double t = (a + c) - 2 * b, u = (a + 3 * c) - 4 * b;
+    return 13.0 / 12 * t * t + 0.25 * u * u;
+}
+
+/* S2 (3.33) of v2, v3, v4 = a, b, c: 13/12 (a - 2b + c)^2 + 1/4 (a - c)^2. */
+static inline __attribute__((always_inline)) double smooth_mid(double a, double b, double c)
+{
+    const double t = (a + c) - 2 * b, u = a - c;
+    return 13.0 / 12 * t * t + 0.25 * u * u;
+}
+
+static inline __attribute__((always_inline)) double max2(double a, double b) { return b > a ? b : a; }
+
+/* The largest square of the four inner differences of a window pair,
+ * max(w1^2..w4^2); a window's m of (3.38) is max2 of it with its fifth
+ * square.  The max of a set of numbers does not depend on the order, so
+ * any grouping gives the same bits (a NaN in a window makes both its
+ * values NaN whatever m is). */
+static inline __attribute__((always_inline)) double max4sq(double a, double b, double c, double d)
+{
+    return max2(max2(a * a, b * b), max2(c * c, d * d));
+}
+
+/* 2^-k for eps = f 2^k (1 <= f < 2), from the exponent bits: eps times it
+ * is exact.  eps > 0 normal, as (3.38) gives it (>= 1e-99). */
+static inline __attribute__((always_inline)) double pow2_inv(double eps)
+{
+    uint64_t u;
+    memcpy(&u, &eps, sizeof u);
+    u = UINT64_C(0x7FE0000000000000) - (u & UINT64_C(0x7FF0000000000000));
+    double r;
+    memcpy(&r, &u, sizeof r);
+    return r;
+}
+
+/* (a1 c1 + a2 c2 + a3 c3) / (a1 + a2 + a3): the weights' normalisation
+ * (3.35)-(3.37) and the blend (3.28). */
+static inline __attribute__((always_inline)) double blend3(double a1, double a2, double a3, double c1, double c2,
+                                                           double c3)
+{
     return (a1 * c1 + a2 * c2 + a3 * c3) / (a1 + a2 + a3);
+}
+
+/* Both WENO5 values of the window w0..w4 whose largest square is m: *L
+ * from the candidates l1..l3 (c1 of the stencil farthest upwind), *R from
+ * r1..r3.  eps is the caller's (epsg >= 0, the toolbox's 'maxOverGrid')
+ * or 1e-6 m + 1e-99 (3.38).  alpha_k = d_k / (S_k + eps)^2 is multiplied
+ * through by the product of the three (S_k + eps)^2, scaled by a power of
+ * two near 1/eps^6 (exact): the weights take one division, and since
+ * S_k <= 21 m and eps >= 1e-6 m, each q_k is in [1, 5e7]: no overflow,
+ * and no underflow even when phi is flat. */
+static inline __attribute__((always_inline)) void weno5_pair(double w0, double w1, double w2, double w3, double w4,
+                                                            double m, double epsg, double l1, double l2, double l3,
+                                                            double r1, double r2, double r3, double *L, double *R)
+{
+    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, epsg, el);
+    const double k = pow2_inv(eps), e = eps * k;
+    double q1 = smooth_end(w0, w1, w2) * k + e, q2 = smooth_mid(w1, w2, w3) * k + e,
+           q3 = smooth_end(w4, w3, w2) * k + e;
+    q1 *= q1, q2 *= q2, q3 *= q3;
+    const double p12 = q1 * q2, p13 = q1 * q3, p23 = q2 * q3;
+    /* left: d = 0.1, 0.6, 0.3 on S1, S2, S3; right: S1 and S3 swap */
+    *L = blend3(0.1 * p23, 0.6 * p13, 0.3 * p12, l1, l2, l3);
+    *R = blend3(0.1 * p12, 0.6 * p13, 0.3 * p23, r1, r2, r3);
+}
+
+/* WENO5A's candidates of a window (the ENO3 divided difference table,
+ * O&F (3.18)-(3.24), scaled so that no dx appears), and both values.  The
+ * left node's table: m3..p1 = w0..w4; the right node's: m2..p2 = w0..w4,
+ * whose e2 and f3 are the left's shifted by one. */
+static inline __attribute__((always_inline)) void weno5a_pair(double w0, double w1, double w2, double w3, double w4,
+                                                             double m, double epsg, double *L, double *R)
+{
+    const double e0 = 0.5 * (w1 - w0), e1 = 0.5 * (w2 - w1), e2 = 0.5 * (w3 - w2), e3 = 0.5 * (w4 - w3);
+    const double f0 = e1 - e0, f1 = e2 - e1, f2 = e3 - e2;
+    const double l1 = w2 + e1 + f0 * (2.0 / 3), l2 = w2 + e1 + f1 * (2.0 / 3), l3 = w2 + e2 - f2 * (1.0 / 3);
+    const double r1 = w2 - e2 + f2 * (2.0 / 3), r2 = w2 - e2 + f1 * (2.0 / 3), r3 = w2 - e1 - f0 * (1.0 / 3);
+    weno5_pair(w0, w1, w2, w3, w4, m, epsg, l1, l2, l3, r1, r2, r3, L, R);
 }
 
 /* WENO3 from v1, v2, v3 (v1 farthest upwind): candidates -v1/2 + 3 v2/2
@@ -127,6 +190,14 @@ static inline __attribute__((always_inline)) double weno3(double v1, double v2, 
 #define PHI1(v1, v2, v3) ((v1) / 3 - 7 * (v2) / 6 + 11 * (v3) / 6)
 #define PHI2(v2, v3, v4) (-(v2) / 6 + 5 * (v3) / 6 + (v4) / 3)
 #define PHI3(v3, v4, v5) ((v3) / 3 + 5 * (v4) / 6 - (v5) / 6)
+
+/* WENO5B: weno5a_pair with the direct candidates (3.25)-(3.27). */
+static inline __attribute__((always_inline)) void weno5b_pair(double w0, double w1, double w2, double w3, double w4,
+                                                             double m, double epsg, double *L, double *R)
+{
+    weno5_pair(w0, w1, w2, w3, w4, m, epsg, PHI1(w0, w1, w2), PHI2(w1, w2, w3), PHI3(w2, w3, w4), PHI1(w4, w3, w2),
+               PHI2(w3, w2, w1), PHI3(w2, w1, w0), L, R);
+}
 
 /* Divided difference table around node i, scaled so that no dx appears:
  * e2[j] = dx D2_j, f3[j] = 3 dx^2 D3_{j+1/2}.  Comparisons use f3 before
@@ -147,16 +218,17 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
  * instead of a scalar remainder (a scalar node of these kernels costs
  * about what a vector of them does; recomputing a node gives the same
  * bits, the outputs never alias the inputs). */
-#define ROWS(...)                                                                          \
+#define BLOCKS8(N, ...)                                                                    \
     do {                                                                                   \
-        const long n8_ = n & ~7L;                                                          \
+        const long N_ = (N), n8_ = N_ & ~7L;                                               \
         for (long i = 0; i < n8_; i++) __VA_ARGS__                                         \
-        if (n8_ < n && n >= 8) {                                                           \
-            const long b_ = n - 8;                                                         \
+        if (n8_ < N_ && N_ >= 8) {                                                         \
+            const long b_ = N_ - 8;                                                        \
             for (long i = b_; i < b_ + 8; i++) __VA_ARGS__                                 \
         } else                                                                             \
-            for (long i = n8_; i < n; i++) __VA_ARGS__                                     \
+            for (long i = n8_; i < N_; i++) __VA_ARGS__                                    \
     } while (0)
+#define ROWS(...) BLOCKS8(n, __VA_ARGS__)
 
 /* The outputs of node i from its left and right derivatives L, R: L and
  * R (mode 0), or the mean (L + R)/2 and the difference R - L (mode 1, as
@@ -212,21 +284,26 @@ static inline __attribute__((always_inline)) void upwind_diffs(int mode, int reg
             STORE2(i, sel(fabs(u2m1) < fabs(u20), l1, l2), sel(fabs(u20) < fabs(u2p1), q1, q2));
         });
         break;
+    /* WENO5: the left derivative from the window D0..D4, the right one
+     * from D1..D5 (the halves not needed are dropped by the compiler);
+     * the four inner squares are shared */
+#define WENO5_NODE(PAIR)                                                              \
+    ROWS({                                                                            \
+        const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5); \
+        const double in = max4sq(m2, m1, z0, p1);                                     \
+        double L, R, x_, y_;                                                          \
+        PAIR(m3, m2, m1, z0, p1, max2(in, m3 * m3), eps, &L, &x_);                    \
+        PAIR(m2, m1, z0, p1, p2, max2(in, p2 * p2), eps, &y_, &R);                    \
+        (void)x_, (void)y_;                                                           \
+        STORE2(i, L, R);                                                              \
+    })
     case HJ_LS_WENO5A:
-        ROWS({
-            TABLE
-            const double la = m1 + e2m1 + 2 * (f3m2 / 3), lb = m1 + e2m1 + 2 * (f3m1 / 3), ld = m1 + e20 - f30 / 3;
-            const double r1 = z0 - e2p1 + 2 * (f3p1 / 3), r2 = z0 - e2p1 + 2 * (f30 / 3), r3 = z0 - e20 - f3m1 / 3;
-            STORE2(i, weno5(m3, m2, m1, z0, p1, la, lb, ld, eps), weno5(p2, p1, z0, m1, m2, r1, r2, r3, eps));
-        });
+        WENO5_NODE(weno5a_pair);
         break;
     case HJ_LS_WENO5B:
-        ROWS({
-            const double m3 = DV(0), m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4), p2 = DV(5);
-            STORE2(i, weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps),
-                   weno5(p2, p1, z0, m1, m2, PHI1(p2, p1, z0), PHI2(p1, z0, m1), PHI3(z0, m1, m2), eps));
-        });
+        WENO5_NODE(weno5b_pair);
         break;
+#undef WENO5_NODE
     case HJ_LS_WENO3:
         ROWS({
             const double m2 = DV(1), m1 = DV(2), z0 = DV(3), p1 = DV(4);
@@ -245,6 +322,26 @@ void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double e
 {
     if (mean) upwind_diffs(1, 0, scheme, D, NULL, 0, 0, n, eps, dl, dr);
     else upwind_diffs(0, 0, scheme, D, NULL, 0, 0, n, eps, dl, dr);
+}
+
+/* WENO5 along the row from its differences w[m] = D1_{m-5/2}, m < n + 5:
+ * window j (w[j..j+4]) gives the left derivative of node j and the right
+ * one of node j - 1, into L[j] and R[j] (t holds 2 (n + 1) doubles); then
+ * node i's pair is L[i], R[i + 1].  Half the weights of node by node. */
+static inline __attribute__((always_inline)) void weno5_windows(int mode, int scheme, const double *restrict w, long n,
+                                                               double eps, double *restrict t, double *restrict dl,
+                                                               double *restrict dr)
+{
+    double *restrict L = t, *restrict R = t + n + 1;
+#define WINDOWS(PAIR)                                                                                 \
+    BLOCKS8(n + 1, {                                                                                  \
+        const double w0 = w[i], w1 = w[i + 1], w2 = w[i + 2], w3 = w[i + 3], w4 = w[i + 4];          \
+        PAIR(w0, w1, w2, w3, w4, max2(max4sq(w1, w2, w3, w4), w0 * w0), eps, L + i, R + i);           \
+    });
+    if (scheme == HJ_LS_WENO5A) WINDOWS(weno5a_pair)
+    else WINDOWS(weno5b_pair)
+#undef WINDOWS
+    ROWS({ STORE2(i, L[i], R[i + 1]); });
 }
 
 /* Both one-sided derivatives of a row (mode 0: into dl, dr) or their
@@ -286,6 +383,10 @@ static inline __attribute__((always_inline)) void upwind_row(int mode, int schem
          * six offsets: D1_{i+k+1/2} is w[i + k + 3] (the same expression,
          * computed once instead of six times). */
         for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
+        if (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B) {
+            weno5_windows(mode, scheme, w, n, eps, w + n + 5, dl, dr);
+            return;
+        }
         for (int k = 0; k < 6; k++) D[k] = w + k;
         upwind_diffs(mode, 0, scheme, D, p, s, inv, n, eps, dl, dr);
     } else /* across rows: the differences in registers, not through w */
@@ -332,6 +433,7 @@ int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int 
 }
 
 #undef ROWS
+#undef BLOCKS8
 #undef STORE2
 
 void hj_ls_upwind_row_select(int scheme, const double *p, ptrdiff_t s, long n, double dx, const double *v, double *out,
@@ -388,16 +490,16 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
         if (scheme == HJ_LS_WENO5A)                                                                            \
             for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \
                 MIRROR                                                                                         \
-                const double e2m2 = 0.5 * (m2 - m3), e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1),            \
-                             e2p1 = 0.5 * (p1 - z0);                                                           \
-                const double f3m2 = e2m1 - e2m2, f3m1 = e20 - e2m1, f30 = e2p1 - e20;                          \
-                out[i] = weno5(m3, m2, m1, z0, p1, m1 + e2m1 + 2 * (f3m2 / 3), m1 + e2m1 + 2 * (f3m1 / 3),    \
-                               m1 + e20 - f30 / 3, eps);                                                       \
+                double r_;                                                                                     \
+                weno5a_pair(m3, m2, m1, z0, p1, max2(max4sq(m2, m1, z0, p1), m3 * m3), eps, out + i, &r_);    \
+                (void)r_;                                                                                      \
             }                                                                                                  \
         else if (scheme == HJ_LS_WENO5B)                                                                       \
             for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \
                 MIRROR                                                                                         \
-                out[i] = weno5(m3, m2, m1, z0, p1, PHI1(m3, m2, m1), PHI2(m2, m1, z0), PHI3(m1, z0, p1), eps); \
+                double r_;                                                                                     \
+                weno5b_pair(m3, m2, m1, z0, p1, max2(max4sq(m2, m1, z0, p1), m3 * m3), eps, out + i, &r_);    \
+                (void)r_;                                                                                      \
             }                                                                                                  \
         else                                                                                                   \
             for (long i = i0_; i < i0_ + (CNT); i++) {                                                         \

@@ -1,6 +1,7 @@
 /* Unit tests of common/hj_ls_deriv: orders of accuracy of every upwind
  * scheme and of the centered approximations on smooth data, agreement of
- * the two forms of ENO3 and WENO5 to round-off, and argument errors. */
+ * the two forms of ENO3 and WENO5 to round-off, WENO5 against O&F's
+ * formulas node by node, and argument errors. */
 #include "hj_test.h"
 
 #ifdef _OPENMP
@@ -176,6 +177,81 @@ static void forms_agree(void **state)
         }
         hj_ls_free(a), hj_ls_free(l1), hj_ls_free(r1), hj_ls_free(l2), hj_ls_free(r2);
     }
+}
+
+/* WENO5 node by node as O&F print it, (3.28)-(3.38): v1..v5 with v1
+ * farthest upwind, alpha_k = d_k / (S_k + eps)^2; eps < 0 is (3.38). */
+static double weno5_reference(const double v[5], double epsg)
+{
+    const double c1 = v[0] / 3 - 7 * v[1] / 6 + 11 * v[2] / 6, c2 = -v[1] / 6 + 5 * v[2] / 6 + v[3] / 3,
+                 c3 = v[2] / 3 + 5 * v[3] / 6 - v[4] / 6;
+    const double s1 = 13.0 / 12 * pow(v[0] - 2 * v[1] + v[2], 2) + 0.25 * pow(v[0] - 4 * v[1] + 3 * v[2], 2);
+    const double s2 = 13.0 / 12 * pow(v[1] - 2 * v[2] + v[3], 2) + 0.25 * pow(v[1] - v[3], 2);
+    const double s3 = 13.0 / 12 * pow(v[2] - 2 * v[3] + v[4], 2) + 0.25 * pow(3 * v[2] - 4 * v[3] + v[4], 2);
+    double m = 0;
+    for (int k = 0; k < 5; k++) m = fmax(m, v[k] * v[k]);
+    const double eps = epsg >= 0 ? epsg : 1e-6 * m + 1e-99;
+    const double a1 = 0.1 / pow(s1 + eps, 2), a2 = 0.6 / pow(s2 + eps, 2), a3 = 0.3 / pow(s3 + eps, 2);
+    return (a1 * c1 + a2 * c2 + a3 * c3) / (a1 + a2 + a3);
+}
+
+/* The kernels' WENO5 (both schemes; each window's weights shared by the
+ * left derivative of one node and the right one of its neighbour) against
+ * weno5_reference at every node, along the row and across rows, both
+ * sides and the upwind side only, with the local and a given epsilon: to
+ * round-off on smooth, kinked, rough and partly flat data. */
+static double rough_flat(const double *x, void *ctx)
+{
+    (void)ctx;
+    return x[0] < 0.3 ? 0.25 : noisy(x, NULL) + (x[0] > 0.7 ? 3 : 0);
+}
+
+static void weno5_against_reference(void **state)
+{
+    (void)state;
+    hj_ls_field_fn fs[4] = {field, kinked, noisy, rough_flat};
+    dirctx c = {0};
+    const long sizes[3] = {7, 16, 53};
+    for (int f = 0; f < 4; f++)
+        for (int si = 0; si < 3; si++) {
+            const long n = sizes[si], S = n + 1;
+            const double dx = 1.0 / (double)n;
+            double *p = malloc(sizeof(double) * (size_t)(n + 6)), *q = malloc(sizeof(double) * (size_t)(7 * S));
+            double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n), *v = malloc(sizeof(double) * (size_t)n);
+            double *dl = malloc(sizeof(double) * (size_t)n), *dr = malloc(sizeof(double) * (size_t)n),
+                   *out = malloc(sizeof(double) * (size_t)n);
+            double big = 0;
+            for (long i = -3; i < n + 3; i++) {
+                const double x = (double)i * dx;
+                p[i + 3] = fs[f](&x, &c);
+            }
+            for (int k = -3; k <= 3; k++) /* the same values across rows: q[(k + 3) S + i] = p at i + k */
+                for (long i = 0; i < n; i++) q[(k + 3) * S + i] = p[i + k + 3];
+            for (long i = 0; i < n + 5; i++) big = fmax(big, fabs((p[i + 1] - p[i]) / dx));
+            for (long i = 0; i < n; i++) v[i] = i % 2 ? 1 : -1;
+            for (int e = 0; e < 2; e++) {
+                const double epsg = e ? 1e-6 * big * big + 1e-99 : -1;
+                for (int sch = HJ_LS_WENO5A; sch <= HJ_LS_WENO5B; sch++)
+                    for (int across = 0; across < 2; across++) {
+                        const double *row = across ? q + 3 * S : p + 3;
+                        const ptrdiff_t st = across ? S : 1;
+                        hj_ls_upwind_row_eps(sch, row, st, n, dx, epsg, dl, dr, w);
+                        hj_ls_upwind_row_select_eps(sch, row, st, n, dx, epsg, v, out, w);
+                        for (long i = 0; i < n; i++) {
+                            double vl[5], vr[5]; /* D1_{i-5/2}..D1_{i+3/2}, D1_{i+5/2}..D1_{i-3/2} */
+                            for (int k = 0; k < 5; k++) {
+                                vl[k] = (p[i + k + 1] - p[i + k]) / dx;
+                                vr[k] = (p[i + 6 - k] - p[i + 5 - k]) / dx;
+                            }
+                            const double L = weno5_reference(vl, epsg), R = weno5_reference(vr, epsg);
+                            assert_close(dl[i], L, 1e-13 * big, 0);
+                            assert_close(dr[i], R, 1e-13 * big, 0);
+                            assert_close(out[i], v[i] > 0 ? L : R, 1e-13 * big, 0);
+                        }
+                    }
+            }
+            free(p), free(q), free(w), free(v), free(dl), free(dr), free(out);
+        }
 }
 
 /* hj_ls_upwind_row_select (the upwind side only, as convection uses it)
@@ -431,7 +507,8 @@ static void gradient_norm(void **state)
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_orders),
                         cmocka_unit_test(strided_equals_contiguous), cmocka_unit_test(six_dimensions),
-                        cmocka_unit_test(forms_agree), cmocka_unit_test(select_equals_two_sided),
+                        cmocka_unit_test(forms_agree), cmocka_unit_test(weno5_against_reference),
+                        cmocka_unit_test(select_equals_two_sided),
                         cmocka_unit_test(kernel_forms_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
                         cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))
