@@ -72,7 +72,10 @@
  * N = 20 ... 160, 18, 19, 21, 20 in 2-D for N = 40 ... 320; see
  * paper1_fastsweeping/eik/notes).  Where the upwind neighbour did not
  * change in this sweep (a fixed node, a locked one) du = 0 is its true
- * change.  After demote_cycling the first form (e = 0) is kept.  In the
+ * change.  The relaxation stays on after demote_cycling (with the first
+ * form and c held at the linear weights' value there, the 40 x 40 map
+ * below took 105 iterations at order 5, with the quicker cycle test;
+ * 64 instead of 33 now).  In the
  * sweeps against the flow the downwind nodes are already new and the
  * plain slope is kept: the relaxed slope there
  * amplifies short waves (1-D WENO5: by 3.6 per sweep) and the WENO5
@@ -83,11 +86,7 @@
  * is what keeps order 3 converging on maps whose speed varies by a
  * large factor over a few cells (with the constant the 40 x 40 map below
  * did not converge in 1000 iterations): where a stencil is not smooth
- * the weights lean upwind and c > 1 damps the update.  Once the WENO5
- * iteration has been found cycling (demote_cycling), c is kept at least
- * at the linear weights' value: the weights swing there, and a stronger
- * relaxation made that map take 137 iterations instead of 72 (79 so).
- * An order 3 iteration that stops converging by the same test drops the
+ * the weights lean upwind and c > 1 damps the update.  An order 3 iteration that stops converging by the same test drops the
  * relaxation (the wall of eik_convergence at N = 40 stalled at changes
  * of 3.5e-12 of the scale with it).
  *
@@ -115,8 +114,9 @@
  * iterations) on a wall with a gap and on two meeting fronts.  Where the
  * speed varies by a large factor over a few cells WENO5's weights can
  * still swing from sweep to sweep and the iteration cycle; when the
- * largest change stops decreasing, the nodes that still move switch to
- * WENO3 (demote_cycling).  An iteration that converges never does.
+ * largest change falls by less than half over 4 iterations, the nodes
+ * that still move switch to WENO3 (demote_cycling).  An iteration that
+ * converges never does.
  *
  * Under-resolved data.  On slowness maps with noise at the grid scale
  * no scheme has its order and the high order iterations cycled or ran
@@ -151,14 +151,28 @@ enum { GH = 3 };                                  /* ghost layers: WENO5 reaches
  * of the exact constant-speed case grow to 4e-12 (N = 320, 2-D); 1e-14
  * keeps them at rounding level (5e-13 there, 8e-13 with exact locking). */
 #define FIRST_LOCK 1e-14
-/* WENO5 cycle detection (demote_cycling): the largest change of a block
- * of STALL_SPAN iterations at least STALL_RATIO times that of the block
- * before; at most STALL_ROUNDS demotions, each of the nodes whose change
- * in the last iteration was at least STALL_FRAC of the largest.  With
+/* Stall test (an order 3 iteration dropping the relaxation, demote_first):
+ * the largest change of a block of STALL_SPAN iterations at least
+ * STALL_RATIO times that of the block before.  WENO5 cycles
+ * (demote_cycling): at most STALL_ROUNDS demotions, each of the nodes
+ * whose change in the last iteration was at least STALL_FRAC of the
+ * largest.  With
  * 0.1 instead of 0.01 the cycle moved on to the next nodes after each
  * demotion (3-D 40^3, speed 1 + 0.5 sin(x/7) cos(y/5): 154 iterations
  * instead of 108). */
 enum { STALL_SPAN = 8, STALL_ROUNDS = 8 };
+/* The WENO5 cycle test itself (demote_cycling) looks at blocks of
+ * CYCLE_SPAN iterations and fires when a block's largest change is at
+ * least CYCLE_RATIO times the last block's (the change falls by less than
+ * 0.84 per iteration): on the 40 x 40 map of speed 1 + 0.5 sin(x/7)
+ * cos(y/5) one node next to the boundary moved up and down by 0.1 in
+ * alternate sweeps while the largest change fell by only 2.5 % per
+ * iteration, which the stall test above (blocks of 8, 0.9) took 100
+ * iterations to see.  Converging WENO5 iterations fall by a factor
+ * 1.7 or more per iteration (the convergence study, up to N = 640 in
+ * 2-D), 0.12 or less over a block, and never reach it. */
+enum { CYCLE_SPAN = 4 };
+#define CYCLE_RATIO 0.5
 /* Rounds of demote_first, the last one demoting every node. */
 enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
@@ -210,11 +224,9 @@ typedef struct {
     int nsrc;
     double eps3, eps5[3];
     double lock_tol; /* a change below this (in T) does not unlock neighbours */
-    int relax;       /* downwind relaxation: 2 with the downwind change
-                      * extrapolated, 1 the downwind nodes moving by the
-                      * node's change and no stronger than with the
-                      * linear weights (after demote_cycling), 0 none
-                      * (an order 3 iteration that stalled) */
+    int relax;       /* downwind relaxation: 1 with the downwind change
+                      * extrapolated, 0 none (an order 3 iteration that
+                      * stalled) */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -534,12 +546,6 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
              * flow (left side: forwards), so the downwind neighbours
              * still hold the previous sweep's values */
             const long id = ip[d] - w->G[d];
-            if (w->relax == 1) { /* no stronger than with the linear weights */
-                const double cl = ord == 5 ? 47.0 / 60 : 5.0 / 6;
-                cm = cm < cl ? cl : cm;
-                cp = cp < cl ? cl : cp;
-            }
-            if (w->relax != 2) em = ep = 0; /* the downwind nodes move by the node's change */
             const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
@@ -1398,7 +1404,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
             }
-    w.relax = 2;
+    w.relax = 1;
     w.eps3 = 1e-6;
     for (int d = 0; d < w.dim; d++) w.eps5[d] = 1e-6 * (w.h[d] / Lmax) * (w.h[d] / Lmax);
     w.lock_tol = 0; /* exact locking for the first order phase */
@@ -1466,7 +1472,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         }
         mark_rough(&w);
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
-        int demoted = 0, fell = 0, nblk = 0;
+        double cyc[2] = {0, 0}; /* the same for the WENO5 cycle test */
+        int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
@@ -1491,19 +1498,31 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 break;
             }
             /* WENO5 cycling (the largest change of a block of
-             * STALL_SPAN iterations not below STALL_RATIO times that of
-             * the block before): the nodes that still move use WENO3 */
+             * CYCLE_SPAN iterations not below CYCLE_RATIO times that of
+             * the block before): the nodes that still move use WENO3.
+             * A plateau at rounding level (below 1e-12 of the scale: a
+             * tolerance too small to reach) is no cycle. */
+            if (opt->order == 5 && demoted < STALL_ROUNDS) {
+                if (change > cyc[1]) cyc[1] = change;
+                if (++ncyc == CYCLE_SPAN) {
+                    if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > 1e-12 * scale) {
+                        demote_cycling(&w, change, q);
+                        demoted++;
+                        cyc[1] = 0; /* the next block starts afresh */
+                        blk[0] = blk[1] = 0;
+                        nblk = 0;
+                    }
+                    cyc[0] = cyc[1];
+                    cyc[1] = 0;
+                    ncyc = 0;
+                }
+                continue; /* the stall test below waits for the last round */
+            }
             if (change > blk[1]) blk[1] = change;
             if (++nblk == STALL_SPAN) {
-                /* a plateau at rounding level (below 1e-12 of the
-                 * scale: a tolerance too small to reach) is no cycle */
+                /* a plateau at rounding level is no stall either */
                 const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
-                if (stall && opt->order == 5 && demoted < STALL_ROUNDS) {
-                    demote_cycling(&w, change, q);
-                    w.relax = 1;
-                    demoted++;
-                    blk[1] = 0; /* the next block starts afresh */
-                } else if (stall && opt->order == 3 && w.relax) {
+                if (stall && opt->order == 3 && w.relax) {
                     /* order 3: the plain update from here on (the wall
                      * of eik_convergence at N = 40: changes of 3.5e-12
                      * of the scale for 1000 iterations with it) */
