@@ -17,6 +17,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+/* Every shape checks its parameters: a NaN or infinite one where a finite
+ * value is required (a centre, a point, a normal, a radius, a star's
+ * numbers) is HJ_ENONFINITE, and the array is left untouched. */
+
 /* |x - center| - radius; radius > 0. */
 int hj_ls_shape_sphere(const hj_ls_grid *g, const double *center, double radius, double *out, hj_error *err);
 
