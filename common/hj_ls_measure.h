@@ -32,11 +32,14 @@ double hj_ls_simplex_fraction(int d, const double *v);
  * at i[d] = N[d] - 1 takes its upper corner from the ghost at N[d], which
  * must then hold the neighbouring value (a periodic image, or a
  * neighbouring block's node).  HJ_EINVAL for a dimension above 3 or an
- * ncell out of range. */
+ * ncell out of range; HJ_ENONFINITE, naming the node, for a NaN at a node
+ * the cells read (s is then left as it was).  -inf and +inf count as
+ * negative and positive. */
 int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err);
 
 /* Measure of {phi < 0} over the grid's box; *m receives it.  HJ_EINVAL
- * for a grid of dimension above 3. */
+ * for a grid of dimension above 3, HJ_ENONFINITE naming the first node
+ * where phi is NaN. */
 int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
 
 /* The same on a grid periodic in dimension periodic_dim (>= 0; < 0 is
