@@ -172,7 +172,7 @@ typedef struct {
     int scheme;           /* HJ_LS_* upwind scheme, default HJ_LS_ENO2 */
     int order;            /* RK order 1..3, default 2 */
     int dissipation;      /* default HJ_LS_LLF */
-    double factor_cfl;    /* default 0.5 */
+    double factor_cfl;    /* in (0, 1] (hj_ls_ode.h), default 0.5 */
     int per_node;         /* 1: the kernel's per-node callbacks; 0 (default):
                            * batched rows, f and G evaluated once per node
                            * for H and every alpha_d (same bits) */
