@@ -23,6 +23,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Fraction of the d-simplex (d = 1, 2, 3) with vertex values v[0..d] on
  * which the linear interpolant is negative. */
 double hj_ls_simplex_fraction(int d, const double *v);
@@ -54,5 +58,9 @@ int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_
  * curvature motion (sections 2.3.1-2.3.2).  HJ_EINVAL for other
  * dimensions. */
 int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -44,6 +44,10 @@
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Called after every full step; may change y (e.g. a mask, section 3.7.2). */
 typedef int (*hj_ls_post_fn)(double t, double *y, void *ctx, hj_error *err);
 
@@ -78,5 +82,9 @@ void hj_ls_ode_defaults(hj_ls_ode_opts *o);
  * is called at every output time.  opts and stats may be NULL. */
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
               const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -51,6 +51,10 @@
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HJ_REACH_MAXIN 8
 
 enum { HJ_REACH_BOX, HJ_REACH_BALL };
@@ -245,5 +249,9 @@ int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error
  * hj_reach_measure reads arrays on the grid (hj_ls_alloc), and an
  * interior-only array given to it is read at the wrong nodes. */
 int hj_reach_measure_compact(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
