@@ -43,6 +43,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HJ_BAND_DMAX 4
 
 typedef enum {
@@ -108,5 +112,9 @@ size_t hj_band_bytes(const hj_band *s);
  * returned. */
 typedef int (*hj_band_visit_fn)(const int *idx, double *v, void *ctx);
 int hj_band_foreach(hj_band *s, hj_band_visit_fn fn, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

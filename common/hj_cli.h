@@ -13,6 +13,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Integer in [min, max], whole string, decimal. */
 int hj_parse_long(const char *s, const char *what, long min, long max, long *out, hj_error *err);
 /* Finite double in [min, max]. */
@@ -92,7 +96,13 @@ void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
  * exits. */
 enum { HJ_EXIT_RUN = 1, HJ_EXIT_USAGE = 2 };
 
-_Noreturn void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
+/* C11 spells "does not return" _Noreturn, C++11 [[noreturn]]. */
+#ifdef __cplusplus
+[[noreturn]]
+#else
+_Noreturn
+#endif
+void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
@@ -103,5 +113,9 @@ void hj_progress(const char *fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

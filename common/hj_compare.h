@@ -26,6 +26,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     HJ_KIND_ERROR,
     HJ_KIND_ORDER,
@@ -65,5 +69,9 @@ double hj_difference(hj_kind kind, double published, double computed);
 
 /* The rules above as a Markdown list, for the report. */
 void hj_compare_rules(FILE *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

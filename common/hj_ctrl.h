@@ -23,6 +23,10 @@
 #include "hj_ls_grid.h"
 #include "hj_reach.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The interpolated value and gradient of phi at x. */
 double hj_ctrl_value(const hj_ls_grid *g, const double *phi, const double *x);
 void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, double *p);
@@ -73,5 +77,9 @@ void hj_ctrl_sim_defaults(hj_ctrl_sim_opts *o);
  * finite numbers. */
 int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *phi, const double *x0,
                      const hj_ctrl_sim_opts *o, hj_ctrl_traj *tr, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,10 @@
 
 #include "hj_fsm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The circle of radius r centred at (cx, cy); level is the signed
  * distance, negative inside. */
 typedef struct {
@@ -27,5 +31,9 @@ typedef struct {
 } hj_curve_line;
 double hj_curve_line_level(double x, double y, void *line);
 int hj_curve_line_local(double x, double y, hj_curve_local *out, void *line);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #include <stddef.h>
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     int dim;        /* 2 or 3 */
     long n[3];      /* nodes per dimension (n[2] = 1 when dim = 2) */
@@ -82,5 +86,9 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
                  const unsigned char *obstacle, const hj_eik_source *src, int nsrc,
                  const double *fixed, const hj_eik_options *opt, double *T,
                  hj_eik_stats *st, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -18,6 +18,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* T: n0 x n1 x n2 values (x fastest); reached: per node 1 where a front
  * arrives (so T must be finite there), 0 elsewhere (obstacles, nodes
  * walled off from every source: +INFINITY is right there); NULL: every
@@ -31,5 +35,9 @@
 
 int hj_eik_guard(const double *T, const unsigned char *reached, const long n[3], double t_min, double scale,
                  hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

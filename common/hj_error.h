@@ -10,6 +10,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     HJ_OK = 0,
     HJ_EINVAL,     /* an argument is out of range or inconsistent */
@@ -45,5 +49,9 @@ const char *hj_error_quote(const char *s, size_t n, char *buf, size_t cap);
 
 /* Reset err to HJ_OK with an empty message (err may be NULL). */
 void hj_error_clear(hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -33,6 +33,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     double p;      /* fitted order */
     double p_se;   /* standard error of p (NaN when n = 2) */
@@ -51,5 +55,9 @@ double hj_pair_order(double h1, double e1, double h2, double e2);
 
 /* Fit e = C h^p to n >= 2 points with h > 0, e > 0, all finite. */
 int hj_fit_order(const double *h, const double *e, int n, hj_order_fit *fit, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -37,6 +37,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* 1 when x is in the exact set. */
 typedef int (*hj_front_inside_fn)(const double *x, void *ctx);
 /* V at cell idx. */
@@ -72,5 +76,9 @@ int hj_front_band_values(hj_band *s, double *out, hj_error *err);
  * exactly one set is empty, 0 when both are. */
 int hj_front_hausdorff(int d, const double *a, size_t na, const double *b, size_t nb, double h, double *out,
                        hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -36,6 +36,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     int nx, ny;    /* intervals; nodes 0..nx, 0..ny */
     double x0, y0; /* coordinates of node (0, 0) */
@@ -160,5 +164,9 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *speed, const hj_inflow *infl
  * curve piece (exposed for tests). */
 int hj_fsm_lax_wendroff_value(const hj_speed *speed, const hj_inflow *piece, double x, double y, double h,
                               double *value, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

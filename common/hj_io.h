@@ -19,6 +19,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     FILE *fp;
     char *path;
@@ -68,5 +72,9 @@ const char *hj_table_meta(const hj_table *t, const char *key);
 
 /* Create a directory and its parents (like mkdir -p). */
 int hj_mkdirs(const char *path, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

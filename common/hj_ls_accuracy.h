@@ -18,6 +18,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum { HJ_LS_ACC_LOW, HJ_LS_ACC_MEDIUM, HJ_LS_ACC_HIGH, HJ_LS_ACC_VERYHIGH, HJ_LS_NACC };
 
 /* FactorCFL of the toolbox's examples (odeCFLset): 0.5 in most of them
@@ -38,5 +42,9 @@ int hj_ls_accuracy_order(int acc);
 
 /* *acc = the level named s; HJ_EINVAL naming the choices otherwise. */
 int hj_ls_accuracy_parse(const char *s, int *acc, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

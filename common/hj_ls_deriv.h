@@ -42,6 +42,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     HJ_LS_UPWIND_FIRST,
     HJ_LS_ENO2,
@@ -154,5 +158,9 @@ int hj_ls_curvature(const hj_ls_grid *g, double *data, double *kappa, double *gr
 /* Curvature and gradient magnitude at one node from its centered stencil
  * (p is the node, the grid gives strides and spacings). */
 void hj_ls_curvature_at(const hj_ls_grid *g, const double *p, double *kappa, double *grad_mag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

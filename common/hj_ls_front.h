@@ -15,6 +15,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Maximum and mean of |phi - exact| over the interior nodes where
  * |exact| < band (0 if there is none). */
 void hj_ls_front_error(const hj_ls_grid *g, const double *phi, const double *exact, double band, double *max,
@@ -36,5 +40,9 @@ int hj_ls_front_crossings(const hj_ls_grid *g, const double *phi, double **pts, 
  * its two chords): maximum and mean.  With samples spaced h on a curve of
  * curvature kappa the polygon is within kappa h^2 / 8 of the curve. */
 void hj_ls_front_distance(const double *p, long np, const double *c, long nc, double *max, double *mean);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -36,6 +36,10 @@
 #include "hj_error.h"
 #include "hj_sum.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HJ_LS_MAXDIM 8
 /* Ghost width: the widest stencil of the kernel (ENO3, WENO5) reaches 3. */
 #define HJ_LS_GHOST 3
@@ -173,5 +177,9 @@ long hj_ls_count_increase(const hj_ls_grid *g, const double *a, const double *b)
 
 /* Number of interior nodes where a and b differ in any bit. */
 long hj_ls_count_differ(const hj_ls_grid *g, const double *a, const double *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

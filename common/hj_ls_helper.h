@@ -9,6 +9,10 @@
 #include "hj_ls_deriv.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* postTimestepMask: pass hj_ls_post_mask as the integrator's PostTimestep
  * with a pointer to this struct; after every step
  *     y = max(y, mask)  (keep_max, the constraint phi >= psi), or
@@ -40,5 +44,9 @@ int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoi
 
 /* The brute force method, for testing. */
 int hj_ls_unsigned_distance_brute(const hj_ls_grid *g, const double *points, long npoints, double *out, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,6 +20,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* One block of nfields arrays on g to fp (an open stream, e.g. an hj_out's
  * fp); a header line "# x y ... name1 name2" first when names is given.
  * HJ_EIO on a write error. */
@@ -45,5 +49,9 @@ int hj_ls_write_dat(const char *path, const hj_ls_grid *g, int nfields, const ch
  * HJ_EINVAL unless g is 3-D and M >= 2; HJ_EIO on a write error. */
 int hj_ls_write_voxels(FILE *fp, const hj_ls_grid *g, int nfields, const double *const *fields, int M, int periodic_dim,
                        hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -2,6 +2,8 @@
 #include "hj_ls_measure.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -79,6 +81,45 @@ static double cell_fraction(const hj_ls_grid *g, const double *phi, size_t base)
     return sum / np;
 }
 
+/* The first NaN among the nodes a row's cells read (the row and its upper
+ * neighbours in dimensions 1..d-1, nodes 0..n0 along dimension 0): its
+ * offset in phi, or SIZE_MAX.  A NaN vertex would count as positive and
+ * leave a finite, wrong measure, or make it NaN. */
+static size_t row_nan(const hj_ls_grid *g, const double *phi, size_t k0, long n0)
+{
+    size_t first = SIZE_MAX;
+    for (unsigned c = 0; c < 1u << (g->dim - 1); c++) {
+        size_t k = k0;
+        for (int e = 1; e < g->dim; e++)
+            if (c >> (e - 1) & 1) k += (size_t)g->stride[e];
+        int any = 0;
+        for (long a = 0; a <= n0; a++) any |= isnan(phi[k + (size_t)a]);
+        if (!any) continue;
+        for (long a = 0; a <= n0; a++)
+            if (isnan(phi[k + (size_t)a]) && k + (size_t)a < first) first = k + (size_t)a;
+    }
+    return first;
+}
+
+/* HJ_ENONFINITE naming the node at offset k of phi (a ghost index when the
+ * cells reach into the ghost layer). */
+static int nan_error(const hj_ls_grid *g, size_t k, hj_error *err)
+{
+    long i[HJ_LS_MAXDIM];
+    double x[HJ_LS_MAXDIM];
+    for (int e = 0; e < g->dim; e++) i[e] = (long)(k / (size_t)g->stride[e] % (size_t)g->ext[e]) - HJ_LS_GHOST;
+    hj_ls_coord(g, i, x);
+    char pos[256];
+    size_t len = 0;
+    pos[0] = 0;
+    for (int e = 0; e < g->dim && len < sizeof pos; e++) {
+        const int w = snprintf(pos + len, sizeof pos - len, "%s%g", e ? ", " : "", x[e]);
+        if (w < 0) break;
+        len += (size_t)w;
+    }
+    return hj_error_set(err, HJ_ENONFINITE, "measure: phi is NaN at x = (%s)", pos);
+}
+
 int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err)
 {
     if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
@@ -86,12 +127,20 @@ int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell,
         if (ncell[e] < 0 || ncell[e] > g->N[e])
             return hj_error_set(err, HJ_EINVAL, "measure: %ld cells along dimension %d of %ld nodes", ncell[e], e,
                                 g->N[e]);
+    for (int e = 0; e < g->dim; e++)
+        if (ncell[e] == 0) return HJ_OK; /* no cell, no node read */
     /* Cell rows: the cells along dimension 0 of the interior rows whose
-     * other indices are below ncell; one exact accumulator per thread. */
+     * other indices are below ncell; one exact accumulator per thread.
+     * The first NaN node (lowest offset) is the one reported, whatever
+     * the number of threads. */
+    size_t nan_at = SIZE_MAX;
+    hj_sum total;
+    hj_sum_init(&total);
 #pragma omp parallel
     {
         hj_sum t;
         hj_sum_init(&t);
+        size_t t_nan = SIZE_MAX;
 #pragma omp for schedule(static) nowait
         for (size_t r = 0; r < g->rows; r++) {
             long i[HJ_LS_MAXDIM] = {0};
@@ -99,11 +148,21 @@ int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell,
             int out = 0;
             for (int e = 1; e < g->dim; e++) out |= i[e] >= ncell[e];
             if (out) continue;
+            const size_t bad = row_nan(g, phi, k0, ncell[0]);
+            if (bad != SIZE_MAX) {
+                t_nan = bad < t_nan ? bad : t_nan;
+                continue;
+            }
             for (long a = 0; a < ncell[0]; a++) hj_sum_add(&t, cell_fraction(g, phi, k0 + (size_t)a));
         }
 #pragma omp critical(hj_ls_measure_merge)
-        hj_sum_merge(s, &t);
+        {
+            hj_sum_merge(&total, &t);
+            nan_at = t_nan < nan_at ? t_nan : nan_at;
+        }
     }
+    if (nan_at != SIZE_MAX) return nan_error(g, nan_at, err);
+    hj_sum_merge(s, &total);
     return HJ_OK;
 }
 

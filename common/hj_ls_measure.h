@@ -23,6 +23,10 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Fraction of the d-simplex (d = 1, 2, 3) with vertex values v[0..d] on
  * which the linear interpolant is negative. */
 double hj_ls_simplex_fraction(int d, const double *v);
@@ -32,11 +36,14 @@ double hj_ls_simplex_fraction(int d, const double *v);
  * at i[d] = N[d] - 1 takes its upper corner from the ghost at N[d], which
  * must then hold the neighbouring value (a periodic image, or a
  * neighbouring block's node).  HJ_EINVAL for a dimension above 3 or an
- * ncell out of range. */
+ * ncell out of range; HJ_ENONFINITE, naming the node, for a NaN at a node
+ * the cells read (s is then left as it was).  -inf and +inf count as
+ * negative and positive. */
 int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err);
 
 /* Measure of {phi < 0} over the grid's box; *m receives it.  HJ_EINVAL
- * for a grid of dimension above 3. */
+ * for a grid of dimension above 3, HJ_ENONFINITE naming the first node
+ * where phi is NaN. */
 int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
 
 /* The same on a grid periodic in dimension periodic_dim (>= 0; < 0 is
@@ -51,5 +58,9 @@ int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_
  * curvature motion (sections 2.3.1-2.3.2).  HJ_EINVAL for other
  * dimensions. */
 int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -158,8 +158,10 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
         if (!isfinite(tspan[k])) return hj_error_set(err, HJ_ENONFINITE, "tspan[%d] is not finite", k);
         if (k && !(tspan[k] > tspan[k - 1])) return hj_error_set(err, HJ_EINVAL, "tspan must increase");
     }
-    if (!(o.factor_cfl > 0) || !isfinite(o.factor_cfl))
-        return hj_error_set(err, HJ_EINVAL, "FactorCFL must be positive, got %g", o.factor_cfl);
+    /* (0, 1]: each scheme is a convex combination of Euler steps, stable up
+     * to the term's bound (hj_ls_ode.h). */
+    if (!(o.factor_cfl > 0 && o.factor_cfl <= 1))
+        return hj_error_set(err, HJ_EINVAL, "FactorCFL must be in (0, 1], got %g", o.factor_cfl);
     if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
     if (!(o.blowup_factor >= 0))
         return hj_error_set(err, HJ_EINVAL, "the blow-up factor must be >= 0 (0: no bound), got %g", o.blowup_factor);

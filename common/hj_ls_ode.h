@@ -12,6 +12,12 @@
  * step (as in the toolbox, later stages are not re-limited; a stage whose
  * bound is below dt / FactorCFL is counted in the statistics).
  *
+ * FactorCFL must lie in (0, 1] (HJ_EINVAL otherwise): a term's bound is
+ * the largest step for which one forward Euler step is stable (CFL number
+ * 1 for its monotone scheme), and the TVD schemes above are convex
+ * combinations of forward Euler steps of size dt (SSP coefficient 1), so
+ * they keep that stability exactly up to dt = bound and lose it beyond.
+ *
  * Memory: the state y plus two arrays (one stage, one time derivative),
  * whatever the order.
  *
@@ -41,11 +47,15 @@
 #include "hj_ls_grid.h"
 #include "hj_ls_term.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Called after every full step; may change y (e.g. a mask, section 3.7.2). */
 typedef int (*hj_ls_post_fn)(double t, double *y, void *ctx, hj_error *err);
 
 typedef struct {
-    double factor_cfl;   /* FactorCFL, default 0.5 */
+    double factor_cfl;   /* FactorCFL in (0, 1], default 0.5 */
     double max_step;     /* MaxStep, default DBL_MAX */
     hj_ls_post_fn post;  /* PostTimestep, default NULL */
     void *post_ctx;
@@ -75,5 +85,9 @@ void hj_ls_ode_defaults(hj_ls_ode_opts *o);
  * is called at every output time.  opts and stats may be NULL. */
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
               const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -22,6 +22,10 @@
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* tspan[k] = t0 + (t1 - t0) k / (n - 1), k = 0 .. n - 1, the last exactly
  * t1 (n >= 2). */
 void hj_ls_seq_times(double t0, double t1, int n, double *tspan);
@@ -73,5 +77,9 @@ int hj_ls_seq_solve(int order, const hj_ls_grid *g, const hj_ls_term *term, cons
 int hj_ls_seq_solve_file(const char *path, int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan,
                          int n, double *y, const hj_ls_ode_opts *opts, hj_ls_seq *s, hj_ls_ode_stats *stats,
                          hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

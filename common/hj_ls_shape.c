@@ -45,10 +45,21 @@ static double hyperplane_at(const double *x, void *ctx)
     return q / s->nn;
 }
 
+/* The first d in [0, n) with x[d] not finite (use[d] nonzero, or every d
+ * when use is NULL), or -1: a NaN parameter would otherwise fill the whole
+ * array with NaN and return success. */
+static int first_nonfinite(const double *x, int n, const int *use)
+{
+    for (int d = 0; d < n; d++)
+        if ((!use || use[d]) && !isfinite(x[d])) return d;
+    return -1;
+}
+
 int hj_ls_shape_cylinder(const hj_ls_grid *g, const int *ignore, int nignore, const double *center, double radius,
                          double *out, hj_error *err)
 {
-    if (!(radius > 0) || !isfinite(radius)) return hj_error_set(err, HJ_EINVAL, "sphere radius must be positive");
+    if (!isfinite(radius)) return hj_error_set(err, HJ_ENONFINITE, "sphere radius %g is not finite", radius);
+    if (!(radius > 0)) return hj_error_set(err, HJ_EINVAL, "sphere radius must be positive");
     shape s = {.dim = g->dim, .c = center, .r = radius};
     for (int d = 0; d < g->dim; d++) s.use[d] = 1;
     for (int q = 0; q < nignore; q++) {
@@ -57,6 +68,10 @@ int hj_ls_shape_cylinder(const hj_ls_grid *g, const int *ignore, int nignore, co
                                 ignore[q], g->dim);
         s.use[ignore[q]] = 0;
     }
+    /* The centre matters only in the dimensions not ignored. */
+    const int bad = first_nonfinite(center, g->dim, s.use);
+    if (bad >= 0)
+        return hj_error_set(err, HJ_ENONFINITE, "sphere centre %g in dimension %d is not finite", center[bad], bad);
     hj_ls_fill(g, out, cylinder_at, &s);
     return HJ_OK;
 }
@@ -70,6 +85,9 @@ int hj_ls_shape_rectangle_corners(const hj_ls_grid *g, const double *lower, cons
                                   hj_error *err)
 {
     for (int d = 0; d < g->dim; d++)
+        if (isnan(lower[d]) || isnan(upper[d]))
+            return hj_error_set(err, HJ_ENONFINITE, "rectangle corner is NaN in dimension %d", d);
+    for (int d = 0; d < g->dim; d++)
         if (!(lower[d] < upper[d]) || lower[d] == INFINITY || upper[d] == -INFINITY)
             return hj_error_set(err, HJ_EINVAL, "rectangle needs lower < upper in dimension %d", d);
     shape s = {.dim = g->dim, .lo = lower, .hi = upper};
@@ -81,7 +99,11 @@ int hj_ls_shape_rectangle_center(const hj_ls_grid *g, const double *center, cons
                                  hj_error *err)
 {
     double lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
+    const int bad = first_nonfinite(center, g->dim, NULL);
+    if (bad >= 0)
+        return hj_error_set(err, HJ_ENONFINITE, "rectangle centre %g in dimension %d is not finite", center[bad], bad);
     for (int d = 0; d < g->dim; d++) {
+        if (isnan(widths[d])) return hj_error_set(err, HJ_ENONFINITE, "rectangle width is NaN in dimension %d", d);
         if (!(widths[d] > 0))
             return hj_error_set(err, HJ_EINVAL, "rectangle width must be positive in dimension %d", d);
         lo[d] = center[d] - 0.5 * widths[d];
@@ -92,6 +114,10 @@ int hj_ls_shape_rectangle_center(const hj_ls_grid *g, const double *center, cons
 
 int hj_ls_shape_hyperplane(const hj_ls_grid *g, const double *normal, const double *point, double *out, hj_error *err)
 {
+    int bad = first_nonfinite(normal, g->dim, NULL);
+    if (bad >= 0) return hj_error_set(err, HJ_ENONFINITE, "hyperplane normal is not finite in dimension %d", bad);
+    bad = first_nonfinite(point, g->dim, NULL);
+    if (bad >= 0) return hj_error_set(err, HJ_ENONFINITE, "hyperplane point is not finite in dimension %d", bad);
     double nn = 0;
     for (int d = 0; d < g->dim; d++) nn += normal[d] * normal[d];
     nn = sqrt(nn);
@@ -139,9 +165,15 @@ double hj_ls_star_fn(const double *x, void *ctx) { return star_at(ctx, hypot(x[0
 /* |x| as every grid shape here takes it, the root of the sum of squares. */
 static double star_grid_at(const double *x, void *ctx) { return star_at(ctx, sqrt(x[0] * x[0] + x[1] * x[1]), x); }
 
+static int star_finite(const hj_ls_star *s)
+{
+    return isfinite(s->scale) && isfinite(s->shift) && isfinite(s->points);
+}
+
 int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err)
 {
     if (g->dim != 2) return hj_error_set(err, HJ_EINVAL, "star: 2-D grids only");
+    if (!star_finite(s)) return hj_error_set(err, HJ_ENONFINITE, "star: scale, shift and points must be finite");
     hj_ls_fill(g, out, star_grid_at, (void *)s);
     return HJ_OK;
 }
@@ -150,6 +182,11 @@ double hj_ls_star_area(const hj_ls_star *s) { return HJ_PI * s->scale * s->scale
 
 int hj_ls_shape_curve(const hj_ls_star *star, const double *center, double radius, long n, double **pts, hj_error *err)
 {
+    if (n < 1) return hj_error_set(err, HJ_EINVAL, "curve samples: %ld points (1 or more)", n);
+    if (star && !star_finite(star))
+        return hj_error_set(err, HJ_ENONFINITE, "curve samples: star scale, shift and points must be finite");
+    if (!star && (first_nonfinite(center, 2, NULL) >= 0 || !isfinite(radius)))
+        return hj_error_set(err, HJ_ENONFINITE, "curve samples: circle centre and radius must be finite");
     double *p = malloc(sizeof(double) * 2 * (size_t)n);
     if (!p) return hj_error_set(err, HJ_ENOMEM, "curve samples: out of memory");
     for (long k = 0; k < n; k++) {

@@ -17,6 +17,14 @@
 #include "hj_error.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Every shape checks its parameters: a NaN or infinite one where a finite
+ * value is required (a centre, a point, a normal, a radius, a star's
+ * numbers) is HJ_ENONFINITE, and the array is left untouched. */
+
 /* |x - center| - radius; radius > 0. */
 int hj_ls_shape_sphere(const hj_ls_grid *g, const double *center, double radius, double *out, hj_error *err);
 
@@ -70,5 +78,9 @@ double hj_ls_star_area(const hj_ls_star *s);
  * of the circle of the given centre and radius: *pts (malloc'd, 2 doubles
  * per point, freed by the caller). */
 int hj_ls_shape_curve(const hj_ls_star *star, const double *center, double radius, long n, double **pts, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -29,6 +29,10 @@
 #include "hj_ls_deriv.h"
 #include "hj_ls_grid.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct hj_ls_term hj_ls_term;
 
 /* How a term turns its per-node speeds s_d(x) (|v_d| for convection, the
@@ -340,5 +344,9 @@ typedef struct {
 int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, int take_max,
                         hj_error *err);
 void hj_ls_extremum_free(hj_ls_extremum *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -28,6 +28,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     int mx, my;      /* map nodes per row, rows */
     double *v;       /* row-major, row 0 = bottom; NULL: the constant speed */
@@ -56,5 +60,9 @@ int hj_map_invert(hj_map *m, hj_error *err);
 
 /* Free m->v (m itself is the caller's). */
 void hj_map_free(hj_map *m);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     FILE *fp;   /* the caller's open stream */
     int d;      /* indices per record, 1..8 */
@@ -33,5 +37,9 @@ int hj_mintime_put(hj_mintime_stream *s, const int *idx, double t);
  * twice keeps its first time.  HJ_EIO when path cannot be read,
  * HJ_EFORMAT for a truncated record or an index outside the grid. */
 int hj_mintime_read(const char *path, int d, int n, double *T, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

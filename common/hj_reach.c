@@ -484,8 +484,8 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
     if (!(pb->discount >= 0) || !isfinite(pb->discount))
         return hj_error_set(err, HJ_EINVAL, "reach: the discount must be finite and >= 0, got %g", pb->discount);
     if (!(pb->conv_tol >= 0)) return hj_error_set(err, HJ_EINVAL, "reach: the convergence tolerance must be >= 0");
-    if (!(pb->factor_cfl > 0) || !isfinite(pb->factor_cfl))
-        return hj_error_set(err, HJ_EINVAL, "reach: the CFL factor must be positive and finite, got %g", pb->factor_cfl);
+    if (!(pb->factor_cfl > 0 && pb->factor_cfl <= 1)) /* as hj_ls_ode: the schemes' stable range */
+        return hj_error_set(err, HJ_EINVAL, "reach: the CFL factor must be in (0, 1], got %g", pb->factor_cfl);
     return HJ_OK;
 }
 

@@ -51,6 +51,10 @@
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HJ_REACH_MAXIN 8
 
 enum { HJ_REACH_BOX, HJ_REACH_BALL };
@@ -172,7 +176,7 @@ typedef struct {
     int scheme;           /* HJ_LS_* upwind scheme, default HJ_LS_ENO2 */
     int order;            /* RK order 1..3, default 2 */
     int dissipation;      /* default HJ_LS_LLF */
-    double factor_cfl;    /* default 0.5 */
+    double factor_cfl;    /* in (0, 1] (hj_ls_ode.h), default 0.5 */
     int per_node;         /* 1: the kernel's per-node callbacks; 0 (default):
                            * batched rows, f and G evaluated once per node
                            * for H and every alpha_d (same bits) */
@@ -245,5 +249,9 @@ int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error
  * hj_reach_measure reads arrays on the grid (hj_ls_alloc), and an
  * interior-only array given to it is read at the wrong nodes. */
 int hj_reach_measure_compact(const hj_ls_grid *g, const double *phi, double *m, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -34,6 +34,10 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HJ_SUM_LIMBS 67
 /* Words after the limbs: counts of NaN, +Inf and -Inf terms. */
 enum { HJ_SUM_NAN = HJ_SUM_LIMBS, HJ_SUM_PINF, HJ_SUM_NINF, HJ_SUM_WORDS };
@@ -62,5 +66,9 @@ double hj_sum_value(const hj_sum *s);
 
 /* The correctly rounded sum of x[0..n-1]. */
 double hj_sum_array(const double *x, long n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Physical memory of the machine in bytes (0 if unknown). */
 double hj_sys_physical_memory(void);
 
@@ -26,5 +30,9 @@ double hj_sys_peak_rss_mb(void);
  * 4 KB, which on virtual machines is most of the cost of filling
  * gigabytes. */
 void *hj_sys_alloc_large(size_t bytes);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -41,6 +41,10 @@
 #include "hj_band.h"
 #include "hj_front.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A tolerance for the removal test (hj_ub_problem.snap): with the
  * dimension splitting, cells the front has left keep values 1e-12 .. 1e-3
  * away from +-1 (staircase residues of the anti-diffusive limiter) and the
@@ -151,5 +155,9 @@ typedef struct {
 } hj_ub_control;
 /* An hj_ls_velocity_fn over an hj_ub_control. */
 void hj_ub_control_velocity(double t, const double *x, double dx0, long n, int d, double *v, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

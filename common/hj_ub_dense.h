@@ -45,6 +45,10 @@
 #include "hj_error.h"
 #include "hj_ub.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The dynamics of control a over a row of len nodes: the row's first d - 1
  * coordinates in x[0..d-2], the last coordinate of node j in xlast[j];
  * writes f[k len + j], component k of f(t, x_j, a). */
@@ -85,5 +89,9 @@ double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax);
 /* V^{n+1} from V^n = v at time t, in place, with the step dt (from
  * hj_ub_dense_dt; dt > 0). */
 int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -25,6 +25,10 @@
 
 #include "hj_error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     int dim;      /* 2 or 3 */
     long n[3];    /* values per dimension (n[2] = 1 when dim = 2) */
@@ -68,5 +72,9 @@ void hj_vol_free(hj_vol *vol);
  * (control bytes replaced by spaces). */
 int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], const double dx[3],
                      const char *title, const char *name, const double *values, double fill, hj_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

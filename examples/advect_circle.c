@@ -18,9 +18,16 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-int main(void)
+int main(int argc, char **argv)
 {
+    if (argc > 1) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: advect_circle\n"
+                     "A circle carried by a constant wind (WENO5, TVD RK3); checks its area. No arguments.\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     enum { N = 101 };
     const double lo[2] = {-1, -1}, hi[2] = {1, 1}, c0[2] = {-0.4, -0.2}, r = 0.3;
     const hj_ls_bc bc[2] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}};

@@ -17,6 +17,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #define TRY(call) if (call) return fprintf(stderr, "double_integrator: %s\n", err.msg), 1
 
 static void f(double t, const double *x, double *o, void *c) { (void)t, (void)c, o[0] = x[1], o[1] = 0; }
@@ -26,6 +27,13 @@ static double target(double t, const double *x, void *c) { (void)t, (void)c; ret
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: double_integrator [OUT.dat]\n"
+                     "Minimum time of a double integrator, checked against the closed form;\n"
+                     "OUT.dat: the time-to-reach on the grid (x v ttr).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     const hj_ls_bc ex = {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, bc[2] = {ex, ex};
     hj_error err; hj_ls_grid g; hj_reach_dyn s; hj_reach_problem pb;
     TRY(hj_ls_grid_init(&g, 2, (double[]){-2, -2}, (double[]){2, 2}, (long[]){81, 81}, bc, &err));

@@ -31,6 +31,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #define TRY(call) if (call) return fprintf(stderr, "dubins_avoid_kernel: %s\n", err.msg), 1
 
 static const double v = 1, w = 1;
@@ -81,8 +82,13 @@ static int tube(long n, const char *slice, double *vol, double *edge)
 int main(int argc, char **argv)
 {
     double v21, e21, v41, e41;
-    if (argc > 2 || (argc > 1 && argv[1][0] == '-'))
-        return fprintf(stderr, "usage: dubins_avoid_kernel [SLICE.dat]\n"), 2;
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: dubins_avoid_kernel [SLICE.dat]\n"
+                     "Avoid tube of a Dubins car on the level set kernel; checks the edge of the set;\n"
+                     "SLICE.dat: the fine grid's slice th = pi (x y phi).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     if (tube(21, NULL, &v21, &e21) || tube(41, argc > 1 ? argv[1] : NULL, &v41, &e41)) return 1;
     printf("dubins_avoid_kernel: volume %.4f (21^2 x 20), %.4f (41^2 x 40); edge at y = 0, th = pi: %.4f, %.4f "
            "(exact sqrt(1.25) = %.4f)\n", v21, v41, e21, e41, sqrt(1.25));

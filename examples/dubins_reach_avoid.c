@@ -19,6 +19,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #define TRY(call) if (call) return fprintf(stderr, "dubins: %s\n", err.msg), 1
 
 static void f(double t, const double *x, double *o, void *c) { (void)t, (void)c, o[0] = cos(x[2]), o[1] = sin(x[2]), o[2] = 0; }
@@ -28,6 +29,13 @@ static double obstacle(double t, const double *x, void *c) { (void)t, (void)c; r
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: dubins_reach_avoid [SLICE.dat]\n"
+                     "Reach-avoid tube of a Dubins car with an obstacle; checks the edge of the set;\n"
+                     "SLICE.dat: the slice th = pi (x y phi).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     const hj_ls_bc ex = {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, bc[3] = {ex, ex, {HJ_LS_BC_PERIODIC, 0, 0}};
     hj_error err; hj_ls_grid g; hj_reach_dyn car; hj_reach_problem pb;
     TRY(hj_ls_grid_init_period(&g, 3, (double[]){-2, -2, 0}, (double[]){2, 2, 2 * HJ_PI}, (long[]){41, 41, 40}, bc, &err));

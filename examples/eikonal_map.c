@@ -22,6 +22,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 
 /* Travel time of the path (x0, y0) -> (xi, s) -> (x, y) through slowness 1 then 2. */
@@ -32,6 +33,13 @@ static double two_legs(double s, double x0, double y0, double xi, double x, doub
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: eikonal_map [MAP.pgm]\n"
+                     "Travel times through a slowness image (WENO fast sweeping); checks Snell's law;\n"
+                     "MAP.pgm: the slowness image (default data/two_layers.pgm).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     const char *path = argc > 1 ? argv[1] : "data/two_layers.pgm";
     hj_error err;
     hj_map map = {.xmin = 0, .xmax = 1, .ymin = 0, .ymax = 1};

@@ -29,13 +29,20 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 #define TRY(call) if (call) return fprintf(stderr, "eikonal_volume: %s\n", err.msg), 1
 
 int main(int argc, char **argv)
 {
     hj_error err; hj_vol vol; hj_eik_stats st;
-    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) return fprintf(stderr, "usage: eikonal_volume [T.vtk]\n"), 2;
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: eikonal_volume [T.vtk]\n"
+                     "Travel times from two sources through a 3-D volume with a wall; checks the straight rays;\n"
+                     "T.vtk: the travel times as legacy VTK.\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     TRY(hj_vol_read(&vol, "data/volume.txt", 0, 1, &err)); /* 0, 1: the PGM pixel range, unused for text */
     const hj_eik_grid g = {.dim = vol.dim, .n = {vol.n[0], vol.n[1], vol.n[2]}, .x0 = {0, 0, 0}, .dx = {1, 1, 1}};
     const size_t n = (size_t)g.n[0] * (size_t)g.n[1] * (size_t)g.n[2];

@@ -16,6 +16,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #define TRY(call) if (call) return fprintf(stderr, "planar_double_integrator_4d: %s\n", err.msg), 1
 
 static void f(double t, const double *x, double *o, void *c) { (void)t, (void)c, o[0] = x[2], o[1] = x[3], o[2] = o[3] = 0; }
@@ -24,6 +25,13 @@ static double target(double t, const double *x, void *c) { (void)t, (void)c; ret
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: planar_double_integrator_4d [SLICE.dat]\n"
+                     "4-D point mass with a thrust disc; checks the time from rest;\n"
+                     "SLICE.dat: the slice vx = vy = 0 (x y ttr).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     const hj_ls_bc ex = {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, bc[4] = {ex, ex, ex, ex};
     hj_error err; hj_ls_grid g; hj_reach_dyn s; hj_reach_problem pb;
     TRY(hj_ls_grid_init(&g, 4, (double[]){-1.6, -1.6, -1.2, -1.2}, (double[]){1.6, 1.6, 1.2, 1.2}, (long[]){13, 13, 13, 13}, bc, &err));

@@ -17,6 +17,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #define TRY(call) if (call) return fprintf(stderr, "three_double_integrators_6d: %s\n", err.msg), 1
 
 static void f(double t, const double *x, double *o, void *c) { (void)t, (void)c; for (int k = 0; k < 6; k += 2) o[k] = x[k + 1], o[k + 1] = 0; }
@@ -26,6 +27,13 @@ static double box(double t, const double *x, void *c) { (void)t; double m = -INF
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc > 1 && argv[1][0] == '-')) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: three_double_integrators_6d [SLICE.dat]\n"
+                     "6-D: three double integrators; checks the set against the product of the 2-D sets;\n"
+                     "SLICE.dat: the slice x2 = v2 = x3 = v3 = 0 (x v phi6 phi2).\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     const long N = 7;
     hj_ls_bc bc[6];
     double lo[6], hi[6];

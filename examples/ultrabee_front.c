@@ -20,6 +20,7 @@
 #include <hj/hj.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 typedef struct {
     double c[2], r, v[2], t;
@@ -49,8 +50,14 @@ static int inside(const double *x, void *ctx)
     return dx * dx + dy * dy <= D->r * D->r;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    if (argc > 1) { /* --help: the usage, exit 0; a bad command line: 2 */
+        const int help = argc == 2 && !strcmp(argv[1], "--help");
+        return fputs("usage: ultrabee_front\n"
+                     "A front carried by the Ultra-Bee scheme on the sparse band; checks the L1 error. No arguments.\n",
+                     help ? stdout : stderr), help ? 0 : 2;
+    }
     enum { N = 200 };
     disc D = {{-0.4, -0.2}, 0.3, {1.0, 0.5}, 0.6};
     hj_ub_problem pb = {.d = 2, .n = N, .ncontrols = 1, .dyn = dyn, .cfl = 0.9, .boundary = 1, .snap = HJ_UB_SNAP,

@@ -217,6 +217,69 @@ static void measure_exact_threads(void **state)
     hj_ls_free(phi);
 }
 
+/* A NaN in phi is HJ_ENONFINITE naming the node, on the front (the
+ * measure was NaN) or away from it (it was finite and wrong), in the
+ * upper corner nodes and in a ghost the cells read; the lowest node is
+ * named whatever the number of threads; the sum is left untouched.
+ * Infinite values keep their sign's meaning. */
+static void measure_nan(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 21); /* dx = 0.1 */
+    double *phi = hj_ls_alloc(&g), m;
+    const double c[2] = {0, 0};
+    hj_error err;
+    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, phi, NULL), HJ_OK);
+    long far[2] = {2, 18}, front[2] = {15, 10}, corner[2] = {20, 20};
+    const size_t kf = hj_ls_index(&g, far), kc = hj_ls_index(&g, corner);
+    phi[kf] = NAN;
+    assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "NaN at x = (-0.8, 0.8)"));
+    assert_int_equal(hj_ls_measure_radius(&g, phi, &m, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_measure_periodic(&g, phi, 1, &m, &err), HJ_ENONFINITE);
+    phi[kf] = 1;
+    phi[hj_ls_index(&g, front)] = NAN;
+    assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "(0.5, 0)"));
+    /* With two NaNs the lower one is named, on 1 to 3 threads. */
+    phi[kc] = NAN;
+    for (int t = 1; t <= 3; t++) {
+#ifdef _OPENMP
+        omp_set_num_threads(t);
+#endif
+        assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);
+        assert_non_null(strstr(err.msg, "(0.5, 0)"));
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, phi, NULL), HJ_OK);
+    phi[kc] = NAN; /* only the last cell's upper corner */
+    assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "(1, 1)"));
+    /* Cells up to N along dimension 1 read the ghost row above. */
+    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, phi, NULL), HJ_OK);
+    hj_ls_fill_ghosts(&g, phi);
+    long ghost[2] = {3, 21};
+    phi[hj_ls_index(&g, ghost)] = NAN;
+    hj_sum s;
+    hj_sum_init(&s);
+    assert_int_equal(hj_ls_measure_add(&g, phi, (const long[]){20, 20}, &s, &err), HJ_OK);
+    const double before = hj_sum_value(&s);
+    assert_int_equal(hj_ls_measure_add(&g, phi, (const long[]){20, 21}, &s, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "(-0.7, 1.1)"));
+    const double after = hj_sum_value(&s);
+    assert_memory_equal(&before, &after, sizeof(double));
+    /* -inf and +inf are signs, not errors: the whole box, then nothing. */
+    for (size_t k = 0; k < g.total; k++) phi[k] = -INFINITY;
+    assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_OK);
+    assert_close(m, 4, 1e-15, 0);
+    for (size_t k = 0; k < g.total; k++) phi[k] = INFINITY;
+    assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_OK);
+    assert_true(m == 0);
+    hj_ls_free(phi);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -225,6 +288,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(writers, hj_test_mkdir, hj_test_rmdir),
         cmocka_unit_test(periodic_and_radius),
         cmocka_unit_test(measure_exact_threads),
+        cmocka_unit_test(measure_nan),
     };
     return cmocka_run_group_tests_name("hj_ls_measure", tests, NULL, NULL);
 }

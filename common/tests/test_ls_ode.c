@@ -191,6 +191,20 @@ static void error_reports(void **state)
     assert_int_equal(hj_ls_ode(4, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
     double bad[2] = {1, 0};
     assert_int_equal(hj_ls_ode(1, &g, &c.base, bad, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    /* FactorCFL outside (0, 1], where the schemes are stable: refused
+     * before any step, y untouched; 1 itself is allowed. */
+    c.rate = 1;
+    const double factors[] = {5, 1.0000001, 0, -0.5, NAN, INFINITY};
+    for (int q = 0; q < 6; q++) {
+        for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+        hj_ls_ode_defaults(&o);
+        o.factor_cfl = factors[q];
+        assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "FactorCFL must be in (0, 1]"));
+        assert_true(y[g.offset] == 0);
+    }
+    o.factor_cfl = 1;
+    assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_OK);
     hj_ls_free(y);
 }
 

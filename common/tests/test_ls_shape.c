@@ -167,5 +167,48 @@ static void star(void **state)
     hj_ls_free(phi);
 }
 
+/* A NaN or infinite parameter is HJ_ENONFINITE and leaves the array as
+ * it was (a NaN centre used to fill it with NaN and return 0). */
+static void nonfinite_parameters(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2);
+    double *a = hj_ls_alloc(&g), *pts = NULL;
+    hj_error err;
+    const double ok[2] = {0, 0}, nan_c[2] = {0, NAN}, inf_c[2] = {INFINITY, 0}, one[2] = {1, 1};
+    const double lo[2] = {-0.5, -0.5}, hi[2] = {0.5, 0.5}, nan_lo[2] = {NAN, -0.5}, nan_w[2] = {1, NAN};
+    assert_int_equal(hj_ls_shape_sphere(&g, nan_c, 0.5, a, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "dimension 1"));
+    assert_int_equal(hj_ls_shape_sphere(&g, inf_c, 0.5, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_sphere(&g, ok, NAN, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_sphere(&g, ok, INFINITY, a, &err), HJ_ENONFINITE);
+    int ign = 1; /* the centre of an ignored dimension is not used */
+    assert_int_equal(hj_ls_shape_cylinder(&g, &ign, 1, nan_c, 0.5, a, &err), HJ_OK);
+    ign = 0;
+    assert_int_equal(hj_ls_shape_cylinder(&g, &ign, 1, nan_c, 0.5, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_rectangle_corners(&g, nan_lo, hi, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_rectangle_corners(&g, lo, nan_c, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_rectangle_center(&g, nan_c, one, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_rectangle_center(&g, inf_c, one, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_rectangle_center(&g, ok, nan_w, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_hyperplane(&g, one, nan_c, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_hyperplane(&g, inf_c, ok, a, &err), HJ_ENONFINITE);
+    const hj_ls_star bad_star = {0.25, NAN, 7};
+    assert_int_equal(hj_ls_shape_star(&g, &bad_star, a, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_curve(&bad_star, NULL, 0, 10, &pts, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_curve(NULL, nan_c, 0.5, 10, &pts, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_curve(NULL, ok, INFINITY, 10, &pts, &err), HJ_ENONFINITE);
+    assert_int_equal(hj_ls_shape_curve(NULL, ok, 0.5, 0, &pts, &err), HJ_EINVAL);
+    assert_null(pts);
+    /* Only the cylinder call above wrote (finite values): no NaN anywhere. */
+    for (size_t k = 0; k < g.total; k++) assert_false(isnan(a[k]));
+    /* Infinite sides of a box stay allowed. */
+    const double half_lo[2] = {-INFINITY, -0.5}, inf_w[2] = {INFINITY, 1};
+    assert_int_equal(hj_ls_shape_rectangle_corners(&g, half_lo, hi, a, &err), HJ_OK);
+    assert_int_equal(hj_ls_shape_rectangle_center(&g, ok, inf_w, a, &err), HJ_OK);
+    hj_ls_free(a);
+}
+
 HJ_TEST_MAIN("hj_ls_shape", NULL, NULL, cmocka_unit_test(shapes_1d), cmocka_unit_test(shapes_2d),
-             cmocka_unit_test(shapes_3d), cmocka_unit_test(errors), cmocka_unit_test(star))
+             cmocka_unit_test(shapes_3d), cmocka_unit_test(errors), cmocka_unit_test(star),
+             cmocka_unit_test(nonfinite_parameters))

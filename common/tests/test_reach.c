@@ -760,6 +760,13 @@ static void invalid_problems(void **state)
     pb.target.fn = interval, pb.target.ctx = &r, pb.horizon = 0;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     pb.horizon = 1;
+    /* A CFL factor beyond the integrators' stable range (0, 1], on both
+     * paths (the fused one took it as given). */
+    pb.factor_cfl = 5;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "(0, 1]"));
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    pb.factor_cfl = 0.5;
     s.nx = 2;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "2-D dynamics on a 1-D grid"));
