@@ -370,6 +370,16 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
 
 /* ---- convection in 2-D with a cheap scheme: one loop per row ------- */
 
+/* Row r's entry in the steady velocity's cache (convection_vcache), after
+ * the velocity rows: per dimension 1 if v_d has flow on the row (a value
+ * not 0, NaN included), then the row's largest inverse CFL bound (NaN if
+ * one is NaN). */
+static inline const double *convection_vcache_row(const hj_ls_grid *g, const double *cache, size_t r)
+{
+    const size_t dim = (size_t)g->dim;
+    return cache + g->rows * dim * (size_t)g->N[0] + r * (dim + 1);
+}
+
 /* The upwind derivative of node j along stride s for velocity v: the left
  * or right one of hj_ls_upwind_row_eps (first order or ENO2, the same
  * expressions), chosen as convection_row chooses it (v > 0: left). */
@@ -401,10 +411,10 @@ typedef struct {
 /* One row: G = -(v_0 D_0 + v_1 D_1) over the dimensions with flow (f0, f1),
  * in the order and with the expressions of convection_row (the same bits:
  * 0 - x and 0 + x start the sums), then the stage's combination and max
- * |dst| as conv_stage_row, and the running maximum of the inverse bound
- * per node in tm.  Every value stays in registers: no row of derivatives,
+ * |dst| as conv_stage_row, and (cfl = 1) the running maximum of the
+ * inverse bound per node in tm.  Every value stays in registers: no row of derivatives,
  * velocity products or G goes through memory. */
-static inline __attribute__((always_inline)) void conv2_row_k(int eno2, int f0, int f1, int mode, long n,
+static inline __attribute__((always_inline)) void conv2_row_k(int eno2, int f0, int f1, int mode, int cfl, long n,
                                                               const double *restrict p, ptrdiff_t s1,
                                                               const double *inv, const double *restrict v0,
                                                               const double *restrict v1, const conv2_out *o,
@@ -435,32 +445,35 @@ static inline __attribute__((always_inline)) void conv2_row_k(int eno2, int f0, 
             const double av = v < 0 ? -v : v;
             m = av > m ? av : m;
         }
-        tm[j] = (cf > tm[j] || cf != cf) ? cf : tm[j];
+        if (cfl) tm[j] = (cf > tm[j] || cf != cf) ? cf : tm[j];
     }
     *smax = m;
     *sbad |= nf != 0;
 }
 
-#define CONV2_FLOWS(E, M)                                                                                  \
+#define CONV2_FLOWS(E, M, C)                                                                               \
     switch (f0 + 2 * f1) {                                                                                 \
-    case 0: conv2_row_k(E, 0, 0, M, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                      \
-    case 1: conv2_row_k(E, 1, 0, M, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                      \
-    case 2: conv2_row_k(E, 0, 1, M, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                      \
-    default: conv2_row_k(E, 1, 1, M, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                     \
+    case 0: conv2_row_k(E, 0, 0, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    case 1: conv2_row_k(E, 1, 0, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    case 2: conv2_row_k(E, 0, 1, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    default: conv2_row_k(E, 1, 1, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                  \
     }
-#define CONV2_MODES(E)                     \
-    switch (o->mode) {                     \
-    case 0: CONV2_FLOWS(E, 0) break;       \
-    case 1: CONV2_FLOWS(E, 1) break;       \
-    default: CONV2_FLOWS(E, 2) break;      \
+#define CONV2_MODES(E, C)                     \
+    switch (o->mode) {                        \
+    case 0: CONV2_FLOWS(E, 0, C) break;       \
+    case 1: CONV2_FLOWS(E, 1, C) break;       \
+    default: CONV2_FLOWS(E, 2, C) break;      \
     }
 
 HJ_LS_TERM_CLONES
-static void conv2_row(int eno2, int f0, int f1, long n, const double *p, ptrdiff_t s1, const double *inv,
+static void conv2_row(int eno2, int f0, int f1, int cfl, long n, const double *p, ptrdiff_t s1, const double *inv,
                       const double *v0, const double *v1, const conv2_out *o, double *tm, double *smax, int *sbad)
 {
-    if (eno2) CONV2_MODES(1)
-    else CONV2_MODES(0)
+    /* cfl = 0: the bound is the cache's (the velocity does not change) */
+    if (eno2 && cfl) CONV2_MODES(1, 1)
+    else if (eno2) CONV2_MODES(1, 0)
+    else if (cfl) CONV2_MODES(0, 1)
+    else CONV2_MODES(0, 0)
 }
 #undef CONV2_MODES
 #undef CONV2_FLOWS
@@ -475,12 +488,14 @@ static int convection_row2(const void *term, double t, double *y, double *ydot, 
     const long n = g->N[0];
     const double *vel[2];
     int flow[2];
-    for (int d = 0; d < 2; d++) {
+    const double *row = ps->vcache ? convection_vcache_row(g, ps->vcache, rc->r) : NULL;
+    for (int d = 0; d < 2 && row; d++)
+        vel[d] = ps->vcache + ((size_t)rc->r * 2 + (size_t)d) * (size_t)n, flow[d] = row[d] != 0;
+    for (int d = 0; d < 2 && !row; d++) {
         double *v = rc->ws + (size_t)d * (size_t)n;
         vel[d] = v;
         if (c->velocity_fn || c->velocity_array[d]) {
-            if (ps->vcache) vel[d] = ps->vcache + ((size_t)rc->r * 2 + (size_t)d) * (size_t)n;
-            else if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
+            if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
             else vel[d] = c->velocity_array[d] + rc->k;
             /* NaN counts as flow: it reaches the CFL bound; the first
              * nonzero decides (usually the row's first node) */
@@ -500,24 +515,26 @@ static int convection_row2(const void *term, double t, double *y, double *ydot, 
         o.out = st->dst + rc->k, o.y0 = st->y0 + rc->k, o.a = st->a, o.b = st->b, o.dt = st->dt;
     }
     const double invs[4] = {1.0 / g->dx[0], 1.0 / g->dx[1], 1 / g->dx[0], 1 / g->dx[1]};
-    conv2_row(c->scheme == HJ_LS_ENO2, flow[0], flow[1], n, y + rc->k, g->stride[1], invs, vel[0], vel[1], &o,
+    conv2_row(c->scheme == HJ_LS_ENO2, flow[0], flow[1], !row, n, y + rc->k, g->stride[1], invs, vel[0], vel[1], &o,
               rc->tmax, &rc->smax, &rc->sbad);
     (void)bad;
-    *inv = 0;
+    *inv = row ? row[2] : 0; /* the row's maximum, as the cache was filled */
     return HJ_OK;
 }
 
-/* The steady velocity's rows, v_d of row r at (r dim + d) n: evaluated
- * into a new cache on the first call (velocity_fn as convection_row calls
- * it, the same bits), NULL where there is none (no flag, no callback, over
- * the cap, no memory: the callback per stage then). */
+/* The steady velocity's rows, v_d of row r at (r dim + d) n, and per row
+ * its flow flags and largest inverse bound (convection_vcache_row, the
+ * bound as convection_row sums it: the same bits): evaluated into a new
+ * cache on the first call (velocity_fn as convection_row calls it), NULL
+ * where there is none (no flag, no callback, over the cap, no memory: the
+ * callback per stage then). */
 static const double *convection_vcache(hj_ls_convection *c, double t)
 {
     const hj_ls_grid *g = c->grid;
     if (!c->velocity_steady || !c->velocity_fn) return NULL;
     if (c->velocity_cache) return c->velocity_cache;
-    const size_t len = g->rows * (size_t)g->dim * (size_t)g->N[0];
-    if (len == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
+    const size_t len = g->rows * (size_t)g->dim * ((size_t)g->N[0] + 1) + g->rows;
+    if (g->rows == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
     double *v = malloc(sizeof(double) * len);
     if (!v) return NULL;
     const long n = g->N[0];
@@ -529,8 +546,26 @@ static const double *convection_vcache(hj_ls_convection *c, double t)
         double x[HJ_LS_MAXDIM];
         hj_ls_row(g, r, idx);
         hj_ls_coord(g, idx, x);
-        for (int d = 0; d < g->dim; d++)
-            c->velocity_fn(t, x, g->dx[0], n, d, v + (r * (size_t)g->dim + (size_t)d) * (size_t)n, c->ctx);
+        double *row = (double *)convection_vcache_row(g, v, r), m = 0;
+        for (int d = 0; d < g->dim; d++) {
+            double *vd = v + (r * (size_t)g->dim + (size_t)d) * (size_t)n;
+            c->velocity_fn(t, x, g->dx[0], n, d, vd, c->ctx);
+            long j = 0;
+            while (j < n && !(vd[j] != 0)) j++;
+            row[d] = j < n;
+        }
+        for (long j = 0; j < n; j++) {
+            double cf = 0; /* convection_row's sum over the dimensions with flow */
+            int first = 1;
+            for (int d = 0; d < g->dim; d++)
+                if (row[d] != 0) {
+                    const double vj = v[(r * (size_t)g->dim + (size_t)d) * (size_t)n + (size_t)j];
+                    cf = (first ? 0.0 : cf) + fabs(vj) * (1 / g->dx[d]);
+                    first = 0;
+                }
+            if (m == m && (cf > m || cf != cf)) m = cf; /* a NaN sticks */
+        }
+        row[g->dim] = m;
     }
     return c->velocity_cache = v;
 }
