@@ -369,17 +369,173 @@ static int convection_row(const void *term, double t, double *y, double *ydot, r
     return HJ_OK;
 }
 
-/* The steady velocity's rows, v_d of row r at (r dim + d) n: evaluated
- * into a new cache on the first call (velocity_fn as convection_row calls
- * it, the same bits), NULL where there is none (no flag, no callback, over
- * the cap, no memory: the callback per stage then). */
+/* ---- convection in 2-D with a cheap scheme: one loop per row ------- */
+
+/* Row r's entry in the steady velocity's cache (convection_vcache), after
+ * the velocity rows: per dimension 1 if v_d has flow on the row (a value
+ * not 0, NaN included), then the row's largest inverse CFL bound (NaN if
+ * one is NaN). */
+static inline const double *convection_vcache_row(const hj_ls_grid *g, const double *cache, size_t r)
+{
+    const size_t dim = (size_t)g->dim;
+    return cache + g->rows * dim * (size_t)g->N[0] + r * (dim + 1);
+}
+
+/* The upwind derivative of node j along stride s for velocity v: the left
+ * or right one of hj_ls_upwind_row_eps (first order or ENO2, the same
+ * expressions), chosen as convection_row chooses it (v > 0: left). */
+static inline __attribute__((always_inline)) double conv2_side(int eno2, const double *restrict p, ptrdiff_t s,
+                                                               long j, double inv, double v)
+{
+    double l, r;
+    if (!eno2) {
+        l = (p[j] - p[j - s]) * inv, r = (p[j + s] - p[j]) * inv;
+    } else {
+        const double m2 = (p[j - s] - p[j - 2 * s]) * inv, m1 = (p[j] - p[j - s]) * inv,
+                     z0 = (p[j + s] - p[j]) * inv, p1 = (p[j + 2 * s] - p[j + s]) * inv;
+        const double e2m1 = 0.5 * (m1 - m2), e20 = 0.5 * (z0 - m1), e2p1 = 0.5 * (p1 - z0);
+        l = m1 + (fabs(e2m1) < fabs(e20) ? e2m1 : e20);
+        r = z0 - (fabs(e20) < fabs(e2p1) ? e20 : e2p1);
+    }
+    return v > 0 ? l : r;
+}
+
+/* The outputs of a 2-D row: G into ydot (mode 0) or the fused stage into
+ * dst apart from y0 (1) or in place (2, y0 read through dst). */
+typedef struct {
+    int mode;
+    double *out;       /* ydot or dst, at the row's first node */
+    const double *y0;  /* mode 1 */
+    double a, b, dt;
+} conv2_out;
+
+/* One row: G = -(v_0 D_0 + v_1 D_1) over the dimensions with flow (f0, f1),
+ * in the order and with the expressions of convection_row (the same bits:
+ * 0 - x and 0 + x start the sums), then the stage's combination and max
+ * |dst| as conv_stage_row, and (cfl = 1) the running maximum of the
+ * inverse bound per node in tm.  Every value stays in registers: no row of derivatives,
+ * velocity products or G goes through memory. */
+static inline __attribute__((always_inline)) void conv2_row_k(int eno2, int f0, int f1, int mode, int cfl, long n,
+                                                              const double *restrict p, ptrdiff_t s1,
+                                                              const double *inv, const double *restrict v0,
+                                                              const double *restrict v1, const conv2_out *o,
+                                                              double *restrict tm, double *smax, int *sbad)
+{
+    const double inv0 = inv[0], inv1 = inv[1], idx0 = inv[2], idx1 = inv[3];
+    const double a = o->a, b = o->b, dt = o->dt;
+    double *restrict out = o->out;
+    const double *restrict y0 = mode == 1 ? o->y0 : NULL;
+    double m = *smax, nf = 0;
+    SIMD_CLAUSES(reduction(max : m) reduction(+ : nf))
+    for (long j = 0; j < n; j++) {
+        double ac = 0, cf = 0;
+        if (f0) {
+            const double vj = v0[j], D = conv2_side(eno2, p, 1, j, inv0, vj);
+            ac = 0.0 - vj * D, cf = 0.0 + fabs(vj) * idx0;
+        }
+        if (f1) {
+            const double vj = v1[j], D = conv2_side(eno2, p, s1, j, inv1, vj);
+            ac = (f0 ? ac : 0.0) - vj * D, cf = (f0 ? cf : 0.0) + fabs(vj) * idx1;
+        }
+        if (mode == 0)
+            out[j] = ac;
+        else {
+            const double v = a * (mode == 1 ? y0[j] : out[j]) + b * (p[j] + dt * ac);
+            out[j] = v;
+            nf += v - v;
+            const double av = v < 0 ? -v : v;
+            m = av > m ? av : m;
+        }
+        if (cfl) tm[j] = (cf > tm[j] || cf != cf) ? cf : tm[j];
+    }
+    *smax = m;
+    *sbad |= nf != 0;
+}
+
+#define CONV2_FLOWS(E, M, C)                                                                               \
+    switch (f0 + 2 * f1) {                                                                                 \
+    case 0: conv2_row_k(E, 0, 0, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    case 1: conv2_row_k(E, 1, 0, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    case 2: conv2_row_k(E, 0, 1, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                   \
+    default: conv2_row_k(E, 1, 1, M, C, n, p, s1, inv, v0, v1, o, tm, smax, sbad); break;                  \
+    }
+#define CONV2_MODES(E, C)                     \
+    switch (o->mode) {                        \
+    case 0: CONV2_FLOWS(E, 0, C) break;       \
+    case 1: CONV2_FLOWS(E, 1, C) break;       \
+    default: CONV2_FLOWS(E, 2, C) break;      \
+    }
+
+HJ_LS_TERM_CLONES
+static void conv2_row(int eno2, int f0, int f1, int cfl, long n, const double *p, ptrdiff_t s1, const double *inv,
+                      const double *v0, const double *v1, const conv2_out *o, double *tm, double *smax, int *sbad)
+{
+    /* cfl = 0: the bound is the cache's (the velocity does not change) */
+    if (eno2 && cfl) CONV2_MODES(1, 1)
+    else if (eno2) CONV2_MODES(1, 0)
+    else if (cfl) CONV2_MODES(0, 1)
+    else CONV2_MODES(0, 0)
+}
+#undef CONV2_MODES
+#undef CONV2_FLOWS
+
+/* The row evaluator of a 2-D convection with a cheap scheme (the velocity
+ * rows as convection_row finds them). */
+static int convection_row2(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const conv_pass *ps = term;
+    const hj_ls_convection *c = ps->c;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const double *vel[2];
+    int flow[2];
+    const double *row = ps->vcache ? convection_vcache_row(g, ps->vcache, rc->r) : NULL;
+    for (int d = 0; d < 2 && row; d++)
+        vel[d] = ps->vcache + ((size_t)rc->r * 2 + (size_t)d) * (size_t)n, flow[d] = row[d] != 0;
+    for (int d = 0; d < 2 && !row; d++) {
+        double *v = rc->ws + (size_t)d * (size_t)n;
+        vel[d] = v;
+        if (c->velocity_fn || c->velocity_array[d]) {
+            if (c->velocity_fn) c->velocity_fn(t, rc->x, g->dx[0], n, d, v, c->ctx);
+            else vel[d] = c->velocity_array[d] + rc->k;
+            /* NaN counts as flow: it reaches the CFL bound; the first
+             * nonzero decides (usually the row's first node) */
+            const double *vd = vel[d];
+            long j = 0;
+            while (j < n && !(vd[j] != 0)) j++;
+            flow[d] = j < n;
+        } else {
+            flow[d] = c->velocity[d] != 0;
+            for (long j = 0; j < n; j++) v[j] = c->velocity[d];
+        }
+    }
+    const hj_ls_stage *st = ps->stage;
+    conv2_out o = {0, ydot ? ydot + rc->k : NULL, NULL, 0, 0, 0};
+    if (st) {
+        o.mode = st->y0 == st->dst ? 2 : 1;
+        o.out = st->dst + rc->k, o.y0 = st->y0 + rc->k, o.a = st->a, o.b = st->b, o.dt = st->dt;
+    }
+    const double invs[4] = {1.0 / g->dx[0], 1.0 / g->dx[1], 1 / g->dx[0], 1 / g->dx[1]};
+    conv2_row(c->scheme == HJ_LS_ENO2, flow[0], flow[1], !row, n, y + rc->k, g->stride[1], invs, vel[0], vel[1], &o,
+              rc->tmax, &rc->smax, &rc->sbad);
+    (void)bad;
+    *inv = row ? row[2] : 0; /* the row's maximum, as the cache was filled */
+    return HJ_OK;
+}
+
+/* The steady velocity's rows, v_d of row r at (r dim + d) n, and per row
+ * its flow flags and largest inverse bound (convection_vcache_row, the
+ * bound as convection_row sums it: the same bits): evaluated into a new
+ * cache on the first call (velocity_fn as convection_row calls it), NULL
+ * where there is none (no flag, no callback, over the cap, no memory: the
+ * callback per stage then). */
 static const double *convection_vcache(hj_ls_convection *c, double t)
 {
     const hj_ls_grid *g = c->grid;
     if (!c->velocity_steady || !c->velocity_fn) return NULL;
     if (c->velocity_cache) return c->velocity_cache;
-    const size_t len = g->rows * (size_t)g->dim * (size_t)g->N[0];
-    if (len == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
+    const size_t len = g->rows * (size_t)g->dim * ((size_t)g->N[0] + 1) + g->rows;
+    if (g->rows == 0 || len > c->velocity_cache_max / sizeof(double)) return NULL;
     double *v = malloc(sizeof(double) * len);
     if (!v) return NULL;
     const long n = g->N[0];
@@ -391,8 +547,26 @@ static const double *convection_vcache(hj_ls_convection *c, double t)
         double x[HJ_LS_MAXDIM];
         hj_ls_row(g, r, idx);
         hj_ls_coord(g, idx, x);
-        for (int d = 0; d < g->dim; d++)
-            c->velocity_fn(t, x, g->dx[0], n, d, v + (r * (size_t)g->dim + (size_t)d) * (size_t)n, c->ctx);
+        double *row = (double *)convection_vcache_row(g, v, r), m = 0;
+        for (int d = 0; d < g->dim; d++) {
+            double *vd = v + (r * (size_t)g->dim + (size_t)d) * (size_t)n;
+            c->velocity_fn(t, x, g->dx[0], n, d, vd, c->ctx);
+            long j = 0;
+            while (j < n && !(vd[j] != 0)) j++;
+            row[d] = j < n;
+        }
+        for (long j = 0; j < n; j++) {
+            double cf = 0; /* convection_row's sum over the dimensions with flow */
+            int first = 1;
+            for (int d = 0; d < g->dim; d++)
+                if (row[d] != 0) {
+                    const double vj = v[(r * (size_t)g->dim + (size_t)d) * (size_t)n + (size_t)j];
+                    cf = (first ? 0.0 : cf) + fabs(vj) * (1 / g->dx[d]);
+                    first = 0;
+                }
+            if (m == m && (cf > m || cf != cf)) m = cf; /* a NaN sticks */
+        }
+        row[g->dim] = m;
     }
     return c->velocity_cache = v;
 }
@@ -412,8 +586,11 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     ps.vcache = convection_vcache((hj_ls_convection *)c, t);
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], convection_row, &ps, t, y,
-                            ydot, &m, NULL, stage, "convection velocity", err);
+    /* 2-D with a cheap scheme: the one-loop rows of convection_row2 */
+    const row_fn f = g->dim == 2 && (c->scheme == HJ_LS_ENO2 || c->scheme == HJ_LS_UPWIND_FIRST) ? convection_row2
+                                                                                                   : convection_row;
+    int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
+                            stage, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;

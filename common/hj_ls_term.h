@@ -133,7 +133,8 @@ typedef struct {
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme);
 /* velocity_steady = 1 (default 0) declares that velocity_fn returns the
  * same values at every t: the first evaluation then calls it once per row
- * and dimension into a cache of dim nodes doubles that later evaluations
+ * and dimension into a cache of dim nodes doubles (and (dim + 1) rows
+ * more: per row its flow flags and CFL maximum) that later evaluations
  * read instead (the same bits, no callback per stage).  When the cache
  * would exceed velocity_cache_max bytes or cannot be allocated, the term
  * calls velocity_fn per stage as without the flag.  The cache belongs to

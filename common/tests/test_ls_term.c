@@ -124,6 +124,52 @@ static void convection_equals_upwind_sum(void **state)
     hj_ls_free(y), hj_ls_free(f), hj_ls_free(l), hj_ls_free(r), hj_ls_free(ex);
 }
 
+/* In 2-D the cheap schemes take convection's one-loop rows: G equals, bit
+ * for bit, hj_ls_upwind's derivatives selected by the sign of v and summed
+ * in dimension order, and the bound is 1 / max (|v_0| / dx_0 + |v_1| /
+ * dx_1), for the shear called per stage or cached (velocity_steady, twice:
+ * the cache's bound), whose v_0 vanishes on the row x_1 = 0. */
+static void convection_2d_equals_upwind_sum(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 21, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *l = hj_ls_alloc(&g), *r = hj_ls_alloc(&g),
+           *v = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, disc, NULL);
+    long idx[2];
+    double x[2];
+    const int schemes[2] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2};
+    for (int q = 0; q < 2; q++)
+        for (int steady = 0; steady < 3; steady++) {
+            hj_ls_convection c;
+            hj_ls_convection_init(&c, &g, schemes[q]);
+            c.velocity_fn = shear;
+            c.velocity_steady = steady > 0;
+            double b;
+            for (int e = 0; e < (steady == 2 ? 2 : 1); e++)
+                assert_int_equal(c.base.eval(&c.base, 0, y, f, &b, NULL), HJ_OK);
+            double minv = 0;
+            for (size_t row = 0; row < g.rows; row++) {
+                const size_t k = hj_ls_row(&g, row, idx);
+                hj_ls_coord(&g, idx, x);
+                double ex[21] = {0}, cf[21] = {0};
+                for (int d = 0; d < 2; d++) {
+                    assert_int_equal(hj_ls_upwind(&g, schemes[q], y, d, l, r, NULL), HJ_OK);
+                    shear(0, x, g.dx[0], g.N[0], d, v, NULL);
+                    for (long j = 0; j < g.N[0]; j++) {
+                        ex[j] -= v[j] * (v[j] > 0 ? l[k + (size_t)j] : r[k + (size_t)j]);
+                        cf[j] += fabs(v[j]) * (1 / g.dx[d]);
+                    }
+                }
+                assert_memory_equal(f + k, ex, sizeof(double) * (size_t)g.N[0]);
+                for (long j = 0; j < g.N[0]; j++) minv = cf[j] > minv ? cf[j] : minv;
+            }
+            assert_true(b == 1 / minv);
+            hj_ls_convection_free(&c);
+        }
+    hj_ls_free(y), hj_ls_free(f), hj_ls_free(l), hj_ls_free(r), hj_ls_free(v);
+}
+
 /* The same rotation given as arrays and as a callback: identical. */
 static void convection_arrays_equal_callback(void **state)
 {
@@ -942,6 +988,7 @@ static void dissipation_names(void **state)
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_orders),
                         cmocka_unit_test(convection_equals_upwind_sum),
+                        cmocka_unit_test(convection_2d_equals_upwind_sum),
                         cmocka_unit_test(convection_arrays_equal_callback),
                         cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
