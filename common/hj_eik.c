@@ -1175,6 +1175,32 @@ static void demote_first(eik_work *w, double change, int q, int all)
     dilate_box3(w, w->fo); /* leaves 0 / 1 */
 }
 
+/* Units.  The local solve squares products of f, T0 / h and tau (f^4 N^4
+ * in its discriminant) and keeps changes of T in floats: a slowness of
+ * 1e99 overflowed them (every node outside the source region came out
+ * unreachable, with HJ_OK), 1e-100 underflowed them (T = 0).  |grad T| = f
+ * is homogeneous: with f = 2^ef f' and x = 2^eh x', T = 2^(ef + eh) T'.
+ * A largest slowness or spacing outside [2^-32, 2^32] is solved in the
+ * units that bring it to [1, 2) (powers of two: exact); data inside is
+ * solved as given, to the bit as before.  Returns the exponent e of
+ * v = 2^e v' (0: as given). */
+static int unit_exp(double v) { return v > 0x1p32 || v < 0x1p-32 ? ilogb(v) : 0; }
+
+/* The exponent for the slowness: of its largest value outside obstacles;
+ * 0 if a value is not finite and > 0 (the set-up reports it as given). */
+static int slowness_exp(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle)
+{
+    if (!f) return unit_exp(f_const);
+    const size_t n = (size_t)g->n[0] * (size_t)g->n[1] * (size_t)(g->dim == 3 ? g->n[2] : 1);
+    double fmax = 0;
+    for (size_t u = 0; u < n; u++) {
+        if (obstacle && obstacle[u]) continue;
+        if (!(f[u] > 0) || !isfinite(f[u])) return 0;
+        fmax = f[u] > fmax ? f[u] : fmax;
+    }
+    return fmax > 0 ? unit_exp(fmax) : 0;
+}
+
 static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc, const hj_eik_options *opt,
                        double f_const, const double *f, hj_error *err)
 {
@@ -1214,6 +1240,11 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     int rc = check_input(g, src, nsrc, opt, f_const, f, err);
     if (rc != HJ_OK) return rc;
 
+    /* solver units (unit_exp): f = 2^ef f', x = 2^eh x', T = 2^et T' */
+    double hmax_in = 0;
+    for (int d = 0; d < g->dim; d++) hmax_in = g->dx[d] > hmax_in ? g->dx[d] : hmax_in;
+    const int ef = slowness_exp(g, f, f_const, obstacle), eh = unit_exp(hmax_in), et = ef + eh;
+
     eik_work w;
     memset(&w, 0, sizeof w);
     w.dim = g->dim;
@@ -1221,8 +1252,8 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         w.n[d] = d < g->dim ? g->n[d] : 1;
         w.G[d] = d < g->dim ? GH : 0;
         w.P[d] = w.n[d] + 2 * w.G[d];
-        w.x0[d] = d < g->dim ? g->x0[d] : 0;
-        w.h[d] = d < g->dim ? g->dx[d] : 1;
+        w.x0[d] = d < g->dim ? ldexp(g->x0[d], -eh) : 0;
+        w.h[d] = d < g->dim ? ldexp(g->dx[d], -eh) : 1;
     }
     w.st[0] = 1;
     w.st[1] = w.P[0];
@@ -1278,10 +1309,10 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                                                       "outside obstacles", fv, a, b, c);
                     break;
                 }
-                w.fs[k] = fv;
+                w.fs[k] = ldexp(fv, -ef);
                 w.state[k] = ST_FREE;
                 if (fixed && !isnan(fixed[u])) {
-                    if (!isfinite(fixed[u])) {
+                    if (!isfinite(ldexp(fixed[u], -et))) {
                         rc = hj_error_set(err, HJ_EINVAL, "fixed value %g at node (%ld, %ld, %ld): must be finite or NaN",
                                           fixed[u], a, b, c);
                         break;
@@ -1294,13 +1325,13 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     for (int s = 0; s < nsrc && rc == HJ_OK; s++) {
         long ip[3] = {0, 0, 0};
         for (int d = 0; d < 3; d++) {
-            const double x = d < w.dim ? src[s].x[d] : 0;
+            const double x = d < w.dim ? ldexp(src[s].x[d], -eh) : 0;
             w.src[s].x[d] = x;
             if (d >= w.dim) continue;
             const double u = (x - w.x0[d]) / w.h[d], tol = 1e-9;
             if (!isfinite(u) || u < -tol || u > (double)(w.n[d] - 1) + tol) {
                 rc = hj_error_set(err, HJ_EINVAL, "source %d: coordinate %g along dimension %d is outside the grid "
-                                                  "[%g, %g]", s + 1, x, d, w.x0[d], w.x0[d] + (double)(w.n[d] - 1) * w.h[d]);
+                                                  "[%g, %g]", s + 1, src[s].x[d], d, g->x0[d], g->x0[d] + (double)(w.n[d] - 1) * g->dx[d]);
                 break;
             }
             long i = lround(u);
@@ -1312,11 +1343,16 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             break;
         }
         if (w.state[ip[0] * w.st[0] + ip[1] * w.st[1] + ip[2] * w.st[2]] == ST_OBST) {
-            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s + 1, w.src[s].x[0],
-                              w.src[s].x[1], w.src[s].x[2]);
+            rc = hj_error_set(err, HJ_EINVAL, "source %d at (%g, %g, %g) lies in an obstacle", s + 1,
+                              ldexp(w.src[s].x[0], eh), ldexp(w.src[s].x[1], eh), ldexp(w.src[s].x[2], eh));
             break;
         }
-        w.src[s].t0 = src[s].t0;
+        w.src[s].t0 = ldexp(src[s].t0, -et);
+        if (!isfinite(w.src[s].t0)) {
+            rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g is out of range in the solver's units (times "
+                                              "divided by 2^%d)", s + 1, src[s].t0, et);
+            break;
+        }
         w.src[s].s0 = slowness_at(&w, w.src[s].x);
         if (!(w.src[s].s0 > 0)) {
             rc = hj_error_set(err, HJ_EINVAL, "source %d: no slowness around it (obstacles)", s + 1);
@@ -1389,7 +1425,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                         w.tau[k] = Tbest; /* T for now; tau below */
                     }
                 } else if (w.state[k] == ST_FIXED) {
-                    w.tau[k] = fixed[(a - w.G[0]) + n0 * ((b - w.G[1]) + n1 * (c - w.G[2]))];
+                    w.tau[k] = ldexp(fixed[(a - w.G[0]) + n0 * ((b - w.G[1]) + n1 * (c - w.G[2]))], -et);
                 }
                 if (!factored) continue;
                 double best = INFINITY;
@@ -1550,7 +1586,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 const long k = (a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2];
                 const double v = w.tau[k];
                 T[a + n0 * (b + n1 * c)] =
-                    (w.state[k] == ST_OBST || !(v < INFINITY)) ? INFINITY : src_tb(&w, w.own[k]) + w.T0[k] * v;
+                    (w.state[k] == ST_OBST || !(v < INFINITY)) ? INFINITY : ldexp(src_tb(&w, w.own[k]) + w.T0[k] * v, et);
             }
     /* The stopping rule is relative to max |T|, which a blown-up iterate
      * inflates: check the result (hj_eik_guard.h).  low's first n bytes
@@ -1567,7 +1603,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 w.low[a + n0 * (b + n1 * c)] = sk == ST_FREE || sk == ST_FIXED || sk == ST_SRC;
             }
     const long nn[3] = {n0, n1, n2};
-    rc = hj_eik_guard(T, w.low, nn, t_min, fo_scale, err);
+    rc = hj_eik_guard(T, w.low, nn, t_min, ldexp(fo_scale, et), err);
     work_free(&w);
     if (rc != HJ_OK) {
         st->converged = 0;

@@ -578,6 +578,37 @@ static void noisy_map_converges(void **state)
     free(T2);
 }
 
+/* |grad T| = f is homogeneous: f = c f1 gives T = c T1.  A slowness of
+ * 1e100 overflowed the local solve's squares (all but the source region
+ * unreachable, with HJ_OK) and 1e-100 underflowed them (T = 0).  A power
+ * of two gives the bits of f1's solution times it; 1e100, 1e-100 and a
+ * spacing of 1e-100 give it to rounding. */
+static void slowness_scale_free(void **state)
+{
+    (void)state;
+    const double scales[4][2] = {{0x1p340, 1}, {1e100, 1}, {1e-100, 1}, {1, 1e-100}}; /* slowness, spacing */
+    double f[20 * 20], T1[20 * 20], T[20 * 20];
+    for (int order = 1; order <= 5; order += 2)
+        for (int ks = 0; ks < 4; ks++) {
+            const double c = scales[ks][0], h = scales[ks][1];
+            hj_eik_grid g1 = {2, {20, 20, 1}, {0, 0, 0}, {1, 1, 1}}, g = {2, {20, 20, 1}, {0, 0, 0}, {h, h, 1}};
+            hj_eik_options o = hj_eik_default_options();
+            o.order = order;
+            hj_eik_stats st;
+            hj_error e;
+            const hj_eik_source s1 = {{3, 4, 0}, 0}, s = {{3 * h, 4 * h, 0}, 0};
+            for (int u = 0; u < 400; u++) f[u] = 1 + 0.3 * sin(0.3 * (u % 20)) * cos(0.2 * (u / 20));
+            assert_int_equal(hj_eik_solve(&g1, f, 0, NULL, &s1, 1, NULL, &o, T1, &st, &e), HJ_OK);
+            for (int u = 0; u < 400; u++) f[u] *= c;
+            assert_int_equal(hj_eik_solve(&g, f, 0, NULL, &s, 1, NULL, &o, T, &st, &e), HJ_OK);
+            assert_int_equal(st.unreachable, 0);
+            for (int u = 0; u < 400; u++) {
+                if (ks == 0) assert_true(T[u] == c * T1[u]);
+                else assert_close(T[u] / (c * h), T1[u], 1e-10, 1e-10);
+            }
+        }
+}
+
 static void threads_bitwise(void **state)
 {
     (void)state;
@@ -638,5 +669,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(wall_converges), cmocka_unit_test(varying_speed_converges),
                         cmocka_unit_test(varying_speed_order5_count),
                         cmocka_unit_test(varying_speed_bitwise), cmocka_unit_test(noisy_map_converges),
-                        cmocka_unit_test(noisy_start_in_bounds),
+                        cmocka_unit_test(noisy_start_in_bounds), cmocka_unit_test(slowness_scale_free),
                         cmocka_unit_test(threads_bitwise))
