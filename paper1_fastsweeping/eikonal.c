@@ -22,9 +22,10 @@ unless `--domain` gives the box, whose sides need not make dx = dy.
 **Method.** The library solver common/hj_eik.h: fast sweeping at order 1,
 3 or 5, factored near point sources (full order at the source), stopped
 when an iteration changes T by at most `--tol` times max |T| (scale-free:
-pixel units or metres alike).  Where the map varies from node to node (noise
-at the pixel scale) orders 3 and 5 use the first order update at those
-nodes; the count is printed on stderr and in the output's header.
+pixel units or metres alike).  Where the map is rough at the grid scale
+(noise at the pixel scale, or a sharp step between regions: a band about
+four nodes wide along it) orders 3 and 5 use the first order update at
+those nodes; the count is printed on stderr and in the output's header.
 
 **Output.** 2-D: a TSV grid (x, y, T; a blank line after each row, as
 gnuplot's splot wants) or `--format matrix` (one row of T per line,
@@ -600,8 +601,8 @@ int main(int argc, char **argv)
      * upwind (first order) solution there */
     if (st.first_order > 0)
         fprintf(stderr, "%s: note: the order %d scheme fell back to the first order update at %zu of %ld nodes "
-                        "(%.1f %%), where the map varies from node to node (not resolved by the grid) or the high "
-                        "order update was not trustworthy; T is first order accurate there\n",
+                        "(%.1f %%), where the map is rough at the grid scale (noise, or along a sharp step) or "
+                        "the high order update was not trustworthy; T is first order accurate there\n",
                 prog, opt.order, st.first_order, total, 100.0 * (double)st.first_order / (double)total);
     if (!converged) {
         fprintf(stderr, "%s: warning: not converged after %ld iterations (last change %.3g of max |T|, --tol %g); the "
