@@ -1220,6 +1220,9 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
         return hj_error_set(err, HJ_EINVAL, "order %d: must be 1, 3 or 5", opt->order);
     if (!(opt->tol >= 0) || !isfinite(opt->tol)) return hj_error_set(err, HJ_EINVAL, "tolerance %g: must be finite and >= 0", opt->tol);
     if (opt->max_iter < 1) return hj_error_set(err, HJ_EINVAL, "max_iter %ld: must be >= 1", opt->max_iter);
+    if (opt->block < 0) return hj_error_set(err, HJ_EINVAL, "block %ld: must be >= 0 (0: chosen by the solver)", opt->block);
+    if (opt->parallel_min < 0)
+        return hj_error_set(err, HJ_EINVAL, "parallel_min %ld: must be >= 0 (0: the default)", opt->parallel_min);
     if (nsrc < 0 || (nsrc > 0 && !src)) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
     if (!f && (!(f_const > 0) || !isfinite(f_const)))
         return hj_error_set(err, HJ_EINVAL, "constant slowness %g: must be finite and > 0", f_const);
@@ -1609,6 +1612,12 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         st->converged = 0;
         return rc;
     }
+    /* The first order start can use up max_iter: then no higher order
+     * iteration ran and the last change (the start's) is within tol. */
+    if (!conv && opt->order > 1 && st->iterations == st->fo_iterations && st->change <= opt->tol)
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations: the first order start took all of "
+                                             "them (max_iter %ld), no order %d iteration ran; the first order result "
+                                             "is kept", st->iterations, opt->max_iter, opt->order);
     if (!conv)
         return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations (last change %.3g of the solution's "
                                              "scale > tol %.3g); the last iterate is kept", st->iterations, st->change,

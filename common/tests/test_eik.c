@@ -126,6 +126,14 @@ static void bad_input(void **state)
     ob[9] = 1; /* a bad value inside an obstacle is ignored */
     assert_int_equal(solve_err(&g, f, 0, ob, &s, 1, NULL, &o, &e), HJ_OK);
     f[9] = 1;
+    o.block = -3;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "block -3"));
+    o.block = 0;
+    o.parallel_min = -1;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "parallel_min -1"));
+    o.parallel_min = 0;
     progress_calls = 0;
 
     assert_int_equal(solve_err(&g, NULL, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
@@ -229,6 +237,26 @@ static void noconv_keeps_iterate(void **state)
         if (!(st.iterations <= mi && st.fo_iterations <= st.iterations))
             fail_msg("max_iter %ld: %ld iterations (%ld first order)", mi, st.iterations, st.fo_iterations);
     }
+}
+
+/* max_iter used up by the first order start: the message says so instead
+ * of quoting the start's last change (within tol) as too large. */
+static void noconv_in_first_order_start(void **state)
+{
+    (void)state;
+    hj_eik_grid g = {2, {16, 16, 1}, {0, 0, 0}, {1, 1, 1}};
+    hj_eik_source s = {{3.4, 2.25, 0}, 0};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 3;
+    double T[256];
+    hj_eik_stats st;
+    hj_error e;
+    assert_int_equal(hj_eik_solve(&g, NULL, 1.0, NULL, &s, 1, NULL, &o, T, &st, &e), HJ_OK);
+    assert_true(st.iterations > st.fo_iterations);
+    o.max_iter = st.fo_iterations;
+    assert_int_equal(hj_eik_solve(&g, NULL, 1.0, NULL, &s, 1, NULL, &o, T, &st, &e), HJ_ENOCONV);
+    if (!strstr(e.msg, "first order start took all"))
+        fail_msg("message: %s", e.msg);
 }
 
 /* Order of convergence of the point source in the linear velocity, 2-D:
@@ -664,6 +692,7 @@ static void threads_bitwise(void **state)
 
 HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), cmocka_unit_test(obstacle_not_crossed),
                         cmocka_unit_test(bad_input), cmocka_unit_test(noconv_keeps_iterate),
+                        cmocka_unit_test(noconv_in_first_order_start),
                         cmocka_unit_test(orders_on_small_case), cmocka_unit_test(iterations_flat_in_n),
                         cmocka_unit_test(late_source_overtaken),
                         cmocka_unit_test(wall_converges), cmocka_unit_test(varying_speed_converges),
