@@ -287,6 +287,43 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
     }
 }
 
+/* Run q (0 <= q < prod_{e != 0, d} N[e]) of the lines along d at interior
+ * indices: its N[0] lines side by side, first at interior node 0 of d. */
+static double *face_run(const hj_ls_grid *g, double *a, int d, size_t q)
+{
+    size_t k = g->offset;
+    for (int e = 1; e < g->dim; e++) {
+        if (e == d) continue;
+        k += (q % (size_t)g->N[e]) * (size_t)g->stride[e];
+        q /= (size_t)g->N[e];
+    }
+    return a + k;
+}
+
+void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a)
+{
+    /* runs of dimension 1, then of 2, ...: one loop over all of them */
+    size_t runs[HJ_LS_MAXDIM] = {0}, total = 0;
+    for (int d = 1; d < g->dim; d++) {
+        runs[d] = g->nodes / ((size_t)g->N[0] * (size_t)g->N[d]);
+        total += runs[d];
+    }
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+    for (size_t q = 0; q < total; q++) {
+        int d = 1;
+        size_t r = q;
+        while (r >= runs[d]) r -= runs[d++];
+        fill_lines(face_run(g, a, d, r), g->stride[d], g->N[d], g->N[0], g->dx[d], &g->bc[d]);
+    }
+}
+
+void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k)
+{
+    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0]);
+}
+
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op)
 {
     if (g->dist) g->dist->reduce(v, n, op, g->dist->ctx);

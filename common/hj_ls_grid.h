@@ -149,6 +149,20 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
  * boundary conditions fill all layers, as hj_ls_fill_ghosts). */
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
 
+/* The face ghosts that a stencil along one axis reads, in two parts, for a
+ * row pass that fills them inside its own parallel region (one region and
+ * one barrier per pass instead of a region per dimension):
+ * hj_ls_fill_ghost_faces fills the ghosts of dimensions 1..dim-1 at the
+ * interior indices of every other dimension (an orphaned OpenMP loop: it
+ * shares the lines among the calling team, or runs them all outside a
+ * parallel region, and ends in a barrier); hj_ls_fill_row_ghosts fills
+ * the dimension-0 ghosts of the row whose first interior node is k.
+ * Together they give the values hj_ls_fill_ghosts gives there (the same
+ * bits); edge and corner ghosts are left alone.  Each reads interior
+ * nodes only.  Not for a distributed grid (no halo exchange). */
+void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a);
+void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k);
+
 /* a(x) = f(x, ctx) at every interior node.  Rows are filled in parallel
  * with OpenMP, so f must be thread-safe (as every callback of the kernel);
  * each node is written once, so the result does not depend on the number

@@ -71,13 +71,13 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
-static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                          double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, const char *what,
-                          hj_error *err);
+static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                        double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int faces, const char *what,
+                        hj_error *err);
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
 {
-    return for_rows_stage(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, NULL, what, err);
+    return for_rows_run(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, NULL, 0, what, err);
 }
 
 /* for_rows, and for a fused RK stage (st not NULL; the rows leave their
@@ -87,6 +87,19 @@ static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, cons
                           double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, const char *what,
                           hj_error *err)
 {
+    return for_rows_run(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, st, 0, what, err);
+}
+
+/* for_rows_stage; faces = 1 (a term whose stencils read along one axis at a time, on a
+ * grid that is not distributed): the face ghosts of y are filled here,
+ * in the same parallel region (hj_ls_fill_ghost_faces), and each row's
+ * dimension-0 ghosts just before the row is evaluated, while the row is
+ * in cache, instead of a region and a pass over the grid per dimension
+ * (the same bits: no stencil reads another row's dimension-0 ghosts). */
+static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                        double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int faces, const char *what,
+                        hj_error *err)
+{
     double m = 0, smax = 0;
     int sbad = 0;
     double dm[HJ_LS_MAXDIM] = {0};
@@ -94,9 +107,12 @@ static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, cons
     size_t bad_row = (size_t)-1;
     long bad_j = -1;
     int bad_code = 0;
-    /* Chunks of up to 32 consecutive rows (neighbours in dimension 1 share
-     * differences), at least 8 per thread so that a small grid keeps both
-     * threads busy to the end. */
+    /* Guided: a thread takes a share of the rows left, at least chunk of
+     * them, so that it runs through long stretches of consecutive rows
+     * (neighbours in dimension 1 share differences: a stretch starts by
+     * computing all six) and a thread that starts late or is slowed down
+     * is still balanced to within a chunk.  chunk: up to 32, at least 8
+     * per thread so that a small grid keeps both threads busy to the end. */
     int nth = 1;
 #ifdef _OPENMP
     nth = omp_get_max_threads();
@@ -107,6 +123,7 @@ static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, cons
 #pragma omp parallel reduction(max : m, smax) reduction(| : nan_seen, nomem, sbad)
 #endif
     {
+        if (faces) hj_ls_fill_ghost_faces(g, y); /* ends in a barrier: the faces are in before any row reads them */
         row_ctx rc;
         rc.smax = 0, rc.sbad = 0, rc.imax = 0;
         const long n = g->N[0];
@@ -122,11 +139,12 @@ static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, cons
             size_t prev = (size_t)-1;
             rc.k = 0;
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, chunk)
+#pragma omp for schedule(guided, chunk)
 #endif
             for (size_t r = 0; r < g->rows; r++) {
                 rc.k = row_next(g, r, prev, rc.k, rc.idx);
                 rc.r = prev = r;
+                if (faces) hj_ls_fill_row_ghosts(g, y, rc.k);
                 hj_ls_coord(g, rc.idx, rc.x);
                 double inv = 0;
                 long j = -1;
@@ -577,7 +595,11 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
 {
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "convection: unknown scheme %d", c->scheme);
-    hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
+    /* Along one axis at a time: the face ghosts suffice, filled in the
+     * row pass's region, unless a distributed grid exchanges halos or the
+     * grid-wide WENO epsilons read the ghosts before the pass. */
+    const int faces = !g->dist && c->weno_eps != HJ_LS_WENO_EPS_GRID;
+    if (!faces) hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
     conv_pass ps;
     ps.c = c;
     ps.stage = stage;
@@ -589,8 +611,8 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     /* 2-D with a cheap scheme: the one-loop rows of convection_row2 */
     const row_fn f = g->dim == 2 && (c->scheme == HJ_LS_ENO2 || c->scheme == HJ_LS_UPWIND_FIRST) ? convection_row2
                                                                                                    : convection_row;
-    int rc = for_rows_stage(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
-                            stage, "convection velocity", err);
+    int rc = for_rows_run(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
+                          stage, faces, "convection velocity", err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;

@@ -170,6 +170,66 @@ static void ghosts_3d_reference(void **state)
     }
 }
 
+/* Which ghost kind node i is: 0 interior, 1 face (one index outside), 2
+ * edge or corner. */
+static int ghost_kind(const hj_ls_grid *g, const long *i)
+{
+    int out = 0;
+    for (int d = 0; d < g->dim; d++) out += i[d] < 0 || i[d] >= g->N[d];
+    return out > 1 ? 2 : out;
+}
+
+/* hj_ls_fill_ghost_faces (inside a team of 1 and 2 threads, and outside
+ * a parallel region) with hj_ls_fill_row_ghosts on every row gives every
+ * face ghost the bits of hj_ls_fill_ghosts and leaves edges and corners
+ * alone, in 3-D and 4-D, for every boundary condition. */
+static void ghost_faces(void **state)
+{
+    (void)state;
+    for (int dim = 3; dim <= 4; dim++)
+        for (int type = HJ_LS_BC_PERIODIC; type <= HJ_LS_BC_EXTRAP_TOWARD; type++) {
+            hj_ls_grid g;
+            double mn[4] = {0, -1, 2, 0}, mx[4] = {1, 1, 3, 0.5};
+            long N[4] = {7, 5, 6, 4};
+            hj_ls_bc bc[4];
+            for (int d = 0; d < 4; d++) bc[d] = (hj_ls_bc){(type + d) % (HJ_LS_BC_EXTRAP_TOWARD + 1), 0.5, -2};
+            assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
+            double *ref = hj_ls_alloc(&g), *a = hj_ls_alloc(&g);
+            assert_non_null(ref), assert_non_null(a);
+            for (size_t q = 0; q < g.total; q++) ref[q] = sin(0.37 * (double)q) + (q % 3 == 0 ? 0.0 : 0.5);
+            for (int mode = 0; mode < 3; mode++) { /* 1 thread, 2 threads, no parallel region */
+                for (size_t q = 0; q < g.total; q++) a[q] = NAN;
+                long idx[HJ_LS_MAXDIM];
+                for (size_t r = 0; r < g.rows; r++) {
+                    const size_t k = hj_ls_row(&g, r, idx);
+                    memcpy(a + k, ref + k, sizeof(double) * (size_t)g.N[0]);
+                }
+                if (mode == 2) hj_ls_fill_ghost_faces(&g, a);
+                else {
+#ifdef _OPENMP
+#pragma omp parallel num_threads(mode + 1)
+#endif
+                    hj_ls_fill_ghost_faces(&g, a);
+                }
+                for (size_t r = 0; r < g.rows; r++) hj_ls_fill_row_ghosts(&g, a, hj_ls_row(&g, r, idx));
+                if (mode == 0) hj_ls_fill_ghosts(&g, ref);
+                /* every node of the ghosted array, an odometer over -GHOST .. N + GHOST - 1 */
+                long i[HJ_LS_MAXDIM];
+                for (int d = 0; d < dim; d++) i[d] = -HJ_LS_GHOST;
+                for (size_t q = 0; q < g.total; q++) {
+                    const size_t k = hj_ls_index(&g, i);
+                    if (ghost_kind(&g, i) < 2) assert_memory_equal(a + k, ref + k, sizeof(double));
+                    else assert_true(isnan(a[k]));
+                    for (int d = 0; d < dim; d++) {
+                        if (++i[d] < g.N[d] + HJ_LS_GHOST) break;
+                        i[d] = -HJ_LS_GHOST;
+                    }
+                }
+            }
+            hj_ls_free(ref), hj_ls_free(a);
+        }
+}
+
 static void coords_and_rows(void **state)
 {
     (void)state;
@@ -420,6 +480,6 @@ static void period_grid(void **state)
                      HJ_EINVAL);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference),
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

@@ -170,6 +170,74 @@ static void convection_2d_equals_upwind_sum(void **state)
     hj_ls_free(y), hj_ls_free(f), hj_ls_free(l), hj_ls_free(r), hj_ls_free(v);
 }
 
+/* b = a at the interior nodes, NaN at every ghost. */
+static void interior_only(const hj_ls_grid *g, const double *a, double *b)
+{
+    long idx[HJ_LS_MAXDIM];
+    for (size_t k = 0; k < g->total; k++) b[k] = NAN;
+    for (size_t r = 0; r < g->rows; r++) {
+        const size_t k = hj_ls_row(g, r, idx);
+        memcpy(b + k, a + k, sizeof(double) * (size_t)g->N[0]);
+    }
+}
+
+/* The convection pass reads no edge or corner ghost (it fills only the
+ * faces): every scheme, in 3-D with flow along every axis and with the
+ * shear's callback, gives the same bits on an array whose ghosts are all
+ * NaN as on one filled by hj_ls_fill_ghosts, with 1 and 2 threads, as G
+ * and as a fused stage. */
+static void reads_faces_only(int dim);
+static void convection_reads_faces_only(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) /* 2-D: the one-loop rows of the cheap schemes too */
+        reads_faces_only(dim);
+}
+
+static void reads_faces_only(int dim)
+{
+    hj_ls_grid g;
+    double mn[3] = {-1, -1, -1}, mx[3] = {1, 0.8, 1.2};
+    long N[3] = {13, 11, 9};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_NEUMANN, 0.5, -1}};
+    assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
+    double *y = hj_ls_alloc(&g), *yn = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *fn = hj_ls_alloc(&g);
+    double *y0 = hj_ls_alloc(&g), *d1 = hj_ls_alloc(&g), *d2 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, blob, NULL);
+    hj_ls_fill(&g, y0, disc, NULL);
+    const int schemes[5] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A, HJ_LS_WENO5B};
+    for (int q = 0; q < 10; q++)
+        for (int th = 1; th <= 2; th++) {
+#ifdef _OPENMP
+            omp_set_num_threads(th);
+#endif
+            hj_ls_convection c;
+            hj_ls_convection_init(&c, &g, schemes[q % 5]);
+            if (q < 5) c.velocity[0] = 0.7, c.velocity[1] = -1.3, c.velocity[2] = 0.4;
+            else c.velocity_fn = shear;
+            interior_only(&g, y, yn);
+            hj_ls_fill_ghosts(&g, y);
+            double b, bn;
+            assert_int_equal(c.base.eval(&c.base, 0, y, f, &b, NULL), HJ_OK);
+            assert_int_equal(c.base.eval(&c.base, 0, yn, fn, &bn, NULL), HJ_OK);
+            assert_interior_equal(&g, f, fn);
+            assert_memory_equal(&b, &bn, sizeof b);
+            hj_ls_stage s1 = {1.0 / 3, 2.0 / 3, 0.01, y0, d1, 0, 0}, s2 = s1;
+            s2.dst = d2;
+            int done;
+            interior_only(&g, y, yn);
+            assert_int_equal(hj_ls_term_stage(&c.base, 0, y, &s1, &b, &done, NULL), HJ_OK);
+            assert_int_equal(hj_ls_term_stage(&c.base, 0, yn, &s2, &bn, &done, NULL), HJ_OK);
+            assert_interior_equal(&g, d1, d2);
+            assert_memory_equal(&s1.amax, &s2.amax, sizeof s1.amax);
+            hj_ls_convection_free(&c);
+        }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_ls_free(y), hj_ls_free(yn), hj_ls_free(f), hj_ls_free(fn), hj_ls_free(y0), hj_ls_free(d1), hj_ls_free(d2);
+}
+
 /* The same rotation given as arrays and as a callback: identical. */
 static void convection_arrays_equal_callback(void **state)
 {
@@ -990,6 +1058,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_equals_upwind_sum),
                         cmocka_unit_test(convection_2d_equals_upwind_sum),
                         cmocka_unit_test(convection_arrays_equal_callback),
+                        cmocka_unit_test(convection_reads_faces_only),
                         cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
