@@ -395,16 +395,22 @@ static void wall_converges(void **state)
  * a cell's travel time (slowness <= 2, h = 1) of the first order one.
  * T (n^dim doubles) receives the solution; block and threads as in
  * hj_eik_options (0: defaults). */
+/* The varying-speed map of these tests: slowness 1 / (1 + 0.5 sin(x/7) cos(y/5)). */
+static void sin_map(const hj_eik_grid *g, double *f)
+{
+    for (size_t u = 0; u < nodes(g); u++) {
+        double x[3];
+        coords(g, u, x);
+        f[u] = 1.0 / (1 + 0.5 * sin(x[0] / 7) * cos(x[1] / 5));
+    }
+}
+
 static void varying_speed_case(int dim, int n, int order, long block, long par_min, double *T)
 {
     hj_eik_grid g = {dim, {n, n, dim == 3 ? n : 1}, {0, 0, 0}, {1, 1, 1}};
     const size_t nn = nodes(&g);
     double *f = malloc(nn * sizeof *f), *T1 = malloc(nn * sizeof *T1);
-    for (size_t u = 0; u < nn; u++) {
-        double x[3];
-        coords(&g, u, x);
-        f[u] = 1.0 / (1 + 0.5 * sin(x[0] / 7) * cos(x[1] / 5));
-    }
+    sin_map(&g, f);
     const hj_eik_source s = {{3.5, n / 2.0, n / 2.0}, 0};
     hj_eik_options o = hj_eik_default_options();
     hj_eik_stats st;
@@ -450,11 +456,7 @@ static void varying_speed_order5_count(void **state)
         hj_eik_grid g = {dims[c], {ns[c], ns[c], dims[c] == 3 ? ns[c] : 1}, {0, 0, 0}, {1, 1, 1}};
         const size_t nn = nodes(&g);
         double *f = malloc(nn * sizeof *f), *T = malloc(nn * sizeof *T);
-        for (size_t u = 0; u < nn; u++) {
-            double x[3];
-            coords(&g, u, x);
-            f[u] = 1.0 / (1 + 0.5 * sin(x[0] / 7) * cos(x[1] / 5));
-        }
+        sin_map(&g, f);
         const hj_eik_source s = {{3.5, ns[c] / 2.0, ns[c] / 2.0}, 0};
         long it[6] = {0};
         for (int order = 3; order <= 5; order += 2) {
