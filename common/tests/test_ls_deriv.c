@@ -294,6 +294,45 @@ static void select_equals_two_sided(void **state)
     hj_ls_free(a);
 }
 
+/* WENO5 over consecutive rows (hj_ls_weno5_diffs_next_eps): a row's
+ * right derivative and the next row's left one from one window, the same
+ * bits as hj_ls_upwind_diffs_eps row by row; other schemes decline. */
+static void weno5_next_rows_bitwise(void **state)
+{
+    (void)state;
+    const long n = 13;
+    double *E[7], *out[6];
+    for (int k = 0; k < 7; k++) {
+        E[k] = malloc(sizeof(double) * (size_t)n);
+        for (long i = 0; i < n; i++) {
+            const double x = 0.07 * (double)(i + 3 * k);
+            E[k][i] = noisy(&x, NULL) + (k == 3 && i == 5 ? 2.0 : 0.0); /* a kink */
+        }
+    }
+    for (int k = 0; k < 6; k++) out[k] = malloc(sizeof(double) * (size_t)n);
+    double *next0 = malloc(sizeof(double) * (size_t)n), *next1 = malloc(sizeof(double) * (size_t)n);
+    for (int s = 0; s < HJ_LS_NSCHEMES; s++)
+        for (int mean = 0; mean < 2; mean++)
+            for (int e = 0; e < 2; e++) {
+                const double eps = e ? 3e-4 : -1;
+                const double *A[6] = {E[0], E[1], E[2], E[3], E[4], E[5]};
+                const double *B[6] = {E[1], E[2], E[3], E[4], E[5], E[6]};
+                const int done = hj_ls_weno5_diffs_next_eps(s, A, n, eps, mean, NULL, next0, out[0], out[1]);
+                assert_int_equal(done, s == HJ_LS_WENO5A || s == HJ_LS_WENO5B);
+                if (!done) continue;
+                hj_ls_weno5_diffs_next_eps(s, B, n, eps, mean, next0, next1, out[2], out[3]);
+                hj_ls_upwind_diffs_eps(s, A, n, eps, mean, out[4], out[5]);
+                assert_memory_equal(out[0], out[4], sizeof(double) * (size_t)n);
+                assert_memory_equal(out[1], out[5], sizeof(double) * (size_t)n);
+                hj_ls_upwind_diffs_eps(s, B, n, eps, mean, out[4], out[5]);
+                assert_memory_equal(out[2], out[4], sizeof(double) * (size_t)n);
+                assert_memory_equal(out[3], out[5], sizeof(double) * (size_t)n);
+            }
+    for (int k = 0; k < 7; k++) free(E[k]);
+    for (int k = 0; k < 6; k++) free(out[k]);
+    free(next0), free(next1);
+}
+
 /* The row kernel's forms give the same bits: along the row (stride 1,
  * where the six rows of differences are one row read at six offsets) and
  * across rows (the same values laid out with a stride), the mean and
@@ -515,5 +554,6 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_order
                         cmocka_unit_test(forms_agree), cmocka_unit_test(weno5_against_reference),
                         cmocka_unit_test(select_equals_two_sided),
                         cmocka_unit_test(kernel_forms_bitwise),
+                        cmocka_unit_test(weno5_next_rows_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
                         cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))
