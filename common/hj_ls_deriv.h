@@ -92,6 +92,15 @@ void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, doub
  * 0 share five of their six rows of differences with the previous row).
  * Other schemes leave dl and dr untouched. */
 void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double eps, int mean, double *dl, double *dr);
+/* hj_ls_upwind_diffs_eps for WENO5A/B (returns 0 and writes nothing for
+ * another scheme) on a row whose neighbour in the direction of the
+ * differences comes next: the window D[1..5] gives this row's right
+ * derivative and the next row's left one, into next (n doubles); the left
+ * derivative is read from left (the previous row's next, not aliasing
+ * next) or, left NULL, computed from D[0..4].  One window per node instead
+ * of two, the same bits. */
+int hj_ls_weno5_diffs_next_eps(int scheme, const double *const *D, long n, double eps, int mean, const double *left,
+                               double *next, double *dl, double *dr);
 /* mean = 1 above, and hj_ls_upwind_row_mean_eps: instead of D- and D+,
  * their mean (D- + D+)/2 into dl (mean) and their difference D+ - D- into
  * dr (diff), computed as a caller would from D- and D+ (the same bits):

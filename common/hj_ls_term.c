@@ -1052,13 +1052,22 @@ static int lf_finish_dim(int diffs, int dim, long n, const double *A, const doub
 
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
  * scheme of six rows of differences (ENO3, WENO5), the rows from
- * dim1_ring. */
+ * dim1_ring (6 n doubles at ring).  WENO5 also carries the next row's
+ * left derivatives, in one of two buffers at ring + 7 n, ring + 8 n by
+ * the parity of the ring's head, which alternates from row to row while
+ * the ring carries on (the caller keeps ring + 6 n for itself). */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
                          int mean, double *l, double *r)
 {
     const double *D[6];
+    const size_t n = (size_t)g->N[0];
+    /* dim1_ring's test: the ring holds the previous row's differences */
+    const int cont = rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0;
     dim1_ring(g, y, rc, ring, D);
-    hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
+    const int h = rc->head & 1;
+    double *next = ring + (size_t)(7 + h) * n, *left = ring + (size_t)(8 - h) * n;
+    if (!hj_ls_weno5_diffs_next_eps(scheme, D, g->N[0], eps, mean, cont ? left : NULL, next, l, r))
+        hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
 }
 
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
@@ -1251,7 +1260,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows_stage(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 8) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
+    int rc = for_rows_stage(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
                             dm, stage, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);

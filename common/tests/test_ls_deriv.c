@@ -294,6 +294,45 @@ static void select_equals_two_sided(void **state)
     hj_ls_free(a);
 }
 
+/* WENO5 over consecutive rows (hj_ls_weno5_diffs_next_eps): a row's
+ * right derivative and the next row's left one from one window, the same
+ * bits as hj_ls_upwind_diffs_eps row by row; other schemes decline. */
+static void weno5_next_rows_bitwise(void **state)
+{
+    (void)state;
+    const long n = 13;
+    double *E[7], *out[6];
+    for (int k = 0; k < 7; k++) {
+        E[k] = malloc(sizeof(double) * (size_t)n);
+        for (long i = 0; i < n; i++) {
+            const double x = 0.07 * (double)(i + 3 * k);
+            E[k][i] = noisy(&x, NULL) + (k == 3 && i == 5 ? 2.0 : 0.0); /* a kink */
+        }
+    }
+    for (int k = 0; k < 6; k++) out[k] = malloc(sizeof(double) * (size_t)n);
+    double *next0 = malloc(sizeof(double) * (size_t)n), *next1 = malloc(sizeof(double) * (size_t)n);
+    for (int s = 0; s < HJ_LS_NSCHEMES; s++)
+        for (int mean = 0; mean < 2; mean++)
+            for (int e = 0; e < 2; e++) {
+                const double eps = e ? 3e-4 : -1;
+                const double *A[6] = {E[0], E[1], E[2], E[3], E[4], E[5]};
+                const double *B[6] = {E[1], E[2], E[3], E[4], E[5], E[6]};
+                const int done = hj_ls_weno5_diffs_next_eps(s, A, n, eps, mean, NULL, next0, out[0], out[1]);
+                assert_int_equal(done, s == HJ_LS_WENO5A || s == HJ_LS_WENO5B);
+                if (!done) continue;
+                hj_ls_weno5_diffs_next_eps(s, B, n, eps, mean, next0, next1, out[2], out[3]);
+                hj_ls_upwind_diffs_eps(s, A, n, eps, mean, out[4], out[5]);
+                assert_memory_equal(out[0], out[4], sizeof(double) * (size_t)n);
+                assert_memory_equal(out[1], out[5], sizeof(double) * (size_t)n);
+                hj_ls_upwind_diffs_eps(s, B, n, eps, mean, out[4], out[5]);
+                assert_memory_equal(out[2], out[4], sizeof(double) * (size_t)n);
+                assert_memory_equal(out[3], out[5], sizeof(double) * (size_t)n);
+            }
+    for (int k = 0; k < 7; k++) free(E[k]);
+    for (int k = 0; k < 6; k++) free(out[k]);
+    free(next0), free(next1);
+}
+
 /* The row kernel's forms give the same bits: along the row (stride 1,
  * where the six rows of differences are one row read at six offsets) and
  * across rows (the same values laid out with a stride), the mean and
@@ -305,7 +344,7 @@ static void kernel_forms_bitwise(void **state)
     (void)state;
     const long sizes[3] = {5, 13, 16};
     for (int si = 0; si < 3; si++) {
-        const long n = sizes[si], S = n + 2;
+        const long n = sizes[si], S = n + 6;
         const double dx = 0.03;
         double *c = malloc(sizeof(double) * (size_t)(n + 6)), *q = malloc(sizeof(double) * (size_t)(7 * S));
         double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n), *out[8], *D[6];
@@ -318,6 +357,9 @@ static void kernel_forms_bitwise(void **state)
         /* q: row k + 3 holds node i's neighbour at offset k (i + k) */
         for (int k = -3; k <= 3; k++)
             for (long i = 0; i < n; i++) q[(k + 3) * S + i] = c[i + k + 3];
+        /* and row 3 with its three neighbours each side along stride 1 (in
+         * the gaps between the rows) */
+        for (long i = -3; i < n + 3; i++) q[3 * S + i] = c[i + 3];
         for (int s = 0; s < HJ_LS_NSCHEMES; s++) {
             double *l1 = out[0], *r1 = out[1], *l2 = out[2], *r2 = out[3], *m = out[4], *df = out[5];
             hj_ls_upwind_row_eps(s, c + 3, 1, n, dx, -1, l1, r1, w);
@@ -334,19 +376,21 @@ static void kernel_forms_bitwise(void **state)
                 }
             }
             /* every dimension in one call (first order, ENO2): 2 and 3
-             * dimensions of stride S, each the single call's */
-            for (int dim = 2; dim <= 3; dim++) {
-                const ptrdiff_t st[3] = {S, S, S};
-                const double h[3] = {dx, dx, dx};
-                double *ms = malloc(sizeof(double) * 3 * (size_t)n), *ds = malloc(sizeof(double) * 3 * (size_t)n);
-                const int done = hj_ls_upwind_rows_mean(s, q + 3 * S, st, dim, n, h, ms, ds);
-                assert_int_equal(done, s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2);
-                for (int d = 0; done && d < dim; d++) {
-                    assert_memory_equal(ms + d * n, m, sizeof(double) * (size_t)n);
-                    assert_memory_equal(ds + d * n, df, sizeof(double) * (size_t)n);
+             * dimensions of stride S, or the first of stride 1 (along the
+             * row), each the single call's */
+            for (int dim = 2; dim <= 3; dim++)
+                for (int along = 0; along < 2; along++) {
+                    const ptrdiff_t st[3] = {along ? 1 : S, S, S};
+                    const double h[3] = {dx, dx, dx};
+                    double *ms = malloc(sizeof(double) * 3 * (size_t)n), *ds = malloc(sizeof(double) * 3 * (size_t)n);
+                    const int done = hj_ls_upwind_rows_mean(s, q + 3 * S, st, dim, n, h, ms, ds);
+                    assert_int_equal(done, s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2);
+                    for (int d = 0; done && d < dim; d++) {
+                        assert_memory_equal(ms + d * n, m, sizeof(double) * (size_t)n);
+                        assert_memory_equal(ds + d * n, df, sizeof(double) * (size_t)n);
+                    }
+                    free(ms), free(ds);
                 }
-                free(ms), free(ds);
-            }
             if (s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2) continue;
             for (int k = 0; k < 6; k++) hj_ls_upwind_difference_row(q + 3 * S, S, n, dx, k - 3, D[k]);
             hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, -1, 0, l2, r2);
@@ -510,5 +554,6 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_order
                         cmocka_unit_test(forms_agree), cmocka_unit_test(weno5_against_reference),
                         cmocka_unit_test(select_equals_two_sided),
                         cmocka_unit_test(kernel_forms_bitwise),
+                        cmocka_unit_test(weno5_next_rows_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
                         cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))
