@@ -122,6 +122,7 @@ $(BUILD)/obj/common/hj_ub_dense.o $(BUILD)/pic/common/hj_ub_dense.o: CFLAGS += -
 $(BUILD)/obj/common/tests/test_ub_dense.o: CFLAGS += -fopenmp
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
+$(BUILD)/obj/common/tests/test_sys.o: CFLAGS += -fopenmp
 # Reachability runs its per-node passes (projection, time-to-reach) in
 # parallel over rows like the kernel.
 $(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o $(BUILD)/obj/common/hj_reach_fused.o $(BUILD)/pic/common/hj_reach_fused.o: CFLAGS += -fopenmp -O3

@@ -7,6 +7,7 @@
  * are stored as six rows; the schemes then read them node by node.
  */
 #include "hj_ls_deriv.h"
+#include "hj_sys.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -597,13 +598,13 @@ int hj_ls_upwind(const hj_ls_grid *g, int scheme, double *data, int d, double *d
     if (!hj_ls_scheme_name(scheme)) return hj_error_set(err, HJ_EINVAL, "unknown upwind scheme %d", scheme);
     hj_ls_fill_ghosts_width(g, data, hj_ls_scheme_ghost(scheme));
     const long n = g->N[0];
-    int fail = 0;
+    int fail = 0, ws_fail = 0;
 #ifdef _OPENMP
 #pragma omp parallel reduction(| : fail)
 #endif
     {
         double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n);
-        if (!w) fail = 1;
+        if (!hj_sys_team_all(w != NULL, &ws_fail)) fail = 1;
         else {
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 32)

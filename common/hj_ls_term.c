@@ -1,5 +1,6 @@
 /* hj_ls_term.c -- the HJ PDE terms, evaluated row by row. */
 #include "hj_ls_term.h"
+#include "hj_sys.h"
 
 #include <float.h>
 #include <math.h>
@@ -103,7 +104,7 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
     double m = 0, smax = 0;
     int sbad = 0;
     double dm[HJ_LS_MAXDIM] = {0};
-    int nan_seen = 0, nomem = 0;
+    int nan_seen = 0, nomem = 0, ws_fail = 0;
     size_t bad_row = (size_t)-1;
     long bad_j = -1;
     int bad_code = 0;
@@ -128,7 +129,7 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
         rc.smax = 0, rc.sbad = 0, rc.imax = 0;
         const long n = g->N[0];
         rc.ws = malloc(sizeof(double) * (ws_doubles + (size_t)n));
-        if (!rc.ws) nomem = 1;
+        if (!hj_sys_team_all(rc.ws != NULL, &ws_fail)) nomem = 1;
         else {
             rc.tmax = rc.ws + ws_doubles;
             for (long j = 0; j < n; j++) rc.tmax[j] = 0;
@@ -1223,7 +1224,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         /* Global range: each thread keeps its own in its workspace; min and
          * max are exact, so the merge order does not matter. */
         for (int d = 0; d < g->dim; d++) ps.gmin[d] = INFINITY, ps.gmax[d] = -INFINITY;
-        int nomem = 0;
+        int nomem = 0, ws_fail = 0;
 #ifdef _OPENMP
 #pragma omp parallel reduction(| : nomem)
 #endif
@@ -1231,7 +1232,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
             row_ctx rc;
             const size_t tail = (size_t)(2 + HJ_LS_ROW_WORK) * (size_t)n;
             rc.ws = malloc(sizeof(double) * (tail + 2 * HJ_LS_MAXDIM));
-            if (!rc.ws) nomem = 1;
+            if (!hj_sys_team_all(rc.ws != NULL, &ws_fail)) nomem = 1;
             else {
                 double *range = rc.ws + tail;
                 for (int d = 0; d < g->dim; d++) range[2 * d] = INFINITY, range[2 * d + 1] = -INFINITY;

@@ -24,6 +24,7 @@
  * terms except, at most, the sign of an exact zero.
  */
 #include "hj_reach.h"
+#include "hj_sys.h"
 
 #include <float.h>
 #include <math.h>
@@ -675,7 +676,7 @@ static int eval_pass(const fused *fs, double tau, const double *y, double *out, 
     const hj_ls_grid *g = fs->g;
     const long n = g->N[0];
     double m = 0;
-    int nomem = 0;
+    int nomem = 0, ws_fail = 0;
     size_t bad_r = (size_t)-1;
     long bad_j = -1;
 #ifdef _OPENMP
@@ -684,7 +685,7 @@ static int eval_pass(const fused *fs, double tau, const double *y, double *out, 
     {
         double *ws = malloc(sizeof(double) * wsz);
         block_bufs w;
-        if (!ws) nomem = 1;
+        if (!hj_sys_team_all(ws != NULL, &ws_fail)) nomem = 1;
         else {
             block_bufs_init(&w, ws, g, fs->block_nodes);
             int nan_seen = 0;

@@ -31,6 +31,33 @@ double hj_sys_peak_rss_mb(void);
  * gigabytes. */
 void *hj_sys_alloc_large(size_t bytes);
 
+/* Inside an OpenMP parallel region, before a worksharing loop that every
+ * thread of the team must meet or none may (OpenMP's rule): returns 1 on
+ * every thread if ok is nonzero on every thread, else 0 on every thread,
+ * so that a thread whose workspace allocation failed does not skip the
+ * loop alone.  fail: an int shared by the team, 0 before the region; one
+ * call per region.  A barrier; outside a region (or without OpenMP)
+ * simply ok != 0.  Inline so that it is compiled with the caller's
+ * OpenMP flag. */
+static inline int hj_sys_team_all(int ok, int *fail)
+{
+    if (!ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+        *fail = 1;
+    }
+#ifdef _OPENMP
+#pragma omp barrier
+#endif
+    int f;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+    f = *fail;
+    return !f;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -8,6 +8,10 @@
 
 #include "hj_sys.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 static void queries_are_plausible(void **state)
 {
     (void)state;
@@ -35,4 +39,39 @@ static void large_blocks(void **state)
     }
 }
 
-HJ_TEST_MAIN("hj_sys", NULL, NULL, cmocka_unit_test(queries_are_plausible), cmocka_unit_test(large_blocks))
+/* hj_sys_team_all: one thread's failure is every thread's answer, so each
+ * thread meets the worksharing loop after it or none does. */
+static void team_agrees(void **state)
+{
+    (void)state;
+    for (int bad = -1; bad < 2; bad++) { /* the failing thread; -1: none */
+        int fail = 0, ran = 0, n_ok = 0, nth = 1;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(2) reduction(+ : ran, n_ok)
+#endif
+        {
+            int me = 0;
+#ifdef _OPENMP
+            me = omp_get_thread_num();
+#pragma omp single
+            nth = omp_get_num_threads();
+#endif
+            if (hj_sys_team_all(me != bad, &fail)) {
+                n_ok++;
+#ifdef _OPENMP
+#pragma omp for
+#endif
+                for (int i = 0; i < 100; i++) ran++;
+            }
+        }
+        const int all = bad < 0 || bad >= nth;
+        assert_int_equal(n_ok, all ? nth : 0);
+        assert_int_equal(ran, all ? 100 : 0);
+    }
+    int fail = 0;
+    assert_int_equal(hj_sys_team_all(1, &fail), 1); /* outside a region */
+    assert_int_equal(hj_sys_team_all(0, &fail), 0);
+}
+
+HJ_TEST_MAIN("hj_sys", NULL, NULL, cmocka_unit_test(queries_are_plausible), cmocka_unit_test(large_blocks),
+             cmocka_unit_test(team_agrees))
