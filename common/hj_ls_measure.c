@@ -22,8 +22,19 @@ static double h22_prime(double x, double c, double d)
     return (3 * x * x * p - x * x * x * (2 * x - c - d)) / (p * p);
 }
 
-double hj_ls_simplex_fraction(int d, const double *v)
+/* Vertex values beyond +-MEASURE_BIG count as +-MEASURE_BIG: an infinite
+ * value (a level set set to +-inf far from the front) then gives the
+ * limit of the finite formulas (the interface at the finite vertex; half
+ * way on an edge from -inf to +inf) instead of inf / inf, and the cubes
+ * of the tetrahedron's 2-2 split and the square of its derivative's
+ * denominator stay finite ((2e60)^4 = 1.6e241). */
+#define MEASURE_BIG 1e60
+
+double hj_ls_simplex_fraction(int d, const double *vin)
 {
+    double v[4];
+    for (int k = 0; k <= d && k < 4; k++)
+        v[k] = vin[k] > MEASURE_BIG ? MEASURE_BIG : vin[k] < -MEASURE_BIG ? -MEASURE_BIG : vin[k];
     int neg[4], pos[4], nn = 0, np = 0;
     for (int k = 0; k <= d; k++) {
         if (v[k] < 0) neg[nn++] = k;

@@ -28,7 +28,10 @@ extern "C" {
 #endif
 
 /* Fraction of the d-simplex (d = 1, 2, 3) with vertex values v[0..d] on
- * which the linear interpolant is negative. */
+ * which the linear interpolant is negative.  Values beyond +-1e60 (+-inf
+ * included) count as +-1e60, so that an infinite vertex gives the limit
+ * (the interface at the finite vertex, or half way between -inf and
+ * +inf).  NaN vertices count as positive: the measures below check them. */
 double hj_ls_simplex_fraction(int d, const double *v);
 
 /* The fractions (in [0, 1]) of {phi < 0} in the cells whose lowest

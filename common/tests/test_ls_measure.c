@@ -47,6 +47,51 @@ static void simplex_fractions(void **state)
     assert_close(hj_ls_simplex_fraction(3, a) + hj_ls_simplex_fraction(3, b), 1.0, 1e-9, 0);
 }
 
+/* Infinite vertices give the limits of the finite formulas (they gave
+ * inf / inf = NaN, and hj_ls_measure a NaN area with HJ_OK). */
+static void infinite_vertices(void **state)
+{
+    (void)state;
+    const double e1[2] = {-INFINITY, 1}, e2[2] = {-INFINITY, INFINITY}, e3[2] = {-1, INFINITY};
+    assert_close(hj_ls_simplex_fraction(1, e1), 1.0, 1e-15, 0);
+    assert_close(hj_ls_simplex_fraction(1, e2), 0.5, 1e-15, 0);
+    assert_close(hj_ls_simplex_fraction(1, e3), 0.0, 1e-15, 0);
+    const double t1[3] = {-INFINITY, 1, 2}, t2[3] = {-1, INFINITY, INFINITY}, t3[3] = {-INFINITY, INFINITY, 1};
+    assert_close(hj_ls_simplex_fraction(2, t1), 1.0, 1e-15, 0);
+    assert_close(hj_ls_simplex_fraction(2, t2), 0.0, 1e-15, 0);
+    const double f3 = hj_ls_simplex_fraction(2, t3);
+    assert_true(f3 >= 0 && f3 <= 1);
+    const double q1[4] = {-INFINITY, -1, 1, INFINITY}, q2[4] = {-INFINITY, -INFINITY, INFINITY, INFINITY};
+    const double g1 = hj_ls_simplex_fraction(3, q1), g2 = hj_ls_simplex_fraction(3, q2);
+    assert_true(g1 >= 0 && g1 <= 1);
+    assert_close(g2, 0.5, 1e-12, 0);
+    /* A disc whose outside far from the front is +inf: the same area as
+     * with the finite values there, well away from the disc's cells. */
+    hj_ls_grid g = hj_test_grid(2, 41, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *phi = hj_ls_alloc(&g);
+    long idx[2];
+    double x[2], m0, m1;
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) {
+            idx[0] = j;
+            hj_ls_coord(&g, idx, x);
+            phi[k + (size_t)j] = sqrt(x[0] * x[0] + x[1] * x[1]) - 0.5;
+        }
+    }
+    assert_int_equal(hj_ls_measure(&g, phi, &m0, NULL), HJ_OK);
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++)
+            if (phi[k + (size_t)j] > 0.3) phi[k + (size_t)j] = INFINITY;
+            else if (phi[k + (size_t)j] < -0.3) phi[k + (size_t)j] = -INFINITY;
+    }
+    assert_int_equal(hj_ls_measure(&g, phi, &m1, NULL), HJ_OK);
+    assert_true(isfinite(m1));
+    assert_true(m0 == m1);
+    hj_ls_free(phi);
+}
+
 /* A half-space is exact (its interpolant is linear); a disc and a ball
  * converge at second order. */
 static void measures(void **state)
@@ -284,6 +329,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(simplex_fractions),
+        cmocka_unit_test(infinite_vertices),
         cmocka_unit_test(measures),
         cmocka_unit_test_setup_teardown(writers, hj_test_mkdir, hj_test_rmdir),
         cmocka_unit_test(periodic_and_radius),
