@@ -233,10 +233,37 @@ void hj_cli_list(const hj_cli_spec *spec, FILE *out)
     }
 }
 
+/* The program's name for the check of stdout at exit, and whether the
+ * program already failed with its own message (then nothing is added). */
+static const char *stdout_prog;
+static int failing;
+
+/* At exit: what went to stdout (--help, tables) is only buffered until
+ * now, so a full disk or a closed pipe shows here.  A write error is then
+ * one message and exit status HJ_EXIT_RUN instead of a silent 0. */
+static void check_stdout(void)
+{
+    if (failing) return;
+    errno = 0;
+    const int flush_failed = fflush(stdout) != 0;
+    if (!flush_failed && !ferror(stdout)) return;
+    if (flush_failed && errno) fprintf(stderr, "%s: error writing stdout: %s\n", stdout_prog, strerror(errno));
+    else fprintf(stderr, "%s: error writing stdout\n", stdout_prog);
+    hj_out_remove_all();
+    _exit(HJ_EXIT_RUN);
+}
+
+void hj_cli_check_stdout(const char *prog)
+{
+    if (!stdout_prog) atexit(check_stdout);
+    stdout_prog = prog;
+}
+
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv)
 {
     hj_error err;
     int help = 0;
+    hj_cli_check_stdout(spec->prog);
     if (hj_cli_parse(spec, argc, argv, &help, &err)) hj_cli_fail(spec->prog, HJ_EXIT_USAGE, "%s", err.msg);
     if (help) {
         if (help == HJ_CLI_LIST) hj_cli_list(spec, stdout);
@@ -251,6 +278,7 @@ void hj_cli_fail(const char *prog, int exit_code, const char *fmt, ...)
     /* The message may quote what the user typed: control bytes are
      * escaped, so that it stays one line and cannot drive the terminal. */
     char msg[2048];
+    failing = 1;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);

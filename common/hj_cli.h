@@ -87,8 +87,14 @@ void hj_cli_list(const hj_cli_spec *spec, FILE *out);
 /* For main(): parse, print --help or --list-options and exit 0, or print
  * the one message and exit with HJ_EXIT_USAGE.  After a good parse it
  * installs hj_out_remove_on_signal (hj_io.h): an interrupted program
- * leaves no temporary file. */
+ * leaves no temporary file.  It also checks stdout at exit: a program
+ * whose --help, table or other stdout text could not be written (a full
+ * disk, /dev/full, a closed stdout) prints "prog: error writing stdout"
+ * and exits with HJ_EXIT_RUN instead of 0. */
 void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
+/* That check of stdout at exit alone, for a program with a parser of its
+ * own. */
+void hj_cli_check_stdout(const char *prog);
 
 /* Exit codes used by every program.  hj_cli_fail prints "prog: message"
  * as one line (control bytes in the message escaped: \n, \xHH), removes

@@ -7,8 +7,9 @@
 # maxn) gets, for each option: a missing value, values
 # below and above its range, nan, inf, an empty string, garbage (12abc)
 # and the option given twice, as far as each applies to the option's
-# type; per program an unknown option, a stray argument and values with
-# control bytes (newline, escape; once per option type); and the
+# type; per program an unknown option, a stray argument, values with
+# control bytes (newline, escape; once per option type) and --help with
+# stdout on /dev/full (exit status 1 there, not 2); and the
 # conflicting pairs of the list below.  Each run happens in an empty directory (with
 # --out-dir inside it where the program has one) and must end with exit
 # status 2, exactly one line on stderr, and no file created.  Programs
@@ -49,11 +50,11 @@ shopt -s nullglob dotglob
 run() {
     local prog=$1 class=$2
     shift 2
-    timeout 30 "$prog" "$@" >"$pw/out" 2>"$pw/err" </dev/null
-    local rc=$? why="" all="" left=("$pw"/run/*)
+    timeout 30 "$prog" "$@" >"${stdout_to:-$pw/out}" 2>"$pw/err" </dev/null
+    local rc=$? why="" all="" left=("$pw"/run/*) want=${want_status:-2}
     IFS= read -r -d '' all <"$pw/err"
     if [ $rc -eq 124 ]; then why="still running after 30 s (input accepted?)"
-    elif [ $rc -ne 2 ]; then why="exit status $rc, expected 2"
+    elif [ $rc -ne "$want" ]; then why="exit status $rc, expected $want"
     elif [[ $all != *$'\n' || ${all%$'\n'} == *$'\n'* || ${all%$'\n'} == "" ]]; then
         why="stderr is not exactly one line: $(head -c 300 "$pw/err" | od -c | head -5 | tr '\n' ' ')"
     elif [ ${#left[@]} -ne 0 ]; then
@@ -95,6 +96,8 @@ matrix() {
         run "$prog" unknown "${out[@]}" --no-such-option 1
         run "$prog" unknown "${out[@]}" stray
         run "$prog" control $'--no\nsuch\e[0m'
+        # --help into a full disk: a write error, not a silent 0
+        [ -w /dev/full ] && stdout_to=/dev/full want_status=1 run "$prog" help-full --help
         local o t lo hi ch maxn v below above k args ctl=" "
         while IFS=$'\t' read -r o t lo hi ch maxn; do
             opts+="$o "

@@ -225,7 +225,47 @@ static void fail_removes_open_temporaries(void **state)
     assert_int_equal(rmdir(dir), 0); /* no temporary left in it */
 }
 
+/* --help into stdout that cannot be written (/dev/full): one message and
+ * HJ_EXIT_RUN; it used to exit 0 with the text lost. */
+static int run_help_into(const char *path, char *text, size_t n)
+{
+    char errpath[] = "/tmp/hj_test_cli.XXXXXX";
+    int efd = mkstemp(errpath);
+    assert_true(efd >= 0);
+    unlink(errpath);
+    fflush(stdout), fflush(stderr);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        int ofd = open(path, O_WRONLY);
+        if (ofd < 0) _exit(5);
+        dup2(ofd, STDOUT_FILENO), dup2(efd, STDERR_FILENO);
+        char *argv[] = {"prog", "--help", NULL};
+        hj_cli_parse_or_exit(&spec, 2, argv);
+        _exit(6);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ssize_t got = pread(efd, text, n - 1, 0);
+    text[got > 0 ? got : 0] = '\0';
+    close(efd);
+    assert_true(WIFEXITED(status));
+    return WEXITSTATUS(status);
+}
+
+static void help_write_error_fails(void **state)
+{
+    (void)state;
+    char text[256];
+    if (access("/dev/full", W_OK)) skip();
+    assert_int_equal(run_help_into("/dev/full", text, sizeof text), HJ_EXIT_RUN);
+    assert_string_equal(text, "prog: error writing stdout: No space left on device\n");
+    assert_int_equal(run_help_into("/dev/null", text, sizeof text), 0);
+    assert_string_equal(text, "");
+}
+
 HJ_TEST_MAIN("cli", NULL, NULL, cmocka_unit_test(values_and_defaults), cmocka_unit_test(bad_values),
              cmocka_unit_test(repeated_list), cmocka_unit_test(help_lists_every_option),
              cmocka_unit_test(list_options_as_tsv), cmocka_unit_test(fail_prints_one_line),
-             cmocka_unit_test(fail_removes_open_temporaries))
+             cmocka_unit_test(fail_removes_open_temporaries),
+             cmocka_unit_test(help_write_error_fails))

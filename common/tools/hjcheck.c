@@ -82,6 +82,7 @@
 #include <string.h>
 
 #include "hj_compare.h"
+#include "hj_cli.h"
 #include "hj_io.h"
 
 typedef struct {
@@ -940,6 +941,7 @@ static int bad_usage(const char *fmt, const char *arg)
 
 int main(int argc, char **argv)
 {
+    hj_cli_check_stdout("hjcheck");
     const char *resdir = NULL, *accept = NULL, *reason = NULL, *reason_text_arg = NULL;
     int quick = 0, nofail = 0, npapers = 0;
     const char *papers[64];

@@ -27,6 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hj_cli.h"
 #include "hj_io.h"
 
 static double now(void)
@@ -38,6 +39,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
+    hj_cli_check_stdout("hjtime");
     if (argc == 2 && !strcmp(argv[1], "--help")) {
         printf("usage: hjtime OUT.tsv LABEL -- COMMAND [ARGS...]\n"
                "Runs COMMAND and, when it succeeds, writes OUT.tsv: label, wall_s, cpu_s, peak_mb.\n");
