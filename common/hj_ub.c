@@ -2,6 +2,7 @@
 #include "hj_ub.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -533,7 +534,7 @@ static int snapshot(hj_ub_solver *sv, size_t *m, hj_error *err)
     return HJ_OK;
 }
 
-static double time_step(hj_ub_solver *sv, size_t m, double tmax)
+static int time_step(hj_ub_solver *sv, size_t m, double tmax, double *dt, hj_error *err)
 {
     const hj_ub_problem *pb = sv->pb;
     double rate = 0, f[HJ_BAND_DMAX], x[HJ_BAND_DMAX];
@@ -542,13 +543,25 @@ static double time_step(hj_ub_solver *sv, size_t m, double tmax)
             memcpy(x, &sv->x[i * pb->d], (size_t)pb->d * sizeof *x);
             pb->dyn(sv->t, x, a, f, pb->ctx);
             for (int k = 0; k < pb->d; k++) {
+                /* a NaN would drop out of the max and an infinity give
+                 * dt = 0: steps that never reach tmax */
+                if (!isfinite(f[k])) {
+                    char at[128];
+                    int len = 0;
+                    for (int q = 0; q < pb->d; q++)
+                        len += snprintf(at + len, sizeof at - (size_t)len, "%s%g", q ? ", " : "", x[q]);
+                    return hj_error_set(err, HJ_ENONFINITE,
+                                        "dynamics: f_%d = %g at x = (%s), control %d, t = %g (must be finite)", k,
+                                        f[k], at, a, sv->t);
+                }
                 const double r = fabs(f[k]) / sv->dx[k];
                 rate = r > rate ? r : rate;
             }
         }
     const double left = tmax - sv->t;
-    double dt = rate * left <= pb->cfl ? left : pb->cfl / rate;
-    return pb->dtmax > 0 && dt > pb->dtmax ? pb->dtmax : dt;
+    *dt = rate * left <= pb->cfl ? left : pb->cfl / rate;
+    if (pb->dtmax > 0 && *dt > pb->dtmax) *dt = pb->dtmax;
+    return HJ_OK;
 }
 
 /* mu of direction k at the cell next to node i (s = 0: left, 1: right). */
@@ -664,13 +677,16 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
     const hj_ub_problem *pb = sv->pb;
     const int d = pb->d;
     int rc;
+    if (isnan(tmax)) return hj_error_set(err, HJ_EINVAL, "step: the final time is NaN");
     if (!(tmax > sv->t)) return HJ_OK;
     if (hj_band_kind_of(sv->s) != HJ_BAND_FS && (rc = expand_band(sv, err))) return rc;
     size_t m = 0;
     if ((rc = snapshot(sv, &m, err))) return rc;
     sv->band_sum += (double)m;
     sv->band_max = m > sv->band_max ? m : sv->band_max;
-    const double dt = time_step(sv, m, tmax), snap = pb->snap > 0 ? pb->snap : 1e-12;
+    double dt = 0;
+    if ((rc = time_step(sv, m, tmax, &dt, err))) return rc;
+    const double snap = pb->snap > 0 ? pb->snap : 1e-12;
     for (int a = 0; a < pb->ncontrols; a++) {
         for (size_t i = 0; i < m; i++) {
             double x[HJ_BAND_DMAX];
@@ -708,6 +724,7 @@ int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err)
 
 int hj_ub_run(hj_ub_solver *sv, double T, hj_error *err)
 {
+    if (!isfinite(T)) return hj_error_set(err, HJ_EINVAL, "run: the final time must be finite, got %g", T);
     while (sv->t < T) {
         int rc = hj_ub_step(sv, T, err);
         if (rc) return rc;

@@ -101,9 +101,11 @@ typedef struct {
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err);
 void hj_ub_free(hj_ub_solver *sv);
 
-/* One step of the scheme, with dt <= tmax - t. */
+/* One step of the scheme, with dt <= tmax - t (none when tmax <= t).
+ * HJ_EINVAL for a NaN tmax; HJ_ENONFINITE naming the node, control and
+ * time when the dynamics give a NaN or infinite f at a band node. */
 int hj_ub_step(hj_ub_solver *sv, double tmax, hj_error *err);
-/* Steps until t = T. */
+/* Steps until t = T (finite, else HJ_EINVAL); errors as hj_ub_step. */
 int hj_ub_run(hj_ub_solver *sv, double T, hj_error *err);
 
 /* Centre of cell idx. */

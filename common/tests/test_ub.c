@@ -3,6 +3,7 @@
  * store, the errors of section 4 on the band and on the full grid. */
 #include "hj_test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -252,6 +253,40 @@ static void field_errors_equal_solver_errors(void **state)
     }
 }
 
+/* Dynamics that give NaN or infinity: HJ_ENONFINITE naming the node (a
+ * NaN dropped out of the CFL rate and the run went on; an infinity gave
+ * dt = 0, and hj_ub_run never ended); a NaN or infinite final time is
+ * HJ_EINVAL (NaN used to return HJ_OK at once). */
+static void nonfinite_dynamics_and_times(void **state)
+{
+    (void)state;
+    const double bad[2] = {NAN, INFINITY};
+    for (int b = 0; b < 2; b++) {
+        box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {bad[b], 0.5, 0}, .kind = 0};
+        hj_ub_problem pb = square_problem(&c, 41);
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+        assert_int_equal(hj_ub_step(&sv, 0.5, &err), HJ_ENONFINITE);
+        assert_non_null(strstr(err.msg, "f_0"));
+        assert_non_null(strstr(err.msg, "control 0"));
+        assert_true(sv.t == 0);
+        hj_ub_free(&sv);
+    }
+    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+    hj_ub_problem pb = square_problem(&c, 41);
+    hj_ub_solver sv;
+    hj_error err = {0};
+    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+    assert_int_equal(hj_ub_run(&sv, NAN, &err), HJ_EINVAL);
+    assert_int_equal(hj_ub_step(&sv, NAN, &err), HJ_EINVAL);
+    assert_int_equal(hj_ub_run(&sv, INFINITY, &err), HJ_EINVAL);
+    assert_int_equal(hj_ub_run(&sv, 0.25, &err), HJ_OK);
+    assert_true(sv.t == 0.25);
+    hj_ub_free(&sv);
+}
+
 HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
-             cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors))
+             cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
+             cmocka_unit_test(nonfinite_dynamics_and_times))
