@@ -526,8 +526,10 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
             x[0] = g->min[0] + (double)j * g->dx[0];
             double v = hj_reach_set_at(&pb->target, T, x, k);
             if (isnan(v)) {
+                char at[256];
+                hj_ls_format_node(g, r, j, at, sizeof at);
                 hj_ls_free(pc.prev);
-                return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
+                return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at x = (%s)", at);
             }
             if (ttr) ttr[k] = v <= 0 ? 0 : INFINITY;
             if (obst) {

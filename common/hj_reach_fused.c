@@ -628,6 +628,28 @@ static size_t user_row(const hj_ls_grid *g, int compact, size_t r)
     return compact ? r * (size_t)g->N[0] : hj_ls_row(g, r, idx);
 }
 
+/* The error for a NaN target value, naming the first such node in the
+ * order of the rows (the parallel pass only knows that there is one). */
+static int target_nan_error(const hj_reach_problem *pb, int compact, double T, hj_error *err)
+{
+    const hj_ls_grid *g = pb->grid;
+    for (size_t r = 0; r < g->rows; r++) {
+        long i[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        hj_ls_row(g, r, i);
+        hj_ls_coord(g, i, x);
+        const size_t ku = user_row(g, compact, r);
+        for (long j = 0; j < g->N[0]; j++) {
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            if (!isnan(hj_reach_set_at(&pb->target, T, x, ku + (size_t)j))) continue;
+            char at[256];
+            hj_ls_format_node(g, r, j, at, sizeof at);
+            return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at x = (%s)", at);
+        }
+    }
+    return hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
+}
+
 int hj_reach_fused_applies(const hj_reach_problem *pb)
 {
     return !pb->general && !pb->per_node && hj_ls_scheme_name(pb->scheme) && pb->order >= 1 && pb->order <= 3 &&
@@ -784,7 +806,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             y[kc + (size_t)j] = v;
         }
     }
-    if (nan_target) rc = hj_error_set(err, HJ_ENONFINITE, "reach: the target is NaN at a node");
+    if (nan_target) rc = target_nan_error(pb, compact, T, err);
     const double tk = isinf(pb->horizon) ? DBL_MAX / 4 : T;
     const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
     const size_t wsz = block_work(g, fs.block_nodes);

@@ -779,9 +779,39 @@ static void invalid_problems(void **state)
     hj_ls_free(b);
 }
 
+/* NaN beyond x = 0.7 (nodes at -2 + 0.4 i: the first is 0.8). */
+static double nan_right(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return x[0] > 0.7 ? NAN : fabs(x[0]) - 0.5;
+}
+
+/* A NaN target names its first node on both paths (the message said "at
+ * a node"), as the API guide promises for every NaN input. */
+static void nan_target_names_node(void **state)
+{
+    (void)state;
+    double a = 0;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    hj_ls_grid g = grid1(11);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = nan_right, pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g);
+    for (int general = 0; general < 2; general++) {
+        hj_error err;
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_ENONFINITE);
+        assert_string_equal(err.msg, "reach: the target is NaN at x = (0.8)");
+    }
+    hj_ls_free(phi);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
              cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),
-             cmocka_unit_test(invalid_problems))
+             cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node))
