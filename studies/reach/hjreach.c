@@ -122,10 +122,10 @@ static void parse_list(const char *s, const char *what, double *out, int n)
     strcpy(buf, s);
     int k = 0;
     for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++) {
-        if (k >= n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d numbers, got more", what, n);
+        if (k >= n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d number%s, got more", what, n, n == 1 ? "" : "s");
         if (hj_parse_double(tok, what, -1e300, 1e300, &out[k], &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
     }
-    if (k != n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d numbers, got %d", what, n, k);
+    if (k != n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d number%s, got %d", what, n, n == 1 ? "" : "s", k);
 }
 
 static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi, const double *ttr)
@@ -190,7 +190,7 @@ int main(int argc, char **argv)
         {.name = "--target-radius", .type = HJ_OPT_DOUBLE, .value = &radius, .min = 1e-12, .max = 1e12,
          .metavar = "R", .help = "radius of the target ball"},
         {.name = "--obstacle", .type = HJ_OPT_STRING, .value = &obstacle_s, .metavar = "LO:HI",
-         .help = "obstacle box lo1,lo2:hi1,hi2 over the first two dimensions", .dflt = "none"},
+         .help = "obstacle box lo1,lo2:hi1,hi2 over the first two dimensions (lo:hi over the first only for double_integrator)", .dflt = "none"},
         {.name = "--horizon", .type = HJ_OPT_DOUBLE, .value = &horizon, .min = 0, .max = 1e12, .metavar = "T",
          .help = "time horizon (0: until converged, needs --tol)"},
         {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &tol, .min = 0, .max = 1e12, .metavar = "RATE",
