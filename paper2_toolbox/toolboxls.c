@@ -389,7 +389,8 @@ int main(int argc, char **argv)
 
     hj_error err;
     hj_out out;
-    if (p2_open(&out, out_dir, "toolboxls.tsv", &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    if (hj_mkdirs(out_dir, &err) || p2_open(&out, out_dir, "toolboxls.tsv", &err))
+        hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     hj_out_remove_on_signal();
     fprintf(out.fp, "# toolboxls: our kernel against ToolboxLS 1.1's final arrays; rel_* = max |ours - toolbox| / "
                     "max |toolbox| (all nodes, band |toolbox| < 2 max dx); node_* with our CFL rule%s\n",
