@@ -1232,6 +1232,12 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     return HJ_OK;
 }
 
+/* The largest start time (fixed value, source time) in the solver's
+ * units: the local solves square times, and beyond about 1.3e154 those
+ * squares overflow, which would leave every node at +INFINITY, counted as
+ * walled off. */
+#define EIK_T_RANGE 1e150
+
 int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle,
                  const hj_eik_source *src, int nsrc, const double *fixed, const hj_eik_options *opt, double *T,
                  hj_eik_stats *st, hj_error *err)
@@ -1315,9 +1321,15 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 w.fs[k] = ldexp(fv, -ef);
                 w.state[k] = ST_FREE;
                 if (fixed && !isnan(fixed[u])) {
-                    if (!isfinite(ldexp(fixed[u], -et))) {
+                    if (!isfinite(fixed[u])) {
                         rc = hj_error_set(err, HJ_EINVAL, "fixed value %g at node (%ld, %ld, %ld): must be finite or NaN",
                                           fixed[u], a, b, c);
+                        break;
+                    }
+                    if (!(fabs(ldexp(fixed[u], -et)) <= EIK_T_RANGE)) {
+                        rc = hj_error_set(err, HJ_EINVAL, "fixed value %g at node (%ld, %ld, %ld) is out of range in the "
+                                          "solver's units (times divided by 2^%d: |T| <= %g)", fixed[u], a, b, c, et,
+                                          EIK_T_RANGE);
                         break;
                     }
                     w.state[k] = ST_FIXED;
@@ -1351,9 +1363,9 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             break;
         }
         w.src[s].t0 = ldexp(src[s].t0, -et);
-        if (!isfinite(w.src[s].t0)) {
+        if (!(fabs(w.src[s].t0) <= EIK_T_RANGE)) {
             rc = hj_error_set(err, HJ_EINVAL, "source %d: time %g is out of range in the solver's units (times "
-                                              "divided by 2^%d)", s + 1, src[s].t0, et);
+                                              "divided by 2^%d: |T| <= %g)", s + 1, src[s].t0, et, EIK_T_RANGE);
             break;
         }
         w.src[s].s0 = slowness_at(&w, w.src[s].x);

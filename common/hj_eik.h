@@ -80,7 +80,8 @@ hj_eik_options hj_eik_default_options(void);
  * its result failed the check of hj_eik_guard.h (a blow-up: T below the
  * earliest start, NaN, or not finite where a front arrives).  Bad input (f <= 0 or non-finite
  * outside obstacles, a source in an obstacle or outside the grid, no
- * source and no fixed node, ...) gives HJ_EINVAL with a message before any
+ * source and no fixed node, a fixed value or source time beyond 1e150 in
+ * the solver's units, ...) gives HJ_EINVAL with a message before any
  * sweep.  Messages number the sources from 1. */
 int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
                  const unsigned char *obstacle, const hj_eik_source *src, int nsrc,

@@ -167,6 +167,20 @@ static void bad_input(void **state)
     assert_non_null(strstr(e.msg, "both an obstacle and a fixed value"));
     fx[2 * 8 + 3] = INFINITY;
     assert_int_equal(solve_err(&g, f, 0, NULL, NULL, 0, fx, &o, &e), HJ_EINVAL);
+    /* Start times whose squares overflow: every node came back +INFINITY
+     * ("walled off") with HJ_OK. */
+    fx[2 * 8 + 3] = NAN;
+    fx[9] = 1e200;
+    assert_int_equal(solve_err(&g, f, 0, NULL, NULL, 0, fx, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "fixed value 1e+200 at node (1, 1, 0) is out of range"));
+    fx[9] = -1e200;
+    assert_int_equal(solve_err(&g, f, 0, NULL, NULL, 0, fx, &o, &e), HJ_EINVAL);
+    hj_eik_source big = s;
+    big.t0 = 1e200;
+    o.factored = 0;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &big, 1, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "source 1: time 1e+200 is out of range"));
+    o.factored = 1;
     assert_int_equal(progress_calls, 0);
 }
 
