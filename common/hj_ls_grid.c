@@ -31,6 +31,11 @@ int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *m
         g->min[d] = min[d];
         g->max[d] = max[d];
         g->dx[d] = (max[d] - min[d]) / (double)(N[d] - 1);
+        /* max - min overflows beyond +-DBL_MAX / 2 and dx underflows to 0
+         * on a subnormal box: the stencils divide by dx */
+        if (!isfinite(g->dx[d]) || !(g->dx[d] > 0))
+            return hj_error_set(err, HJ_EINVAL, "grid spacing (max - min) / (N - 1) = %g in dimension %d: must be "
+                                "finite and > 0", g->dx[d], d);
         g->bc[d] = bc[d];
         g->ext[d] = N[d] + 2 * HJ_LS_GHOST;
         /* Overflow-safe product: "grid too large" before any allocation. */

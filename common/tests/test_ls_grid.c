@@ -276,6 +276,13 @@ static void errors(void **state)
     assert_int_equal(hj_ls_grid_init(&g, 1, &bad, mx, &n5, bc, &err), HJ_ENONFINITE);
     hj_ls_bc ub = {42, 0, 0};
     assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, &n5, &ub, &err), HJ_EINVAL);
+    /* finite bounds whose spacing is not: max - min overflows, or dx
+     * underflows to 0 (both were accepted, dx = inf or 0) */
+    const double huge_lo = -1e308, huge_hi = 1e308, tiny = 5e-324;
+    assert_int_equal(hj_ls_grid_init(&g, 1, &huge_lo, &huge_hi, &n5, bc, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "grid spacing"));
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, &tiny, &n5, bc, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "grid spacing"));
 }
 
 /* Norms of a known field: |x| on [-1, 1]. */
