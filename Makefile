@@ -210,10 +210,12 @@ examples: | $(DEPS_OK)
 	PKG_CONFIG_PATH=$(EX_PREFIX)/lib/pkgconfig LD_LIBRARY_PATH=$(EX_PREFIX)/lib \
 	  $(MAKE) --no-print-directory -C examples OUT=$(abspath build/examples) check
 
+# Every test program runs, and the failing ones are named at the end.
 memcheck: $(UNIT_TESTS)
-	@for t in $(UNIT_TESTS); do \
-	  valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite $$t >/dev/null || exit 1; \
-	done; echo "memcheck: no errors or definite leaks"
+	@fail=""; for t in $(UNIT_TESTS); do \
+	  valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite $$t >/dev/null || fail="$$fail $${t##*/}"; \
+	done; if [ -n "$$fail" ]; then echo "memcheck: errors or definite leaks in$$fail"; exit 1; fi; \
+	echo "memcheck: no errors or definite leaks"
 
 # ---- results, check, report -------------------------------------------
 
