@@ -295,11 +295,24 @@ static int push_meta(hj_table *t, const char *line)
     return HJ_OK;
 }
 
+FILE *hj_in_open(const char *path, const char *mode, hj_error *err)
+{
+    FILE *f = fopen(path, mode);
+    struct stat st;
+    if (f && fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(f);
+        f = NULL;
+        errno = EISDIR;
+    }
+    if (!f) hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    return f;
+}
+
 int hj_table_read(hj_table *t, const char *path, hj_error *err)
 {
     memset(t, 0, sizeof *t);
-    FILE *fp = fopen(path, "r");
-    if (!fp) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    FILE *fp = hj_in_open(path, "r", err);
+    if (!fp) return HJ_EIO;
     int lineno = 0, rc = HJ_OK, bad = 0;
     char *line;
     size_t rowcap = 0;

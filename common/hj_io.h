@@ -45,6 +45,11 @@ int hj_out_commit(hj_out *out, hj_error *err);
 /* Close and remove the temporary file (after an error). */
 void hj_out_abort(hj_out *out);
 
+/* fopen(path, mode) for reading, refusing a directory (which fopen opens
+ * and whose reads then fail with a bare "error reading"): NULL with
+ * "cannot read PATH: reason" (HJ_EIO) in err. */
+FILE *hj_in_open(const char *path, const char *mode, hj_error *err);
+
 /* For programs: on SIGINT, SIGTERM or SIGHUP remove every temporary file
  * still open, then die of the signal as before; a signal the process
  * ignores (nohup) stays ignored.  The library never installs it by itself

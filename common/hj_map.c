@@ -1,6 +1,7 @@
 /* hj_map.c -- slowness maps from grid files and their bilinear interpolation
  * (see hj_map.h). */
 #include "hj_map.h"
+#include "hj_io.h"
 #include "hj_vol.h"
 
 #include <ctype.h>
@@ -127,8 +128,8 @@ static int pgm_number(pgm_in *in, const char *what, long lo, long hi, long *out,
 
 int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    FILE *f = hj_in_open(path, "rb", err);
+    if (!f) return HJ_EIO;
     pgm_in in = {f, path, 1, 0, 0, 0};
     char magic[2], q[32];
     int nm = 0, c = 0;

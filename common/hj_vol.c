@@ -30,8 +30,8 @@ static void flip_rows(double *v, long nx, long ny, long nz)
 
 int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
 {
-    FILE *f = fopen(path, "r");
-    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    FILE *f = hj_in_open(path, "r", err);
+    if (!f) return HJ_EIO;
     size_t cap = 1024, n = 0;
     double *v = malloc(cap * sizeof *v);
     long rows = 0, cols = -1, nz = 0, slice_rows = 0, rows0 = -1; /* rows0: rows of the first slice */
@@ -145,8 +145,8 @@ int hj_vol_read_raw(hj_vol *vol, const char *path, const long n[3], int bytes, h
             return hj_error_set(err, HJ_EINVAL, "raw volume %s: %ld values along dimension %d", path, n[d], d + 1);
     const double count = (double)n[0] * n[1] * n[2];
     if (count > 2e9) return hj_error_set(err, HJ_ENOMEM, "raw volume %s: %.3g values, too many", path, count);
-    FILE *f = fopen(path, "rb");
-    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    FILE *f = hj_in_open(path, "rb", err);
+    if (!f) return HJ_EIO;
     struct stat st;
     const long total = n[0] * n[1] * n[2];
     if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (double)st.st_size != count * bytes) {
@@ -191,8 +191,8 @@ int hj_vol_read_raw(hj_vol *vol, const char *path, const long n[3], int bytes, h
 
 int hj_vol_is_pgm(const char *path, int *is_pgm, hj_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return hj_error_set(err, HJ_EIO, "cannot read %s: %s", path, strerror(errno));
+    FILE *f = hj_in_open(path, "rb", err);
+    if (!f) return HJ_EIO;
     unsigned char b[3] = {0, 0, 0};
     const size_t got = fread(b, 1, 3, f);
     fclose(f);

@@ -90,8 +90,9 @@ static int count_fields(const char *s)
  * one message on a bad line. */
 static double *read_points(const char *path, const char *what, int lo, int hi, long *np)
 {
-    FILE *f = fopen(path, "r");
-    if (!f) hj_cli_fail(prog, HJ_EXIT_RUN, "cannot read %s: %s", path, strerror(errno));
+    hj_error err;
+    FILE *f = hj_in_open(path, "r", &err);
+    if (!f) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     long cap = 64, n = 0, line = 0;
     double *pts = malloc(sizeof *pts * (size_t)(cap * hi));
     char buf[1024], q[64];

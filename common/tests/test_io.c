@@ -76,6 +76,10 @@ static void malformed_tables(void **state)
     assert_non_null(strstr(err.msg, ":2: a NUL byte"));
     snprintf(path, sizeof path, "%s/none.tsv", dir);
     assert_int_equal(hj_table_read(&t, path, &err), HJ_EIO);
+    /* a directory says so (it was a bare "error reading") */
+    assert_int_equal(hj_table_read(&t, dir, &err), HJ_EIO);
+    assert_non_null(strstr(err.msg, "cannot read"));
+    assert_non_null(strstr(err.msg, ": Is a directory"));
 }
 
 static void unwritable_output(void **state)

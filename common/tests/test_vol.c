@@ -55,6 +55,15 @@ static void text_volume_errors(void **state)
     assert_has(err.msg, "need at least 2 x 2 values (the file holds none)");
     assert_int_equal(hj_vol_read_text(&v, WRITE("d.txt", "1 2\n3 4.5.6\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "d.txt:2:3: '4.5.6' is not a number");
+    /* a directory, by every reader: "Is a directory" (it was a bare
+     * "error reading") */
+    const long n[3] = {2, 2, 1};
+    assert_int_equal(hj_vol_read_text(&v, hj_test_dir(), 1, &err), HJ_EIO);
+    assert_has(err.msg, ": Is a directory");
+    assert_int_equal(hj_vol_read_raw(&v, hj_test_dir(), n, 8, &err), HJ_EIO);
+    assert_has(err.msg, ": Is a directory");
+    assert_int_equal(hj_vol_read(&v, hj_test_dir(), 0, 1, &err), HJ_EIO);
+    assert_has(err.msg, ": Is a directory");
     assert_null(v.v);
 }
 
