@@ -487,7 +487,7 @@ int main(int argc, char **argv)
         double v[4] = {0, 0, 0, 0};
         const int nf = count_fields(src_s[s]);
         if ((nf != dim && nf != dim + 1) || parse_doubles(src_s[s], v, nf))
-            hj_cli_fail(prog, HJ_EXIT_USAGE, "--source wants %s (finite numbers) on this %d-D grid, got '%s'",
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "--source wants %s (numbers within +-1e300) on this %d-D grid, got '%s'",
                         dim == 2 ? "X,Y or X,Y,T0" : "X,Y,Z or X,Y,Z,T0", dim, src_s[s]);
         double *q = pts + 4 * npts++;
         q[0] = v[0], q[1] = v[1], q[2] = dim == 3 ? v[2] : 0, q[3] = v[dim];

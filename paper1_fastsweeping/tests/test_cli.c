@@ -192,6 +192,11 @@ static void eikonal_bad_files(void **state)
     expect_failure(P1 "eikonal --speed-const 1 --domain 0,1,0,1,0,1 --N 8 --source 0,0", 2,
                    "--source wants X,Y,Z or X,Y,Z,T0");
     expect_failure(P1 "eikonal --speed-const 1 --source 0,0 --format vtk --out -", 2, "--format vtk needs --out FILE");
+    /* 1e308 is finite: the message gives the bound it is beyond */
+    expect_failure(P1 "eikonal --speed-const 1 --source 1e308,0", 2, "(numbers within +-1e300)");
+    /* a directory as a map or point file is named as one */
+    expect_failure(P1 "eikonal --speed examples --source 0,0", 1, "cannot read examples: Is a directory");
+    expect_failure(P1 "eikonal --speed-const 1 --sources examples", 1, "cannot read examples: Is a directory");
     expect_failure(P1 "eikonal --speed examples/data/volume.txt --source 2,2,2 --out -", 2, "a 3-D result is written as VTK");
     /* a speed of 0 is an obstacle: a source on it, and walled-off nodes */
     write_text(path, sizeof path, "zero.txt", "1 1 1\n1 0 1\n1 1 1\n");
