@@ -562,6 +562,78 @@ void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, d
 #undef SELECT_LOOP
 #undef MIRROR
 
+/* The upwind WENO5 value of node i along one dimension for velocity v:
+ * the left derivative from D0..D4 where v > 0, else the right one from
+ * the mirrored D5..D1 (MIRROR's expressions, the same bits). */
+static inline __attribute__((always_inline)) double weno5_upwind(int scheme, const double *restrict const *D, long i,
+                                                                double v, double eps)
+{
+    const int left = v > 0;
+    const double a0 = D[0][i], a1 = D[1][i], a2 = D[2][i], a3 = D[3][i], a4 = D[4][i], a5 = D[5][i];
+    const double m3 = left ? a0 : a5, m2 = left ? a1 : a4, m1 = left ? a2 : a3;
+    const double z0 = left ? a3 : a2, p1 = left ? a4 : a1;
+    const double m = max2(max4sq(m2, m1, z0, p1), m3 * m3);
+    double L, R;
+    if (scheme == HJ_LS_WENO5A) weno5a_pair(m3, m2, m1, z0, p1, m, eps, &L, &R);
+    else weno5b_pair(m3, m2, m1, z0, p1, m, eps, &L, &R);
+    (void)R;
+    return L;
+}
+
+/* hj_ls_weno5_transport2_eps's loop over nodes I0 .. I0 + CNT - 1 for
+ * the dimensions with flow (f0, f1 constants where inlined); local: both
+ * epsilons are (3.38)'s, so that the selection of eps folds away. */
+static inline __attribute__((always_inline)) void weno5_transport2(int scheme, int f0, int f1, int local,
+                                                                  const double *const *D0, const double *const *D1,
+                                                                  long i0, long cnt, const double *eps,
+                                                                  const double *restrict v0,
+                                                                  const double *restrict v1, double *restrict out)
+{
+    const double *restrict A[6], *restrict B[6];
+    for (int k = 0; k < 6; k++) A[k] = f0 ? D0[k] : NULL, B[k] = f1 ? D1[k] : NULL;
+    const double e0 = local ? -1.0 : eps[0], e1 = local ? -1.0 : eps[1];
+    for (long i = i0; i < i0 + cnt; i++) {
+        double ac = 0;
+        if (f0) ac = 0.0 - v0[i] * weno5_upwind(scheme, A, i, v0[i], e0);
+        if (f1) ac = (f0 ? ac : 0.0) - v1[i] * weno5_upwind(scheme, B, i, v1[i], e1);
+        out[i] = ac;
+    }
+}
+
+/* Whole blocks of 8 nodes, then the last 8 again (as the select loop). */
+static inline __attribute__((always_inline)) void weno5_transport2_row(int scheme, int f0, int f1, int local,
+                                                                      const double *const *D0,
+                                                                      const double *const *D1, long n,
+                                                                      const double *eps, const double *v0,
+                                                                      const double *v1, double *out)
+{
+    const long n8 = n & ~7L;
+    weno5_transport2(scheme, f0, f1, local, D0, D1, 0, n8, eps, v0, v1, out);
+    if (n8 < n && n >= 8) weno5_transport2(scheme, f0, f1, local, D0, D1, n - 8, 8, eps, v0, v1, out);
+    else if (n8 < n) weno5_transport2(scheme, f0, f1, local, D0, D1, n8, n - n8, eps, v0, v1, out);
+}
+
+#define TRANSPORT2_FLOWS(S, L)                                                                  \
+    do {                                                                                        \
+        if (v0 && v1) weno5_transport2_row(S, 1, 1, L, D0, D1, n, eps, v0, v1, out);             \
+        else if (v0) weno5_transport2_row(S, 1, 0, L, D0, D1, n, eps, v0, v1, out);              \
+        else weno5_transport2_row(S, 0, 1, L, D0, D1, n, eps, v0, v1, out);                      \
+    } while (0)
+
+HJ_LS_CLONES
+int hj_ls_weno5_transport2_eps(int scheme, const double *const *D0, const double *const *D1, long n,
+                               const double *eps, const double *v0, const double *v1, double *restrict out)
+{
+    if ((scheme != HJ_LS_WENO5A && scheme != HJ_LS_WENO5B) || (!v0 && !v1)) return 0;
+    const int local = (!v0 || eps[0] < 0) && (!v1 || eps[1] < 0);
+    if (scheme == HJ_LS_WENO5A && local) TRANSPORT2_FLOWS(HJ_LS_WENO5A, 1);
+    else if (scheme == HJ_LS_WENO5A) TRANSPORT2_FLOWS(HJ_LS_WENO5A, 0);
+    else if (local) TRANSPORT2_FLOWS(HJ_LS_WENO5B, 1);
+    else TRANSPORT2_FLOWS(HJ_LS_WENO5B, 0);
+    return 1;
+}
+#undef TRANSPORT2_FLOWS
+
 double hj_ls_weno_eps_grid(const hj_ls_grid *g, const double *data, int d)
 {
     /* rows along d: every interior node of the other dimensions */

@@ -139,6 +139,17 @@ void hj_ls_upwind_select_diffs(int scheme, const double *const *D, long n, const
 void hj_ls_upwind_select_diffs_eps(int scheme, const double *const *D, long n, double eps, const double *v,
                                    double *out);
 
+/* The transport term of a 2-D row with WENO5A/B, from the differences D0
+ * (along dimension 0) and D1 (along dimension 1) laid out as above:
+ * out[i] = (0 - v0[i] W0[i]) - v1[i] W1[i], W_d the upwind side (v_d > 0:
+ * left) of hj_ls_upwind_select_diffs_eps with the epsilon eps[d] (the
+ * same bits as that function's values summed in dimension order).  A
+ * dimension whose velocity row is NULL has no flow and is left out
+ * (out = 0 - v W of the other), its D not read.  Returns 0 and writes
+ * nothing for other schemes or when both velocity rows are NULL. */
+int hj_ls_weno5_transport2_eps(int scheme, const double *const *D0, const double *const *D1, long n,
+                               const double *eps, const double *v0, const double *v1, double *out);
+
 /* D[i] = (p[i + (k+1) s] - p[i + k s]) / dx for i < n: one row of the
  * differences above (k = -3..2), computed exactly as the kernels do. */
 void hj_ls_upwind_difference_row(const double *p, ptrdiff_t s, long n, double dx, int k, double *D);

@@ -498,16 +498,15 @@ static void conv2_row(int eno2, int f0, int f1, int cfl, long n, const double *p
 #undef CONV2_MODES
 #undef CONV2_FLOWS
 
-/* The row evaluator of a 2-D convection with a cheap scheme (the velocity
- * rows as convection_row finds them). */
-static int convection_row2(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+/* The velocity rows of a 2-D row and whether each has flow (as
+ * convection_row finds them): from the steady velocity's cache, whose
+ * entry (convection_vcache_row) is returned, or evaluated into the first
+ * two rows of the workspace (NULL returned). */
+static const double *conv2_velocity(const conv_pass *ps, double t, const row_ctx *rc, const double **vel, int *flow)
 {
-    const conv_pass *ps = term;
     const hj_ls_convection *c = ps->c;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    const double *vel[2];
-    int flow[2];
     const double *row = ps->vcache ? convection_vcache_row(g, ps->vcache, rc->r) : NULL;
     for (int d = 0; d < 2 && row; d++)
         vel[d] = ps->vcache + ((size_t)rc->r * 2 + (size_t)d) * (size_t)n, flow[d] = row[d] != 0;
@@ -528,6 +527,19 @@ static int convection_row2(const void *term, double t, double *y, double *ydot, 
             for (long j = 0; j < n; j++) v[j] = c->velocity[d];
         }
     }
+    return row;
+}
+
+/* The row evaluator of a 2-D convection with a cheap scheme. */
+static int convection_row2(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const conv_pass *ps = term;
+    const hj_ls_convection *c = ps->c;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const double *vel[2];
+    int flow[2];
+    const double *row = conv2_velocity(ps, t, rc, vel, flow);
     const hj_ls_stage *st = ps->stage;
     conv2_out o = {0, ydot ? ydot + rc->k : NULL, NULL, 0, 0, 0};
     if (st) {
@@ -539,6 +551,56 @@ static int convection_row2(const void *term, double t, double *y, double *ydot, 
               rc->tmax, &rc->smax, &rc->sbad);
     (void)bad;
     *inv = row ? row[2] : 0; /* the row's maximum, as the cache was filled */
+    return HJ_OK;
+}
+
+/* The row evaluator of a 2-D convection with WENO5A/B: G of both
+ * dimensions in one loop (hj_ls_weno5_transport2_eps, the bits of
+ * convection_row's selected derivatives summed in dimension order), from
+ * the row's differences along dimension 0 and the ring of dimension 1
+ * (dim1_ring); then the fused stage (conv_stage_row) and, unless the
+ * cache holds it, the inverse bound per node as convection_row sums it. */
+HJ_LS_TERM_CLONES
+static int convection_row2w(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const conv_pass *ps = term;
+    const hj_ls_convection *c = ps->c;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const double *vel[2];
+    int flow[2];
+    const double *row = conv2_velocity(ps, t, rc, vel, flow);
+    /* workspace: the two velocity rows, the differences along the row
+     * (n + 5), the ring (6 n), G of a fused stage */
+    double *w = rc->ws + (size_t)2 * (size_t)n, *ring = w + n + 5, *acc = ring + (size_t)6 * (size_t)n;
+    if (!ps->stage) acc = ydot + rc->k;
+    const double *p = y + rc->k;
+    const double *D0[6] = {NULL}, *D1[6] = {NULL};
+    if (flow[0]) {
+        /* D1_{i+k-3+1/2} along the row is w[i + k]: one row read at six
+         * offsets (hj_ls_upwind_row_select_eps's expression) */
+        const double inv0 = 1.0 / g->dx[0];
+        for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv0;
+        for (int k = 0; k < 6; k++) D0[k] = w + k;
+    }
+    if (flow[1]) dim1_ring(g, y, rc, ring, D1);
+    if (!hj_ls_weno5_transport2_eps(c->scheme, D0, D1, n, ps->eps, flow[0] ? vel[0] : NULL, flow[1] ? vel[1] : NULL,
+                                    acc))
+        for (long j = 0; j < n; j++) acc[j] = 0; /* no flow on this row */
+    if (ps->stage) conv_stage_row(n, ps->stage, rc->k, p, acc, &rc->smax, &rc->sbad);
+    if (!row && (flow[0] || flow[1])) {
+        const double idx0 = 1 / g->dx[0], idx1 = 1 / g->dx[1];
+        const double *restrict v0 = vel[0], *restrict v1 = vel[1];
+        double *restrict tm = rc->tmax;
+        for (long j = 0; j < n; j++) {
+            double cf = 0;
+            if (flow[0]) cf = 0.0 + fabs(v0[j]) * idx0;
+            if (flow[1]) cf = (flow[0] ? cf : 0.0) + fabs(v1[j]) * idx1;
+            tm[j] = (cf > tm[j] || cf != cf) ? cf : tm[j];
+        }
+    }
+    (void)bad;
+    *inv = row ? row[2] : 0;
     return HJ_OK;
 }
 
@@ -609,9 +671,11 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     ps.vcache = convection_vcache((hj_ls_convection *)c, t);
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     double m;
-    /* 2-D with a cheap scheme: the one-loop rows of convection_row2 */
-    const row_fn f = g->dim == 2 && (c->scheme == HJ_LS_ENO2 || c->scheme == HJ_LS_UPWIND_FIRST) ? convection_row2
-                                                                                                   : convection_row;
+    /* 2-D with a cheap scheme: the one-loop rows of convection_row2;
+     * with WENO5: convection_row2w */
+    const int cheap = c->scheme == HJ_LS_ENO2 || c->scheme == HJ_LS_UPWIND_FIRST;
+    const int weno5 = c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B;
+    const row_fn f = g->dim != 2 ? convection_row : cheap ? convection_row2 : weno5 ? convection_row2w : convection_row;
     int rc = for_rows_run(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
                           stage, faces, "convection velocity", err);
     if (rc) return rc;

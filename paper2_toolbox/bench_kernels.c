@@ -19,21 +19,34 @@ a core, CPU time much less, so before/after ratios are taken from it;
 `--threads 1` runs the one-thread figures only), and a roofline line:
 
 - bytes per node-stage: the compulsory traffic of the passes over the grid
-  (a model, not a counter: this machine exposes no hardware counters).
-  Convection: the term reads phi and writes G; the RK combination reads
-  phi and G (and the stage array after the first stage) and writes the
-  new state.  air3D (`range_free` in `p2_air3d.c`: no pass for the
-  gradient range; the restriction clips in the term's pass): each RK
-  stage of order 2 and 3 is one pass that reads its input and the state
-  it combines with and writes the stage (`hj_ls_term_stage`; the first
-  stage, whose two are the same array, 16 bytes, the others 24); order 1
-  is the term's pass (16) and the combination (24);
+  (a model, not a counter: this machine exposes no hardware counters),
+  counted from the arrays of grid size each pass reads and writes once
+  (the rows of differences, the ring along dimension 1 and the row of G
+  live in a per-thread workspace of a few rows, in cache).  Every RK stage
+  is one pass of the term that reads its input and the state it combines
+  with and writes the stage (`hj_ls_term_stage`): the first stage, whose
+  two are the same array, 16 bytes, the others 24 (the first stage is
+  fused too once the bound repeats, as the steady velocity's does: from
+  the third step on).  Convection adds the steady velocity's cache
+  (`velocity_steady`): one row of v_d per dimension, 8 bytes each per
+  node-stage (in 3-D the row of v_3, zero, is read for its flow test).
+  air3D (`range_free` in `p2_air3d.c`: no pass for the gradient range; the
+  restriction clips in the term's pass): the stages as above; order 1 is
+  the term's pass (16) and the combination (24).  Checked with
+  cachegrind, its last-level cache set to 256 KB (smaller than one array,
+  so that every pass streams): 2-D veryHigh, the read and write-allocate
+  misses of the convection's functions are 35.4 bytes per node-stage
+  (velocity rows 16.0, phi 8.2, the stages' y0 5.5 and dst 5.4), plus the
+  write-backs of the in-place last stage it does not count (8/3): 38.1
+  against the model's 37.3;
 - flops per node-stage: an operation count of the scheme (per dimension,
   both one-sided derivatives of upwind first order 4, ENO2 16, ENO3 40,
   WENO5 165; convection computes only the upwind side, half of these, plus
-  6 for the velocity product and CFL sum; Lax-Friedrichs 8 per dimension
-  for the gradient, dissipation and CFL sums plus 20 for air3D's H and
-  partials; 5 for the RK combination), again a model;
+  2 for the velocity product and its sum into G, and in 3-D 4 more for the
+  CFL sum and maximum, which the 2-D rows take from the steady velocity's
+  cache; Lax-Friedrichs 8 per dimension for the gradient, dissipation and
+  CFL sums plus 20 for air3D's H and partials; 5 for the RK combination),
+  again a model;
 - the roofline: min(peak flops, bandwidth x flops / byte), with the
   bandwidth of a STREAM triad (a[i] = b[i] + s c[i], 3 x 32 MB, 24 bytes
   per element) and the peak of a register-resident multiply-add loop,
@@ -317,14 +330,15 @@ int main(int argc, char **argv)
         hj_progress("\r%60s\r", "");
         const int order = hj_ls_accuracy_order(c->acc), dim = s.g.dim;
         const double stages = (double)st.steps * order, ns = stages * (double)s.g.nodes;
-        /* bytes: convection's term reads and writes, RK combination (24 B first stage, 32 B later);
-         * air3D's fused stages (16 B the first, 24 B later), order 1 unfused */
-        const double combine = (24.0 + 32.0 * (order - 1)) / order;
-        const double fused = order == 1 ? 16 + 24 : (16.0 + 24.0 * (order - 1)) / order;
-        const double bytes = c->kind == AIR3D ? fused : 8 + 8 + combine;
-        /* flops: the rotation moves no node along x_3 in 3-D: two dimensions carry flow */
+        /* bytes: fused stages (16 B the first, 24 B later; air3D's order 1
+         * unfused: the term's pass and the combination), and convection's
+         * cached velocity rows, 8 B per dimension */
+        const double fused = (16.0 + 24.0 * (order - 1)) / order;
+        const double bytes = c->kind == AIR3D ? (order == 1 ? 16 + 24 : fused) : fused + 8.0 * dim;
+        /* flops: the rotation moves no node along x_3 in 3-D: two dimensions
+         * carry flow; the 2-D rows take the CFL bound from the cache */
         const double flops = c->kind == AIR3D ? dim * (deriv_flops(c->acc) + 8) + 20 + 5
-                                              : 2 * (deriv_flops(c->acc) / 2 + 6) + 5;
+                                              : 2 * (deriv_flops(c->acc) / 2 + (dim == 2 ? 2 : 6)) + 5;
         double rate[2], frac[2];
         for (int th = 0; th < 2; th++) {
             rate[th] = ns / secs[th];

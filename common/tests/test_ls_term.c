@@ -134,11 +134,12 @@ static void convection_equals_upwind_sum(void **state)
     hj_ls_free(y), hj_ls_free(f), hj_ls_free(l), hj_ls_free(r), hj_ls_free(ex);
 }
 
-/* In 2-D the cheap schemes take convection's one-loop rows: G equals, bit
- * for bit, hj_ls_upwind's derivatives selected by the sign of v and summed
- * in dimension order, and the bound is 1 / max (|v_0| / dx_0 + |v_1| /
- * dx_1), for the shear called per stage or cached (velocity_steady, twice:
- * the cache's bound), whose v_0 vanishes on the row x_1 = 0. */
+/* In 2-D the cheap schemes and WENO5A/B take convection's one-loop rows:
+ * G equals, bit for bit, hj_ls_upwind's derivatives selected by the sign
+ * of v and summed in dimension order, and the bound is 1 / max (|v_0| /
+ * dx_0 + |v_1| / dx_1), for the shear called per stage or cached
+ * (velocity_steady, twice: the cache's bound), whose v_0 vanishes on the
+ * row x_1 = 0 and whose v_1 changes sign along every row. */
 static void convection_2d_equals_upwind_sum(void **state)
 {
     (void)state;
@@ -148,8 +149,8 @@ static void convection_2d_equals_upwind_sum(void **state)
     hj_ls_fill(&g, y, disc, NULL);
     long idx[2];
     double x[2];
-    const int schemes[2] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2};
-    for (int q = 0; q < 2; q++)
+    const int schemes[4] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A, HJ_LS_WENO5B};
+    for (int q = 0; q < 4; q++)
         for (int steady = 0; steady < 3; steady++) {
             hj_ls_convection c;
             hj_ls_convection_init(&c, &g, schemes[q]);
@@ -974,6 +975,46 @@ static void convection_fused_stage(void **state)
     hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
 }
 
+/* The fused stage of 2-D convection's one-loop rows (cheap schemes and
+ * WENO5A/B) gives the bits of G combined afterwards, with 1 and 2
+ * threads, the shear called per stage or cached, the velocity of a
+ * constant or only one dimension flowing. */
+static void convection_2d_fused_stage(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 21, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *dst = hj_ls_alloc(&g);
+    double *ref = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, disc, NULL);
+    long idx[2];
+    for (size_t r = 0; r < g.rows; r++) {
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.5 * y[k + (size_t)j] - 0.125 * (double)j;
+    }
+    const int schemes[4] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A, HJ_LS_WENO5B};
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    for (int q = 0; q < 4; q++)
+        for (int vel = 0; vel < 4; vel++)
+            for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+                omp_set_num_threads(th);
+#endif
+                hj_ls_convection c;
+                hj_ls_convection_init(&c, &g, schemes[q]);
+                if (vel < 2) c.velocity_fn = shear, c.velocity_steady = vel;
+                else c.velocity[0] = vel == 2 ? 0.7 : 0, c.velocity[1] = -1.3;
+                stage_matches_eval(&g, &c.base, y, y0, f, dst, ref);
+                hj_ls_convection_free(&c);
+            }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
+}
+
 /* velocity_steady: the callback runs once per row and dimension in the
  * first evaluation and never after, with the bits of the callback per
  * evaluation; over velocity_cache_max the term falls back to the callback
@@ -1069,7 +1110,8 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_2d_equals_upwind_sum),
                         cmocka_unit_test(convection_arrays_equal_callback),
                         cmocka_unit_test(convection_reads_faces_only),
-                        cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_steady_cache),
+                        cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_2d_fused_stage),
+                        cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
