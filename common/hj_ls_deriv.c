@@ -484,14 +484,14 @@ static inline __attribute__((always_inline)) void first_rows_mean3(const double 
 
 HJ_LS_CLONES
 int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, const double *dx,
-                           double *mean, double *diff)
+                           const double *inv, double *mean, double *diff)
 {
     if (scheme != HJ_LS_UPWIND_FIRST && scheme != HJ_LS_ENO2) return 0;
     /* one call for every dimension: a row of 51 nodes takes about as long
      * as a call's dispatch and set-up */
     if (dim == 3 && scheme == HJ_LS_UPWIND_FIRST)
-        first_rows_mean3(p, s[0], s[1], s[2], n, 1.0 / dx[0], 1.0 / dx[1], 1.0 / dx[2], mean, mean + n, mean + 2 * n,
-                         diff, diff + n, diff + 2 * n);
+        first_rows_mean3(p, s[0], s[1], s[2], n, inv[0], inv[1], inv[2], mean, mean + n, mean + 2 * n, diff,
+                         diff + n, diff + 2 * n);
     else if (dim == 3) upwind_rows_mean(3, HJ_LS_ENO2, p, s, n, dx, mean, diff);
     else if (scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(dim, HJ_LS_UPWIND_FIRST, p, s, n, dx, mean, diff);
     else upwind_rows_mean(dim, HJ_LS_ENO2, p, s, n, dx, mean, diff);

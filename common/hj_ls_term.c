@@ -826,6 +826,7 @@ typedef struct {
     double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
     int clip;      /* a restriction of this term (hj_ls_restrict): 1 G >= 0, -1 G <= 0, 0 none */
     const hj_ls_stage *stage; /* a fused RK stage, or NULL: G into ydot */
+    double hinv[HJ_LS_MAXDIM]; /* 1 / dx_d: divided once per evaluation, not per row */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -984,12 +985,13 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
 static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int stage, long n,
                                                            const double *restrict A, const double *restrict DL,
                                                            const double *restrict DR, size_t ds_stride,
-                                                           const double *restrict H, const double *dx, int clip,
-                                                           double *restrict out, double *restrict SP,
-                                                           lf_stage_row *sr, double floor, double *inv)
+                                                           const double *restrict H, const double *dx,
+                                                           const double *inv_dx, int clip, double *restrict out,
+                                                           double *restrict SP, lf_stage_row *sr, double floor,
+                                                           double *inv)
 {
-    double hinv[HJ_LS_MAXDIM];
-    for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
+    double hinv[HJ_LS_MAXDIM]; /* a local copy: no store of the row may change it */
+    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d];
     double mp = 0, nf = 0;
 #define LF_RANGE(j0, j1) \
     lf_finish_range(diffs, dim, stage, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, &nf);
@@ -1031,11 +1033,11 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 
 HJ_LS_TERM_CLONES
 static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
-                         size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
-                         lf_stage_row *sr, double floor, double *inv)
+                         size_t ds_stride, const double *H, const double *dx, const double *hinv, int clip,
+                         double *out, double *SP, lf_stage_row *sr, double floor, double *inv)
 {
 #define LF_FINISH(DIFFS, DIM, STAGE, CLIP) \
-    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, CLIP, out, SP, sr, floor, inv)
+    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, hinv, CLIP, out, SP, sr, floor, inv)
     /* dim and clip constants in 2-D and 3-D (a constant clip is one
      * vector min or max; a variable one, a chain of compares and blends) */
 #define LF_FINISH_CLIPS(DIFFS, DIM, STAGE)                                   \
@@ -1129,8 +1131,8 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
         srp = &sr, out = st->dst + rc->k;
     } else
         out = ydot + rc->k;
-    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out,
-                                        SP, srp, rc->imax, &m);
+    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->hinv, ps->clip, out, SP,
+                                        srp, rc->imax, &m);
     if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
     if (nonfinite) {
         /* the first node of the row with a non-finite alpha or H (none:
@@ -1173,7 +1175,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     size_t ds_stride = (size_t)n;
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
     /* first order and ENO2: every dimension's in one call */
-    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, P, dr);
+    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, dr);
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
@@ -1243,7 +1245,7 @@ static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_c
     const size_t dn = (size_t)dim * (size_t)n;
     double *P = rc->ws, *DR = P + dn, *A = DR + dn, *GL = A + dn, *GH = GL + dn, *H = GH + dn, *SP = H + n;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
-    hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, P, DR);
+    hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, DR);
     for (int d = 0; d < dim; d++) {
         pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
         if (!rc->filled) /* the global range (NaN: unread) */
@@ -1279,6 +1281,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
     ps.lf = c;
     ps.clip = clip;
     ps.stage = stage;
+    for (int d = 0; d < g->dim; d++) ps.hinv[d] = 1 / g->dx[d];
     ps.cache = ranged ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
