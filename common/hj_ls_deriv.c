@@ -457,14 +457,41 @@ static inline __attribute__((always_inline)) void upwind_rows_mean(int dim, int 
                    NULL);
 }
 
+/* upwind_rows_mean of first order in 3-D as one loop over the row: the
+ * node's value loaded once for the three dimensions, one loop's overhead
+ * instead of three (the same expressions: the same bits).  Strides and
+ * outputs as separate restrict arguments: so gcc vectorises the loop. */
+static inline __attribute__((always_inline)) void first_rows_mean3(const double *restrict p, ptrdiff_t s0,
+                                                                  ptrdiff_t s1, ptrdiff_t s2, long n, double i0,
+                                                                  double i1, double i2, double *restrict m0,
+                                                                  double *restrict m1, double *restrict m2,
+                                                                  double *restrict d0, double *restrict d1,
+                                                                  double *restrict d2)
+{
+#define MEAN_DIFF(M, D, S, INV)                                              \
+    do {                                                                     \
+        const double l_ = (p[i] - p[i - S]) * INV, r_ = (p[i + S] - p[i]) * INV; \
+        M[i] = 0.5 * (l_ + r_);                                              \
+        D[i] = r_ - l_;                                                      \
+    } while (0)
+    ROWS({
+        MEAN_DIFF(m0, d0, s0, i0);
+        MEAN_DIFF(m1, d1, s1, i1);
+        MEAN_DIFF(m2, d2, s2, i2);
+    });
+#undef MEAN_DIFF
+}
+
 HJ_LS_CLONES
 int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, const double *dx,
-                           double *mean, double *diff)
+                           const double *inv, double *mean, double *diff)
 {
     if (scheme != HJ_LS_UPWIND_FIRST && scheme != HJ_LS_ENO2) return 0;
     /* one call for every dimension: a row of 51 nodes takes about as long
      * as a call's dispatch and set-up */
-    if (dim == 3 && scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(3, HJ_LS_UPWIND_FIRST, p, s, n, dx, mean, diff);
+    if (dim == 3 && scheme == HJ_LS_UPWIND_FIRST)
+        first_rows_mean3(p, s[0], s[1], s[2], n, inv[0], inv[1], inv[2], mean, mean + n, mean + 2 * n, diff,
+                         diff + n, diff + 2 * n);
     else if (dim == 3) upwind_rows_mean(3, HJ_LS_ENO2, p, s, n, dx, mean, diff);
     else if (scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(dim, HJ_LS_UPWIND_FIRST, p, s, n, dx, mean, diff);
     else upwind_rows_mean(dim, HJ_LS_ENO2, p, s, n, dx, mean, diff);

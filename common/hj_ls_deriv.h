@@ -110,9 +110,10 @@ void hj_ls_upwind_row_mean_eps(int scheme, const double *p, ptrdiff_t s, long n,
 /* hj_ls_upwind_row_mean_eps along each dimension d < dim (stride s[d],
  * spacing dx[d]) into mean + d n and diff + d n, in one call: the first
  * order and ENO2 schemes only (the same bits; no workspace); returns 0
- * and writes nothing for another scheme. */
+ * and writes nothing for another scheme.  inv[d] must be 1.0 / dx[d]
+ * (a row pass divides once, not once per row). */
 int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, const double *dx,
-                           double *mean, double *diff);
+                           const double *inv, double *mean, double *diff);
 
 /* ToolboxLS's WENO5 epsilon along dimension d ('maxOverGrid' in
  * upwindFirstWENO5a): 1e-6 max (D1)^2 + 1e-99 over every first difference

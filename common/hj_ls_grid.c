@@ -160,12 +160,14 @@ size_t hj_ls_row(const hj_ls_grid *g, size_t r, long *i)
     return k;
 }
 
-/* Fill the 2 HJ_LS_GHOST ghosts of one line: p points at interior node 0,
- * s is the stride along the line, n its number of interior nodes. */
-static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc *bc)
+/* Fill the 2 width ghosts of one line nearest its ends (width <=
+ * HJ_LS_GHOST; layer k's value does not depend on width): p points at
+ * interior node 0, s is the stride along the line, n its number of
+ * interior nodes. */
+static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc *bc, int width)
 {
     double *lo = p, *hi = p + (n - 1) * s;
-    for (long k = 1; k <= HJ_LS_GHOST; k++) {
+    for (long k = 1; k <= width; k++) {
         double *gl = lo - k * s, *gh = hi + k * s;
         switch (bc->type) {
         case HJ_LS_BC_PERIODIC:
@@ -195,11 +197,11 @@ static void fill_line(double *p, ptrdiff_t s, long n, double dx, const hj_ls_bc 
 /* fill_line for the m neighbouring lines p[i], p[i + s], ... (i < m):
  * the same expression per ghost node, in a loop over i that vectorises
  * (the lines along d > 0 lie side by side in memory). */
-static void fill_lines(double *p, ptrdiff_t s, long n, long m, double dx, const hj_ls_bc *bc)
+static void fill_lines(double *p, ptrdiff_t s, long n, long m, double dx, const hj_ls_bc *bc, int width)
 {
     double *lo = p, *hi = p + (n - 1) * s;
     const double *lo1 = lo + s, *hi1 = hi - s;
-    for (long k = 1; k <= HJ_LS_GHOST; k++) {
+    for (long k = 1; k <= width; k++) {
         double *gl = lo - k * s, *gh = hi + k * s;
         switch (bc->type) {
         case HJ_LS_BC_PERIODIC: {
@@ -270,7 +272,7 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 #endif
             for (size_t q = 0; q < above / n1; q++) {
                 double *p = a + above_offset(g, 1, q) + (size_t)HJ_LS_GHOST * (s1 + 1);
-                for (size_t l = 0; l < n1; l++) fill_line(p + l * s1, 1, g->N[0], g->dx[0], &g->bc[0]);
+                for (size_t l = 0; l < n1; l++) fill_line(p + l * s1, 1, g->N[0], g->dx[0], &g->bc[0], HJ_LS_GHOST);
             }
         } else {
             /* Along d > 0 the lines through one plane of the dimensions
@@ -285,7 +287,7 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
                 const size_t o = q / pieces, i0 = (q % pieces) * piece;
                 const size_t m = inner - i0 < piece ? inner - i0 : piece;
                 double *p = a + above_offset(g, d, o) + (size_t)HJ_LS_GHOST * inner + i0;
-                fill_lines(p, g->stride[d], g->N[d], (long)m, g->dx[d], &g->bc[d]);
+                fill_lines(p, g->stride[d], g->N[d], (long)m, g->dx[d], &g->bc[d], HJ_LS_GHOST);
             }
         }
         if (g->dist) g->dist->halo(g, a, d, width, g->dist->ctx);
@@ -305,7 +307,7 @@ static double *face_run(const hj_ls_grid *g, double *a, int d, size_t q)
     return a + k;
 }
 
-void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a)
+void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width)
 {
     /* runs of dimension 1, then of 2, ...: one loop over all of them */
     size_t runs[HJ_LS_MAXDIM] = {0}, total = 0;
@@ -320,13 +322,13 @@ void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a)
         int d = 1;
         size_t r = q;
         while (r >= runs[d]) r -= runs[d++];
-        fill_lines(face_run(g, a, d, r), g->stride[d], g->N[d], g->N[0], g->dx[d], &g->bc[d]);
+        fill_lines(face_run(g, a, d, r), g->stride[d], g->N[d], g->N[0], g->dx[d], &g->bc[d], width);
     }
 }
 
-void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k)
+void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width)
 {
-    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0]);
+    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0], width);
 }
 
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op)

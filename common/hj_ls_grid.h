@@ -156,12 +156,14 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
  * interior indices of every other dimension (an orphaned OpenMP loop: it
  * shares the lines among the calling team, or runs them all outside a
  * parallel region, and ends in a barrier); hj_ls_fill_row_ghosts fills
- * the dimension-0 ghosts of the row whose first interior node is k.
- * Together they give the values hj_ls_fill_ghosts gives there (the same
- * bits); edge and corner ghosts are left alone.  Each reads interior
- * nodes only.  Not for a distributed grid (no halo exchange). */
-void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a);
-void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k);
+ * the dimension-0 ghosts of the row whose first interior node is k.  Each
+ * fills the width (1..HJ_LS_GHOST) layers nearest the faces, those a
+ * stencil that wide reads.  Together they give the values
+ * hj_ls_fill_ghosts gives there (the same bits); edge and corner ghosts,
+ * and the layers beyond width, are left alone.  Each reads interior nodes
+ * only.  Not for a distributed grid (no halo exchange). */
+void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width);
+void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width);
 
 /* a(x) = f(x, ctx) at every interior node.  Rows are filled in parallel
  * with OpenMP, so f must be thread-safe (as every callback of the kernel);

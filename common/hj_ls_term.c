@@ -72,34 +72,38 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
-static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                        double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int faces, const char *what,
-                        hj_error *err);
+static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                           double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
+                           hj_error *err);
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
 {
-    return for_rows_run(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, NULL, 0, what, err);
+    return for_rows_layers(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, NULL, 0, what, err);
+}
+
+/* for_rows_layers with every ghost layer of the face ghosts (faces = 1)
+ * or none. */
+static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                        double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int faces, const char *what,
+                        hj_error *err)
+{
+    return for_rows_layers(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, st, faces ? HJ_LS_GHOST : 0, what, err);
 }
 
 /* for_rows, and for a fused RK stage (st not NULL; the rows leave their
  * max |dst| and non-finite flag in rc->smax, rc->sbad) st->amax and
- * st->bad: a maximum and an or, the same for any order of the rows. */
-static int for_rows_stage(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                          double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, const char *what,
-                          hj_error *err)
-{
-    return for_rows_run(g, ws_doubles, f, term, t, y, ydot, maxinv, dmax, st, 0, what, err);
-}
-
-/* for_rows_stage; faces = 1 (a term whose stencils read along one axis at a time, on a
- * grid that is not distributed): the face ghosts of y are filled here,
- * in the same parallel region (hj_ls_fill_ghost_faces), and each row's
- * dimension-0 ghosts just before the row is evaluated, while the row is
- * in cache, instead of a region and a pass over the grid per dimension
- * (the same bits: no stencil reads another row's dimension-0 ghosts). */
-static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                        double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int faces, const char *what,
-                        hj_error *err)
+ * st->bad: a maximum and an or, the same for any order of the rows.
+ * layers > 0 (a term whose stencils read along one axis at a time, at
+ * most layers nodes beyond a face, on a grid that is not distributed):
+ * those face ghosts of y are filled here, in the same parallel region
+ * (hj_ls_fill_ghost_faces), and each row's dimension-0 ghosts just before
+ * the row is evaluated, while the row is in cache, instead of a region and
+ * a pass over the grid per dimension (the same bits: no stencil reads
+ * another row's dimension-0 ghosts, nor an edge, a corner or a layer
+ * beyond layers). */
+static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
+                           double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
+                           hj_error *err)
 {
     double m = 0, smax = 0;
     int sbad = 0;
@@ -124,7 +128,7 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
 #pragma omp parallel reduction(max : m, smax) reduction(| : nan_seen, nomem, sbad)
 #endif
     {
-        if (faces) hj_ls_fill_ghost_faces(g, y); /* ends in a barrier: the faces are in before any row reads them */
+        if (layers) hj_ls_fill_ghost_faces(g, y, layers); /* ends in a barrier: the faces are in before any row reads them */
         row_ctx rc;
         rc.smax = 0, rc.sbad = 0, rc.imax = 0;
         const long n = g->N[0];
@@ -145,7 +149,7 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
             for (size_t r = 0; r < g->rows; r++) {
                 rc.k = row_next(g, r, prev, rc.k, rc.idx);
                 rc.r = prev = r;
-                if (faces) hj_ls_fill_row_ghosts(g, y, rc.k);
+                if (layers) hj_ls_fill_row_ghosts(g, y, rc.k, layers);
                 hj_ls_coord(g, rc.idx, rc.x);
                 double inv = 0;
                 long j = -1;
@@ -886,6 +890,7 @@ typedef struct {
     double *cache; /* one-sided derivatives of the range pass (lf->work), or NULL */
     int clip;      /* a restriction of this term (hj_ls_restrict): 1 G >= 0, -1 G <= 0, 0 none */
     const hj_ls_stage *stage; /* a fused RK stage, or NULL: G into ydot */
+    double hinv[HJ_LS_MAXDIM]; /* 1 / dx_d: divided once per evaluation, not per row */
 } lf_pass;
 
 /* Pass 1 (GLF, LLF): the global range of p-, p+ per dimension; *inv
@@ -1013,7 +1018,8 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
         if (stage) {
             v = sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
             sbad += v - v;
-            const double av = v < 0 ? -v : v;
+            /* fabs: one and; -0 and NaN leave smax >= 0 alone either way */
+            const double av = fabs(v);
             smax = av > smax ? av : smax;
         }
         out[j] = v;
@@ -1043,12 +1049,13 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
 static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int stage, long n,
                                                            const double *restrict A, const double *restrict DL,
                                                            const double *restrict DR, size_t ds_stride,
-                                                           const double *restrict H, const double *dx, int clip,
-                                                           double *restrict out, double *restrict SP,
-                                                           lf_stage_row *sr, double floor, double *inv)
+                                                           const double *restrict H, const double *dx,
+                                                           const double *inv_dx, int clip, double *restrict out,
+                                                           double *restrict SP, lf_stage_row *sr, double floor,
+                                                           double *inv)
 {
-    double hinv[HJ_LS_MAXDIM];
-    for (int d = 0; d < dim; d++) hinv[d] = 1 / dx[d];
+    double hinv[HJ_LS_MAXDIM]; /* a local copy: no store of the row may change it */
+    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d];
     double mp = 0, nf = 0;
 #define LF_RANGE(j0, j1) \
     lf_finish_range(diffs, dim, stage, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, &nf);
@@ -1090,16 +1097,21 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 
 HJ_LS_TERM_CLONES
 static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
-                         size_t ds_stride, const double *H, const double *dx, int clip, double *out, double *SP,
-                         lf_stage_row *sr, double floor, double *inv)
+                         size_t ds_stride, const double *H, const double *dx, const double *hinv, int clip,
+                         double *out, double *SP, lf_stage_row *sr, double floor, double *inv)
 {
-#define LF_FINISH(DIFFS, DIM, STAGE) \
-    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, clip, out, SP, sr, floor, inv)
+#define LF_FINISH(DIFFS, DIM, STAGE, CLIP) \
+    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, hinv, CLIP, out, SP, sr, floor, inv)
+    /* dim and clip constants in 2-D and 3-D (a constant clip is one
+     * vector min or max; a variable one, a chain of compares and blends) */
+#define LF_FINISH_CLIPS(DIFFS, DIM, STAGE)                                   \
+    return clip < 0 ? LF_FINISH(DIFFS, DIM, STAGE, -1)                      \
+         : clip > 0 ? LF_FINISH(DIFFS, DIM, STAGE, 1) : LF_FINISH(DIFFS, DIM, STAGE, 0);
 #define LF_FINISH_DIMS(DIFFS, STAGE)                      \
     switch (dim) {                                        \
-    case 2: return LF_FINISH(DIFFS, 2, STAGE);            \
-    case 3: return LF_FINISH(DIFFS, 3, STAGE);            \
-    default: return LF_FINISH(DIFFS, dim, STAGE);         \
+    case 2: LF_FINISH_CLIPS(DIFFS, 2, STAGE)              \
+    case 3: LF_FINISH_CLIPS(DIFFS, 3, STAGE)              \
+    default: return LF_FINISH(DIFFS, dim, STAGE, clip);   \
     }
     if (sr && sr->inplace) {
         if (diffs) LF_FINISH_DIMS(1, 2)
@@ -1112,6 +1124,7 @@ static int lf_finish_dim(int diffs, int dim, long n, const double *A, const doub
     if (diffs) LF_FINISH_DIMS(1, 0)
     LF_FINISH_DIMS(0, 0)
 #undef LF_FINISH_DIMS
+#undef LF_FINISH_CLIPS
 #undef LF_FINISH
 }
 
@@ -1133,6 +1146,72 @@ static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_c
     double *next = ring + (size_t)(7 + h) * n, *left = ring + (size_t)(8 - h) * n;
     if (!hj_ls_weno5_diffs_next_eps(scheme, D, g->N[0], eps, mean, cont ? left : NULL, next, l, r))
         hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
+}
+
+/* The end of a Lax-Friedrichs row once the gradient's mean is in pp and
+ * the ranges the partials read in lo, hi (LL, LH: the local ranges, for
+ * LLF): H, the partials into A, and lf_finish_dim's G or fused stage
+ * (SP: n doubles of scratch).  Returns lf_row's code. */
+static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, double t, double *y, double *ydot,
+                                                            row_ctx *rc, const double **pp, const double **lo,
+                                                            const double **hi, double *LL, double *LH, double *A,
+                                                            double *H, int diffs, const double *DL,
+                                                            const double *DR, size_t ds_stride, double *SP,
+                                                            double *inv, long *bad)
+{
+    const hj_ls_lax_friedrichs *c = ps->lf;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const int dim = g->dim;
+    const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
+    const double *phi = y + rc->k;
+    if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
+    else lf_ham_nodes(c, t, &row, phi, pp, H);
+    for (int d = 0; d < dim; d++) {
+        double *Ad = A + (size_t)d * (size_t)n;
+        const double *sl = lo[d], *sh = hi[d];
+        if (c->dissipation == HJ_LS_LLF) /* local range in d only */
+            lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
+        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
+        else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
+        lo[d] = sl, hi[d] = sh;
+        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
+            const double dx = g->dx[d];
+            double dm = rc->dmax[d];
+            SIMD_REDUCE(max : dm)
+            for (long j = 0; j < n; j++) {
+                const double a = fabs(Ad[j]) / dx;
+                dm = a > dm ? a : dm;
+            }
+            rc->dmax[d] = dm;
+        }
+    }
+    double m;
+    double *out;
+    lf_stage_row sr, *srp = NULL;
+    if (ps->stage) { /* ydot is NULL */
+        const hj_ls_stage *st = ps->stage;
+        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst};
+        srp = &sr, out = st->dst + rc->k;
+    } else
+        out = ydot + rc->k;
+    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->hinv, ps->clip, out, SP,
+                                        srp, rc->imax, &m);
+    if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
+    if (nonfinite) {
+        /* the first node of the row with a non-finite alpha or H (none:
+         * a sum overflowed, which the CFL bound reports) */
+        long badj = n;
+        for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
+        badj = first_nonfinite(H, badj);
+        if (badj < n) {
+            *bad = badj;
+            return HJ_ENONFINITE;
+        }
+    }
+    rc->imax = m > rc->imax ? m : rc->imax;
+    *inv = m;
+    return HJ_OK;
 }
 
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
@@ -1160,7 +1239,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     size_t ds_stride = (size_t)n;
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
     /* first order and ENO2: every dimension's in one call */
-    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, P, dr);
+    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, dr);
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
@@ -1211,55 +1290,34 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         }
     }
     rc->filled = 1;
-    const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
-    const double *phi = y + rc->k;
-    if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
-    else lf_ham_nodes(c, t, &row, phi, pp, H);
+    return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, LL, LH, A, H, diffs, DL, DR, ds_stride, ring + 6 * (size_t)n,
+                      inv, bad);
+}
+
+/* lf_row for global Lax-Friedrichs whose partials never read the gradient
+ * range (range_free: nothing kept from a range pass) by a scheme whose
+ * mean and D+ - D- of every dimension come in one call (first order,
+ * ENO2): no choice per dimension, every buffer a fixed slice of the
+ * workspace.  The same calls and expressions as lf_row: the same bits. */
+static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+{
+    const lf_pass *ps = term;
+    const hj_ls_lax_friedrichs *c = ps->lf;
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const int dim = g->dim;
+    const size_t dn = (size_t)dim * (size_t)n;
+    double *P = rc->ws, *DR = P + dn, *A = DR + dn, *GL = A + dn, *GH = GL + dn, *H = GH + dn, *SP = H + n;
+    const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
+    hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, DR);
     for (int d = 0; d < dim; d++) {
-        double *Ad = A + (size_t)d * (size_t)n;
-        const double *sl = lo[d], *sh = hi[d];
-        if (c->dissipation == HJ_LS_LLF) /* local range in d only */
-            lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
-        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
-        else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
-        lo[d] = sl, hi[d] = sh;
-        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
-            const double dx = g->dx[d];
-            double dm = rc->dmax[d];
-            SIMD_REDUCE(max : dm)
-            for (long j = 0; j < n; j++) {
-                const double a = fabs(Ad[j]) / dx;
-                dm = a > dm ? a : dm;
-            }
-            rc->dmax[d] = dm;
-        }
+        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
+        if (!rc->filled) /* the global range (NaN: unread) */
+            for (long j = 0; j < n; j++) GL[(size_t)d * (size_t)n + (size_t)j] = ps->gmin[d],
+                                         GH[(size_t)d * (size_t)n + (size_t)j] = ps->gmax[d];
     }
-    double m;
-    double *out;
-    lf_stage_row sr, *srp = NULL;
-    if (ps->stage) { /* ydot is NULL */
-        const hj_ls_stage *st = ps->stage;
-        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst};
-        srp = &sr, out = st->dst + rc->k;
-    } else
-        out = ydot + rc->k;
-    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->clip, out,
-                                        ring + 6 * (size_t)n, srp, rc->imax, &m);
-    if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
-    if (nonfinite) {
-        /* the first node of the row with a non-finite alpha or H (none:
-         * a sum overflowed, which the CFL bound reports) */
-        long badj = n;
-        for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
-        badj = first_nonfinite(H, badj);
-        if (badj < n) {
-            *bad = badj;
-            return HJ_ENONFINITE;
-        }
-    }
-    rc->imax = m > rc->imax ? m : rc->imax;
-    *inv = m;
-    return HJ_OK;
+    rc->filled = 1;
+    return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, (size_t)n, SP, inv, bad);
 }
 
 /* The evaluation, its output clipped as hj_ls_restrict would (clip 1:
@@ -1274,12 +1332,20 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks (per node or per row)");
     if (c->dissipation < HJ_LS_GLF || c->dissipation > HJ_LS_LLLF)
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown dissipation %d", c->dissipation);
-    hj_ls_fill_ghosts_width(g, y, hj_ls_scheme_ghost(c->scheme));
+    const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;
+    /* Stencils along one axis at a time: the face ghosts suffice, filled
+     * in the row pass's region, unless a pass reads the ghosts before it
+     * (the gradient range, the grid-wide WENO epsilons) or a distributed
+     * grid exchanges halos. */
+    const int ghost = hj_ls_scheme_ghost(c->scheme);
+    const int faces = !ranged && !g->dist && !(c->weno_eps == HJ_LS_WENO_EPS_GRID &&
+                                               (c->scheme == HJ_LS_WENO5A || c->scheme == HJ_LS_WENO5B));
+    if (!faces) hj_ls_fill_ghosts_width(g, y, ghost);
     lf_pass ps;
     ps.lf = c;
     ps.clip = clip;
     ps.stage = stage;
-    const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;
+    for (int d = 0; d < g->dim; d++) ps.hinv[d] = 1 / g->dx[d];
     ps.cache = ranged ? c->work : NULL;
     weno_eps(g, c->weno_eps, c->scheme, y, ps.eps);
     const long n = g->N[0];
@@ -1325,8 +1391,10 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows_stage(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n, lf_row, &ps, t, y, ydot, &m,
-                            dm, stage, "Hamiltonian or partial callback", err);
+    const int glf = c->dissipation == HJ_LS_GLF && !ps.cache &&
+                    (c->scheme == HJ_LS_UPWIND_FIRST || c->scheme == HJ_LS_ENO2);
+    int rc = for_rows_layers(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n, glf ? lf_row_glf : lf_row, &ps,
+                             t, y, ydot, &m, dm, stage, faces ? ghost : 0, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;

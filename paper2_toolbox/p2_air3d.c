@@ -69,17 +69,13 @@ typedef struct {
     double *cs, *sn, *ys, *xs; /* xs[j] = min[0] + j dx[0]: no int-to-double conversion per node */
 } cb_ctx;
 
-CLONES
-static void ham_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
-                    void *ctx)
+/* The loops of the callbacks, every array a restrict argument: so gcc
+ * vectorises them without checking at run time whether they overlap. */
+static inline __attribute__((always_inline)) void ham_loop(long n, double cs, double sn, double y, double va,
+                                                          double vb, double A, double B, const double *restrict xs,
+                                                          const double *restrict p0, const double *restrict p1,
+                                                          const double *restrict p2, double *restrict Hr)
 {
-    (void)t, (void)phi;
-    const cb_ctx *c = ctx;
-    const p2_air3d_par *q = c->q;
-    const double cs = c->cs[row->idx[2]], sn = c->sn[row->idx[2]], y = c->ys[row->idx[1]];
-    const double va = q->va, vb = q->vb, A = q->A, B = q->B, *restrict xs = c->xs;
-    const double *restrict p0 = p[0], *restrict p1 = p[1], *restrict p2 = p[2];
-    double *restrict Hr = H;
 #define HAM(j0, j1)                                                                                                \
     for (long j = (j0); j < (j1); j++) {                                                                           \
         const double x = xs[j];                                                                                    \
@@ -87,8 +83,28 @@ static void ham_row(double t, const hj_ls_row_info *row, const double *phi, cons
                          B * fabs(p2[j]);                                                                          \
         Hr[j] = -h;                                                                                                \
     }
-    HJ_LS_ROW_BLOCKS8(row->n, HAM);
+    HJ_LS_ROW_BLOCKS8(n, HAM);
 #undef HAM
+}
+
+CLONES
+static void ham_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p, double *H,
+                    void *ctx)
+{
+    (void)t, (void)phi;
+    const cb_ctx *c = ctx;
+    const p2_air3d_par *q = c->q;
+    ham_loop(row->n, c->cs[row->idx[2]], c->sn[row->idx[2]], c->ys[row->idx[1]], q->va, q->vb, q->A, q->B, c->xs,
+             p[0], p[1], p[2], H);
+}
+
+static inline __attribute__((always_inline)) void partial1_loop(long n, double s, double A, const double *restrict xs,
+                                                               double *restrict al)
+{
+#define PARTIAL(j0, j1) \
+    for (long j = (j0); j < (j1); j++) al[j] = s + A * fabs(xs[j]);
+    HJ_LS_ROW_BLOCKS8(n, PARTIAL);
+#undef PARTIAL
 }
 
 CLONES
@@ -100,12 +116,7 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
     const p2_air3d_par *q = c->q;
     const long n = row->n;
     if (d == 1) {
-        const double s = fabs(q->vb * c->sn[row->idx[2]]), A = q->A, *restrict xs = c->xs;
-        double *restrict al = alpha;
-#define PARTIAL(j0, j1) \
-    for (long j = (j0); j < (j1); j++) al[j] = s + A * fabs(xs[j]);
-        HJ_LS_ROW_BLOCKS8(n, PARTIAL);
-#undef PARTIAL
+        partial1_loop(n, fabs(q->vb * c->sn[row->idx[2]]), q->A, c->xs, alpha);
         return;
     }
     const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;

@@ -436,9 +436,9 @@ static void kernel_forms_bitwise(void **state)
             for (int dim = 2; dim <= 3; dim++)
                 for (int along = 0; along < 2; along++) {
                     const ptrdiff_t st[3] = {along ? 1 : S, S, S};
-                    const double h[3] = {dx, dx, dx};
+                    const double h[3] = {dx, dx, dx}, hinv[3] = {1.0 / dx, 1.0 / dx, 1.0 / dx};
                     double *ms = malloc(sizeof(double) * 3 * (size_t)n), *ds = malloc(sizeof(double) * 3 * (size_t)n);
-                    const int done = hj_ls_upwind_rows_mean(s, q + 3 * S, st, dim, n, h, ms, ds);
+                    const int done = hj_ls_upwind_rows_mean(s, q + 3 * S, st, dim, n, h, hinv, ms, ds);
                     assert_int_equal(done, s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2);
                     for (int d = 0; done && d < dim; d++) {
                         assert_memory_equal(ms + d * n, m, sizeof(double) * (size_t)n);

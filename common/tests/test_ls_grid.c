@@ -172,62 +172,70 @@ static void ghosts_3d_reference(void **state)
 
 /* Which ghost kind node i is: 0 interior, 1 face (one index outside), 2
  * edge or corner. */
-static int ghost_kind(const hj_ls_grid *g, const long *i)
+/* 0: interior; 1: a face ghost, its distance from the face in *depth;
+ * 2: an edge or corner ghost. */
+static int ghost_kind(const hj_ls_grid *g, const long *i, long *depth)
 {
     int out = 0;
-    for (int d = 0; d < g->dim; d++) out += i[d] < 0 || i[d] >= g->N[d];
+    *depth = 0;
+    for (int d = 0; d < g->dim; d++)
+        if (i[d] < 0 || i[d] >= g->N[d]) out++, *depth = i[d] < 0 ? -i[d] : i[d] - g->N[d] + 1;
     return out > 1 ? 2 : out;
 }
 
 /* hj_ls_fill_ghost_faces (inside a team of 1 and 2 threads, and outside
- * a parallel region) with hj_ls_fill_row_ghosts on every row gives every
- * face ghost the bits of hj_ls_fill_ghosts and leaves edges and corners
- * alone, in 3-D and 4-D, for every boundary condition. */
+ * a parallel region) with hj_ls_fill_row_ghosts on every row, both of
+ * width w, give every face ghost within w of its face the bits of
+ * hj_ls_fill_ghosts and leave the deeper layers, edges and corners alone,
+ * in 3-D and 4-D, for every boundary condition and width. */
 static void ghost_faces(void **state)
 {
     (void)state;
     for (int dim = 3; dim <= 4; dim++)
-        for (int type = HJ_LS_BC_PERIODIC; type <= HJ_LS_BC_EXTRAP_TOWARD; type++) {
-            hj_ls_grid g;
-            double mn[4] = {0, -1, 2, 0}, mx[4] = {1, 1, 3, 0.5};
-            long N[4] = {7, 5, 6, 4};
-            hj_ls_bc bc[4];
-            for (int d = 0; d < 4; d++) bc[d] = (hj_ls_bc){(type + d) % (HJ_LS_BC_EXTRAP_TOWARD + 1), 0.5, -2};
-            assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
-            double *ref = hj_ls_alloc(&g), *a = hj_ls_alloc(&g);
-            assert_non_null(ref), assert_non_null(a);
-            for (size_t q = 0; q < g.total; q++) ref[q] = sin(0.37 * (double)q) + (q % 3 == 0 ? 0.0 : 0.5);
-            for (int mode = 0; mode < 3; mode++) { /* 1 thread, 2 threads, no parallel region */
-                for (size_t q = 0; q < g.total; q++) a[q] = NAN;
-                long idx[HJ_LS_MAXDIM];
-                for (size_t r = 0; r < g.rows; r++) {
-                    const size_t k = hj_ls_row(&g, r, idx);
-                    memcpy(a + k, ref + k, sizeof(double) * (size_t)g.N[0]);
-                }
-                if (mode == 2) hj_ls_fill_ghost_faces(&g, a);
-                else {
+        for (int type = HJ_LS_BC_PERIODIC; type <= HJ_LS_BC_EXTRAP_TOWARD; type++)
+            for (int w = 1; w <= HJ_LS_GHOST; w++) {
+                hj_ls_grid g;
+                double mn[4] = {0, -1, 2, 0}, mx[4] = {1, 1, 3, 0.5};
+                long N[4] = {7, 5, 6, 4};
+                hj_ls_bc bc[4];
+                for (int d = 0; d < 4; d++) bc[d] = (hj_ls_bc){(type + d) % (HJ_LS_BC_EXTRAP_TOWARD + 1), 0.5, -2};
+                assert_int_equal(hj_ls_grid_init(&g, dim, mn, mx, N, bc, NULL), HJ_OK);
+                double *ref = hj_ls_alloc(&g), *a = hj_ls_alloc(&g);
+                assert_non_null(ref), assert_non_null(a);
+                for (size_t q = 0; q < g.total; q++) ref[q] = sin(0.37 * (double)q) + (q % 3 == 0 ? 0.0 : 0.5);
+                for (int mode = 0; mode < 3; mode++) { /* 1 thread, 2 threads, no parallel region */
+                    for (size_t q = 0; q < g.total; q++) a[q] = NAN;
+                    long idx[HJ_LS_MAXDIM];
+                    for (size_t r = 0; r < g.rows; r++) {
+                        const size_t k = hj_ls_row(&g, r, idx);
+                        memcpy(a + k, ref + k, sizeof(double) * (size_t)g.N[0]);
+                    }
+                    if (mode == 2) hj_ls_fill_ghost_faces(&g, a, w);
+                    else {
 #ifdef _OPENMP
 #pragma omp parallel num_threads(mode + 1)
 #endif
-                    hj_ls_fill_ghost_faces(&g, a);
-                }
-                for (size_t r = 0; r < g.rows; r++) hj_ls_fill_row_ghosts(&g, a, hj_ls_row(&g, r, idx));
-                if (mode == 0) hj_ls_fill_ghosts(&g, ref);
-                /* every node of the ghosted array, an odometer over -GHOST .. N + GHOST - 1 */
-                long i[HJ_LS_MAXDIM];
-                for (int d = 0; d < dim; d++) i[d] = -HJ_LS_GHOST;
-                for (size_t q = 0; q < g.total; q++) {
-                    const size_t k = hj_ls_index(&g, i);
-                    if (ghost_kind(&g, i) < 2) assert_memory_equal(a + k, ref + k, sizeof(double));
-                    else assert_true(isnan(a[k]));
-                    for (int d = 0; d < dim; d++) {
-                        if (++i[d] < g.N[d] + HJ_LS_GHOST) break;
-                        i[d] = -HJ_LS_GHOST;
+                        hj_ls_fill_ghost_faces(&g, a, w);
+                    }
+                    for (size_t r = 0; r < g.rows; r++) hj_ls_fill_row_ghosts(&g, a, hj_ls_row(&g, r, idx), w);
+                    if (mode == 0) hj_ls_fill_ghosts(&g, ref);
+                    /* every node of the ghosted array, an odometer over -GHOST .. N + GHOST - 1 */
+                    long i[HJ_LS_MAXDIM];
+                    for (int d = 0; d < dim; d++) i[d] = -HJ_LS_GHOST;
+                    for (size_t q = 0; q < g.total; q++) {
+                        const size_t k = hj_ls_index(&g, i);
+                        long depth;
+                        const int kind = ghost_kind(&g, i, &depth);
+                        if (kind == 0 || (kind == 1 && depth <= w)) assert_memory_equal(a + k, ref + k, sizeof(double));
+                        else assert_true(isnan(a[k]));
+                        for (int d = 0; d < dim; d++) {
+                            if (++i[d] < g.N[d] + HJ_LS_GHOST) break;
+                            i[d] = -HJ_LS_GHOST;
+                        }
                     }
                 }
+                hj_ls_free(ref), hj_ls_free(a);
             }
-            hj_ls_free(ref), hj_ls_free(a);
-        }
 }
 
 static void coords_and_rows(void **state)
