@@ -1296,8 +1296,8 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    int rc = for_rows_stage(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g), lf_row, &ps, t, y, ydot, &m,
-                            dm, stage, "Hamiltonian or partial callback", err);
+    const size_t ws = (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g);
+    int rc = for_rows_stage(g, ws, lf_row, &ps, t, y, ydot, &m, dm, stage, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;
