@@ -325,29 +325,37 @@ void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double e
     else upwind_diffs(0, 0, scheme, D, NULL, 0, 0, n, eps, dl, dr);
 }
 
-/* hj_ls_weno5_diffs_next_eps's loop: a window's m, max(w0^2..w4^2), is
- * the same whichever grouping (max4sq, max2) forms it. */
-static inline __attribute__((always_inline)) void weno5_next(int mode, int scheme, const double *const *D, long n,
-                                                            double eps, const double *restrict left,
-                                                            double *restrict next, double *restrict dl,
-                                                            double *restrict dr)
+/* hj_ls_weno5_diffs_next_eps's and hj_ls_weno5_row_next_eps's loop, the
+ * differences from the rows D (reg 0) or in registers from p along
+ * stride s (reg 1, upwind_diffs' expression): a window's m, max(w0^2..w4^2),
+ * is the same whichever grouping (max4sq, max2) forms it.  local = 1 (a
+ * constant) for eps < 0: O&F's epsilon without a selection per window. */
+static inline __attribute__((always_inline)) void weno5_next(int mode, int reg, int local, int scheme,
+                                                            const double *const *D, const double *p, ptrdiff_t s,
+                                                            double inv, long n, double eps,
+                                                            const double *restrict left, double *restrict next,
+                                                            double *restrict dl, double *restrict dr)
 {
-    const double *restrict d0 = D[0], *restrict d1 = D[1], *restrict d2 = D[2], *restrict d3 = D[3],
-                           *restrict d4 = D[4], *restrict d5 = D[5];
+    const double e_ = local ? -1.0 : eps;
+#define DV(k) (reg ? (p[i + ((k) - 2) * s] - p[i + ((k) - 3) * s]) * inv : D[k][i])
 #define NEXT(PAIR)                                                                               \
     ROWS({                                                                                       \
-        const double w1 = d1[i], w2 = d2[i], w3 = d3[i], w4 = d4[i], w5 = d5[i];                 \
+        const double w1 = DV(1), w2 = DV(2), w3 = DV(3), w4 = DV(4), w5 = DV(5);                 \
         const double in = max4sq(w1, w2, w3, w4);                                                \
         double L, R, x_;                                                                         \
-        PAIR(w1, w2, w3, w4, w5, max2(in, w5 * w5), eps, next + i, &R);                          \
+        PAIR(w1, w2, w3, w4, w5, max2(in, w5 * w5), e_, next + i, &R);                           \
         if (left) L = left[i];                                                                   \
-        else PAIR(d0[i], w1, w2, w3, w4, max2(in, d0[i] * d0[i]), eps, &L, &x_);                 \
+        else {                                                                                   \
+            const double w0 = DV(0);                                                             \
+            PAIR(w0, w1, w2, w3, w4, max2(in, w0 * w0), e_, &L, &x_);                            \
+        }                                                                                        \
         (void)x_;                                                                                \
         STORE2(i, L, R);                                                                         \
     })
     if (scheme == HJ_LS_WENO5A) NEXT(weno5a_pair);
     else NEXT(weno5b_pair);
 #undef NEXT
+#undef DV
 }
 
 HJ_LS_CLONES
@@ -355,11 +363,30 @@ int hj_ls_weno5_diffs_next_eps(int scheme, const double *const *D, long n, doubl
                                double *next, double *dl, double *dr)
 {
     if (scheme != HJ_LS_WENO5A && scheme != HJ_LS_WENO5B) return 0;
-    /* the branch on left hoisted out of the loops */
-    if (mean && left) weno5_next(1, scheme, D, n, eps, left, next, dl, dr);
-    else if (mean) weno5_next(1, scheme, D, n, eps, NULL, next, dl, dr);
-    else if (left) weno5_next(0, scheme, D, n, eps, left, next, dl, dr);
-    else weno5_next(0, scheme, D, n, eps, NULL, next, dl, dr);
+    /* the branches on left and eps hoisted out of the loops */
+    if (left && eps < 0) {
+        if (mean) weno5_next(1, 0, 1, scheme, D, NULL, 0, 0, n, eps, left, next, dl, dr);
+        else weno5_next(0, 0, 1, scheme, D, NULL, 0, 0, n, eps, left, next, dl, dr);
+    } else if (mean && left) weno5_next(1, 0, 0, scheme, D, NULL, 0, 0, n, eps, left, next, dl, dr);
+    else if (mean) weno5_next(1, 0, 0, scheme, D, NULL, 0, 0, n, eps, NULL, next, dl, dr);
+    else if (left) weno5_next(0, 0, 0, scheme, D, NULL, 0, 0, n, eps, left, next, dl, dr);
+    else weno5_next(0, 0, 0, scheme, D, NULL, 0, 0, n, eps, NULL, next, dl, dr);
+    return 1;
+}
+
+HJ_LS_CLONES
+int hj_ls_weno5_row_next_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, int mean,
+                             const double *left, double *next, double *dl, double *dr)
+{
+    if (scheme != HJ_LS_WENO5A && scheme != HJ_LS_WENO5B) return 0;
+    const double inv = 1.0 / dx;
+    if (left && eps < 0) {
+        if (mean) weno5_next(1, 1, 1, scheme, NULL, p, s, inv, n, eps, left, next, dl, dr);
+        else weno5_next(0, 1, 1, scheme, NULL, p, s, inv, n, eps, left, next, dl, dr);
+    } else if (mean && left) weno5_next(1, 1, 0, scheme, NULL, p, s, inv, n, eps, left, next, dl, dr);
+    else if (mean) weno5_next(1, 1, 0, scheme, NULL, p, s, inv, n, eps, NULL, next, dl, dr);
+    else if (left) weno5_next(0, 1, 0, scheme, NULL, p, s, inv, n, eps, left, next, dl, dr);
+    else weno5_next(0, 1, 0, scheme, NULL, p, s, inv, n, eps, NULL, next, dl, dr);
     return 1;
 }
 
@@ -367,15 +394,17 @@ int hj_ls_weno5_diffs_next_eps(int scheme, const double *const *D, long n, doubl
  * window j (w[j..j+4]) gives the left derivative of node j and the right
  * one of node j - 1, into L[j] and R[j] (t holds 2 (n + 1) doubles); then
  * node i's pair is L[i], R[i + 1].  Half the weights of node by node. */
-static inline __attribute__((always_inline)) void weno5_windows(int mode, int scheme, const double *restrict w, long n,
-                                                               double eps, double *restrict t, double *restrict dl,
+static inline __attribute__((always_inline)) void weno5_windows(int mode, int local, int scheme,
+                                                               const double *restrict w, long n, double eps,
+                                                               double *restrict t, double *restrict dl,
                                                                double *restrict dr)
 {
     double *restrict L = t, *restrict R = t + n + 1;
+    const double e_ = local ? -1.0 : eps; /* local: weno5_next's */
 #define WINDOWS(PAIR)                                                                                 \
     BLOCKS8(n + 1, {                                                                                  \
         const double w0 = w[i], w1 = w[i + 1], w2 = w[i + 2], w3 = w[i + 3], w4 = w[i + 4];          \
-        PAIR(w0, w1, w2, w3, w4, max2(max4sq(w1, w2, w3, w4), w0 * w0), eps, L + i, R + i);           \
+        PAIR(w0, w1, w2, w3, w4, max2(max4sq(w1, w2, w3, w4), w0 * w0), e_, L + i, R + i);            \
     });
     if (scheme == HJ_LS_WENO5A) WINDOWS(weno5a_pair)
     else WINDOWS(weno5b_pair)
@@ -423,7 +452,8 @@ static inline __attribute__((always_inline)) void upwind_row(int mode, int schem
          * computed once instead of six times). */
         for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
         if (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B) {
-            weno5_windows(mode, scheme, w, n, eps, w + n + 5, dl, dr);
+            if (eps < 0) weno5_windows(mode, 1, scheme, w, n, eps, w + n + 5, dl, dr);
+            else weno5_windows(mode, 0, scheme, w, n, eps, w + n + 5, dl, dr);
             return;
         }
         for (int k = 0; k < 6; k++) D[k] = w + k;

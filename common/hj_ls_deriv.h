@@ -101,6 +101,13 @@ void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double e
  * of two, the same bits. */
 int hj_ls_weno5_diffs_next_eps(int scheme, const double *const *D, long n, double eps, int mean, const double *left,
                                double *next, double *dl, double *dr);
+/* hj_ls_weno5_diffs_next_eps with the differences taken from the values
+ * p along stride s (spacing dx), as hj_ls_upwind_row_eps takes them: for
+ * rows whose neighbour in a dimension other than 0 and 1 comes later (the
+ * next plane), whose left derivatives the caller keeps.  The same bits as
+ * hj_ls_upwind_row_eps. */
+int hj_ls_weno5_row_next_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, int mean,
+                             const double *left, double *next, double *dl, double *dr);
 /* mean = 1 above, and hj_ls_upwind_row_mean_eps: instead of D- and D+,
  * their mean (D- + D+)/2 into dl (mean) and their difference D+ - D- into
  * dr (diff), computed as a caller would from D- and D+ (the same bits):

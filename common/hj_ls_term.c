@@ -1214,6 +1214,35 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     return HJ_OK;
 }
 
+/* Both one-sided derivatives along dimension 2 of the row of rc by WENO5
+ * (returns 0 for another scheme or grid, writing nothing): the row's
+ * windows give its right derivatives and the left ones of its neighbour in
+ * the next plane, row r + N[1], which are kept per slot idx[1] in one of
+ * two buffers by the parity of idx[2] (2 N[1] n doubles at plane), then
+ * read there if this thread's last row of that slot was row r - N[1]
+ * (the row each slot last held: N[1] doubles after the buffers, < 0 for
+ * none).  One window per node instead of two, the same bits. */
+static int lf_dim2_plane(int scheme, const hj_ls_grid *g, const double *y, const row_ctx *rc, double eps, double *plane,
+                         int mean, double *l, double *r)
+{
+    if (g->dim < 3) return 0;
+    const size_t n = (size_t)g->N[0], n1 = (size_t)g->N[1], j = (size_t)rc->idx[1], h = (size_t)(rc->idx[2] & 1);
+    double *last = plane + 2 * n1 * n;
+    const double *left = plane + ((1 - h) * n1 + j) * n;
+    const int cont = rc->idx[2] != 0 && last[j] == (double)(rc->r - n1);
+    if (!hj_ls_weno5_row_next_eps(scheme, y + rc->k, g->stride[2], g->N[0], g->dx[2], eps, mean, cont ? left : NULL,
+                                  plane + (h * n1 + j) * n, l, r))
+        return 0;
+    last[j] = (double)rc->r;
+    return 1;
+}
+
+/* lf_dim2_plane's doubles: none on a grid of fewer than three dimensions. */
+static size_t lf_plane_doubles(const hj_ls_grid *g)
+{
+    return g->dim < 3 ? 0 : (2 * (size_t)g->N[0] + 1) * (size_t)g->N[1];
+}
+
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
@@ -1224,7 +1253,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const size_t dn = (size_t)dim * (size_t)n;
     double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
     double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
-    double *A = GH + dn, *H = A + dn, *ring = H + n;
+    double *A = GH + dn, *H = A + dn, *ring = H + n, *plane = ring + 9 * (size_t)n;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
     const int six = c->scheme == HJ_LS_ENO3A || c->scheme == HJ_LS_ENO3B || c->scheme == HJ_LS_WENO5A ||
                     c->scheme == HJ_LS_WENO5B;
@@ -1240,6 +1269,8 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
     /* first order and ENO2: every dimension's in one call */
     const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, dr);
+    if (!rc->filled && dim >= 3) /* no row kept for lf_dim2_plane yet */
+        for (long j = 0; j < g->N[1]; j++) plane[2 * (size_t)g->N[1] * (size_t)n + (size_t)j] = -1;
     for (int d = 0; d < dim; d++) {
         double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
         double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
@@ -1248,6 +1279,8 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             if (all)
                 ;
             else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
+            else if (d == 2 && lf_dim2_plane(c->scheme, g, y, rc, ps->eps[2], plane, 1, pd, r))
+                ;
             else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
             pp[d] = pd;
             double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
@@ -1261,6 +1294,8 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
             l = (double *)DL + (size_t)d * ds_stride, r = (double *)DR + (size_t)d * ds_stride;
         else if (d == 1 && six)
             lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 0, l, r);
+        else if (d == 2 && lf_dim2_plane(c->scheme, g, y, rc, ps->eps[2], plane, 0, l, r))
+            ;
         else
             hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], l, r, w);
         /* blocks of 8 nodes and the last 8 again (HJ_LS_ROW_BLOCKS8) */
@@ -1391,9 +1426,10 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
+    const size_t ws = (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g);
     const int glf = c->dissipation == HJ_LS_GLF && !ps.cache &&
                     (c->scheme == HJ_LS_UPWIND_FIRST || c->scheme == HJ_LS_ENO2);
-    int rc = for_rows_layers(g, (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n, glf ? lf_row_glf : lf_row, &ps,
+    int rc = for_rows_layers(g, ws, glf ? lf_row_glf : lf_row, &ps,
                              t, y, ydot, &m, dm, stage, faces ? ghost : 0, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);

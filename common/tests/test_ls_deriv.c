@@ -392,14 +392,16 @@ static void weno5_transport2_bitwise(void **state)
  * where the six rows of differences are one row read at six offsets) and
  * across rows (the same values laid out with a stride), the mean and
  * difference form against (D- + D+)/2 and D+ - D-, that form for every
- * dimension in one call, and the form from given rows of differences; rows shorter than, not a multiple of, and a
- * multiple of a vector block. */
+ * dimension in one call, and the form from given rows of differences; rows
+ * of 2 nodes, shorter than, not a multiple of, and a multiple of a vector
+ * block; O&F's WENO5 epsilon and a given one. */
 static void kernel_forms_bitwise(void **state)
 {
     (void)state;
-    const long sizes[3] = {5, 13, 16};
-    for (int si = 0; si < 3; si++) {
-        const long n = sizes[si], S = n + 6;
+    const long sizes[4] = {2, 5, 13, 16};
+    for (int si = 0; si < 8; si++) {
+        const double eps = si % 2 ? 3e-4 : -1; /* O&F's WENO5 epsilon, or one given */
+        const long n = sizes[si / 2], S = n + 6;
         const double dx = 0.03;
         double *c = malloc(sizeof(double) * (size_t)(n + 6)), *q = malloc(sizeof(double) * (size_t)(7 * S));
         double *w = malloc(sizeof(double) * HJ_LS_ROW_WORK * (size_t)n), *out[8], *D[6];
@@ -417,13 +419,13 @@ static void kernel_forms_bitwise(void **state)
         for (long i = -3; i < n + 3; i++) q[3 * S + i] = c[i + 3];
         for (int s = 0; s < HJ_LS_NSCHEMES; s++) {
             double *l1 = out[0], *r1 = out[1], *l2 = out[2], *r2 = out[3], *m = out[4], *df = out[5];
-            hj_ls_upwind_row_eps(s, c + 3, 1, n, dx, -1, l1, r1, w);
-            hj_ls_upwind_row_eps(s, q + 3 * S, S, n, dx, -1, l2, r2, w);
+            hj_ls_upwind_row_eps(s, c + 3, 1, n, dx, eps, l1, r1, w);
+            hj_ls_upwind_row_eps(s, q + 3 * S, S, n, dx, eps, l2, r2, w);
             assert_memory_equal(l1, l2, sizeof(double) * (size_t)n);
             assert_memory_equal(r1, r2, sizeof(double) * (size_t)n);
             for (int stride = 0; stride < 2; stride++) {
-                if (stride) hj_ls_upwind_row_mean_eps(s, q + 3 * S, S, n, dx, -1, m, df, w);
-                else hj_ls_upwind_row_mean_eps(s, c + 3, 1, n, dx, -1, m, df, w);
+                if (stride) hj_ls_upwind_row_mean_eps(s, q + 3 * S, S, n, dx, eps, m, df, w);
+                else hj_ls_upwind_row_mean_eps(s, c + 3, 1, n, dx, eps, m, df, w);
                 for (long i = 0; i < n; i++) {
                     const double want_m = 0.5 * (l1[i] + r1[i]), want_d = r1[i] - l1[i];
                     assert_memory_equal(&m[i], &want_m, sizeof want_m);
@@ -448,10 +450,10 @@ static void kernel_forms_bitwise(void **state)
                 }
             if (s == HJ_LS_UPWIND_FIRST || s == HJ_LS_ENO2) continue;
             for (int k = 0; k < 6; k++) hj_ls_upwind_difference_row(q + 3 * S, S, n, dx, k - 3, D[k]);
-            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, -1, 0, l2, r2);
+            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, eps, 0, l2, r2);
             assert_memory_equal(l1, l2, sizeof(double) * (size_t)n);
             assert_memory_equal(r1, r2, sizeof(double) * (size_t)n);
-            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, -1, 1, m, df);
+            hj_ls_upwind_diffs_eps(s, (const double *const *)D, n, eps, 1, m, df);
             for (long i = 0; i < n; i++) {
                 const double want_m = 0.5 * (l1[i] + r1[i]), want_d = r1[i] - l1[i];
                 assert_memory_equal(&m[i], &want_m, sizeof want_m);

@@ -491,7 +491,8 @@ static void lax_friedrichs_rows_equal_nodes(void **state)
  * sum_d alpha_d / dx_d summed in dimension order, the bound 1 / max of
  * the sums; the restriction's clip of G after.  Rows shorter than a
  * vector block (5 nodes), with a partial block (13) and whole blocks (16);
- * 1 and 2 threads. */
+ * 1 and 2 threads; ENO3 and WENO5 (whose rows along dimensions 1 and 2
+ * take the left derivatives their neighbours computed). */
 static void lax_friedrichs_matches_definition(void **state)
 {
     (void)state;
@@ -507,11 +508,12 @@ static void lax_friedrichs_matches_definition(void **state)
         for (int d = 0; d < 3; d++) dl[d] = hj_ls_alloc(&g), dr[d] = hj_ls_alloc(&g);
         hj_ls_fill(&g, y, bump3, NULL);
         const double t = 0.3;
-        for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++) {
+        for (int q = 0; q < 6; q++) { /* ENO3 then WENO5, each with the three dissipations */
+            const int scheme = q < 3 ? HJ_LS_ENO3A : HJ_LS_WENO5A, diss = HJ_LS_GLF + q % 3;
             /* the reference */
             double gmin[3], gmax[3], m = 0;
             for (int d = 0; d < 3; d++) {
-                assert_int_equal(hj_ls_upwind(&g, HJ_LS_ENO3A, y, d, dl[d], dr[d], NULL), HJ_OK);
+                assert_int_equal(hj_ls_upwind(&g, scheme, y, d, dl[d], dr[d], NULL), HJ_OK);
                 gmin[d] = INFINITY, gmax[d] = -INFINITY;
             }
             long idx[3];
@@ -554,7 +556,7 @@ static void lax_friedrichs_matches_definition(void **state)
 #endif
                 for (int clip = 0; clip < 2; clip++) {
                     hj_ls_lax_friedrichs lf;
-                    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO3A, diss, ham_mix, partial_mix, NULL);
+                    hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_mix, NULL);
                     if (form % 2) lf.ham = NULL, lf.partial = NULL, lf.ham_row = ham_mix_row, lf.partial_row = partial_mix_row;
                     hj_ls_restrict rs;
                     hj_ls_restrict_init(&rs, &g, &lf.base, 0);
