@@ -510,21 +510,29 @@ static void varying_speed_bitwise(void **state)
 #endif
 }
 
-/* Slowness 0.5..10 drawn independently per node: the source start's
- * expansion (central differences of f across jumps) went negative next to
- * the source, and every order failed its result check.  Each order must
- * converge, and keep the exact solution's bound T >= r min f at the start
- * nodes (within a cell of the source).  Farther out the order 5 result can
- * dip below it (seed 2: 0.96 < 1.01 at r = 2): a property of the sweeps
- * on an unresolved map, not of the start. */
+/* Slowness 0.5..10 drawn independently per node (maps of seeds 1-200):
+ * the source start's expansion (central differences of f across jumps)
+ * went negative next to the source, and every order failed its result
+ * check.  Each order must converge and keep the exact solution's bound
+ * T >= r min f at every node.  Orders 3 and 5 dipped below it within 4
+ * cells of the source (seed 2, order 5: 0.962 < 1.011 at (1, 3); seed
+ * 161, order 3: 10 % below; seed 186, order 5: 20 % below), nodes kept at
+ * the high order update between rough nodes, whose WENO extrapolations
+ * followed the noise; the results came back HJ_OK.  The tolerance is
+ * rounding (1e-12 of the bound): order 1 keeps the bound on these maps,
+ * and orders 3 and 5 now leave every node between rough nodes at its
+ * update (worst of seeds 1-400, any order: 1.6e-16 below).  On resolved
+ * data a discrete solution can sit below the bound by its discretisation
+ * error (the obstacle case of the convergence study, order 3: up to
+ * 2.9e-4 of it); a check of resolved maps would need that room. */
 static void noisy_start_in_bounds(void **state)
 {
     (void)state;
     hj_eik_grid g = {2, {12, 10, 1}, {0, 0, 0}, {1, 1, 1}};
     const size_t n = nodes(&g);
     double f[12 * 10], T[12 * 10];
-    int bad = 0; /* failed solves and start values below r min f */
-    for (uint64_t seed = 1; seed <= 16; seed++) {
+    int bad = 0; /* failed solves and values below r min f */
+    for (uint64_t seed = 1; seed <= 200; seed++) {
         uint64_t x = seed;
         double fmin = INFINITY;
         for (size_t u = 0; u < n; u++) {
@@ -549,7 +557,7 @@ static void noisy_start_in_bounds(void **state)
                 double xu[3];
                 coords(&g, u, xu);
                 const double r = hypot(xu[0] - 3, xu[1] - 3);
-                if (fabs(xu[0] - 3) <= 1 && fabs(xu[1] - 3) <= 1 && T[u] < r * fmin * (1 - 1e-12)) {
+                if (T[u] < r * fmin * (1 - 1e-12)) {
                     print_message("seed %d, order %d: T = %g < r min f = %g at (%g, %g)\n", (int)seed, order, T[u],
                                   r * fmin, xu[0], xu[1]);
                     bad++;
