@@ -69,7 +69,7 @@
  * iterations for N = 20 ... 160; 14 ... 31 with no relaxation at all).
  * Now the counts are about flat in N (linear speed, tol 1e-12, first
  * order start included: order 3 12, 12, 14, 16 iterations in 3-D for
- * N = 20 ... 160, 18, 19, 21, 20 in 2-D for N = 40 ... 320; see
+ * N = 20 ... 160, 17, 17, 19, 20 in 2-D for N = 40 ... 320; see
  * paper1_fastsweeping/eik/notes).  Where the upwind neighbour did not
  * change in this sweep (a fixed node, a locked one) du = 0 is its true
  * change.  The relaxation stays on after demote_cycling (with the first
@@ -77,12 +77,30 @@
  * below took 105 iterations at order 5, with the quicker cycle test;
  * 64 instead of 33 now).  In the
  * sweeps against the flow the downwind nodes are already new and the
- * plain slope is kept: the relaxed slope there
- * amplifies short waves (1-D WENO5: by 3.6 per sweep) and the WENO5
- * iteration cycled.  Stencils reaching the ghost layers keep it too (the
- * ghost values are extrapolations of the node itself): relaxed there,
- * the order 3 iteration slowed to a factor 0.66 per iteration at the
- * outflow boundary.  The weights' c, not the linear weights' constant,
+ * relaxed slope there amplifies short waves (1-D WENO5: by 3.6 per
+ * sweep; the WENO5 iteration cycled); the plain slope T0 / h + p, on
+ * the other hand, lets these sweeps undo part of what the sweeps along
+ * the flow did: in a 1-D model of the iteration (linear weights, the
+ * four sweeps of a 2-D iteration, two along the flow and two against)
+ * the error falls by only 0.58 per iteration with WENO5 and 0.20 with
+ * WENO3, its largest part next to the outflow end, whatever the
+ * boundary closure.  Against the flow the slope is T0 AGAINST_SLOPE /
+ * h + p, the right-hand side keeping the term's value at the current
+ * tau (the same fixed point): 0.37 and 0.18 in the model (slope 1.5:
+ * 0.33 and 0.17, but 3-D order 3 then took one iteration more; below
+ * 1 the model diverges).  Stencils reaching the ghost layers take the
+ * ghost values from the current values of their line (current_ghosts,
+ * the quadratic extrapolation of fill_ghosts), not from those filled
+ * before the sweep, and the ghosts' coefficients in h D^-/+ count as
+ * the coefficients of the nodes they extrapolate (fold_ghosts): the
+ * relaxation then holds there too, with c and e over the in-grid nodes,
+ * and against the flow the slope is at least the node's own coefficient
+ * (1.5 at the last node with WENO3, whose stencil then is the one-sided
+ * second order difference).  With the ghosts held for the sweep the
+ * relaxation had to be off there (relaxed, the order 3 iteration slowed
+ * to a factor 0.66 per iteration at the outflow boundary), and current
+ * ghosts with the plain slope overshot (the node enters its stencil
+ * through the ghosts with weight 3).  The weights' c, not the linear weights' constant,
  * is what keeps order 3 converging on maps whose speed varies by a
  * large factor over a few cells (with the constant the 40 x 40 map below
  * did not converge in 1000 iterations): where a stencil is not smooth
@@ -177,6 +195,9 @@ enum { CYCLE_SPAN = 4 };
 enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
 #define STALL_FRAC 0.01
+/* Slope of a higher order term in a sweep against its side's flow, in
+ * units of the plain T0 / h (see the head of this file). */
+#define AGAINST_SLOPE 1.25
 enum { ST_GHOST = 0, ST_FREE, ST_FIXED, ST_OBST, ST_UNREACH, ST_SRC };
 
 hj_eik_options hj_eik_default_options(void)
@@ -333,6 +354,86 @@ static inline void weno5(const double *v, double eps, double *hm, double *hp, do
     const double d3 = v[4] - v[3], d4 = v[5] - v[4], d5 = v[6] - v[5];
     *hm = weno5_one(d0, d1, d2, d3, d4, eps, cm, em);
     *hp = weno5_one(d5, d4, d3, d2, d1, eps, cp, ep);
+}
+
+/* Held-weight coefficients of h D^- (km) and h D^+ (kp) on the stencil
+ * v[0..2r] (r = 2: WENO3, 3: WENO5), with the weights of weno3 and
+ * weno5_one on the same values. */
+static void weno_coef(const double *v, int r, double eps, double *km, double *kp)
+{
+    if (r == 2) {
+        const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
+        const double den = eps + dc * dc;
+        const double rm = (eps + dm * dm) / den, rp = (eps + dp * dp) / den;
+        const double wm = 1.0 / (1.0 + 2.0 * rm * rm), wp = 1.0 / (1.0 + 2.0 * rp * rp);
+        km[0] = 0.5 * wm, km[1] = -0.5 * (1 - wm) - 2 * wm, km[2] = 1.5 * wm, km[3] = 0.5 * (1 - wm), km[4] = 0;
+        kp[0] = 0, kp[1] = -0.5 * (1 - wp), kp[2] = -1.5 * wp, kp[3] = 0.5 * (1 - wp) + 2 * wp, kp[4] = -0.5 * wp;
+        return;
+    }
+    double dd[6];
+    for (int j = 0; j < 6; j++) dd[j] = v[j + 1] - v[j];
+    for (int side = 0; side < 2; side++) {
+        /* weno5_one's arguments: d0..d4 for hm, d5..d1 for hp */
+        double e[5];
+        for (int j = 0; j < 5; j++) e[j] = side ? dd[5 - j] : dd[j];
+        const double a = e[0] - 2 * e[1] + e[2], b = e[0] - 4 * e[1] + 3 * e[2];
+        const double cc = e[1] - 2 * e[2] + e[3], ee = e[1] - e[3];
+        const double f = e[2] - 2 * e[3] + e[4], gg = 3 * e[2] - 4 * e[3] + e[4];
+        const double s1 = 13.0 / 12 * a * a + 0.25 * b * b;
+        const double s2 = 13.0 / 12 * cc * cc + 0.25 * ee * ee;
+        const double s3 = 13.0 / 12 * f * f + 0.25 * gg * gg;
+        const double a1 = 0.1 / ((eps + s1) * (eps + s1));
+        const double a2 = 0.6 / ((eps + s2) * (eps + s2));
+        const double a3 = 0.3 / ((eps + s3) * (eps + s3));
+        const double as = a1 + a2 + a3, o1 = a1 / as, o2 = a2 / as, o3 = a3 / as;
+        const double g[5] = {o1 / 3, -7 * o1 / 6 - o2 / 6, 11 * o1 / 6 + 5 * o2 / 6 + o3 / 3, o2 / 3 + 5 * o3 / 6,
+                             -o3 / 6};
+        double cd[6] = {0, 0, 0, 0, 0, 0}; /* coefficient of dd[j] = v[j+1] - v[j] */
+        for (int j = 0; j < 5; j++) cd[side ? 5 - j : j] += g[j];
+        double *k = side ? kp : km;
+        for (int j = 0; j <= 6; j++) k[j] = (j > 0 ? cd[j - 1] : 0) - (j < 6 ? cd[j] : 0);
+    }
+}
+
+/* Weights of the quadratic extrapolation to the g-th ghost past a
+ * boundary from the boundary node and the two before it (fill_ghosts
+ * with degree 2). */
+static const double ghost_w[4][3] = {{0, 0, 0}, {3, -3, 1}, {6, -8, 3}, {10, -15, 6}};
+
+/* Stencil v[0..2r] of node id on a line of n >= 3 nodes: the entries past
+ * the line's ends become the extrapolations of the current in-grid
+ * entries (the three boundary nodes lie in the stencil whenever a ghost
+ * does). */
+static void current_ghosts(double *v, int r, long id, long n)
+{
+    for (int q = -r; q <= r; q++) {
+        const long pos = id + q;
+        if (pos > n - 1) {
+            const long g = pos - (n - 1), b = n - 1 - id + r;
+            v[q + r] = ghost_w[g][0] * v[b] + ghost_w[g][1] * v[b - 1] + ghost_w[g][2] * v[b - 2];
+        }
+    }
+    for (int q = r; q >= -r; q--) {
+        const long pos = id + q;
+        if (pos < 0) {
+            const long g = -pos, b = r - id;
+            v[q + r] = ghost_w[g][0] * v[b] + ghost_w[g][1] * v[b + 1] + ghost_w[g][2] * v[b + 2];
+        }
+    }
+}
+
+/* The coefficients k[0..2r] of a stencil whose ghost entries are
+ * extrapolations (current_ghosts), moved onto the in-grid entries. */
+static void fold_ghosts(double *k, int r, long id, long n)
+{
+    for (int q = -r; q <= r; q++) {
+        const long pos = id + q;
+        if (pos >= 0 && pos <= n - 1) continue;
+        const long g = pos > n - 1 ? pos - (n - 1) : -pos, b = pos > n - 1 ? n - 1 - id + r : r - id;
+        const int dir = pos > n - 1 ? -1 : 1;
+        for (int m = 0; m < 3; m++) k[b + m * dir] += k[q + r] * ghost_w[g][m];
+        k[q + r] = 0;
+    }
 }
 
 /* ---- the local Godunov solve ------------------------------------------- */
@@ -535,18 +636,42 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
             ord = 3;
         }
         if (ok) {
+            const long id = ip[d] - w->G[d], nd = w->n[d];
+            const int rs = ord == 5 ? 3 : 2;
+            /* a stencil reaching the ghosts takes them from the current
+             * values (see the head of this file) */
+            const int edge = !(id >= R && id <= nd - 1 - R) && nd >= 3;
+            if (edge) current_ghosts(v, rs, id, nd);
             double hm, hp, cm, cp, em, ep;
             if (ord == 5) weno5(v, w->eps5[d], &hm, &hp, &cm, &cp, &em, &ep);
             else weno3(v, w->eps3, &hm, &hp, &cm, &cp, &em, &ep);
+            double gm = 0, gp = 0; /* the node's own coefficient in hm and -hp, ghosts included */
+            if (edge) {
+                /* cm, em, cp, ep as in weno3 over the in-grid nodes, the
+                 * ghosts moving with the nodes they extrapolate */
+                double km[7], kp[7];
+                weno_coef(v, rs, ord == 5 ? w->eps5[d] : w->eps3, km, kp);
+                fold_ghosts(km, rs, id, nd);
+                fold_ghosts(kp, rs, id, nd);
+                gm = cm = km[rs];
+                gp = cp = -kp[rs];
+                em = ep = 0;
+                for (int j = 1; j <= rs; j++) {
+                    cm += km[rs + j], em += j * km[rs + j];
+                    cp -= kp[rs - j], ep -= j * kp[rs - j];
+                }
+            }
             const double p = o >= 0 ? w->src[o].s0 * w->src[o].s0 * (x[d] - w->src[o].x[d]) / T0 : 0;
             const double tk = w->tau[k], nl = tk - hm, nr = tk + hp, Tk = T0 * tk;
-            /* downwind moving along: the stencil lies inside the grid
-             * (ghost values are extrapolations of the node itself) and
-             * this sweep runs along d in the direction of the side's
-             * flow (left side: forwards), so the downwind neighbours
-             * still hold the previous sweep's values */
-            const long id = ip[d] - w->G[d];
-            const int inner = w->relax && id >= R && id <= w->n[d] - 1 - R, fwd = !((sw >> d) & 1);
+            /* downwind moving along: this sweep runs along d in the
+             * direction of the side's flow (left side: forwards), so the
+             * downwind neighbours still hold the previous sweep's values */
+            const int inner = w->relax && ((id >= R && id <= nd - 1 - R) || edge), fwd = !((sw >> d) & 1);
+            /* against the flow: the slope AGAINST_SLOPE (relaxation on),
+             * and at least the node's own coefficient where the ghosts
+             * move with it */
+            const double base = w->relax ? AGAINST_SLOPE : 1.0;
+            const double sl = gm > base ? gm : base, sr = gp > base ? gp : base;
             /* a side is a candidate if it is the first order one or its
              * neighbour is earlier than the node (both: a valley of T
              * along d); a later neighbour's side has a small a near a
@@ -559,6 +684,9 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
                     const double du = w->calc[k - st] == qs ? w->dl[k - st] : 0, Ac = T0 * (cm + em) / h + p;
                     al[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
                     bl[d] = al[d] * tk - (p * tk + T0 * (hm - em * du) / h);
+                } else if (sl != 1.0) {
+                    al[d] = T0 * sl / h + p;
+                    bl[d] = al[d] * tk - (p * tk + T0 * hm / h);
                 } else {
                     al[d] = A;
                     bl[d] = T0 * nl / h;
@@ -570,6 +698,9 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
                     const double du = w->calc[k + st] == qs ? w->dl[k + st] : 0, Ac = T0 * (cp + ep) / h - p;
                     ar[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
                     br[d] = ar[d] * tk + (p * tk + T0 * (hp + ep * du) / h);
+                } else if (sr != 1.0) {
+                    ar[d] = T0 * sr / h - p;
+                    br[d] = ar[d] * tk + (p * tk + T0 * hp / h);
                 } else {
                     ar[d] = A;
                     br[d] = T0 * nr / h;
