@@ -297,6 +297,16 @@ static inline double tau_in(const eik_work *w, int o, long nb, const double *x)
 
 /* ---- one-sided WENO derivatives, as extrapolated neighbour values ----- */
 
+/* WENO3's weights of the one-sided second order formulas for h D^- (*wm)
+ * and h D^+ (*wp) on v[0..4] = tau at i-2..i+2 (Zhang, Zhao & Qian 2006). */
+static inline void weno3_weights(const double *v, double eps, double *wm, double *wp)
+{
+    const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
+    const double den = eps + dc * dc;
+    const double rm = (eps + dm * dm) / den, rp = (eps + dp * dp) / den;
+    *wm = 1.0 / (1.0 + 2.0 * rm * rm), *wp = 1.0 / (1.0 + 2.0 * rp * rp);
+}
+
 /* WENO3 (Zhang, Zhao & Qian 2006): v[0..4] = tau at i-2..i+2; *hm = h D^-,
  * *hp = h D^+ (undivided).  *cm, *cp: how much hm and -hp grow when the
  * node and its downwind neighbours (i..i+2 for hm, i-2..i for hp) all
@@ -305,10 +315,8 @@ static inline double tau_in(const eik_work *w, int o, long nb, const double *x)
 static inline void weno3(const double *v, double eps, double *hm, double *hp, double *cm, double *cp, double *em,
                          double *ep)
 {
-    const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
-    const double den = eps + dc * dc;
-    const double rm = (eps + dm * dm) / den, rp = (eps + dp * dp) / den;
-    const double wm = 1.0 / (1.0 + 2.0 * rm * rm), wp = 1.0 / (1.0 + 2.0 * rp * rp);
+    double wm, wp;
+    weno3_weights(v, eps, &wm, &wp);
     const double cen = 0.5 * (v[3] - v[1]);
     *hm = (1 - wm) * cen + wm * 0.5 * (3 * v[2] - 4 * v[1] + v[0]);
     *hp = (1 - wp) * cen + wp * 0.5 * (-3 * v[2] + 4 * v[3] - v[4]);
@@ -316,6 +324,21 @@ static inline void weno3(const double *v, double eps, double *hm, double *hp, do
     *cp = 0.5 + wp;
     *em = 0.5 * (1 - wm);
     *ep = 0.5 * (1 - wp);
+}
+
+/* Jiang & Peng's unnormalised WENO5 weights a[0..2] of the three
+ * candidate stencils on the undivided differences d1..d5. */
+static inline void weno5_alphas(double d1, double d2, double d3, double d4, double d5, double eps, double *a)
+{
+    const double q = d1 - 2 * d2 + d3, b = d1 - 4 * d2 + 3 * d3;
+    const double cc = d2 - 2 * d3 + d4, e = d2 - d4;
+    const double f = d3 - 2 * d4 + d5, g = 3 * d3 - 4 * d4 + d5;
+    const double s1 = 13.0 / 12 * q * q + 0.25 * b * b;
+    const double s2 = 13.0 / 12 * cc * cc + 0.25 * e * e;
+    const double s3 = 13.0 / 12 * f * f + 0.25 * g * g;
+    a[0] = 0.1 / ((eps + s1) * (eps + s1));
+    a[1] = 0.6 / ((eps + s2) * (eps + s2));
+    a[2] = 0.3 / ((eps + s3) * (eps + s3));
 }
 
 /* WENO5 of Jiang & Peng on the undivided differences d1..d5; *c: the
@@ -327,15 +350,9 @@ static inline double weno5_one(double d1, double d2, double d3, double d4, doubl
     const double p1 = d1 / 3 - 7 * d2 / 6 + 11 * d3 / 6;
     const double p2 = -d2 / 6 + 5 * d3 / 6 + d4 / 3;
     const double p3 = d3 / 3 + 5 * d4 / 6 - d5 / 6;
-    const double a = d1 - 2 * d2 + d3, b = d1 - 4 * d2 + 3 * d3;
-    const double cc = d2 - 2 * d3 + d4, e = d2 - d4;
-    const double f = d3 - 2 * d4 + d5, g = 3 * d3 - 4 * d4 + d5;
-    const double s1 = 13.0 / 12 * a * a + 0.25 * b * b;
-    const double s2 = 13.0 / 12 * cc * cc + 0.25 * e * e;
-    const double s3 = 13.0 / 12 * f * f + 0.25 * g * g;
-    const double a1 = 0.1 / ((eps + s1) * (eps + s1));
-    const double a2 = 0.6 / ((eps + s2) * (eps + s2));
-    const double a3 = 0.3 / ((eps + s3) * (eps + s3));
+    double al[3];
+    weno5_alphas(d1, d2, d3, d4, d5, eps, al);
+    const double a1 = al[0], a2 = al[1], a3 = al[2];
     const double as = a1 + a2 + a3;
     *c = (11.0 / 6 * a1 + 5.0 / 6 * a2 + a3 / 3) / as;
     *c45 = (a2 / 3 + 2 * a3 / 3) / as;
@@ -362,10 +379,8 @@ static inline void weno5(const double *v, double eps, double *hm, double *hp, do
 static void weno_coef(const double *v, int r, double eps, double *km, double *kp)
 {
     if (r == 2) {
-        const double dc = v[3] - 2 * v[2] + v[1], dm = v[2] - 2 * v[1] + v[0], dp = v[2] - 2 * v[3] + v[4];
-        const double den = eps + dc * dc;
-        const double rm = (eps + dm * dm) / den, rp = (eps + dp * dp) / den;
-        const double wm = 1.0 / (1.0 + 2.0 * rm * rm), wp = 1.0 / (1.0 + 2.0 * rp * rp);
+        double wm, wp;
+        weno3_weights(v, eps, &wm, &wp);
         km[0] = 0.5 * wm, km[1] = -0.5 * (1 - wm) - 2 * wm, km[2] = 1.5 * wm, km[3] = 0.5 * (1 - wm), km[4] = 0;
         kp[0] = 0, kp[1] = -0.5 * (1 - wp), kp[2] = -1.5 * wp, kp[3] = 0.5 * (1 - wp) + 2 * wp, kp[4] = -0.5 * wp;
         return;
@@ -376,15 +391,9 @@ static void weno_coef(const double *v, int r, double eps, double *km, double *kp
         /* weno5_one's arguments: d0..d4 for hm, d5..d1 for hp */
         double e[5];
         for (int j = 0; j < 5; j++) e[j] = side ? dd[5 - j] : dd[j];
-        const double a = e[0] - 2 * e[1] + e[2], b = e[0] - 4 * e[1] + 3 * e[2];
-        const double cc = e[1] - 2 * e[2] + e[3], ee = e[1] - e[3];
-        const double f = e[2] - 2 * e[3] + e[4], gg = 3 * e[2] - 4 * e[3] + e[4];
-        const double s1 = 13.0 / 12 * a * a + 0.25 * b * b;
-        const double s2 = 13.0 / 12 * cc * cc + 0.25 * ee * ee;
-        const double s3 = 13.0 / 12 * f * f + 0.25 * gg * gg;
-        const double a1 = 0.1 / ((eps + s1) * (eps + s1));
-        const double a2 = 0.6 / ((eps + s2) * (eps + s2));
-        const double a3 = 0.3 / ((eps + s3) * (eps + s3));
+        double al[3];
+        weno5_alphas(e[0], e[1], e[2], e[3], e[4], eps, al);
+        const double a1 = al[0], a2 = al[1], a3 = al[2];
         const double as = a1 + a2 + a3, o1 = a1 / as, o2 = a2 / as, o3 = a3 / as;
         const double g[5] = {o1 / 3, -7 * o1 / 6 - o2 / 6, 11 * o1 / 6 + 5 * o2 / 6 + o3 / 3, o2 / 3 + 5 * o3 / 6,
                              -o3 / 6};
