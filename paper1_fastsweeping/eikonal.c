@@ -36,8 +36,8 @@ front arrives).  Written atomically to `--out`.
 Examples (from a fresh clone, see README.md):
 
     eikonal --speed examples/data/speed.pgm --pgm-range 0,2 --source 10,10 --out time.tsv
-    eikonal --speed examples/data/volume.txt --source 1,1,1 --out time.vtk
-    eikonal --speed-const 1 --obstacle examples/data/wall.txt --source 2,2 --out wall.tsv
+    eikonal --speed examples/data/volume.txt --source 2,2,2 --out time.vtk
+    eikonal --speed-const 1 --domain 0,40,0,40 --N 40 --obstacle examples/data/wall.txt --source 5,20 --out wall.tsv
 */
 #include <ctype.h>
 #include <errno.h>
