@@ -119,8 +119,8 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
         partial1_loop(n, fabs(q->vb * c->sn[row->idx[2]]), q->A, c->xs, alpha);
         return;
     }
-    const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
-    for (long j = 0; j < n; j++) alpha[j] = a;
+    /* constant along the row (row_const): node 0's alone is read */
+    alpha[0] = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
 }
 
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
@@ -160,6 +160,7 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
     lf.range_free = 1; /* partial_row reads the tables, never the gradient box */
+    lf.row_const = 1u << 0 | 1u << 2; /* alpha_1 and alpha_3 depend on y and psi only */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
     free(tab);
     return rc;
