@@ -1185,7 +1185,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     /* row_const: alpha_d read at node 0 only, its row filled where the
      * finish has no loop for the mask */
     const int cm = (int)(c->row_const & ((1u << dim) - 1));
-    const int cmloop = LF_ROW_CONST(diffs, dim, cm);
+    const int cmloop = LF_ROW_CONST(diffs, dim, cm), cmfill = cmloop ? 0 : cm;
     for (int d = 0; d < dim; d++) {
         double *Ad = A + (size_t)d * (size_t)n;
         const double *sl = lo[d], *sh = hi[d];
@@ -1194,7 +1194,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
         if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
         else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
         lo[d] = sl, hi[d] = sh;
-        if (cm >> d & 1 && !cmloop)
+        if (cmfill >> d & 1)
             for (long j = 1; j < n; j++) Ad[j] = Ad[0];
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
             const double dx = g->dx[d];
@@ -1368,13 +1368,14 @@ static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_c
     double *P = rc->ws, *DR = P + dn, *A = DR + dn, *GL = A + dn, *GH = GL + dn, *H = GH + dn, *SP = H + n;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
     hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, DR);
-    for (int d = 0; d < dim; d++) {
-        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
-        if (!rc->filled) /* the global range (NaN: unread) */
+    if (!rc->filled) { /* the global range (NaN: unread), once per evaluation */
+        for (int d = 0; d < dim; d++)
             for (long j = 0; j < n; j++) GL[(size_t)d * (size_t)n + (size_t)j] = ps->gmin[d],
                                          GH[(size_t)d * (size_t)n + (size_t)j] = ps->gmax[d];
+        rc->filled = 1;
     }
-    rc->filled = 1;
+    for (int d = 0; d < dim; d++)
+        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
     return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, (size_t)n, SP, inv, bad);
 }
 
