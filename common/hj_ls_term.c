@@ -989,7 +989,9 @@ typedef struct {
  * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
  * from out).  One vector loop over the row; dim and stage are constants
  * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
- * the plain G path carries no stage. */
+ * the plain G path carries no stage.  Bit d of the constant cm: alpha_d
+ * is the same along the row (row_const), its |alpha| the scalar ac[d]
+ * (no load per node; the same bits). */
 static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int cm, int stage, long n,
                                                                   long j0, long j1, const double *ac,
                                                                   const double *restrict A,
