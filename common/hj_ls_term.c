@@ -989,9 +989,12 @@ typedef struct {
  * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
  * from out).  One vector loop over the row; dim and stage are constants
  * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
- * the plain G path carries no stage. */
-static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int stage, long n, long j0,
-                                                                  long j1, const double *restrict A,
+ * the plain G path carries no stage.  Bit d of the constant cm: alpha_d
+ * is the same along the row (row_const), its |alpha| the scalar ac[d]
+ * (no load per node; the same bits). */
+static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int cm, int stage, long n,
+                                                                  long j0, long j1, const double *ac,
+                                                                  const double *restrict A,
                                                                   const double *restrict DL,
                                                                   const double *restrict DR, size_t ds_stride,
                                                                   const double *restrict H, const double *hinv,
@@ -1006,7 +1009,7 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
         for (int d = 0; d < dim; d++) {
-            const double a = fabs(A[(size_t)d * (size_t)n + (size_t)j]);
+            const double a = cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * (size_t)n + (size_t)j]);
             const size_t q = (size_t)d * ds_stride + (size_t)j;
             ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
             s += a * hinv[d];
@@ -1046,7 +1049,7 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
  * times floor, an exact s of a row before it (the thread's running
  * maximum): no node of the row can exceed floor, and *inv = 0 leaves
  * the maximum as it is (most rows, once the largest is met). */
-static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int stage, long n,
+static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int cm, int stage, long n,
                                                            const double *restrict A, const double *restrict DL,
                                                            const double *restrict DR, size_t ds_stride,
                                                            const double *restrict H, const double *dx,
@@ -1054,11 +1057,13 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
                                                            double *restrict SP, lf_stage_row *sr, double floor,
                                                            double *inv)
 {
-    double hinv[HJ_LS_MAXDIM]; /* a local copy: no store of the row may change it */
-    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d];
+    /* local copies: no store of the row may change them */
+    double hinv[HJ_LS_MAXDIM], ac[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d], ac[d] = fabs(A[(size_t)d * (size_t)n]);
     double mp = 0, nf = 0;
 #define LF_RANGE(j0, j1) \
-    lf_finish_range(diffs, dim, stage, n, (j0), (j1), A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, &nf);
+    lf_finish_range(diffs, dim, cm, stage, n, (j0), (j1), ac, A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, \
+                    &nf);
     if (stage == 2) {
         const long n8 = n & ~7L;
         LF_RANGE(0, n8)
@@ -1079,7 +1084,8 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 #define LF_EXACT(j)                                                                                  \
     if (SP[j] >= thr) {                                                                              \
         double s = 0.0;                                                                              \
-        for (int d = 0; d < dim; d++) s += fabs(A[(size_t)d * (size_t)n + (size_t)(j)]) / dx[d]; \
+        for (int d = 0; d < dim; d++)                                                               \
+            s += (cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * (size_t)n + (size_t)(j)])) / dx[d];      \
         m = s > m ? s : m;                                                                           \
     }
     long j = 0;
@@ -1095,23 +1101,34 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
     return nf != 0;
 }
 
+/* LF_ROW_CONST: the masks of row-constant dimensions (row_const) that
+ * have a loop of their own, first order or ENO2 under GLF in 3-D (diffs):
+ * dimensions 0 and 2, as air3D's bounds; lf_row_end fills the rows of
+ * any other mask and passes cm = 0. */
+#define LF_ROW_CONST(diffs, dim, cm) ((diffs) && (dim) == 3 && (cm) == 5)
+
 HJ_LS_TERM_CLONES
-static int lf_finish_dim(int diffs, int dim, long n, const double *A, const double *DL, const double *DR,
+static int lf_finish_dim(int diffs, int dim, int cm, long n, const double *A, const double *DL, const double *DR,
                          size_t ds_stride, const double *H, const double *dx, const double *hinv, int clip,
                          double *out, double *SP, lf_stage_row *sr, double floor, double *inv)
 {
-#define LF_FINISH(DIFFS, DIM, STAGE, CLIP) \
-    lf_finish(DIFFS, DIM, STAGE, n, A, DL, DR, ds_stride, H, dx, hinv, CLIP, out, SP, sr, floor, inv)
+#define LF_FINISH(DIFFS, DIM, CM, STAGE, CLIP) \
+    lf_finish(DIFFS, DIM, CM, STAGE, n, A, DL, DR, ds_stride, H, dx, hinv, CLIP, out, SP, sr, floor, inv)
     /* dim and clip constants in 2-D and 3-D (a constant clip is one
      * vector min or max; a variable one, a chain of compares and blends) */
-#define LF_FINISH_CLIPS(DIFFS, DIM, STAGE)                                   \
-    return clip < 0 ? LF_FINISH(DIFFS, DIM, STAGE, -1)                      \
-         : clip > 0 ? LF_FINISH(DIFFS, DIM, STAGE, 1) : LF_FINISH(DIFFS, DIM, STAGE, 0);
+#define LF_FINISH_CLIPS(DIFFS, DIM, CM, STAGE)                                   \
+    return clip < 0 ? LF_FINISH(DIFFS, DIM, CM, STAGE, -1)                      \
+         : clip > 0 ? LF_FINISH(DIFFS, DIM, CM, STAGE, 1) : LF_FINISH(DIFFS, DIM, CM, STAGE, 0);
 #define LF_FINISH_DIMS(DIFFS, STAGE)                      \
     switch (dim) {                                        \
-    case 2: LF_FINISH_CLIPS(DIFFS, 2, STAGE)              \
-    case 3: LF_FINISH_CLIPS(DIFFS, 3, STAGE)              \
-    default: return LF_FINISH(DIFFS, dim, STAGE, clip);   \
+    case 2: LF_FINISH_CLIPS(DIFFS, 2, 0, STAGE)           \
+    case 3: LF_FINISH_CLIPS(DIFFS, 3, 0, STAGE)           \
+    default: return LF_FINISH(DIFFS, dim, 0, STAGE, clip);\
+    }
+    if (LF_ROW_CONST(diffs, dim, cm)) {
+        if (sr && sr->inplace) LF_FINISH_CLIPS(1, 3, 5, 2)
+        if (sr) LF_FINISH_CLIPS(1, 3, 5, 1)
+        LF_FINISH_CLIPS(1, 3, 5, 0)
     }
     if (sr && sr->inplace) {
         if (diffs) LF_FINISH_DIMS(1, 2)
@@ -1167,6 +1184,10 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     const double *phi = y + rc->k;
     if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
     else lf_ham_nodes(c, t, &row, phi, pp, H);
+    /* row_const: alpha_d read at node 0 only, its row filled where the
+     * finish has no loop for the mask */
+    const int cm = (int)(c->row_const & ((1u << dim) - 1));
+    const int cmloop = LF_ROW_CONST(diffs, dim, cm), cmfill = cmloop ? 0 : cm;
     for (int d = 0; d < dim; d++) {
         double *Ad = A + (size_t)d * (size_t)n;
         const double *sl = lo[d], *sh = hi[d];
@@ -1175,11 +1196,13 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
         if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
         else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
         lo[d] = sl, hi[d] = sh;
+        if (cmfill >> d & 1)
+            for (long j = 1; j < n; j++) Ad[j] = Ad[0];
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
             const double dx = g->dx[d];
             double dm = rc->dmax[d];
             SIMD_REDUCE(max : dm)
-            for (long j = 0; j < n; j++) {
+            for (long j = 0; j < (cm >> d & 1 ? 1 : n); j++) {
                 const double a = fabs(Ad[j]) / dx;
                 dm = a > dm ? a : dm;
             }
@@ -1195,14 +1218,16 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
         srp = &sr, out = st->dst + rc->k;
     } else
         out = ydot + rc->k;
-    const int nonfinite = lf_finish_dim(diffs, dim, n, A, DL, DR, ds_stride, H, g->dx, ps->hinv, ps->clip, out, SP,
+    const int nonfinite = lf_finish_dim(diffs, dim, cmloop ? cm : 0, n, A, DL, DR, ds_stride, H, g->dx, ps->hinv, ps->clip, out, SP,
                                         srp, rc->imax, &m);
     if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
     if (nonfinite) {
         /* the first node of the row with a non-finite alpha or H (none:
          * a sum overflowed, which the CFL bound reports) */
         long badj = n;
-        for (int d = 0; d < dim; d++) badj = first_nonfinite(A + (size_t)d * (size_t)n, badj);
+        for (int d = 0; d < dim; d++)
+            badj = cmloop && cm >> d & 1 ? (A[(size_t)d * (size_t)n] - A[(size_t)d * (size_t)n] == 0 ? badj : 0)
+                                         : first_nonfinite(A + (size_t)d * (size_t)n, badj);
         badj = first_nonfinite(H, badj);
         if (badj < n) {
             *bad = badj;
@@ -1345,13 +1370,14 @@ static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_c
     double *P = rc->ws, *DR = P + dn, *A = DR + dn, *GL = A + dn, *GH = GL + dn, *H = GH + dn, *SP = H + n;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
     hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, DR);
-    for (int d = 0; d < dim; d++) {
-        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
-        if (!rc->filled) /* the global range (NaN: unread) */
+    if (!rc->filled) { /* the global range (NaN: unread), once per evaluation */
+        for (int d = 0; d < dim; d++)
             for (long j = 0; j < n; j++) GL[(size_t)d * (size_t)n + (size_t)j] = ps->gmin[d],
                                          GH[(size_t)d * (size_t)n + (size_t)j] = ps->gmax[d];
+        rc->filled = 1;
     }
-    rc->filled = 1;
+    for (int d = 0; d < dim; d++)
+        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
     return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, (size_t)n, SP, inv, bad);
 }
 

@@ -223,6 +223,7 @@ typedef struct {
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
     int weno_eps; /* HJ_LS_WENO_EPS_LOCAL (default) or HJ_LS_WENO_EPS_GRID */
     int range_free; /* 1: the partials never read pmin, pmax (below) */
+    unsigned row_const; /* bit d: alpha_d is the same at every node of a row (below) */
 } hj_ls_lax_friedrichs;
 void hj_ls_lax_friedrichs_init(hj_ls_lax_friedrichs *c, const hj_ls_grid *g, int scheme, int dissipation,
                                hj_ls_ham_fn ham, hj_ls_partial_fn partial, void *ctx);
@@ -239,7 +240,13 @@ size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
  * array is used).  The boxes handed to the partials are then NaN where
  * the range pass would have filled them, so a partial that reads them
  * after all returns NaN (an HJ_ENONFINITE error) rather than a silently
- * wrong bound.  Default 0. */
+ * wrong bound.  Default 0.
+ *
+ * Bit d of row_const declares that alpha_d is the same at every node of a
+ * row of x_0 (it may depend on t and the row's other coordinates: air3D's
+ * alpha_1 and alpha_3): only alpha[0] of that dimension is read, so
+ * partial_row may write alpha[0] alone (the same bits as writing the whole
+ * row; the per-node partial is still called at every node).  Default 0. */
 
 /* ---- an explicit Runge-Kutta stage fused into a term's pass over the
  * grid (what hj_ls_ode runs where it can, stages after the first): instead

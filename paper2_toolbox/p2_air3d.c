@@ -67,6 +67,7 @@ int p2_air3d_target_block(const hj_ls_grid *global, const hj_ls_grid *g, const p
 typedef struct {
     const p2_air3d_par *q;
     double *cs, *sn, *ys, *xs; /* xs[j] = min[0] + j dx[0]: no int-to-double conversion per node */
+    double *axs;               /* A |xs[j]|, alpha_2's term in x (time independent) */
 } cb_ctx;
 
 /* The loops of the callbacks, every array a restrict argument: so gcc
@@ -98,11 +99,11 @@ static void ham_row(double t, const hj_ls_row_info *row, const double *phi, cons
              p[0], p[1], p[2], H);
 }
 
-static inline __attribute__((always_inline)) void partial1_loop(long n, double s, double A, const double *restrict xs,
+static inline __attribute__((always_inline)) void partial1_loop(long n, double s, const double *restrict axs,
                                                                double *restrict al)
 {
 #define PARTIAL(j0, j1) \
-    for (long j = (j0); j < (j1); j++) al[j] = s + A * fabs(xs[j]);
+    for (long j = (j0); j < (j1); j++) al[j] = s + axs[j];
     HJ_LS_ROW_BLOCKS8(n, PARTIAL);
 #undef PARTIAL
 }
@@ -116,11 +117,11 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
     const p2_air3d_par *q = c->q;
     const long n = row->n;
     if (d == 1) {
-        partial1_loop(n, fabs(q->vb * c->sn[row->idx[2]]), q->A, c->xs, alpha);
+        partial1_loop(n, fabs(q->vb * c->sn[row->idx[2]]), c->axs, alpha);
         return;
     }
-    const double a = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
-    for (long j = 0; j < n; j++) alpha[j] = a;
+    /* constant along the row (row_const): node 0's alone is read */
+    alpha[0] = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
 }
 
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
@@ -133,17 +134,17 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
                          const double *ts, int nt, double *phi, hj_ls_output_fn out, void *out_ctx,
                          hj_ls_ode_stats *stats, hj_error *err)
 {
-    cb_ctx c = {p, NULL, NULL, NULL, NULL};
+    cb_ctx c = {p, NULL, NULL, NULL, NULL, NULL};
     const long n3 = global->N[2], n2 = global->N[1], n1 = g->N[0];
-    double *tab = malloc(sizeof(double) * (size_t)(2 * n3 + n2 + n1));
+    double *tab = malloc(sizeof(double) * (size_t)(2 * n3 + n2 + 2 * n1));
     if (!tab) return hj_error_set(err, HJ_ENOMEM, "air3D: out of memory");
-    double *cs = tab, *sn = cs + n3, *ys = sn + n3, *xs = ys + n2;
+    double *cs = tab, *sn = cs + n3, *ys = sn + n3, *xs = ys + n2, *axs = xs + n1;
     {
         /* the bits of row->x[0] + j dx0, row->x[0] as hj_ls_coord has it */
         const long i0[3] = {0, 0, 0};
         double x0[3];
         hj_ls_coord(g, i0, x0);
-        for (long j = 0; j < n1; j++) xs[j] = x0[0] + (double)j * g->dx[0];
+        for (long j = 0; j < n1; j++) xs[j] = x0[0] + (double)j * g->dx[0], axs[j] = p->A * fabs(xs[j]);
     }
     for (long k = 0; k <= n3 / 2; k++) {
         const double a = 2 * HJ_PI * (double)k / (double)n3;
@@ -152,7 +153,7 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     }
     for (long j = 0; j < n2; j++) ys[j] = ((double)j - 0.5 * (double)(n2 - 1)) * g->dx[1];
     /* The callbacks index the tables by the block's node index. */
-    c.cs = cs + g->origin[2], c.sn = sn + g->origin[2], c.ys = ys + g->origin[1], c.xs = xs;
+    c.cs = cs + g->origin[2], c.sn = sn + g->origin[2], c.ys = ys + g->origin[1], c.xs = xs, c.axs = axs;
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, NULL, NULL, &c);
     lf.ham_row = ham_row;
@@ -160,6 +161,7 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
     lf.range_free = 1; /* partial_row reads the tables, never the gradient box */
+    lf.row_const = 1u << 0 | 1u << 2; /* alpha_1 and alpha_3 depend on y and psi only */
     int rc = p2_reach_solve(hj_ls_accuracy_order(acc), g, &lf.base, ts, nt, phi, out, out_ctx, stats, err);
     free(tab);
     return rc;

@@ -675,6 +675,75 @@ static void lax_friedrichs_range_free(void **state)
     free(work);
 }
 
+/* row_const: partials constant along each row of x_0 (dimensions 0 and 2,
+ * the mask with a loop of its own, and dimension 0 alone, whose row is
+ * filled), written at node 0 only with NaN after it, give the bits of the
+ * per-node partials (every dissipation, first order, ENO2 and WENO5, 1
+ * and 2 threads); a NaN at node 0 of a constant row is an HJ_ENONFINITE
+ * error. */
+static double partial_c(double t, const double *x, const double *pmin, const double *pmax, int d, void *ctx)
+{
+    (void)pmin, (void)pmax, (void)ctx;
+    return d == 0 ? fabs(x[1]) + fabs((1 + t) * x[2]) : d == 1 ? 0.5 + fabs(x[0]) : 0.25 + fabs(x[1]);
+}
+static void partial_c_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
+                          int d, double *alpha, void *ctx)
+{
+    const unsigned mask = *(const unsigned *)ctx;
+    double x[3] = {0, row->x[1], row->x[2]};
+    for (long j = 0; j < row->n; j++) {
+        x[0] = row->x[0] + (double)j * row->dx0;
+        alpha[j] = j > 0 && mask >> d & 1 ? NAN : partial_c(t, x, pmin[0] + j, pmax[0] + j, d, NULL);
+    }
+}
+static void partial_c_nan_row(double t, const hj_ls_row_info *row, const double *const *pmin,
+                              const double *const *pmax, int d, double *alpha, void *ctx)
+{
+    partial_c_row(t, row, pmin, pmax, d, alpha, ctx);
+    if (d == 2 && row->idx[1] == 3 && row->idx[2] == 4) alpha[0] = NAN;
+}
+
+static void lax_friedrichs_row_const(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b;
+    hj_ls_fill(&g, y, bump3, NULL);
+    int threads = 1;
+#ifdef _OPENMP
+    threads = 2;
+#endif
+    const unsigned masks[2] = {1u << 0 | 1u << 2, 1u << 0};
+    for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
+        for (int si = 0; si < 3; si++)
+            for (int mi = 0; mi < 2; mi++) {
+                const int scheme = si == 0 ? HJ_LS_UPWIND_FIRST : si == 1 ? HJ_LS_ENO2 : HJ_LS_WENO5A;
+                unsigned mask = masks[mi];
+                double b0;
+                hj_ls_lax_friedrichs lf;
+                hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_c, NULL);
+                lf.range_free = 1;
+                assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
+                for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+                    omp_set_num_threads(th);
+#endif
+                    hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, NULL, NULL, &mask);
+                    lf.ham_row = ham_mix_row, lf.partial_row = partial_c_row;
+                    lf.range_free = 1, lf.row_const = mask;
+                    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, NULL), HJ_OK);
+                    assert_memory_equal(&b, &b0, sizeof b);
+                    assert_interior_equal(&g, f0, f1);
+                    lf.partial_row = partial_c_nan_row;
+                    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, NULL), HJ_ENONFINITE);
+                }
+            }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+}
+
 /* A speed depending on t, x and phi, per node and per row: normal motion,
  * curvature and discount give the same bits either way. */
 static double speed_mix(double t, const double *x, double phi, void *ctx)
@@ -1120,6 +1189,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
                         cmocka_unit_test(callback_errors_rows),
                         cmocka_unit_test(lax_friedrichs_range_free),
+                        cmocka_unit_test(lax_friedrichs_row_const),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
                         cmocka_unit_test(restrict_lax_friedrichs), cmocka_unit_test(lax_friedrichs_fused_stage),
