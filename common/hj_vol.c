@@ -234,9 +234,27 @@ void hj_vol_free(hj_vol *vol)
 int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], const double dx[3],
                      const char *title, const char *name, const double *values, double fill, hj_error *err)
 {
+    /* Checked before the file is opened: each of these made a file that
+     * VTK's ASCII reader refuses or misreads (no points, "nan" in the
+     * header or the values, a field name split into two tokens). */
+    double count = 1;
+    for (int d = 0; d < 3; d++) {
+        if (n[d] < 1) return hj_error_set(err, HJ_EINVAL, "VTK %s: %ld nodes along dimension %d", path, n[d], d + 1);
+        if (!isfinite(x0[d]) || !isfinite(dx[d]) || !(dx[d] > 0))
+            return hj_error_set(err, HJ_EINVAL, "VTK %s: origin %g and spacing %g along dimension %d must be finite, "
+                                "the spacing > 0", path, x0[d], dx[d], d + 1);
+        count *= (double)n[d];
+    }
+    if (count > 2e9) return hj_error_set(err, HJ_EINVAL, "VTK %s: %.3g nodes, too many", path, count);
+    if (!isfinite(fill)) return hj_error_set(err, HJ_EINVAL, "VTK %s: the fill value %g must be finite", path, fill);
+    if (!name[0]) return hj_error_set(err, HJ_EINVAL, "VTK %s: empty field name", path);
+    for (const char *c = name; *c; c++)
+        if ((unsigned char)*c <= 0x20 || (unsigned char)*c >= 0x7f)
+            return hj_error_set(err, HJ_EINVAL, "VTK %s: the field name must be one word of printable ASCII", path);
     char head[256];
     size_t k = 0;
-    for (; title[k] && k < sizeof head - 1; k++) head[k] = (unsigned char)title[k] < 0x20 ? ' ' : title[k];
+    for (; title[k] && k < sizeof head - 1; k++)
+        head[k] = (unsigned char)title[k] < 0x20 || (unsigned char)title[k] == 0x7f ? ' ' : title[k];
     head[k] = '\0';
     hj_out out;
     int rc = hj_out_open(&out, path, err);

@@ -69,7 +69,9 @@ void hj_vol_free(hj_vol *vol);
  * name, "%.10g"), written atomically (hj_out): n[3] nodes, origin x0[3],
  * spacing dx[3], values x-fastest.  A non-finite value (VTK's ASCII
  * reader takes none) is written as `fill`; title is the header line
- * (control bytes replaced by spaces). */
+ * (control bytes replaced by spaces).  HJ_EINVAL, before any file is
+ * made, for n[d] < 1, a non-finite origin or spacing, a spacing <= 0, a
+ * non-finite fill or a name that is not one word of printable ASCII. */
 int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], const double dx[3],
                      const char *title, const char *name, const double *values, double fill, hj_error *err);
 

@@ -180,6 +180,45 @@ static void vtk_writer(void **state)
     assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T", val, -1, &err), HJ_EIO);
 }
 
+/* Arguments that would make a file VTK refuses or misreads: HJ_EINVAL
+ * and no file at all (they were written: DIMENSIONS 0, "nan" as the fill
+ * or in the header, a field name of two words or none). */
+static void vtk_writer_bad_arguments(void **state)
+{
+    (void)state;
+    char path[128];
+    snprintf(path, sizeof path, "%s/bad.vtk", dir);
+    const long n[3] = {2, 1, 2}, n0[3] = {2, 0, 2}, nneg[3] = {-2, -1, 2};
+    const double x0[3] = {0, 1, 2}, dx[3] = {0.5, 1, 0.25}, val[4] = {0, 1.5, INFINITY, 3};
+    const double x0nan[3] = {0, NAN, 2}, dx0[3] = {0.5, 0, 0.25}, dxinf[3] = {INFINITY, 1, 1};
+    hj_error err;
+    assert_int_equal(hj_vol_write_vtk(path, n0, x0, dx, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_has(err.msg, "0 nodes along dimension 2");
+    assert_int_equal(hj_vol_write_vtk(path, nneg, x0, dx, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0nan, dx, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx0, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dxinf, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T", val, NAN, &err), HJ_EINVAL);
+    assert_has(err.msg, "fill");
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T", val, INFINITY, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "travel time", val, -1, &err), HJ_EINVAL);
+    assert_has(err.msg, "one word");
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T\n", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "", val, -1, &err), HJ_EINVAL);
+    FILE *f = fopen(path, "r");
+    assert_null(f);
+    if (f) fclose(f);
+    /* a DEL byte in the title is a control byte too */
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "a\x7f" "b", "T", val, -1, &err), HJ_OK);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    char buf[64];
+    assert_non_null(fgets(buf, sizeof buf, f));
+    assert_non_null(fgets(buf, sizeof buf, f));
+    fclose(f);
+    assert_string_equal(buf, "a b\n");
+}
+
 HJ_TEST_MAIN("hj_vol", hj_test_mkdir, hj_test_rmdir, cmocka_unit_test(text_volume), cmocka_unit_test(text_volume_errors),
              cmocka_unit_test(raw_volume), cmocka_unit_test(format_by_content), cmocka_unit_test(all_zero),
-             cmocka_unit_test(vtk_writer))
+             cmocka_unit_test(vtk_writer), cmocka_unit_test(vtk_writer_bad_arguments))
