@@ -125,6 +125,31 @@ static double blowup_scale(const hj_ls_grid *g, const double *y)
     return m > diam ? m : diam;
 }
 
+/* HJ_ENONFINITE naming the first node of y0 that is NaN or infinite (on
+ * a distributed grid every block returns it, the block holding the node
+ * names it): the terms would only see it as a blow-up after a step. */
+static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
+{
+    size_t bad_r = 0;
+    long bad_j = -1;
+    for (size_t r = 0; r < g->rows && bad_j < 0; r++) {
+        long idx[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++)
+            if (!isfinite(y[k + (size_t)j])) {
+                bad_r = r, bad_j = j;
+                break;
+            }
+    }
+    double any = bad_j >= 0;
+    hj_ls_grid_reduce(g, &any, 1, HJ_LS_REDUCE_MAX);
+    if (!(any > 0)) return HJ_OK;
+    if (bad_j < 0) return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state in another block");
+    char pos[256];
+    hj_ls_format_node(g, bad_r, bad_j, pos, sizeof pos);
+    return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
+}
+
 static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *err)
 {
     if (isnan(b) || b == -INFINITY) return hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at t = %g", t);
@@ -165,6 +190,8 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
     if (!(o.blowup_factor >= 0))
         return hj_error_set(err, HJ_EINVAL, "the blow-up factor must be >= 0 (0: no bound), got %g", o.blowup_factor);
+    int rc0 = check_initial(g, y, err);
+    if (rc0) return rc0;
     const double limit = o.blowup_factor > 0 ? o.blowup_factor * blowup_scale(g, y) : INFINITY;
 
     hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};

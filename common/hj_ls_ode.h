@@ -22,7 +22,8 @@
  * whatever the order.
  *
  * Stages after the first are fused into the term's pass where the term
- * has that form (hj_ls_term_stage: Lax-Friedrichs, alone or restricted):
+ * has that form (hj_ls_term_stage: convection, and Lax-Friedrichs alone
+ * or restricted):
  * one pass over the grid per stage instead of two, the same bits.  When
  * the bound has repeated bit for bit over two steps (one independent of t
  * and y), the first stage is fused too, with the step of that bound, and

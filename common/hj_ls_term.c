@@ -1354,8 +1354,9 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
                       inv, bad);
 }
 
-/* lf_row for global Lax-Friedrichs whose partials never read the gradient
- * range (range_free: nothing kept from a range pass) by a scheme whose
+/* lf_row for global Lax-Friedrichs with no derivatives kept from a range
+ * pass (range_free, or the range computed without a work array: the
+ * global range comes in gmin, gmax either way) by a scheme whose
  * mean and D+ - D- of every dimension come in one call (first order,
  * ENO2): no choice per dimension, every buffer a fixed slice of the
  * workspace.  The same calls and expressions as lf_row: the same bits. */
@@ -1649,6 +1650,8 @@ int hj_ls_term_stage(const hj_ls_term *term, double t, double *y, hj_ls_stage *s
                      hj_error *err)
 {
     *done = 0;
+    /* the stencils read y's neighbours after their rows were written */
+    if (st->dst == y) return hj_error_set(err, HJ_EINVAL, "fused stage: dst must not be y (y0 or an array apart)");
     if (term->eval == lf_eval) {
         *done = 1;
         return lf_eval_clip(term, t, y, NULL, step_bound, 0, st, err);

@@ -205,6 +205,15 @@ static void error_reports(void **state)
     }
     o.factor_cfl = 1;
     assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_OK);
+    /* a NaN or infinity in the initial state is named before any step */
+    const double nonfinite[2] = {NAN, -INFINITY};
+    for (int q = 0; q < 2; q++) {
+        for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+        y[g.offset + 2] = nonfinite[q];
+        assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
+        assert_non_null(strstr(err.msg, "non-finite initial state at x = ("));
+        assert_true(y[g.offset] == 0);
+    }
     hj_ls_free(y);
 }
 

@@ -927,6 +927,11 @@ static void stage_flags_nonfinite(const hj_ls_grid *g, const hj_ls_term *term, d
     assert_int_equal(hj_ls_term_stage(term, 0.3, y, &st, &bd, &done, NULL), HJ_OK);
     assert_int_equal(done, 1);
     assert_int_equal(st.bad, 1);
+    /* dst = y would overwrite what the stencils still read */
+    hj_ls_stage sy = {0.75, 0.25, 0.0123, y0, y, 0, 0};
+    done = 1;
+    assert_int_equal(hj_ls_term_stage(term, 0.3, y, &sy, &bd, &done, NULL), HJ_EINVAL);
+    assert_int_equal(done, 0);
 }
 
 /* The Runge-Kutta stage fused into a Lax-Friedrichs pass (hj_ls_term_stage)
