@@ -76,6 +76,26 @@ static inline void hj_test_one_thread(void)
 #endif
 }
 
+/* The thread counts a bitwise test compares: 1 and, with OpenMP, 2
+ * (hj_test_threads sets one). */
+static inline int hj_test_max_threads(void)
+{
+#ifdef _OPENMP
+    return 2;
+#else
+    return 1;
+#endif
+}
+
+static inline void hj_test_threads(int th)
+{
+#ifdef _OPENMP
+    omp_set_num_threads(th);
+#else
+    (void)th;
+#endif
+}
+
 /* Run a shell command; its stderr (and its stdout too with both set) is
  * captured in text (at most cap - 1 bytes).  Returns the exit status, or -1
  * if it did not exit normally. */

@@ -154,18 +154,14 @@ static void ghosts_3d_reference(void **state)
                 }
         }
         for (int th = 1; th <= 2; th++) {
-#ifdef _OPENMP
-            omp_set_num_threads(th);
-#endif
+            hj_test_threads(th);
             double *b = hj_ls_alloc(&g);
             memcpy(b, a, sizeof(double) * g.total);
             hj_ls_fill_ghosts(&g, b);
             assert_memory_equal(b, ref, sizeof(double) * g.total);
             hj_ls_free(b);
         }
-#ifdef _OPENMP
-        omp_set_num_threads(1);
-#endif
+        hj_test_one_thread();
         hj_ls_free(ref), hj_ls_free(a);
     }
 }
@@ -335,14 +331,10 @@ static void norms_exact_threads(void **state)
     }
     double m[3], avg[3], rms[3];
     for (int t = 1; t <= 3; t++) {
-#ifdef _OPENMP
-        omp_set_num_threads(t);
-#endif
+        hj_test_threads(t);
         hj_ls_norms(&g, a, NULL, &m[t - 1], &avg[t - 1], &rms[t - 1]);
     }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     double want_max = 0;
     for (size_t k = 0; k < n; k++) want_max = e[k] > want_max ? e[k] : want_max;
     const double want_avg = hj_sum_array(e, (long)n) / (double)g.nodes;

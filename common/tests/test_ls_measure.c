@@ -237,14 +237,10 @@ static void measure_exact_threads(void **state)
     assert_int_equal(hj_ls_shape_sphere(&g, c, 0.55, phi, NULL), HJ_OK);
     double m[3];
     for (int t = 1; t <= 3; t++) {
-#ifdef _OPENMP
-        omp_set_num_threads(t);
-#endif
+        hj_test_threads(t);
         assert_int_equal(hj_ls_measure(&g, phi, &m[t - 1], NULL), HJ_OK);
     }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     assert_memory_equal(&m[0], &m[1], sizeof(double));
     assert_memory_equal(&m[0], &m[2], sizeof(double));
     /* The cells with i[2] < 10 and those above, added separately (the
@@ -289,15 +285,11 @@ static void measure_nan(void **state)
     /* With two NaNs the lower one is named, on 1 to 3 threads. */
     phi[kc] = NAN;
     for (int t = 1; t <= 3; t++) {
-#ifdef _OPENMP
-        omp_set_num_threads(t);
-#endif
+        hj_test_threads(t);
         assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);
         assert_non_null(strstr(err.msg, "(0.5, 0)"));
     }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, phi, NULL), HJ_OK);
     phi[kc] = NAN; /* only the last cell's upper corner */
     assert_int_equal(hj_ls_measure(&g, phi, &m, &err), HJ_ENONFINITE);

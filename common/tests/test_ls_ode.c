@@ -344,17 +344,12 @@ static void fused_stages_bitwise(void **state)
     (void)state;
     hj_ls_grid g = fused_grid();
     double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.23};
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     static int grows = 1;
     for (int varying = 0; varying < 2; varying++)
         for (int order = 1; order <= 3; order++)
             for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                omp_set_num_threads(th);
-#endif
+                hj_test_threads(th);
                 hj_ls_lax_friedrichs lf;
                 hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, lf_ham, lf_partial, varying ? &grows : NULL);
                 lf.range_free = 1;
@@ -364,9 +359,7 @@ static void fused_stages_bitwise(void **state)
                 run_plain_and_fused(&g, order, &rs.base, span, a, b, &s0, &s1);
                 assert_int_equal(s1.evals, s0.evals + varying); /* the guess that missed */
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(a), hj_ls_free(b);
 }
 
@@ -387,16 +380,11 @@ static void convection_fused_bitwise(void **state)
     (void)state;
     hj_ls_grid g = fused_grid();
     double *a = hj_ls_alloc(&g), *b = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.23};
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int flow = 0; flow < 3; flow++) /* swirl; rotation; rotation, steady */
         for (int order = 1; order <= 3; order++)
             for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                omp_set_num_threads(th);
-#endif
+                hj_test_threads(th);
                 hj_ls_convection c;
                 hj_ls_convection_init(&c, &g, order == 3 ? HJ_LS_WENO5A : HJ_LS_ENO2);
                 c.velocity_fn = flow ? rotation : swirl;
@@ -407,9 +395,7 @@ static void convection_fused_bitwise(void **state)
                 if (flow) assert_int_equal(s1.evals, s0.evals); /* every guess kept */
                 else assert_true(s1.evals <= s0.evals + 1);
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(a), hj_ls_free(b);
 }
 

@@ -219,9 +219,7 @@ static void reads_faces_only(int dim)
     const int schemes[5] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A, HJ_LS_WENO5B};
     for (int q = 0; q < 10; q++)
         for (int th = 1; th <= 2; th++) {
-#ifdef _OPENMP
-            omp_set_num_threads(th);
-#endif
+            hj_test_threads(th);
             hj_ls_convection c;
             hj_ls_convection_init(&c, &g, schemes[q % 5]);
             if (q < 5) c.velocity[0] = 0.7, c.velocity[1] = -1.3, c.velocity[2] = 0.4;
@@ -243,9 +241,7 @@ static void reads_faces_only(int dim)
             assert_memory_equal(&s1.amax, &s2.amax, sizeof s1.amax);
             hj_ls_convection_free(&c);
         }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(y), hj_ls_free(yn), hj_ls_free(f), hj_ls_free(fn), hj_ls_free(y0), hj_ls_free(d1), hj_ls_free(d2);
 }
 
@@ -451,10 +447,7 @@ static void lax_friedrichs_rows_equal_nodes(void **state)
     double *work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(&g));
     assert_non_null(work);
     hj_ls_fill(&g, y, bump3, NULL);
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
         for (int rule = HJ_LS_CFL_NODE; rule <= HJ_LS_CFL_TOOLBOX; rule++) {
             double b0 = 0;
@@ -478,9 +471,7 @@ static void lax_friedrichs_rows_equal_nodes(void **state)
                 }
             }
         }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
     free(work);
 }
@@ -497,10 +488,7 @@ static void lax_friedrichs_matches_definition(void **state)
 {
     (void)state;
     const long sizes[3] = {5, 13, 16};
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int si = 0; si < 3; si++) {
         hj_ls_grid g = hj_test_grid(3, sizes[si], -1, 1, HJ_LS_BC_EXTRAP_AWAY);
         double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *ref = hj_ls_alloc(&g);
@@ -575,9 +563,7 @@ static void lax_friedrichs_matches_definition(void **state)
                 }
             }
         }
-#ifdef _OPENMP
-        omp_set_num_threads(1);
-#endif
+        hj_test_one_thread();
         for (int d = 0; d < 3; d++) hj_ls_free(dl[d]), hj_ls_free(dr[d]);
         hj_ls_free(y), hj_ls_free(f), hj_ls_free(ref);
     }
@@ -634,10 +620,7 @@ static void lax_friedrichs_range_free(void **state)
     double *work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(&g));
     assert_non_null(work);
     hj_ls_fill(&g, y, bump3, NULL);
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLF; diss++)
         for (int rule = HJ_LS_CFL_NODE; rule <= HJ_LS_CFL_TOOLBOX; rule++)
             for (int si = 0; si < 3; si++) {
@@ -661,9 +644,7 @@ static void lax_friedrichs_range_free(void **state)
                     assert_interior_equal(&g, f0, f1);
                 }
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_error err;
     for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLF; diss++) {
         hj_ls_lax_friedrichs lf;
@@ -709,10 +690,7 @@ static void lax_friedrichs_row_const(void **state)
     hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b;
     hj_ls_fill(&g, y, bump3, NULL);
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     const unsigned masks[2] = {1u << 0 | 1u << 2, 1u << 0};
     for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
         for (int si = 0; si < 3; si++)
@@ -725,9 +703,7 @@ static void lax_friedrichs_row_const(void **state)
                 lf.range_free = 1;
                 assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
                 for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                    omp_set_num_threads(th);
-#endif
+                    hj_test_threads(th);
                     hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, NULL, NULL, &mask);
                     lf.ham_row = ham_mix_row, lf.partial_row = partial_c_row;
                     lf.range_free = 1, lf.row_const = mask;
@@ -738,9 +714,7 @@ static void lax_friedrichs_row_const(void **state)
                     assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, NULL), HJ_ENONFINITE);
                 }
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
 
@@ -850,16 +824,11 @@ static void restrict_lax_friedrichs(void **state)
     hj_ls_grid g = hj_test_grid(3, 15, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
     double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b0, b1;
     hj_ls_fill(&g, y, bump3, NULL);
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     long seen[2] = {0, 0};
     for (int positive = 0; positive < 2; positive++)
         for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-            omp_set_num_threads(th);
-#endif
+            hj_test_threads(th);
             hj_ls_lax_friedrichs lf;
             hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_mix, partial_mix, NULL);
             assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
@@ -877,9 +846,7 @@ static void restrict_lax_friedrichs(void **state)
                 }
             }
         }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     assert_true(seen[0] > 0 && seen[1] > 0);
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
@@ -953,26 +920,19 @@ static void lax_friedrichs_fused_stage(void **state)
         const size_t k = hj_ls_row(&g, r, idx);
         for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
     }
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
         for (int scheme = HJ_LS_ENO2; scheme <= HJ_LS_WENO5A; scheme += HJ_LS_WENO5A - HJ_LS_ENO2)
             for (int clip = -1; clip <= 1; clip++)
                 for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                    omp_set_num_threads(th);
-#endif
+                    hj_test_threads(th);
                     hj_ls_lax_friedrichs lf;
                     hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_mix, NULL);
                     hj_ls_restrict rs;
                     hj_ls_restrict_init(&rs, &g, &lf.base, clip > 0);
                     stage_matches_eval(&g, clip ? &rs.base : &lf.base, y, y0, f, dst, ref);
                 }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     /* a non-finite y0 is flagged */
     hj_ls_lax_friedrichs lf;
     hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_ENO2, HJ_LS_GLF, ham_mix, partial_mix, NULL);
@@ -1023,16 +983,11 @@ static void convection_fused_stage(void **state)
         for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.25 * y0[k + (size_t)j] - 0.125 * (double)j;
     }
     const int schemes[3] = {HJ_LS_ENO2, HJ_LS_ENO3B, HJ_LS_WENO5A};
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int q = 0; q < 3; q++)
         for (int steady = 0; steady < 2; steady++)
             for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                omp_set_num_threads(th);
-#endif
+                hj_test_threads(th);
                 hj_ls_convection c;
                 hj_ls_convection_init(&c, &g, schemes[q]);
                 c.velocity_fn = swirl3;
@@ -1041,9 +996,7 @@ static void convection_fused_stage(void **state)
                 assert_true(steady ? c.velocity_cache != NULL : c.velocity_cache == NULL);
                 hj_ls_convection_free(&c);
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     /* a non-finite y0 is flagged */
     hj_ls_convection c;
     hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
@@ -1069,16 +1022,11 @@ static void convection_2d_fused_stage(void **state)
         for (long j = 0; j < g.N[0]; j++) y0[k + (size_t)j] = 0.5 * y[k + (size_t)j] - 0.125 * (double)j;
     }
     const int schemes[4] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A, HJ_LS_WENO5B};
-    int threads = 1;
-#ifdef _OPENMP
-    threads = 2;
-#endif
+    const int threads = hj_test_max_threads();
     for (int q = 0; q < 4; q++)
         for (int vel = 0; vel < 4; vel++)
             for (int th = 1; th <= threads; th++) {
-#ifdef _OPENMP
-                omp_set_num_threads(th);
-#endif
+                hj_test_threads(th);
                 hj_ls_convection c;
                 hj_ls_convection_init(&c, &g, schemes[q]);
                 if (vel < 2) c.velocity_fn = shear, c.velocity_steady = vel;
@@ -1086,9 +1034,7 @@ static void convection_2d_fused_stage(void **state)
                 stage_matches_eval(&g, &c.base, y, y0, f, dst, ref);
                 hj_ls_convection_free(&c);
             }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
     hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
 }
 

@@ -433,9 +433,7 @@ static void same_bits_all_paths(hj_reach_problem *pb)
     assert_true(rst.steps > 2);
     for (int threads = 1; threads <= 2; threads++)
         for (int v = 0; v < 4; v++) {
-#ifdef _OPENMP
-            omp_set_num_threads(threads);
-#endif
+            hj_test_threads(threads);
             pb->per_node = v & 1, pb->keep_derivs = v >> 1;
             assert_int_equal(hj_reach_solve(pb, phi, ttr, &st, &err), HJ_OK);
             assert_int_equal(st.steps, rst.steps);
@@ -520,9 +518,7 @@ static void fused_same_bits_one(hj_reach_problem *pb, const double *tgt)
     pb->general = 0;
     for (int run = 0; run < 3; run++) { /* one thread, then two; compact on the last */
         const int threads = run ? 2 : 1, compact = run == 2;
-#ifdef _OPENMP
-        omp_set_num_threads(threads);
-#endif
+        hj_test_threads(threads);
             pb->compact = compact;
             if (tgt && compact)
                 for (size_t r = 0; r < g->rows; r++) {

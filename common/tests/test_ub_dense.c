@@ -210,9 +210,7 @@ static void control_groups(void **state)
             hj_ub_dense_free(&ws);
             hj_ub_free(&sv);
         }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
 }
 
 /* Values from a few levels (-1, -1/2, 0, 1/2, 1), drawn at random, into
@@ -260,9 +258,7 @@ static void random_levels(void **state)
                     hj_ub_dense_free(&ws);
                     hj_ub_free(&sv);
                 }
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    hj_test_one_thread();
 }
 
 /* f independent of t (kinds 0, 2, 3): with ws.autonomous the rate is
