@@ -79,7 +79,9 @@ LIB := $(BUILD)/libhj.a
 SOLIB := $(BUILD)/libhj.so.$(HJ_VERSION)
 COMMON_SRC := $(wildcard common/*.c)
 COMMON_HDR := $(wildcard common/*.h)
-COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
+# The library is compiled once, position independent, for both libhj.a and
+# libhj.so (-fno-semantic-interposition: calls inside libhj are bound and
+# inlined as in a static build, so libhj.a runs the same code as before).
 COMMON_PIC := $(COMMON_SRC:%.c=$(BUILD)/pic/%.o)
 PREFIX := /usr/local
 HJCHECK := $(BUILD)/bin/common/tools/hjcheck
@@ -111,24 +113,24 @@ BENCHES :=
 # (results are bitwise the same for any thread count).  Every program links
 # with -fopenmp, since libhj holds the kernel.
 LDFLAGS += -fopenmp
-$(BUILD)/obj/common/hj_ls_%.o $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
+$(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
 # Exact sums (hj_sum): called once per node by the norms and measures.
-$(BUILD)/obj/common/hj_sum.o $(BUILD)/pic/common/hj_sum.o: CFLAGS += -O3
+$(BUILD)/pic/common/hj_sum.o: CFLAGS += -O3
 # The dense Ultra-Bee step likewise (row loops vectorised, rows shared
 # among threads, bitwise the same for any thread count).
 # -fno-trapping-math lets gcc turn its flux selects (== on doubles) into
 # vector blends; it changes no value (no FP exception is ever inspected).
-$(BUILD)/obj/common/hj_ub_dense.o $(BUILD)/pic/common/hj_ub_dense.o: CFLAGS += -fopenmp -O3 -fno-trapping-math
+$(BUILD)/pic/common/hj_ub_dense.o: CFLAGS += -fopenmp -O3 -fno-trapping-math
 $(BUILD)/obj/common/tests/test_ub_dense.o: CFLAGS += -fopenmp
 # The kernel's unit tests use omp_set_num_threads (bitwise determinism test).
 $(BUILD)/obj/common/tests/test_ls_%.o: CFLAGS += -fopenmp
 $(BUILD)/obj/common/tests/test_sys.o: CFLAGS += -fopenmp
 # Reachability runs its per-node passes (projection, time-to-reach) in
 # parallel over rows like the kernel.
-$(BUILD)/obj/common/hj_reach.o $(BUILD)/pic/common/hj_reach.o $(BUILD)/obj/common/hj_reach_fused.o $(BUILD)/pic/common/hj_reach_fused.o: CFLAGS += -fopenmp -O3
+$(BUILD)/pic/common/hj_reach.o $(BUILD)/pic/common/hj_reach_fused.o: CFLAGS += -fopenmp -O3
 $(BUILD)/obj/common/tests/test_reach.o $(BUILD)/obj/common/tests/test_ctrl.o: CFLAGS += -fopenmp
 # The Eikonal sweeps run hyperplanes in parallel (bitwise thread-independent).
-$(BUILD)/obj/common/hj_eik.o $(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3
+$(BUILD)/pic/common/hj_eik.o: CFLAGS += -fopenmp -O3
 $(BUILD)/obj/common/tests/test_eik.o: CFLAGS += -fopenmp
 
 # The tests of the tools run the built hjcheck and hjtime.
@@ -158,9 +160,9 @@ $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 $(BUILD)/pic/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -fno-semantic-interposition -c $< -o $@
 
-$(LIB): $(COMMON_OBJ)
+$(LIB): $(COMMON_PIC)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
 $(SOLIB): $(COMMON_PIC)
