@@ -190,7 +190,7 @@ awk -F'\t' '
     $1 == "not-covered" { nc = nc " " $3; next }
     { n[$1]++; if ($2 == "FAIL") { f[$1]++; print "FAIL " $3; bad++ } else good++ }
     END {
-        for (c in n) printf "  %-12s %4d cases, %d failed\n", c, n[c], f[c] | "sort"
+        for (c in n) printf "  %-12s %4d case%s, %d failed\n", c, n[c], n[c] == 1 ? "" : "s", f[c] | "sort"
         close("sort")
         if (nc != "") print "not covered (no --list-options):" nc
         printf "cli-matrix: %d passed, %d failed\n", good, bad
