@@ -238,19 +238,27 @@ void hj_cli_list(const hj_cli_spec *spec, FILE *out)
 static const char *stdout_prog;
 static int failing;
 
+void hj_cli_flush_stdout(const char *prog)
+{
+    errno = 0;
+    /* glibc keeps the bytes a failed write could not take, so this flush
+     * fails again and errno gives the reason of the first failure */
+    const int flush_failed = fflush(stdout) != 0;
+    if (!flush_failed && !ferror(stdout)) return;
+    failing = 1;
+    if (flush_failed && errno) fprintf(stderr, "%s: error writing stdout: %s\n", prog, strerror(errno));
+    else fprintf(stderr, "%s: error writing stdout\n", prog);
+    hj_out_remove_all();
+    _exit(HJ_EXIT_RUN);
+}
+
 /* At exit: what went to stdout (--help, tables) is only buffered until
  * now, so a full disk or a closed pipe shows here.  A write error is then
  * one message and exit status HJ_EXIT_RUN instead of a silent 0. */
 static void check_stdout(void)
 {
     if (failing) return;
-    errno = 0;
-    const int flush_failed = fflush(stdout) != 0;
-    if (!flush_failed && !ferror(stdout)) return;
-    if (flush_failed && errno) fprintf(stderr, "%s: error writing stdout: %s\n", stdout_prog, strerror(errno));
-    else fprintf(stderr, "%s: error writing stdout\n", stdout_prog);
-    hj_out_remove_all();
-    _exit(HJ_EXIT_RUN);
+    hj_cli_flush_stdout(stdout_prog);
 }
 
 void hj_cli_check_stdout(const char *prog)

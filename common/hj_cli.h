@@ -95,6 +95,11 @@ void hj_cli_parse_or_exit(hj_cli_spec *spec, int argc, char **argv);
 /* That check of stdout at exit alone, for a program with a parser of its
  * own. */
 void hj_cli_check_stdout(const char *prog);
+/* The same check now: flush stdout and, if this or an earlier write to it
+ * failed, print "prog: error writing stdout: REASON" (strerror), remove
+ * the temporary outputs and exit with HJ_EXIT_RUN.  For a program that
+ * writes its result to stdout and must not go on after losing it. */
+void hj_cli_flush_stdout(const char *prog);
 
 /* Exit codes used by every program.  hj_cli_fail prints "prog: message"
  * as one line (control bytes in the message escaped: \n, \xHH), removes

@@ -31,6 +31,8 @@ int hj_error_set(hj_error *err, int code, const char *fmt, ...)
     return code;
 }
 
+const char *hj_plural(long n) { return n == 1 ? "" : "s"; }
+
 void hj_error_clear(hj_error *err)
 {
     if (err) {

@@ -47,6 +47,10 @@ int hj_error_set(hj_error *err, int code, const char *fmt, ...)
  * Returns buf. */
 const char *hj_error_quote(const char *s, size_t n, char *buf, size_t cap);
 
+/* The ending of a count word in a message: "" for 1, "s" otherwise
+ * ("%ld value%s", n, hj_plural(n)). */
+const char *hj_plural(long n);
+
 /* Reset err to HJ_OK with an empty message (err may be NULL). */
 void hj_error_clear(hj_error *err);
 

@@ -497,7 +497,8 @@ static int first_order_guess(work *w, int nin, int fix_iii, int keep_iii, int ma
             fh[q] = w->fh[k];
         }
     int rc = first_order_solve(w->nx, w->ny, fh, fixed, u, max_iter, iters);
-    if (rc != HJ_OK) rc = hj_error_set(err, HJ_ENOCONV, "first order sweeps did not converge in %d iterations", max_iter);
+    if (rc != HJ_OK) rc = hj_error_set(err, HJ_ENOCONV, "first order sweeps did not converge in %d iteration%s", max_iter,
+                                     hj_plural(max_iter));
     for (int j = 0; j <= w->ny && rc == HJ_OK; j++)
         for (int i = 0; i <= w->nx; i++) {
             const long q = (long)j * W + i;
@@ -637,8 +638,8 @@ int hj_fsm_solve(const hj_grid2 *g, const hj_speed *sp, const hj_inflow *in, int
             }
         }
         if (rc == HJ_ENOCONV)
-            hj_error_set(err, HJ_ENOCONV, "no convergence in %d iterations (last change %.3g > delta %.3g)", opt->max_iter,
-                         stats->change, opt->delta);
+            hj_error_set(err, HJ_ENOCONV, "no convergence in %d iteration%s (last change %.3g > delta %.3g)", opt->max_iter,
+                         hj_plural(opt->max_iter), stats->change, opt->delta);
     }
     if (rc == HJ_OK || rc == HJ_ENOCONV)
         for (int j = 0; j <= g->ny; j++)

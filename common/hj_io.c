@@ -346,7 +346,8 @@ int hj_table_read(hj_table *t, const char *path, hj_error *err)
         if (n != t->ncols) {
             for (int i = 0; i < n; i++) free(copy[i]);
             free(copy);
-            rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %d cells, expected %d (tab-separated)", path, lineno, n, t->ncols);
+            rc = hj_error_set(err, HJ_EFORMAT, "%s:%d: %d cell%s, expected %d (tab-separated)", path, lineno, n,
+                               hj_plural(n), t->ncols);
             break;
         }
         if ((size_t)t->nrows == rowcap) {

@@ -150,12 +150,30 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
     return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
 }
 
-static int check_bound(double b, double t, const hj_ls_ode_opts *o, hj_error *err)
+/* An infinite bound is no error: no motion (still_at_end). */
+static int check_bound(double b, double t, hj_error *err)
 {
     if (isnan(b) || b == -INFINITY) return hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at t = %g", t);
     if (!(b > 0)) return hj_error_set(err, HJ_EINVAL, "zero CFL bound at t = %g", t);
-    if (b == INFINITY && !(o->max_step < DBL_MAX))
-        return hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", t);
+    return HJ_OK;
+}
+
+/* A step of an infinite bound (no motion at t) and no MaxStep runs to the
+ * next output time; it holds only if nothing moves at its end either.  The
+ * term is evaluated at t + dt into scratch: a finite bound there (a
+ * velocity that starts from zero) would have been stepped over. */
+static int still_at_end(const hj_ls_term *term, double t, double dt, double *y, double *scratch,
+                        hj_ls_ode_stats *st, hj_error *err)
+{
+    double b;
+    int rc = term->eval(term, t + dt, y, scratch, &b, err);
+    st->evals++;
+    if (rc) return rc;
+    if (!(b == INFINITY))
+        return hj_error_set(err, HJ_EINVAL,
+                            "no motion at t = %g (infinite CFL bound) but motion at t = %g, the end of the step to "
+                            "the next output time: give a MaxStep",
+                            t, t + dt);
     return HJ_OK;
 }
 
@@ -222,8 +240,10 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             int last = 0, bad, fused, guessed = 0;
             double amax;
             if (hold) hold--;
-            if (guess && same >= 2 && !hold && !u && !(u = hj_ls_alloc(g))) guess = 0; /* order 1: no room */
-            if (guess && same >= 2 && !hold) {
+            /* an infinite bound is never guessed: its step needs still_at_end */
+            const int try_guess = guess && same >= 2 && !hold && bprev < INFINITY;
+            if (try_guess && !u && !(u = hj_ls_alloc(g))) guess = 0; /* order 1: no room */
+            if (try_guess && guess) {
                 /* The bound repeated bit for bit over the last steps (air3D's
                  * does not depend on t or y): the first stage is fused too,
                  * with the step of that bound, and kept only if the bound
@@ -249,8 +269,16 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             if (!guessed) {
                 if ((rc = term->eval(term, t, ys, f, &b, err))) goto done;
                 st.evals++;
-                if ((rc = check_bound(b, t, &o, err))) goto done;
+                if ((rc = check_bound(b, t, err))) goto done;
                 dt = step_of(b, tk - t, &o, &last);
+                if (b == INFINITY && !(o.max_step < DBL_MAX)) {
+                    /* u is free here (order 1: spare, or allocated now) */
+                    if (!u && !(u = hj_ls_alloc(g))) {
+                        rc = hj_error_set(err, HJ_ENOMEM, "out of memory for the integrator's stage arrays");
+                        goto done;
+                    }
+                    if ((rc = still_at_end(term, t, dt, ys, u, &st, err))) goto done;
+                }
             }
             same = memcmp(&b, &bprev, sizeof b) ? 0 : same + 1;
             bprev = b;

@@ -12,6 +12,14 @@
  * step (as in the toolbox, later stages are not re-limited; a stage whose
  * bound is below dt / FactorCFL is counted in the statistics).
  *
+ * No motion: a term whose bound is infinite (a velocity, speed or
+ * Hamiltonian that is zero everywhere) is stepped to the next output time
+ * in one step (or by MaxStep when one is given).  Without MaxStep the term
+ * is evaluated once more at the end of that step: if it moves there (a
+ * velocity starting from zero), the step would have skipped the motion,
+ * and HJ_EINVAL asks for a MaxStep.  Motion that starts and stops within
+ * one such step is not seen: give a MaxStep for such a term.
+ *
  * FactorCFL must lie in (0, 1] (HJ_EINVAL otherwise): a term's bound is
  * the largest step for which one forward Euler step is stable (CFL number
  * 1 for its monotone scheme), and the TVD schemes above are convex
@@ -33,9 +41,10 @@
  * which then holds the state (y receives it at every output time and on
  * return); not with a PostTimestep, which sees y itself.
  *
- * Errors (returned, never printed): a NaN or infinite bound without a
- * finite MaxStep, a zero bound, the term's own errors, and a blow-up: NaN
- * or Inf in the state after a step, or finite growth beyond blowup_factor
+ * Errors (returned, never printed): a NaN bound, a zero bound, motion at
+ * the end of a step taken without it (above), the term's own errors, and
+ * a blow-up: NaN or Inf in the state after a step, or finite growth
+ * beyond blowup_factor
  * times the initial scale (max |y0| or the domain's diameter, the larger:
  * a level set function changes by at most t max |G|, so growth by 10^6 is
  * instability, not motion), reported with the time and the step number

@@ -4,8 +4,8 @@
  * the slowness, 1 / speed, so that phi is a travel time: a file of speeds
  * is read and then turned into slownesses with hj_map_invert.
  *
- * Files: plain text (one row of numbers per line, whitespace separated,
- * every value finite and >= 0) or a PGM image (P2 or P5, 8 or 16 bits; a
+ * Files: plain text (one row of decimal numbers per line, whitespace
+ * separated, every value finite and >= 0; hj_vol.h) or a PGM image (P2 or P5, 8 or 16 bits; a
  * pixel value v maps to f = fmin + (fmax - fmin) v / maxval).  In both the
  * first row of the file is the top of the domain (largest y), as in an
  * image; in memory row 0 is the bottom.  At least 2 x 2 values.

@@ -816,14 +816,23 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         /* hj_ls_ode's TVD Runge-Kutta step; the first evaluation sets dt */
         double m;
         if ((rc = eval_pass(&fs, tau, y, f, wsz, &m, err))) break;
-        if (!(m > 0)) {
-            rc = hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", tau);
-            break;
-        }
-        double dt = pb->factor_cfl * (1 / m);
+        double dt = m > 0 ? pb->factor_cfl * (1 / m) : DBL_MAX;
         dt = dt < DBL_MAX ? dt : DBL_MAX;
         int last = 0;
         if (dt >= tk - tau) dt = tk - tau, last = 1;
+        if (!(m > 0)) {
+            /* No motion (an infinite bound): one step to the horizon, as
+             * hj_ls_ode takes it, if nothing moves at its end either; f is
+             * zero, and stays zero when the end's evaluation goes into it. */
+            if ((rc = eval_pass(&fs, tau + dt, y, f, wsz, &m, err))) break;
+            if (m > 0) {
+                rc = hj_error_set(err, HJ_EINVAL,
+                                  "reach: no motion at tau = %g (infinite CFL bound) but motion at tau = %g, the end "
+                                  "of the step to the horizon",
+                                  tau, tau + dt);
+                break;
+            }
+        }
         const double tau_new = last ? tk : tau + dt, t = T - tau_new, dtp = tau_new - tau;
         /* the last combination a y + b (u + dt f), fused with the post step */
         double a = 0, b = 1;

@@ -28,6 +28,29 @@ static void flip_rows(double *v, long nx, long ny, long nz)
         }
 }
 
+/* Whether s is a decimal number: [+-] digits [. digits] [e [+-] digits],
+ * with digits on at least one side of the point.  strtod alone also takes
+ * hexadecimal ("0x1p3"), which a map written as decimal text never
+ * holds, so such a token is a mistake to report, not a value. */
+static int is_decimal(const char *s)
+{
+    int digits = 0;
+    if (*s == '+' || *s == '-') s++;
+    while (isdigit((unsigned char)*s)) s++, digits++;
+    if (*s == '.') {
+        s++;
+        while (isdigit((unsigned char)*s)) s++, digits++;
+    }
+    if (!digits) return 0;
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-') s++;
+        if (!isdigit((unsigned char)*s)) return 0;
+        while (isdigit((unsigned char)*s)) s++;
+    }
+    return *s == '\0';
+}
+
 int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
 {
     FILE *f = hj_in_open(path, "r", err);
@@ -54,6 +77,14 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
                                       hj_error_quote(tok, (size_t)tl, q, sizeof q));
                     break;
                 }
+                /* inf and nan (a letter first) are named as non-finite
+                 * below; anything else must be plain decimal */
+                const char *lead = tok + (tok[0] == '+' || tok[0] == '-');
+                if (!is_decimal(tok) && !isalpha((unsigned char)*lead)) {
+                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a decimal number", path, line, tcol,
+                                      hj_error_quote(tok, (size_t)tl, q, sizeof q));
+                    break;
+                }
                 if (!isfinite(x) || x < 0) {
                     rc = hj_error_set(err, HJ_ENONFINITE, "%s:%ld:%ld: value %s must be finite and >= 0", path, line,
                                       tcol, hj_error_quote(tok, (size_t)tl, q, sizeof q));
@@ -73,8 +104,8 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
                 if (incount > 0) {
                     if (cols < 0) cols = incount;
                     else if (incount != cols) {
-                        rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: %d values, previous rows have %ld", path, line,
-                                          incount, cols);
+                        rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: %d value%s, previous rows have %ld", path,
+                                          line, incount, hj_plural(incount), cols);
                         break;
                     }
                     rows++;
@@ -84,8 +115,9 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
                 if (slices && (incount == 0 || c == EOF) && slice_rows > 0) {
                     if (rows0 < 0) rows0 = slice_rows;
                     else if (slice_rows != rows0) {
-                        rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: slice %ld has %ld rows, the first has %ld", path,
-                                          line - (c == EOF ? 0 : 1), nz + 1, slice_rows, rows0);
+                        rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld: slice %ld has %ld row%s, the first has %ld",
+                                          path, line - (c == EOF ? 0 : 1), nz + 1, slice_rows,
+                                          hj_plural(slice_rows), rows0);
                         break;
                     }
                     nz++;

@@ -7,7 +7,8 @@
  * (the layout of hj_eik.h's grids).
  *
  * Text: one row of numbers per line, whitespace separated, every value
- * finite and >= 0.  A slice is a block of rows laid out as a 2-D map
+ * finite and >= 0, written in decimal (1, 0.5, -2e-3, .5; not
+ * hexadecimal, which strtod would take).  A slice is a block of rows laid out as a 2-D map
  * (hj_map.h): its first line is its top row (largest y).  Slices are
  * separated by one or more blank lines, the first slice is k = 0.  A file
  * of one block is a 2-D map.
@@ -38,8 +39,8 @@ typedef struct {
 /* A text grid (see above).  slices = 1: blank lines separate slices (a
  * file of one block gives dim 2); slices = 0: blank lines are ignored and
  * every row belongs to one 2-D map.  At least 2 values per dimension.
- * HJ_EIO, HJ_EFORMAT (with file:line:column), HJ_ENONFINITE (a negative or
- * non-finite value), HJ_ENOMEM. */
+ * HJ_EIO, HJ_EFORMAT (with file:line:column; a token that is not a decimal
+ * number too), HJ_ENONFINITE (a negative or non-finite value), HJ_ENOMEM. */
 int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err);
 
 /* A raw volume of n[0] x n[1] x n[2] values of `bytes` (4 or 8) bytes

@@ -9,8 +9,9 @@
  * - `linear`: a linear velocity v = v0 + g.x, v0 = 2, g = (0.5, -0.3, 0.2),
  *   whose travel time is T = acosh(1 + |g|^2 |x - s|^2 / (2 v(s) v(x))) / |g|.
  * - `obstacle` (2-D, order 3): a wall |x| < 0.05, y < 0.5 and the source
- *   at (-0.5, 0.1), against the same solver on a grid four times finer
- *   (the coarse nodes are fine nodes).
+ *   at (-0.5, 0.1), against the same solver on a finer grid whose nodes
+ *   include the coarse ones: N = 480, three times the finest size 160 (the
+ *   quick run: 192, four times its finest size 48).
  *
  * Errors are the mean over the nodes (L1) and the maximum (Linf), over all
  * nodes and "away" from the source (|x - s| >= 0.25); iterations count the

@@ -578,9 +578,10 @@ int main(int argc, char **argv)
     const int fmt = format ? format : dim == 3 ? 3 : 1;
     char title[320], fell[96] = "";
     if (st.first_order > 0)
-        snprintf(fell, sizeof fell, ", %zu nodes at first order (map not resolved there)", st.first_order);
-    snprintf(title, sizeof title, "eikonal: T, order %d%s, %ld iterations%s, change %.3g of max |T|", opt.order, fell,
-             st.iterations, converged ? "" : " (not converged: the last iterate)", st.change);
+        snprintf(fell, sizeof fell, ", %zu node%s at first order (map not resolved there)", st.first_order,
+                 hj_plural((long)st.first_order));
+    snprintf(title, sizeof title, "eikonal: T, order %d%s, %ld iteration%s%s, change %.3g of max |T|", opt.order, fell,
+             st.iterations, hj_plural(st.iterations), converged ? "" : " (not converged: the last iterate)", st.change);
     if (fmt == 3) {
         if (hj_vol_write_vtk(out_path, g.n, g.x0, g.dx, title, "T", T, -1, &err)) {
             free(T);
@@ -595,7 +596,7 @@ int main(int argc, char **argv)
         }
         write_text(fp, &g, T, fmt == 2, title);
         if (fp != stdout && hj_out_commit(&out, &err)) { free(T); hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg); }
-        if (fp == stdout && fflush(stdout)) { free(T); hj_cli_fail(prog, HJ_EXIT_RUN, "error writing stdout"); }
+        if (fp == stdout) hj_cli_flush_stdout(prog);
     }
     free(T);
     /* the loss of order is stated, not an error: the result is still the
@@ -606,9 +607,9 @@ int main(int argc, char **argv)
                         "the high order update was not trustworthy; T is first order accurate there\n",
                 prog, opt.order, st.first_order, total, 100.0 * (double)st.first_order / (double)total);
     if (!converged) {
-        fprintf(stderr, "%s: warning: not converged after %ld iterations (last change %.3g of max |T|, --tol %g); the "
-                        "last iterate is written, exit status %d\n",
-                prog, st.iterations, st.change, opt.tol, EXIT_NOCONV);
+        fprintf(stderr, "%s: warning: not converged after %ld iteration%s (last change %.3g of max |T|, --tol %g); "
+                        "the last iterate is written, exit status %d\n",
+                prog, st.iterations, hj_plural(st.iterations), st.change, opt.tol, EXIT_NOCONV);
         return EXIT_NOCONV;
     }
     if (st.unreachable > 0) {

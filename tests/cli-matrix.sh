@@ -10,7 +10,8 @@
 # type; per program an unknown option, a stray argument, values with
 # control bytes (newline, escape; once per option type) and --help with
 # stdout on /dev/full (exit status 1 there, not 2); and the
-# conflicting pairs of the list below.  Each run happens in an empty directory (with
+# conflicting pairs of the list below (there with the --out-dir made, so
+# that the pair itself must be refused).  Each run happens in an empty directory (with
 # --out-dir inside it where the program has one) and must end with exit
 # status 2, exactly one line on stderr, and no file created.  Programs
 # that do not answer --list-options (hand-written parsers) are listed as
@@ -41,6 +42,8 @@ conflicts=(
     'eikonal|--speed s.txt --raw 4 --source 0,0'
     'eikonal|--speed s.txt --N 10 --source 0,0'
     'eikonal|--speed-const 1 --source 0,0 --format vtk --out -'
+    'hjreach|--horizon 1e12'
+    'hjreach|--min -2,-2,0 --max 2,2,1e-300'
 )
 
 shopt -s nullglob dotglob
@@ -51,7 +54,10 @@ run() {
     local prog=$1 class=$2
     shift 2
     timeout 30 "$prog" "$@" >"${stdout_to:-$pw/out}" 2>"$pw/err" </dev/null
-    local rc=$? why="" all="" left=("$pw"/run/*) want=${want_status:-2}
+    local rc=$?
+    # an output directory made for the case (conflicts) must stay empty
+    [ -n "${made_out:-}" ] && rmdir "$pw/run/out" 2>/dev/null
+    local why="" all="" left=("$pw"/run/*) want=${want_status:-2}
     IFS= read -r -d '' all <"$pw/err"
     if [ $rc -eq 124 ]; then why="still running after 30 s (input accepted?)"
     elif [ $rc -ne "$want" ]; then why="exit status $rc, expected $want"
@@ -157,8 +163,11 @@ matrix() {
             for w in $args; do [[ $w == --* && $opts != *" $w "* ]] && all=0; done
             [ $all = 1 ] || continue
         fi
+        # the output directory exists: a refused combination, not a
+        # missing directory, must end the run
+        [ ${#out[@]} -gt 0 ] && mkdir -p "$pw/run/out"
         # shellcheck disable=SC2086
-        run "$prog" conflict "${out[@]}" $args
+        made_out=${out[*]:+1} run "$prog" conflict "${out[@]}" $args
     done
 }
 
@@ -181,7 +190,7 @@ awk -F'\t' '
     $1 == "not-covered" { nc = nc " " $3; next }
     { n[$1]++; if ($2 == "FAIL") { f[$1]++; print "FAIL " $3; bad++ } else good++ }
     END {
-        for (c in n) printf "  %-12s %4d cases, %d failed\n", c, n[c], f[c] | "sort"
+        for (c in n) printf "  %-12s %4d case%s, %d failed\n", c, n[c], n[c] == 1 ? "" : "s", f[c] | "sort"
         close("sort")
         if (nc != "") print "not covered (no --list-options):" nc
         printf "cli-matrix: %d passed, %d failed\n", good, bad

@@ -146,6 +146,56 @@ static void outputs_and_options(void **state)
     hj_ls_free(y);
 }
 
+/* y' = t with the bound 1 / t: no motion at t = 0 only (a velocity that
+ * starts from zero). */
+static int ramp_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
+{
+    (void)y, (void)err;
+    const const_term *c = (const const_term *)term;
+    for (long j = 0; j < c->g->N[0]; j++) ydot[c->g->offset + (size_t)j] = t;
+    *bound = t > 0 ? 1 / t : INFINITY;
+    return HJ_OK;
+}
+
+/* A term with no motion (zero velocity everywhere: an infinite CFL bound)
+ * steps to each output time and leaves the state as it is; it was an
+ * error asking for a MaxStep.  A velocity that starts from zero within
+ * such a step is an error naming both times, for every order; with a
+ * MaxStep it runs. */
+static void no_motion(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(16);
+    hj_ls_convection still;
+    hj_ls_convection_init(&still, &g, HJ_LS_WENO5A);
+    double *y = hj_ls_alloc(&g), *y0 = hj_ls_alloc(&g), span[3] = {0, 0.25, 1};
+    for (long j = 0; j < 16; j++) y[g.offset + (size_t)j] = y0[g.offset + (size_t)j] = sin(0.3 * (double)j) - 0.2;
+    hj_error err;
+    hj_ls_ode_stats st;
+    for (int order = 1; order <= 3; order++) {
+        assert_int_equal(hj_ls_ode(order, &g, &still.base, span, 3, y, NULL, NULL, NULL, &st, &err), HJ_OK);
+        assert_int_equal(st.steps, 2);
+        assert_close(st.t, 1, 0, 0);
+        /* orders 1 and 2 add dt 0 and average equal values: the same bits;
+         * RK3's weights 3/4, 1/4 and 1/3, 2/3 round */
+        if (order < 3) assert_memory_equal(y + g.offset, y0 + g.offset, 16 * sizeof *y);
+        for (long j = 0; j < 16; j++) assert_close(y[g.offset + (size_t)j], y0[g.offset + (size_t)j], 0, 4e-16);
+    }
+    const_term ramp = {{ramp_eval}, &g, 0, 0};
+    for (int order = 1; order <= 3; order++) {
+        assert_int_equal(hj_ls_ode(order, &g, &ramp.base, span, 3, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_has(err.msg, "no motion at t = 0 (infinite CFL bound) but motion at t = 0.25");
+        assert_has(err.msg, "give a MaxStep");
+    }
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.max_step = 0.01;
+    for (long j = 0; j < 16; j++) y[g.offset + (size_t)j] = 0;
+    assert_int_equal(hj_ls_ode(2, &g, &ramp.base, span, 3, y, &o, NULL, NULL, NULL, &err), HJ_OK);
+    assert_close(y[g.offset], 0.5, 1e-12, 0); /* Heun is exact for y' = t */
+    hj_ls_free(y), hj_ls_free(y0);
+}
+
 static void error_reports(void **state)
 {
     (void)state;
@@ -158,8 +208,14 @@ static void error_reports(void **state)
     c.bound = NAN;
     assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
     assert_non_null(strstr(err.msg, "non-finite CFL bound"));
+    /* an infinite bound and no MaxStep: one step to the output time (RK3
+     * on y' = 1 + y from 0 with dt = 1: 5/3) */
     c.bound = INFINITY;
-    assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
+    hj_ls_ode_stats st1;
+    for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+    assert_int_equal(hj_ls_ode(3, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st1, &err), HJ_OK);
+    assert_int_equal(st1.steps, 1);
+    assert_close(y[g.offset], 5.0 / 3, 1e-15, 0);
     /* with MaxStep an infinite bound is fine */
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
@@ -400,6 +456,6 @@ static void convection_fused_bitwise(void **state)
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
-                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(error_reports),
+                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
                         cmocka_unit_test(convection_fused_bitwise))

@@ -210,6 +210,58 @@ static void tube_and_time_to_reach(void **state)
     hj_ls_free(phi), hj_ls_free(ttr);
 }
 
+/* x' = 1 - t: at rest at the horizon T = 1 (tau = 0) only. */
+static void f_rest_at_end(double t, const double *x, double *o, void *c)
+{
+    (void)x, (void)c;
+    o[0] = 1 - t;
+}
+
+/* Nothing moves (x' = 0, the control's box a point): one step to the
+ * horizon, the value is the target and ttr 0 inside, inf outside, on the
+ * fused and the general path; it was an error ("infinite CFL bound ... no
+ * MaxStep").  Dynamics at rest at tau = 0 only: an error naming both
+ * times, not a step over the motion. */
+static void no_motion(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){0}, (double[]){0});
+    hj_reach_dyn_goal(&s, HJ_REACH_REACH);
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    hj_reach_stats st;
+    hj_error err;
+    for (int general = 0; general <= 1; general++) {
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
+        assert_int_equal(st.steps, 1);
+        assert_close(st.tau, 1, 0, 0);
+        for (long i = 0; i < g.N[0]; i++) {
+            const double x = -2 + g.dx[0] * (double)i;
+            assert_close(phi[g.offset + (size_t)i], fabs(x) - r, 1e-15, 0);
+            const double t = ttr[g.offset + (size_t)i];
+            if (fabs(x) <= r) assert_close(t, 0, 0, 0);
+            else assert_true(isinf(t));
+        }
+    }
+    hj_reach_dyn_init(&s, 1, f_rest_at_end, NULL);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){0}, (double[]){0});
+    for (int general = 0; general <= 1; general++) {
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_EINVAL);
+        assert_has(err.msg, "no motion at");
+        assert_has(err.msg, "but motion at");
+    }
+    hj_ls_free(phi), hj_ls_free(ttr);
+}
+
 /* x' = x + u, |u| <= 1, target |x| <= 0.5: the infinite horizon tube is
  * |x| < 1, reached after ln(0.5 / (1 - |x|)). */
 static void convergence_stop(void **state)
@@ -806,7 +858,7 @@ static void nan_target_names_node(void **state)
 }
 
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
-             cmocka_unit_test(invalid_systems), cmocka_unit_test(tube_and_time_to_reach),
+             cmocka_unit_test(invalid_systems), cmocka_unit_test(no_motion), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
              cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),

@@ -46,7 +46,7 @@ static void text_volume_errors(void **state)
     hj_vol v = {0};
     hj_error err;
     assert_int_equal(hj_vol_read_text(&v, WRITE("s.txt", "1 2\n3 4\n\n5 6\n"), 1, &err), HJ_EFORMAT);
-    assert_has(err.msg, "slice 2 has 1 rows, the first has 2");
+    assert_has(err.msg, "slice 2 has 1 row, the first has 2");
     assert_int_equal(hj_vol_read_text(&v, WRITE("c.txt", "1 2\n3 4\n\n5 6 7\n8 9 1\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "c.txt:4: 3 values, previous rows have 2");
     assert_int_equal(hj_vol_read_text(&v, WRITE("n.txt", "1 2\n3 nan\n"), 1, &err), HJ_ENONFINITE);
@@ -55,6 +55,17 @@ static void text_volume_errors(void **state)
     assert_has(err.msg, "need at least 2 x 2 values (the file holds none)");
     assert_int_equal(hj_vol_read_text(&v, WRITE("d.txt", "1 2\n3 4.5.6\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "d.txt:2:3: '4.5.6' is not a number");
+    /* hexadecimal, which strtod takes, is refused with its place */
+    assert_int_equal(hj_vol_read_text(&v, WRITE("h.txt", "1 2\n3 0x1p3\n"), 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "h.txt:2:3: '0x1p3' is not a decimal number");
+    assert_int_equal(hj_vol_read_text(&v, WRITE("x.txt", "1 0X10\n3 4\n"), 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "x.txt:1:3: '0X10' is not a decimal number");
+    assert_int_equal(hj_vol_read_text(&v, WRITE("i.txt", "1 2\n3 -INF\n"), 1, &err), HJ_ENONFINITE);
+    assert_has(err.msg, "i.txt:2:3: value -INF must be finite and >= 0");
+    /* every decimal form is kept: signs, a point on either side, exponents */
+    assert_int_equal(hj_vol_read_text(&v, WRITE("ok.txt", "+1 .5 2.\n1e2 2.5E-1 0e+0\n"), 1, &err), HJ_OK);
+    assert_true(v.v[0] == 100 && v.v[1] == 0.25 && v.v[2] == 0 && v.v[3] == 1 && v.v[4] == 0.5 && v.v[5] == 2);
+    hj_vol_free(&v);
     /* a directory, by every reader: "Is a directory" (it was a bare
      * "error reading") */
     const long n[3] = {2, 2, 1};

@@ -914,8 +914,8 @@ static int accept_table(const char *name, const char *paperdir, const char *resd
         free(next.cells); /* its strings belong to acc, got and the arguments */
     }
     if (!rc)
-        printf("%s %s: %d cells accepted with reason '%s' (%d earlier rows of the table replaced) in %s\n", name, table,
-               added, id, dropped, apath);
+        printf("%s %s: %d cell%s accepted with reason '%s' (%d earlier row%s of the table replaced) in %s\n", name,
+               table, added, hj_plural(added), id, dropped, hj_plural(dropped), apath);
     free(got.cells);
     free_accepted(&acc), free_reasons(&reasons);
     return rc;

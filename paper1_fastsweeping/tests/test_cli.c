@@ -79,6 +79,10 @@ static void unwritable_output_leaves_nothing(void **state)
     }
     snprintf(cmd, sizeof cmd, P1 "example3 --sizes 16 --out-dir /proc/hj-no-such-dir");
     expect_failure(cmd, 1, "cannot create directory");
+    /* the result onto stdout that cannot take it: the reason is named */
+    if (access("/dev/full", W_OK) == 0)
+        expect_failure("(" P1 "eikonal --speed-const 1 --domain -1,1,-1,1 --N 8 --source 0,0 --out - >/dev/full)", 1,
+                       "eikonal: error writing stdout: No space left on device");
 }
 
 static void results_complete(void **state)
@@ -171,7 +175,10 @@ static void eikonal_bad_files(void **state)
     write_text(path, sizeof path, "ragged.txt", "1 1 x\n1 1 1\n");
     expect_failure(cmd, 1, "not a number");
     write_text(path, sizeof path, "ragged.txt", "1 1\n1 1\n\n1 1\n");
-    expect_failure(cmd, 1, "slice 2 has 1 rows, the first has 2");
+    expect_failure(cmd, 1, "slice 2 has 1 row, the first has 2");
+    /* hexadecimal is not a value of a map, with its line and column */
+    write_text(path, sizeof path, "ragged.txt", "1 1 1\n1 0x1p3 1\n1 1 1\n");
+    expect_failure(cmd, 1, "ragged.txt:2:3: '0x1p3' is not a decimal number");
     write_text(path, sizeof path, "ragged.txt", "0 0 0\n0 0 0\n");
     expect_failure(cmd, 1, "every value is 0");
     /* PGM told by content, whatever the name; P2 numbers strict */

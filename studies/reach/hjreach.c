@@ -23,7 +23,11 @@
  * Outputs in --out-dir: value.dat and ttr.dat (gnuplot blocks: 1-D to
  * 3-D; for 4-D the slice through the middle of the velocities) and, for
  * 3-D, reach.vtk with both fields.  ttr is inf where the set is not
- * reached by the horizon.  Progress on stderr; one line of results on
+ * reached by the horizon.  The number of time steps (the horizon over the
+ * CFL step, estimated before the run) is checked against --max-steps
+ * first: a long horizon, or a tiny period or spacing, is refused with the
+ * count instead of running for ever; with --horizon 0 the run stops
+ * unconverged after that many steps.  Progress on stderr; one line of results on
  * stdout: the steps, the final tau and the measure of the set (dimensions
  * 1 to 3).
  */
@@ -128,6 +132,31 @@ static void parse_list(const char *s, const char *what, double *out, int n)
     if (k != n) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s: expected %d number%s, got %d", what, n, n == 1 ? "" : "s", k);
 }
 
+/* The CFL step the solver will take, estimated before the run: factor_cfl
+ * / max over the nodes of sum_d alpha_d / dx_d, with alpha_d the partial
+ * bounds of the dynamics (they do not depend on the gradient, and these
+ * systems not on time).  *dim_most: the dimension with the largest term at
+ * that node, the one that limits the step.  INFINITY when nothing moves. */
+static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor_cfl, int *dim_most)
+{
+    long idx[HJ_LS_MAXDIM] = {0};
+    double worst = 0;
+    *dim_most = 0;
+    for (size_t n = 0; n < g->nodes; n++) {
+        double x[HJ_LS_MAXDIM], sum = 0, top = -1;
+        int dtop = 0;
+        for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)idx[d] * g->dx[d];
+        for (int d = 0; d < g->dim; d++) {
+            const double a = hj_reach_ls_partial(0, x, NULL, NULL, d, (void *)s) / g->dx[d];
+            sum += a;
+            if (a > top) top = a, dtop = d;
+        }
+        if (sum > worst) worst = sum, *dim_most = dtop;
+        for (int d = 0; d < g->dim && ++idx[d] == g->N[d]; d++) idx[d] = 0;
+    }
+    return worst > 0 ? factor_cfl / worst : INFINITY;
+}
+
 static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi, const double *ttr)
 {
     hj_error err;
@@ -175,6 +204,7 @@ int main(int argc, char **argv)
     long N[4] = {0};
     const char *lo_s = NULL, *hi_s = NULL, *centre_s = NULL, *obstacle_s = NULL, *out_dir = ".";
     double horizon = 1, radius = 0.5, tol = 0, speed = 1, umax = 1, discount = 0;
+    long max_steps = 100000;
     hj_cli_opt opts[] = {
         {.name = "--system", .type = HJ_OPT_CHOICE, .value = &sys, .choices = systems, .metavar = "NAME",
          .help = "the system from the catalogue"},
@@ -193,6 +223,9 @@ int main(int argc, char **argv)
          .help = "obstacle box lo1,lo2:hi1,hi2 over the first two dimensions (lo:hi over the first only for double_integrator)", .dflt = "none"},
         {.name = "--horizon", .type = HJ_OPT_DOUBLE, .value = &horizon, .min = 0, .max = 1e12, .metavar = "T",
          .help = "time horizon (0: until converged, needs --tol)"},
+        {.name = "--max-steps", .type = HJ_OPT_LONG, .value = &max_steps, .min = 1, .max = 1000000000, .metavar = "N",
+         .help = "refuse a run of more time steps (the horizon over the CFL step, estimated before the run; with "
+                 "--horizon 0 the run stops there, unconverged)"},
         {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &tol, .min = 0, .max = 1e12, .metavar = "RATE",
          .help = "stop when max |dphi/dtau| falls below RATE (0: never)"},
         {.name = "--discount", .type = HJ_OPT_DOUBLE, .value = &discount, .min = 0, .max = 1e12, .metavar = "L",
@@ -272,16 +305,30 @@ int main(int argc, char **argv)
     if (obstacle_s) pb.obstacle.fn = obstacle_fn, pb.obstacle.ctx = &st;
     pb.horizon = horizon > 0 ? horizon : INFINITY, pb.conv_tol = tol, pb.discount = discount;
     pb.scheme = scheme_ids[scheme], pb.order = scheme == 0 ? 1 : scheme == 1 ? 2 : 3;
+    /* The run's length before it starts: a horizon far beyond the CFL step
+     * (a long horizon, or a tiny period or spacing) would run for ever. */
+    int dlim;
+    const double dt = cfl_step(&g, &s, pb.factor_cfl, &dlim);
+    if (horizon > 0 && isfinite(dt) && horizon / dt > (double)max_steps)
+        hj_cli_fail(prog, HJ_EXIT_USAGE,
+                    "--horizon %g needs about %.3g time steps (CFL step %.3g, limited by dimension %d of spacing %.3g), "
+                    "more than --max-steps %ld: shorten the horizon, coarsen dimension %d or raise --max-steps",
+                    horizon, ceil(horizon / dt), dt, dlim + 1, g.dx[dlim], max_steps, dlim + 1);
+    /* Until converged: at most max_steps steps of that size. */
+    if (horizon == 0 && isfinite(dt)) pb.horizon = (double)max_steps * dt;
     double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
     if (!phi || !ttr) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for a %zu-node grid", g.nodes);
     hj_progress("%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
     hj_reach_stats stats;
     if (hj_reach_solve(&pb, phi, ttr, &stats, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    if (horizon == 0 && !stats.converged)
+        hj_cli_fail(prog, HJ_EXIT_RUN, "not converged (--tol %g) after %ld step%s, tau = %g: --max-steps %ld reached",
+                    tol, stats.steps, hj_plural(stats.steps), stats.tau, max_steps);
     write_fields(out_dir, &g, phi, ttr);
     double m = NAN;
     if (dim <= 3 && hj_reach_measure(&g, phi, &m, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    printf("%s: %s, %ld steps, tau = %g%s, measure of the set %.6g\n", prog, systems[sys], stats.steps, stats.tau,
-           stats.converged ? " (converged)" : "", m);
+    printf("%s: %s, %ld step%s, tau = %g%s, measure of the set %.6g\n", prog, systems[sys], stats.steps,
+           hj_plural(stats.steps), stats.tau, stats.converged ? " (converged)" : "", m);
     hj_ls_free(phi), hj_ls_free(ttr);
     return 0;
 }
