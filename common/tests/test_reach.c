@@ -763,6 +763,34 @@ static void invalid_problems(void **state)
     assert_non_null(strstr(err.msg, "(0, 1]"));
     assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     pb.factor_cfl = 0.5;
+    /* An unknown dissipation on both paths (the fused one never reads it
+     * and returned HJ_OK), an unknown scheme or RK order, a NULL value
+     * array (it crashed), a NULL problem. */
+    for (int general = 0; general < 2; general++) {
+        pb.general = general;
+        pb.dissipation = 77;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "unknown dissipation 77"));
+        pb.dissipation = HJ_LS_LLF, pb.scheme = HJ_LS_NSCHEMES;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        pb.scheme = HJ_LS_ENO2, pb.order = 4;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        pb.order = 2;
+        assert_int_equal(hj_reach_solve(&pb, NULL, NULL, NULL, &err), HJ_EINVAL);
+    }
+    pb.general = 0;
+    assert_int_equal(hj_reach_solve_fused(&pb, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_solve(NULL, phi, NULL, NULL, &err), HJ_EINVAL);
+    double m0;
+    assert_int_equal(hj_reach_measure(&g, NULL, &m0, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_measure_compact(&g, NULL, &m0, &err), HJ_EINVAL);
+    /* A finite horizon beyond 2^52 steps: tau + dt stops changing before
+     * it is reached, and the run never ended. */
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    pb.horizon = 1e300;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "2^52 steps"));
+    pb.horizon = 1;
     s.nx = 2;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "2-D dynamics on a 1-D grid"));
