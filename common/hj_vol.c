@@ -237,6 +237,8 @@ int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], cons
     /* Checked before the file is opened: each of these made a file that
      * VTK's ASCII reader refuses or misreads (no points, "nan" in the
      * header or the values, a field name split into two tokens). */
+    if (!path || !n || !x0 || !dx || !title || !name || !values)
+        return hj_error_set(err, HJ_EINVAL, "VTK: NULL path, size, origin, spacing, title, name or values");
     double count = 1;
     for (int d = 0; d < 3; d++) {
         if (n[d] < 1) return hj_error_set(err, HJ_EINVAL, "VTK %s: %ld nodes along dimension %d", path, n[d], d + 1);

@@ -205,6 +205,11 @@ static void vtk_writer_bad_arguments(void **state)
     assert_has(err.msg, "one word");
     assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T\n", val, -1, &err), HJ_EINVAL);
     assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "", val, -1, &err), HJ_EINVAL);
+    /* NULL arguments: an error, not a crash */
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T", NULL, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(NULL, n, x0, dx, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, NULL, "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", NULL, val, -1, &err), HJ_EINVAL);
     FILE *f = fopen(path, "r");
     assert_null(f);
     if (f) fclose(f);
