@@ -596,6 +596,11 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     o.blowup_factor = 0; /* obstacle and target bound phi; discount decays */
     /* An infinite horizon runs until convergence: a long finite span. */
     const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
+    /* Dynamics that vanish everywhere (a zero speed and input bound) give
+     * an infinite CFL bound, which hj_ls_ode takes only with a largest
+     * step: the whole span, which leaves every finite bound's step as it
+     * was (a step is at most the time left anyway). */
+    o.max_step = tspan[1];
     const double steps_start = wall();
     rc = hj_ls_ode(pb->order, g, term, tspan, 2, phi, &o, NULL, NULL, NULL, err);
     step_seconds = wall() - steps_start;

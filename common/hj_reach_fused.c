@@ -817,11 +817,13 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         /* hj_ls_ode's TVD Runge-Kutta step; the first evaluation sets dt */
         double m;
         if ((rc = eval_pass(&fs, tau, y, f, wsz, &m, err))) break;
-        if (!(m > 0)) {
-            rc = hj_error_set(err, HJ_ENONFINITE, "infinite CFL bound at t = %g and no MaxStep", tau);
+        /* m = 0: no node moves (every alpha_d is 0, so is H), and one
+         * step to the horizon is exact, as on the general path. */
+        if (!(m >= 0)) {
+            rc = hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at tau = %g", tau);
             break;
         }
-        double dt = pb->factor_cfl * (1 / m);
+        double dt = m > 0 ? pb->factor_cfl * (1 / m) : INFINITY;
         dt = dt < DBL_MAX ? dt : DBL_MAX;
         /* tau + dt stops changing once dt is below tau's round-off: a
          * finite horizon of more than 2^52 steps would never be reached. */
