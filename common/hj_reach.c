@@ -458,6 +458,9 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
         change = v[0], bad = v[1] != 0;
     }
     if (bad) return hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
+    /* (an infinite horizon runs with pb->horizon 0 here: nothing left) */
+    const int rc = hj_reach_check_steps_left(pb->horizon, tau, dt, err);
+    if (rc) return rc;
     c->change = change / dt;
     c->tau_prev = tau;
     c->steps++;

@@ -161,6 +161,19 @@ static inline double hj_reach_set_constrain(const hj_reach_set *target, const hj
     return v;
 }
 
+/* HJ_EINVAL when the time left to the horizon, horizon - tau, is more than
+ * 2^52 steps of dt: tau + dt stops changing before the horizon, and the
+ * run would never end.  Both solver paths check every step. */
+static inline int hj_reach_check_steps_left(double horizon, double tau, double dt, hj_error *err)
+{
+    if ((horizon - tau) / dt > 4503599627370496.0)
+        return hj_error_set(err, HJ_EINVAL,
+                            "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); for the "
+                            "limit value use an infinite horizon with conv_tol",
+                            horizon, dt);
+    return HJ_OK;
+}
+
 enum { HJ_REACH_BRS, HJ_REACH_BRT };
 
 typedef struct {

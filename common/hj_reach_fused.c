@@ -825,15 +825,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         }
         double dt = m > 0 ? pb->factor_cfl * (1 / m) : INFINITY;
         dt = dt < DBL_MAX ? dt : DBL_MAX;
-        /* tau + dt stops changing once dt is below tau's round-off: a
-         * finite horizon of more than 2^52 steps would never be reached. */
-        if (!isinf(pb->horizon) && (tk - tau) / dt > 0x1p52) {
-            rc = hj_error_set(err, HJ_EINVAL,
-                              "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); "
-                              "for the limit value use an infinite horizon with conv_tol",
-                              pb->horizon, dt);
-            break;
-        }
+        if (!isinf(pb->horizon) && (rc = hj_reach_check_steps_left(tk, tau, dt, err))) break;
         int last = 0;
         if (dt >= tk - tau) dt = tk - tau, last = 1;
         const double tau_new = last ? tk : tau + dt, t = T - tau_new, dtp = tau_new - tau;

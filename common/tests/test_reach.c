@@ -788,8 +788,12 @@ static void invalid_problems(void **state)
      * it is reached, and the run never ended. */
     hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
     pb.horizon = 1e300;
-    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
-    assert_non_null(strstr(err.msg, "2^52 steps"));
+    for (int general = 0; general < 2; general++) {
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "2^52 steps"));
+    }
+    pb.general = 0;
     pb.horizon = 1;
     s.nx = 2;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
