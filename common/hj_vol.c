@@ -50,8 +50,16 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
                 double x = strtod(tok, &end);
                 /* end short of the token: a letter, or a NUL byte in it */
                 if (end != tok + tl) {
-                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number", path, line, tcol,
-                                      hj_error_quote(tok, (size_t)tl, q, sizeof q));
+                    /* Control bytes or bytes above 0x7e: a binary file,
+                     * most likely a raw volume, which has no header to
+                     * tell its dimensions by. */
+                    int binary = 0;
+                    for (int b = 0; b < tl; b++) binary |= (unsigned char)tok[b] < 0x20 || (unsigned char)tok[b] > 0x7e;
+                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number%s", path, line, tcol,
+                                      hj_error_quote(tok, (size_t)tl, q, sizeof q),
+                                      binary ? " (binary data: a raw volume is read with its dimensions given, "
+                                               "hj_vol_read_raw)"
+                                             : "");
                     break;
                 }
                 if (!isfinite(x) || x < 0) {

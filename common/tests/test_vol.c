@@ -55,6 +55,10 @@ static void text_volume_errors(void **state)
     assert_has(err.msg, "need at least 2 x 2 values (the file holds none)");
     assert_int_equal(hj_vol_read_text(&v, WRITE("d.txt", "1 2\n3 4.5.6\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "d.txt:2:3: '4.5.6' is not a number");
+    assert_null(strstr(err.msg, "binary"));
+    /* float32 1.0 (00 00 80 3f): a raw volume read as text says so */
+    assert_int_equal(hj_vol_read_text(&v, WRITE("r.f32", "\x01\x02\x80\x3f\x01\x02\x80\x3f"), 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "binary data: a raw volume is read with its dimensions given");
     /* a directory, by every reader: "Is a directory" (it was a bare
      * "error reading") */
     const long n[3] = {2, 2, 1};
