@@ -229,8 +229,10 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
 /* Solve: phi (an array on the grid, written) receives the value at tau
  * (forward time T - tau); ttr (may be NULL) the time-to-reach; stats may
  * be NULL.  HJ_EINVAL for a problem that cannot be solved (checked before
- * any step: no target, zero horizon, dimensions that do not match, ...),
- * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
+ * any step: no target, zero horizon, dimensions that do not match, an
+ * unknown scheme, order or dissipation, a NULL phi, ...; from the first
+ * step's bound: a finite horizon more than 2^52 steps away), HJ_ENOMEM,
+ * HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
 /* The fused path, which hj_reach_solve takes by itself when it applies:
