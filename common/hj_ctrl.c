@@ -2,6 +2,7 @@
 #include "hj_ctrl.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -69,8 +70,14 @@ void hj_ctrl_optimal(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
 int hj_ctrl_traj_alloc(hj_ctrl_traj *tr, int nx, int nu, int nd, long cap, hj_error *err)
 {
     memset(tr, 0, sizeof *tr);
-    if (nx < 1 || nu < 0 || nd < 0 || cap < 1)
-        return hj_error_set(err, HJ_EINVAL, "trajectory: bad sizes (nx %d, nu %d, nd %d, %ld steps)", nx, nu, nd, cap);
+    if (nx < 1 || nx > HJ_LS_MAXDIM || nu < 0 || nu > HJ_REACH_MAXIN || nd < 0 || nd > HJ_REACH_MAXIN || cap < 1)
+        return hj_error_set(err, HJ_EINVAL, "trajectory: bad sizes (nx %d of 1..%d, nu %d and nd %d of 0..%d, %ld steps)",
+                            nx, HJ_LS_MAXDIM, nu, nd, HJ_REACH_MAXIN, cap);
+    /* The largest array's byte count must not wrap around size_t: a
+     * wrapped product gave small arrays for a huge cap. */
+    const size_t widest = (size_t)(nx > nu ? nx : nu > 0 ? nu : 1);
+    if ((size_t)cap >= SIZE_MAX / sizeof(double) / widest)
+        return hj_error_set(err, HJ_ENOMEM, "trajectory: out of memory for %ld steps", cap);
     const size_t n = (size_t)cap + 1;
     tr->nx = nx, tr->nu = nu, tr->nd = nd, tr->cap = cap;
     tr->t = malloc(n * sizeof *tr->t);
@@ -106,6 +113,8 @@ static double set_value(const hj_reach_set *s, double t, const double *x)
 int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *phi, const double *x0,
                      const hj_ctrl_sim_opts *o, hj_ctrl_traj *tr, hj_error *err)
 {
+    if (!s || !g || !phi || !x0 || !o || !tr || !tr->t)
+        return hj_error_set(err, HJ_EINVAL, "simulate: NULL system, grid, value, initial state, options or trajectory");
     int rc = hj_reach_dyn_check(s, err);
     if (rc) return rc;
     if (s->nx != g->dim) return hj_error_set(err, HJ_EINVAL, "simulate: %d-D dynamics on a %d-D grid", s->nx, g->dim);
@@ -116,6 +125,8 @@ int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
         return hj_error_set(err, HJ_EINVAL, "simulate: %g steps, the trajectory holds %ld", steps, tr->cap);
     if (tr->nx != s->nx || tr->nu != s->u.n)
         return hj_error_set(err, HJ_EINVAL, "simulate: the trajectory's sizes do not match the system");
+    if (o->disturbance != HJ_CTRL_D_ZERO && o->disturbance != HJ_CTRL_D_OPTIMAL && o->disturbance != HJ_CTRL_D_FN)
+        return hj_error_set(err, HJ_EINVAL, "simulate: unknown disturbance mode %d", o->disturbance);
     if (o->disturbance == HJ_CTRL_D_FN && !o->d_fn)
         return hj_error_set(err, HJ_EINVAL, "simulate: a disturbance function is needed");
     if ((o->target.array && !o->target.fn) || (o->obstacle.array && !o->obstacle.fn))

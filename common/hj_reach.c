@@ -458,6 +458,9 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
         change = v[0], bad = v[1] != 0;
     }
     if (bad) return hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
+    /* (an infinite horizon runs with pb->horizon 0 here: nothing left) */
+    const int rc = hj_reach_check_steps_left(pb->horizon, tau, dt, err);
+    if (rc) return rc;
     c->change = change / dt;
     c->tau_prev = tau;
     c->steps++;
@@ -470,7 +473,7 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
 
 int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
 {
-    if (!pb->grid || !pb->dyn) return hj_error_set(err, HJ_EINVAL, "reach: the problem needs a grid and dynamics");
+    if (!pb || !pb->grid || !pb->dyn) return hj_error_set(err, HJ_EINVAL, "reach: the problem needs a grid and dynamics");
     int rc = hj_reach_dyn_check(pb->dyn, err);
     if (rc) return rc;
     if (pb->dyn->nx != pb->grid->dim)
@@ -486,6 +489,15 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
     if (!(pb->conv_tol >= 0)) return hj_error_set(err, HJ_EINVAL, "reach: the convergence tolerance must be >= 0");
     if (!(pb->factor_cfl > 0 && pb->factor_cfl <= 1)) /* as hj_ls_ode: the schemes' stable range */
         return hj_error_set(err, HJ_EINVAL, "reach: the CFL factor must be in (0, 1], got %g", pb->factor_cfl);
+    /* Checked here for both paths: the fused one never reads the
+     * dissipation (its bounds do not depend on the gradient), so an
+     * unknown value passed it silently. */
+    if (!hj_ls_scheme_name(pb->scheme)) return hj_error_set(err, HJ_EINVAL, "reach: unknown scheme %d", pb->scheme);
+    if (pb->order < 1 || pb->order > 3)
+        return hj_error_set(err, HJ_EINVAL, "reach: the RK order must be 1, 2 or 3, got %d", pb->order);
+    if (pb->dissipation != HJ_LS_GLF && pb->dissipation != HJ_LS_LLF && pb->dissipation != HJ_LS_LLLF)
+        return hj_error_set(err, HJ_EINVAL, "reach: unknown dissipation %d (HJ_LS_GLF, HJ_LS_LLF or HJ_LS_LLLF)",
+                            pb->dissipation);
     return HJ_OK;
 }
 
@@ -500,6 +512,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
 {
     int rc = hj_reach_problem_check(pb, err);
     if (rc) return rc;
+    if (!phi) return hj_error_set(err, HJ_EINVAL, "reach: NULL value array");
     if (hj_reach_fused_applies(pb)) return hj_reach_solve_fused(pb, phi, ttr, stats, err);
     if (pb->compact)
         return hj_error_set(err, HJ_EINVAL,
@@ -616,6 +629,7 @@ done:
 
 int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
 {
+    if (!g || !phi || !m) return hj_error_set(err, HJ_EINVAL, "measure: NULL grid, array or result");
     int pdim = -1;
     for (int d = 0; d < g->dim; d++)
         if (g->bc[d].type == HJ_LS_BC_PERIODIC) {
@@ -627,6 +641,7 @@ int hj_reach_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error
 
 int hj_reach_measure_compact(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
 {
+    if (!g || !phi || !m) return hj_error_set(err, HJ_EINVAL, "measure: NULL grid, array or result");
     if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
     double *a = hj_ls_alloc(g);
     if (!a) return hj_error_set(err, HJ_ENOMEM, "out of memory for the measure");

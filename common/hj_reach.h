@@ -161,6 +161,19 @@ static inline double hj_reach_set_constrain(const hj_reach_set *target, const hj
     return v;
 }
 
+/* HJ_EINVAL when the time left to the horizon, horizon - tau, is more than
+ * 2^52 steps of dt: tau + dt stops changing before the horizon, and the
+ * run would never end.  Both solver paths check every step. */
+static inline int hj_reach_check_steps_left(double horizon, double tau, double dt, hj_error *err)
+{
+    if ((horizon - tau) / dt > 4503599627370496.0)
+        return hj_error_set(err, HJ_EINVAL,
+                            "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); for the "
+                            "limit value use an infinite horizon with conv_tol",
+                            horizon, dt);
+    return HJ_OK;
+}
+
 enum { HJ_REACH_BRS, HJ_REACH_BRT };
 
 typedef struct {
@@ -216,8 +229,10 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
 /* Solve: phi (an array on the grid, written) receives the value at tau
  * (forward time T - tau); ttr (may be NULL) the time-to-reach; stats may
  * be NULL.  HJ_EINVAL for a problem that cannot be solved (checked before
- * any step: no target, zero horizon, dimensions that do not match, ...),
- * HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite. */
+ * any step: no target, zero horizon, dimensions that do not match, an
+ * unknown scheme, order or dissipation, a NULL phi, ...; from the first
+ * step's bound: a finite horizon more than 2^52 steps away), HJ_ENOMEM,
+ * HJ_ENONFINITE when the value stops being finite. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
 /* The fused path, which hj_reach_solve takes by itself when it applies:

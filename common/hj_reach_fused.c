@@ -759,6 +759,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
 {
     int rc = hj_reach_problem_check(pb, err);
     if (rc) return rc;
+    if (!phi) return hj_error_set(err, HJ_EINVAL, "reach: NULL value array");
     if (!hj_reach_fused_applies(pb))
         return hj_error_set(err, HJ_EINVAL,
                             "reach: the fused path needs an upwind scheme, RK order 1..3, no discount, general and "
@@ -816,8 +817,14 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         /* hj_ls_ode's TVD Runge-Kutta step; the first evaluation sets dt */
         double m;
         if ((rc = eval_pass(&fs, tau, y, f, wsz, &m, err))) break;
+        /* m = 0: no node moves (every alpha_d is 0, so is H); see below */
+        if (!(m >= 0)) {
+            rc = hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at tau = %g", tau);
+            break;
+        }
         double dt = m > 0 ? pb->factor_cfl * (1 / m) : DBL_MAX;
         dt = dt < DBL_MAX ? dt : DBL_MAX;
+        if (!isinf(pb->horizon) && (rc = hj_reach_check_steps_left(tk, tau, dt, err))) break;
         int last = 0;
         if (dt >= tk - tau) dt = tk - tau, last = 1;
         if (!(m > 0)) {

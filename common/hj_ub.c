@@ -309,6 +309,21 @@ static int init_cells(hj_ub_solver *sv, hj_band_kind kind, int *idx, int j0, int
     return rc ? rc : init_cells(sv, kind, idx, mid + 1, j1, err);
 }
 
+int hj_ub_problem_check_values(const hj_ub_problem *pb, hj_error *err)
+{
+    for (int k = 0; k < pb->d && k < HJ_BAND_DMAX; k++)
+        if (!isfinite(pb->lo[k]) || !isfinite(pb->hi[k]))
+            return hj_error_set(err, HJ_EINVAL, "problem: domain [%g, %g] of direction %d is not finite", pb->lo[k],
+                                pb->hi[k], k + 1);
+    if (!isfinite(pb->boundary))
+        return hj_error_set(err, HJ_EINVAL, "problem: the boundary value %g must be finite", pb->boundary);
+    if (!(pb->snap >= 0 && pb->snap < 1))
+        return hj_error_set(err, HJ_EINVAL, "problem: snap %g must be in [0, 1) (0: 1e-12)", pb->snap);
+    if (!(pb->dtmax >= 0))
+        return hj_error_set(err, HJ_EINVAL, "problem: dtmax %g must be >= 0 (0: no cap)", pb->dtmax);
+    return HJ_OK;
+}
+
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
 {
     memset(sv, 0, sizeof *sv);
@@ -316,12 +331,19 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
     if (pb->d < 2 || pb->d > HJ_BAND_DMAX || pb->n < 3 || pb->ncontrols < 1 || !pb->dyn || !pb->avg0 || !(pb->cfl > 0) ||
         pb->cfl > 1)
         return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, data, 0 < cfl <= 1");
+    int rc = hj_ub_problem_check_values(pb, err);
+    if (rc) return rc;
+    /* the box is converted to cell indices (int) below */
+    for (int k = 0; k < pb->d; k++)
+        if (!isfinite(pb->bbox_lo[k]) || !isfinite(pb->bbox_hi[k]))
+            return hj_error_set(err, HJ_EINVAL, "problem: bounding box [%g, %g] of direction %d is not finite",
+                                pb->bbox_lo[k], pb->bbox_hi[k], k + 1);
     const int d = pb->d, n = pb->n;
     for (int k = 0; k < d; k++) {
         if (!(pb->hi[k] > pb->lo[k])) return hj_error_set(err, HJ_EINVAL, "problem: empty domain");
         sv->dx[k] = (pb->hi[k] - pb->lo[k]) / (n - 1);
     }
-    int rc = hj_band_new(&sv->s, kind, d, n, err);
+    rc = hj_band_new(&sv->s, kind, d, n, err);
     if (rc) return rc;
     /* scan the cells of the bounding box, widened by two cells */
     int lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX], idx[HJ_BAND_DMAX];

@@ -97,6 +97,13 @@ typedef struct {
     int32_t *link;
 } hj_ub_solver;
 
+/* HJ_EINVAL naming the first parameter of pb that no run can use: a
+ * domain bound that is not finite, a boundary value that is not finite, a
+ * snap outside [0, 1) or a dtmax that is NaN or negative (each was taken
+ * silently: the NaN snap and dtmax as their defaults, a NaN boundary as
+ * NaN values).  hj_ub_init and hj_ub_dense_init call it. */
+int hj_ub_problem_check_values(const hj_ub_problem *pb, hj_error *err);
+
 /* Set up the store (kind) with D^0 and the averages (7b). */
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err);
 void hj_ub_free(hj_ub_solver *sv);

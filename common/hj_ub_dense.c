@@ -57,6 +57,8 @@ int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_
     if (pb->d < 2 || pb->d > HJ_BAND_DMAX || pb->n < 3 || pb->ncontrols < 1 || (!pb->dyn && !dyn_row) || !(pb->cfl > 0) ||
         pb->cfl > 1)
         return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, 0 < cfl <= 1");
+    const int rc = hj_ub_problem_check_values(pb, err);
+    if (rc) return rc;
     const int d = pb->d, n = pb->n;
     double total = 1;
     for (int k = 0; k < d; k++) {

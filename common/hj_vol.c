@@ -73,8 +73,16 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err)
                 double x = strtod(tok, &end);
                 /* end short of the token: a letter, or a NUL byte in it */
                 if (end != tok + tl) {
-                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number", path, line, tcol,
-                                      hj_error_quote(tok, (size_t)tl, q, sizeof q));
+                    /* Control bytes or bytes above 0x7e: a binary file,
+                     * most likely a raw volume, which has no header to
+                     * tell its dimensions by. */
+                    int binary = 0;
+                    for (int b = 0; b < tl; b++) binary |= (unsigned char)tok[b] < 0x20 || (unsigned char)tok[b] > 0x7e;
+                    rc = hj_error_set(err, HJ_EFORMAT, "%s:%ld:%ld: '%s' is not a number%s", path, line, tcol,
+                                      hj_error_quote(tok, (size_t)tl, q, sizeof q),
+                                      binary ? " (binary data: a raw volume is read with its dimensions given, "
+                                               "hj_vol_read_raw)"
+                                             : "");
                     break;
                 }
                 /* inf and nan (a letter first) are named as non-finite
@@ -269,6 +277,8 @@ int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], cons
     /* Checked before the file is opened: each of these made a file that
      * VTK's ASCII reader refuses or misreads (no points, "nan" in the
      * header or the values, a field name split into two tokens). */
+    if (!path || !n || !x0 || !dx || !title || !name || !values)
+        return hj_error_set(err, HJ_EINVAL, "VTK: NULL path, size, origin, spacing, title, name or values");
     double count = 1;
     for (int d = 0; d < 3; d++) {
         if (n[d] < 1) return hj_error_set(err, HJ_EINVAL, "VTK %s: %ld nodes along dimension %d", path, n[d], d + 1);

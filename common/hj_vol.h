@@ -72,7 +72,8 @@ void hj_vol_free(hj_vol *vol);
  * reader takes none) is written as `fill`; title is the header line
  * (control bytes replaced by spaces).  HJ_EINVAL, before any file is
  * made, for n[d] < 1, a non-finite origin or spacing, a spacing <= 0, a
- * non-finite fill or a name that is not one word of printable ASCII. */
+ * non-finite fill, a name that is not one word of printable ASCII or a
+ * NULL argument. */
 int hj_vol_write_vtk(const char *path, const long n[3], const double x0[3], const double dx[3],
                      const char *title, const char *name, const double *values, double fill, hj_error *err);
 

@@ -126,5 +126,47 @@ static void simulate_reaches(void **state)
     hj_ls_free(a);
 }
 
+/* Sizes and arguments no run can use are refused with a message: a cap
+ * whose byte count wrapped around size_t gave tiny arrays and HJ_OK, an
+ * input count beyond HJ_REACH_MAXIN and an unknown disturbance mode were
+ * taken, NULL arguments crashed. */
+static void bad_trajectories_and_options(void **state)
+{
+    (void)state;
+    hj_ctrl_traj tr;
+    hj_error err;
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, 2, 0, (1L << 61) - 1, &err), HJ_ENOMEM);
+    assert_null(tr.t);
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, HJ_REACH_MAXIN + 1, 0, 10, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, 1, HJ_REACH_MAXIN + 1, 10, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, HJ_LS_MAXDIM + 1, 1, 0, 10, &err), HJ_EINVAL);
+    hj_ls_grid g;
+    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(&g, 1, (double[]){-2}, (double[]){2}, (long[]){41}, &bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    fill(&g, a, absx);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, NULL, NULL);
+    hj_reach_dyn_control_box(&s, one_g, 1, (double[]){-1}, (double[]){1});
+    hj_ctrl_sim_opts o;
+    hj_ctrl_sim_defaults(&o);
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 1, 1, 0, 200, &err), HJ_OK);
+    const double x0 = 1.2;
+    o.disturbance = 17;
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, &x0, &o, &tr, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "disturbance mode 17"));
+    o.disturbance = HJ_CTRL_D_ZERO;
+    assert_int_equal(hj_ctrl_simulate(NULL, &g, a, &x0, &o, &tr, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, NULL, a, &x0, &o, &tr, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, NULL, &x0, &o, &tr, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, NULL, &o, &tr, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, &x0, NULL, &tr, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, &x0, &o, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, &x0, &o, &tr, &err), HJ_OK);
+    hj_ctrl_traj_free(&tr);
+    hj_ls_free(a);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("ctrl", NULL, NULL, cmocka_unit_test(interpolation_exact),
-                        cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches))
+                        cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches),
+                        cmocka_unit_test(bad_trajectories_and_options))

@@ -815,6 +815,38 @@ static void invalid_problems(void **state)
     assert_non_null(strstr(err.msg, "(0, 1]"));
     assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     pb.factor_cfl = 0.5;
+    /* An unknown dissipation on both paths (the fused one never reads it
+     * and returned HJ_OK), an unknown scheme or RK order, a NULL value
+     * array (it crashed), a NULL problem. */
+    for (int general = 0; general < 2; general++) {
+        pb.general = general;
+        pb.dissipation = 77;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "unknown dissipation 77"));
+        pb.dissipation = HJ_LS_LLF, pb.scheme = HJ_LS_NSCHEMES;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        pb.scheme = HJ_LS_ENO2, pb.order = 4;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        pb.order = 2;
+        assert_int_equal(hj_reach_solve(&pb, NULL, NULL, NULL, &err), HJ_EINVAL);
+    }
+    pb.general = 0;
+    assert_int_equal(hj_reach_solve_fused(&pb, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_solve(NULL, phi, NULL, NULL, &err), HJ_EINVAL);
+    double m0;
+    assert_int_equal(hj_reach_measure(&g, NULL, &m0, &err), HJ_EINVAL);
+    assert_int_equal(hj_reach_measure_compact(&g, NULL, &m0, &err), HJ_EINVAL);
+    /* A finite horizon beyond 2^52 steps: tau + dt stops changing before
+     * it is reached, and the run never ended. */
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    pb.horizon = 1e300;
+    for (int general = 0; general < 2; general++) {
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "2^52 steps"));
+    }
+    pb.general = 0;
+    pb.horizon = 1;
     s.nx = 2;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "2-D dynamics on a 1-D grid"));
@@ -857,7 +889,41 @@ static void nan_target_names_node(void **state)
     hj_ls_free(phi);
 }
 
-HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
+/* Dynamics that vanish everywhere (drift 0, control bound 0): the value
+ * stays the target.  Both paths failed with "infinite CFL bound ... and
+ * no MaxStep"; an infinite horizon converges at once. */
+static void zero_dynamics_keep_target(void **state)
+{
+    (void)state;
+    double a = 0, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){0}, (double[]){0});
+    hj_ls_grid g = grid1(21);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r, pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    for (int general = 0; general < 2; general++)
+        for (int inf = 0; inf < 2; inf++) {
+            hj_error err = {0};
+            hj_reach_stats st;
+            pb.general = general;
+            pb.horizon = inf ? INFINITY : 1, pb.conv_tol = inf ? 1e-6 : 0;
+            assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
+            assert_int_equal(st.steps, 1);
+            assert_int_equal(st.converged, inf);
+            for (long i = 0; i < g.N[0]; i++) {
+                const double x = g.min[0] + g.dx[0] * (double)i, v = phi[g.offset + (size_t)i];
+                assert_true(v == fabs(x) - r);
+                assert_true(ttr[g.offset + (size_t)i] == (v <= 0 ? 0 : INFINITY));
+            }
+        }
+    hj_ls_free(phi);
+    hj_ls_free(ttr);
+}
+
+HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(zero_dynamics_keep_target), cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(no_motion), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),

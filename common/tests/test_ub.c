@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "hj_ub.h"
+#include "hj_ub_dense.h"
 
 static void flux_constant_and_step(void **state)
 {
@@ -286,7 +287,36 @@ static void nonfinite_dynamics_and_times(void **state)
     hj_ub_free(&sv);
 }
 
-HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+/* Parameters no run can use are refused by both solvers: a NaN boundary
+ * value made NaN values, a NaN or negative snap and a NaN dtmax were
+ * taken as their defaults, a NaN bounding box was converted to int. */
+static void bad_parameters(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+    for (int k = 0; k < 7; k++) {
+        hj_ub_problem pb = square_problem(&c, 41);
+        switch (k) {
+        case 0: pb.boundary = NAN; break;
+        case 1: pb.snap = NAN; break;
+        case 2: pb.snap = -1e-3; break;
+        case 3: pb.snap = 1; break;
+        case 4: pb.dtmax = NAN; break;
+        case 5: pb.hi[1] = INFINITY; break;
+        default: pb.bbox_lo[0] = NAN; break;
+        }
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_EINVAL);
+        hj_ub_free(&sv);
+        if (k == 6) continue; /* the full grid has no bounding box */
+        hj_ub_dense ws;
+        assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_EINVAL);
+        hj_ub_dense_free(&ws);
+    }
+}
+
+HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
              cmocka_unit_test(nonfinite_dynamics_and_times))

@@ -55,6 +55,10 @@ static void text_volume_errors(void **state)
     assert_has(err.msg, "need at least 2 x 2 values (the file holds none)");
     assert_int_equal(hj_vol_read_text(&v, WRITE("d.txt", "1 2\n3 4.5.6\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "d.txt:2:3: '4.5.6' is not a number");
+    assert_null(strstr(err.msg, "binary"));
+    /* float32 1.0 (00 00 80 3f): a raw volume read as text says so */
+    assert_int_equal(hj_vol_read_text(&v, WRITE("r.f32", "\x01\x02\x80\x3f\x01\x02\x80\x3f"), 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "binary data: a raw volume is read with its dimensions given");
     /* hexadecimal, which strtod takes, is refused with its place */
     assert_int_equal(hj_vol_read_text(&v, WRITE("h.txt", "1 2\n3 0x1p3\n"), 1, &err), HJ_EFORMAT);
     assert_has(err.msg, "h.txt:2:3: '0x1p3' is not a decimal number");
@@ -216,6 +220,11 @@ static void vtk_writer_bad_arguments(void **state)
     assert_has(err.msg, "one word");
     assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T\n", val, -1, &err), HJ_EINVAL);
     assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "", val, -1, &err), HJ_EINVAL);
+    /* NULL arguments: an error, not a crash */
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", "T", NULL, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(NULL, n, x0, dx, "T", "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, NULL, "T", val, -1, &err), HJ_EINVAL);
+    assert_int_equal(hj_vol_write_vtk(path, n, x0, dx, "T", NULL, val, -1, &err), HJ_EINVAL);
     FILE *f = fopen(path, "r");
     assert_null(f);
     if (f) fclose(f);
