@@ -1,6 +1,7 @@
 /* hj_ls_grid.c -- grids, ghosted arrays and boundary conditions. */
 #include "hj_ls_grid.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -31,11 +32,11 @@ int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *m
         g->min[d] = min[d];
         g->max[d] = max[d];
         g->dx[d] = (max[d] - min[d]) / (double)(N[d] - 1);
-        /* max - min overflows beyond +-DBL_MAX / 2 and dx underflows to 0
-         * on a subnormal box: the stencils divide by dx */
-        if (!isfinite(g->dx[d]) || !(g->dx[d] > 0))
+        /* max - min overflows beyond +-DBL_MAX / 2 and dx is 0 or subnormal
+         * on a tiny box: the stencils divide by dx (1 / 1e-321 is inf) */
+        if (!isfinite(g->dx[d]) || !(g->dx[d] >= DBL_MIN))
             return hj_error_set(err, HJ_EINVAL, "grid spacing (max - min) / (N - 1) = %g in dimension %d: must be "
-                                "finite and > 0", g->dx[d], d);
+                                "finite and at least %g", g->dx[d], d, DBL_MIN);
         g->bc[d] = bc[d];
         g->ext[d] = N[d] + 2 * HJ_LS_GHOST;
         /* Overflow-safe product: "grid too large" before any allocation. */

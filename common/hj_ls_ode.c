@@ -271,6 +271,14 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                 st.evals++;
                 if ((rc = check_bound(b, t, err))) goto done;
                 dt = step_of(b, tk - t, &o, &last);
+                /* more than 2^52 steps to the output time never end (t + dt
+                 * rounds to t long before); the guessed steps repeat this dt */
+                if (!last && (tk - t) / dt > 0x1p52) {
+                    rc = hj_error_set(err, HJ_EINVAL,
+                                      "the span from t = %g to %g needs more than 2^52 steps of %g (CFL bound %g)", t,
+                                      tk, dt, b);
+                    goto done;
+                }
                 if (b == INFINITY && !(o.max_step < DBL_MAX)) {
                     /* u is free here (order 1: spare, or allocated now) */
                     if (!u && !(u = hj_ls_alloc(g))) {

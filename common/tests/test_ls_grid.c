@@ -3,6 +3,7 @@
  * toolbox's ghostCell script, with the values checked instead of looked at). */
 #include "hj_test.h"
 
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -287,6 +288,14 @@ static void errors(void **state)
     assert_non_null(strstr(err.msg, "grid spacing"));
     assert_int_equal(hj_ls_grid_init(&g, 1, mn, &tiny, &n5, bc, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "grid spacing"));
+    /* a subnormal spacing (1e-321 > 0) whose reciprocal is inf */
+    const double sub = 1e-320;
+    long n11 = 11;
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, &sub, &n11, bc, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "grid spacing"));
+    /* the smallest normal spacing is a grid */
+    const double lo0 = 0, normal = 4 * DBL_MIN;
+    assert_int_equal(hj_ls_grid_init(&g, 1, &lo0, &normal, &n5, bc, &err), HJ_OK);
 }
 
 /* Norms of a known field: |x| on [-1, 1]. */

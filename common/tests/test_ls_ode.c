@@ -196,6 +196,26 @@ static void no_motion(void **state)
     hj_ls_free(y), hj_ls_free(y0);
 }
 
+/* A span of more than 2^52 steps of the CFL bound is refused at its first
+ * step (it ran for ever: t + dt rounds to t long before the end). */
+static void endless_span(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(4);
+    const_term c = {{const_eval}, &g, 1, 0};
+    double *y = hj_ls_alloc(&g), span[2] = {0, 1e300};
+    hj_error err;
+    hj_ls_ode_stats st;
+    for (int order = 1; order <= 3; order++) {
+        assert_int_equal(hj_ls_ode(order, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st, &err), HJ_EINVAL);
+        assert_has(err.msg, "needs more than 2^52 steps");
+    }
+    /* a short span of the same term runs */
+    span[1] = 4;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, &st, &err), HJ_OK);
+    hj_ls_free(y);
+}
+
 static void error_reports(void **state)
 {
     (void)state;
@@ -456,6 +476,6 @@ static void convection_fused_bitwise(void **state)
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
-                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(error_reports),
+                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
                         cmocka_unit_test(convection_fused_bitwise))
