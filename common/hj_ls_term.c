@@ -1165,6 +1165,13 @@ static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_c
         hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
 }
 
+/* Whether the row's H and alphas come from ham_partial_row: set, and one
+ * box for every dimension (not LLF). */
+static int lf_both(const hj_ls_lax_friedrichs *c)
+{
+    return c->ham_partial_row && c->dissipation != HJ_LS_LLF;
+}
+
 /* The end of a Lax-Friedrichs row once the gradient's mean is in pp and
  * the ranges the partials read in lo, hi (LL, LH: the local ranges, for
  * LLF): H, the partials into A, and lf_finish_dim's G or fused stage
@@ -1182,20 +1189,27 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     const int dim = g->dim;
     const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
     const double *phi = y + rc->k;
-    if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
-    else lf_ham_nodes(c, t, &row, phi, pp, H);
     /* row_const: alpha_d read at node 0 only, its row filled where the
      * finish has no loop for the mask */
     const int cm = (int)(c->row_const & ((1u << dim) - 1));
     const int cmloop = LF_ROW_CONST(diffs, dim, cm), cmfill = cmloop ? 0 : cm;
+    const int both = lf_both(c);
+    if (both) {
+        double *Ad[HJ_LS_MAXDIM];
+        for (int d = 0; d < dim; d++) Ad[d] = A + (size_t)d * (size_t)n;
+        c->ham_partial_row(t, &row, phi, pp, lo, hi, H, Ad, c->ctx);
+    } else if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
+    else lf_ham_nodes(c, t, &row, phi, pp, H);
     for (int d = 0; d < dim; d++) {
         double *Ad = A + (size_t)d * (size_t)n;
-        const double *sl = lo[d], *sh = hi[d];
-        if (c->dissipation == HJ_LS_LLF) /* local range in d only */
-            lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
-        if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
-        else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
-        lo[d] = sl, hi[d] = sh;
+        if (!both) {
+            const double *sl = lo[d], *sh = hi[d];
+            if (c->dissipation == HJ_LS_LLF) /* local range in d only */
+                lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
+            if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
+            else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
+            lo[d] = sl, hi[d] = sh;
+        }
         if (cmfill >> d & 1)
             for (long j = 1; j < n; j++) Ad[j] = Ad[0];
         if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
@@ -1390,8 +1404,11 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
     const hj_ls_lax_friedrichs *c = (const hj_ls_lax_friedrichs *)term;
     const hj_ls_grid *g = c->grid;
     if (!hj_ls_scheme_name(c->scheme)) return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown scheme");
-    if ((!c->ham && !c->ham_row) || (!c->partial && !c->partial_row))
-        return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs needs ham and partial callbacks (per node or per row)");
+    if (!lf_both(c) && ((!c->ham && !c->ham_row) || (!c->partial && !c->partial_row)))
+        return hj_error_set(err, HJ_EINVAL,
+                            c->ham_partial_row ? "Lax-Friedrichs LLF needs ham and partial callbacks (per node or per "
+                                                 "row): ham_partial_row has one box for every dimension"
+                                               : "Lax-Friedrichs needs ham and partial callbacks (per node or per row)");
     if (c->dissipation < HJ_LS_GLF || c->dissipation > HJ_LS_LLLF)
         return hj_error_set(err, HJ_EINVAL, "Lax-Friedrichs: unknown dissipation %d", c->dissipation);
     const int ranged = c->dissipation != HJ_LS_LLLF && !c->range_free;

@@ -209,6 +209,15 @@ typedef void (*hj_ls_ham_row_fn)(double t, const hj_ls_row_info *row, const doub
                                  double *H, void *ctx);
 typedef void (*hj_ls_partial_row_fn)(double t, const hj_ls_row_info *row, const double *const *pmin,
                                      const double *const *pmax, int d, double *alpha, void *ctx);
+/* Both in one call (one loop over the row in the user's code instead of
+ * one for H and one per dimension for alpha): H[j] as ham_row's and
+ * alpha[d][j] as partial_row's for every d < dim, the boxes pmin, pmax
+ * those of every dimension's partial.  Used under GLF and LLLF, whose box
+ * is the same for every d; LLF (a box per d) calls ham_row and
+ * partial_row (or ham and partial), which it then needs. */
+typedef void (*hj_ls_ham_partial_row_fn)(double t, const hj_ls_row_info *row, const double *phi,
+                                         const double *const *p, const double *const *pmin,
+                                         const double *const *pmax, double *H, double *const *alpha, void *ctx);
 typedef struct {
     hj_ls_term base;
     const hj_ls_grid *grid;
@@ -218,6 +227,7 @@ typedef struct {
     hj_ls_partial_fn partial;
     hj_ls_ham_row_fn ham_row;         /* if set, used instead of ham */
     hj_ls_partial_row_fn partial_row; /* if set, used instead of partial */
+    hj_ls_ham_partial_row_fn ham_partial_row; /* if set, used instead of both under GLF and LLLF */
     double *work; /* optional, hj_ls_lax_friedrichs_work_size doubles (below) */
     void *ctx;
     int cfl_rule; /* HJ_LS_CFL_NODE (default) or HJ_LS_CFL_TOOLBOX */
@@ -245,8 +255,9 @@ size_t hj_ls_lax_friedrichs_work_size(const hj_ls_grid *g);
  * Bit d of row_const declares that alpha_d is the same at every node of a
  * row of x_0 (it may depend on t and the row's other coordinates: air3D's
  * alpha_1 and alpha_3): only alpha[0] of that dimension is read, so
- * partial_row may write alpha[0] alone (the same bits as writing the whole
- * row; the per-node partial is still called at every node).  Default 0. */
+ * partial_row (or ham_partial_row, alpha[d][0]) may write alpha[0] alone
+ * (the same bits as writing the whole row; the per-node partial is still
+ * called at every node).  Default 0. */
 
 /* ---- an explicit Runge-Kutta stage fused into a term's pass over the
  * grid (what hj_ls_ode runs where it can, stages after the first): instead

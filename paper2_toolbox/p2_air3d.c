@@ -124,6 +124,45 @@ static void partial_row(double t, const hj_ls_row_info *row, const double *const
     alpha[0] = d == 0 ? fabs(-q->va + q->vb * c->cs[row->idx[2]]) + q->A * fabs(c->ys[row->idx[1]]) : q->A + q->B;
 }
 
+/* ham_loop and partial1_loop in one loop: each node's H and alpha_2 (the
+ * same expressions, the same bits), alpha_1 and alpha_3 at node 0. */
+static inline __attribute__((always_inline)) void ham_partial_loop(long n, double cs, double sn, double y,
+                                                                  double va, double vb, double A, double B,
+                                                                  double s, const double *restrict xs,
+                                                                  const double *restrict axs,
+                                                                  const double *restrict p0,
+                                                                  const double *restrict p1,
+                                                                  const double *restrict p2, double *restrict Hr,
+                                                                  double *restrict al)
+{
+#define HAM_PARTIAL(j0, j1)                                                                                        \
+    for (long j = (j0); j < (j1); j++) {                                                                           \
+        const double x = xs[j];                                                                                    \
+        const double h = -va * p0[j] + vb * (cs * p0[j] + sn * p1[j]) + A * fabs(y * p0[j] - x * p1[j] - p2[j]) - \
+                         B * fabs(p2[j]);                                                                          \
+        Hr[j] = -h;                                                                                                \
+        al[j] = s + axs[j];                                                                                        \
+    }
+    HJ_LS_ROW_BLOCKS8(n, HAM_PARTIAL);
+#undef HAM_PARTIAL
+}
+
+CLONES
+static void ham_partial_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p,
+                            const double *const *pmin, const double *const *pmax, double *H, double *const *alpha,
+                            void *ctx)
+{
+    (void)t, (void)phi, (void)pmin, (void)pmax;
+    const cb_ctx *c = ctx;
+    const p2_air3d_par *q = c->q;
+    const double cs = c->cs[row->idx[2]], sn = c->sn[row->idx[2]], y = c->ys[row->idx[1]];
+    ham_partial_loop(row->n, cs, sn, y, q->va, q->vb, q->A, q->B, fabs(q->vb * sn), c->xs, c->axs, p[0], p[1], p[2],
+                     H, alpha[1]);
+    /* constant along the row (row_const): node 0's alone is read */
+    alpha[0][0] = fabs(-q->va + q->vb * cs) + q->A * fabs(y);
+    alpha[2][0] = q->A + q->B;
+}
+
 int p2_air3d_solve(const hj_ls_grid *g, const p2_air3d_par *p, int acc, int diss, const double *ts, int nt,
                    double *phi, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
@@ -158,6 +197,7 @@ int p2_air3d_solve_block(const hj_ls_grid *global, const hj_ls_grid *g, const p2
     hj_ls_lax_friedrichs_init(&lf, g, hj_ls_accuracy_scheme(acc), diss, NULL, NULL, &c);
     lf.ham_row = ham_row;
     lf.partial_row = partial_row;
+    lf.ham_partial_row = ham_partial_row; /* GLF, LLLF: one loop for H and alpha_2 */
     lf.cfl_rule = p->cfl_rule;
     lf.weno_eps = p->weno_eps;
     lf.range_free = 1; /* partial_row reads the tables, never the gradient box */

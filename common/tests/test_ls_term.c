@@ -569,6 +569,69 @@ static void lax_friedrichs_matches_definition(void **state)
     }
 }
 
+/* ham_partial_row: H and every alpha_d of a row in one call give the bits
+ * of ham_row and partial_row (GLF and LLLF, first order, ENO2 and WENO5,
+ * a plain evaluation and a fused RK stage, 1 and 2 threads); LLF, whose
+ * box differs per dimension, calls ham_row and partial_row instead, and
+ * fails without them. */
+static void ham_mix_partial_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p,
+                                const double *const *pmin, const double *const *pmax, double *H,
+                                double *const *alpha, void *ctx)
+{
+    ham_mix_row(t, row, phi, p, H, ctx);
+    for (int d = 0; d < 3; d++) partial_mix_row(t, row, pmin, pmax, d, alpha[d], ctx);
+}
+static void ham_partial_wrong_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p,
+                                  const double *const *pmin, const double *const *pmax, double *H,
+                                  double *const *alpha, void *ctx)
+{
+    (void)t, (void)phi, (void)p, (void)pmin, (void)pmax, (void)ctx;
+    for (long j = 0; j < row->n; j++) H[j] = 1, alpha[0][j] = alpha[1][j] = alpha[2][j] = 2;
+}
+
+static void lax_friedrichs_ham_partial_row(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, bump3, NULL);
+    const int schemes[3] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_WENO5A};
+    const int threads = hj_test_max_threads();
+    for (int si = 0; si < 3; si++)
+        for (int diss = HJ_LS_GLF; diss <= HJ_LS_LLLF; diss++)
+            for (int fused = 0; fused < 2; fused++)
+                for (int th = 1; th <= threads; th++) {
+                    hj_test_threads(th);
+                    double b[2];
+                    for (int form = 0; form < 2; form++) {
+                        hj_ls_lax_friedrichs lf;
+                        hj_ls_lax_friedrichs_init(&lf, &g, schemes[si], diss, NULL, NULL, NULL);
+                        lf.ham_row = ham_mix_row, lf.partial_row = partial_mix_row;
+                        if (form) lf.ham_partial_row = diss == HJ_LS_LLF ? ham_partial_wrong_row : ham_mix_partial_row;
+                        double *f = form ? f1 : f0;
+                        if (fused) {
+                            hj_ls_stage st = {0.25, 0.75, 0.01, y, f, 0, 0};
+                            int done = 0;
+                            assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &b[form], &done, NULL), HJ_OK);
+                            assert_int_equal(done, 1);
+                        } else
+                            assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f, &b[form], NULL), HJ_OK);
+                    }
+                    assert_memory_equal(&b[0], &b[1], sizeof b[0]);
+                    assert_interior_equal(&g, f0, f1);
+                }
+    hj_test_one_thread();
+    hj_error err;
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_UPWIND_FIRST, HJ_LS_LLF, NULL, NULL, NULL);
+    lf.ham_partial_row = ham_mix_partial_row;
+    double b;
+    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b, &err), HJ_EINVAL);
+    lf.dissipation = HJ_LS_GLF;
+    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b, &err), HJ_OK);
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+}
+
 /* A NaN from a batched callback names its node as a per-node one does. */
 static void partial_nan_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
                             int d, double *alpha, void *ctx)
@@ -1138,7 +1201,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
-                        cmocka_unit_test(callback_errors_rows),
+                        cmocka_unit_test(callback_errors_rows), cmocka_unit_test(lax_friedrichs_ham_partial_row),
                         cmocka_unit_test(lax_friedrichs_range_free),
                         cmocka_unit_test(lax_friedrichs_row_const),
                         cmocka_unit_test(scalar_rows_equal_nodes),
