@@ -272,8 +272,10 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                 if ((rc = check_bound(b, t, err))) goto done;
                 dt = step_of(b, tk - t, &o, &last);
                 /* more than 2^52 steps to the output time never end (t + dt
-                 * rounds to t long before); the guessed steps repeat this dt */
-                if (!last && (tk - t) / dt > 0x1p52) {
+                 * rounds to t long before); the guessed steps repeat this dt.
+                 * A PostTimestep may end the run itself (a non-zero return:
+                 * hj_reach stops on convergence within a span of DBL_MAX / 4) */
+                if (!o.post && !last && (tk - t) / dt > 0x1p52) {
                     rc = hj_error_set(err, HJ_EINVAL,
                                       "the span from t = %g to %g needs more than 2^52 steps of %g (CFL bound %g)", t,
                                       tk, dt, b);

@@ -41,7 +41,8 @@
  * which then holds the state (y receives it at every output time and on
  * return); not with a PostTimestep, which sees y itself.
  *
- * Errors (returned, never printed): a NaN bound, a zero bound, motion at
+ * Errors (returned, never printed): a span of more than 2^52 steps without
+ * a PostTimestep (which may end the run), a NaN bound, a zero bound, motion at
  * the end of a step taken without it (above), the term's own errors, and
  * a blow-up: NaN or Inf in the state after a step, or finite growth
  * beyond blowup_factor
