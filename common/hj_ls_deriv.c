@@ -390,25 +390,30 @@ int hj_ls_weno5_row_next_eps(int scheme, const double *p, ptrdiff_t s, long n, d
     return 1;
 }
 
-/* WENO5 along the row from its differences w[m] = D1_{m-5/2}, m < n + 5:
- * window j (w[j..j+4]) gives the left derivative of node j and the right
- * one of node j - 1, into L[j] and R[j] (t holds 2 (n + 1) doubles); then
- * node i's pair is L[i], R[i + 1].  Half the weights of node by node. */
+/* WENO5 along the row from its differences w_m = D1_{m-5/2}, m < n + 5,
+ * formed in registers from the values p (the expression of
+ * first_differences; a row of differences stored and read back at five
+ * offsets stalls on loads that straddle stores still in flight): window j
+ * (w_j..w_j+4) gives the left derivative of node j and the right one of
+ * node j - 1, into L[j] and R[j] (t holds 2 (n + 1) doubles); then node
+ * i's pair is L[i], R[i + 1].  Half the weights of node by node. */
 static inline __attribute__((always_inline)) void weno5_windows(int mode, int local, int scheme,
-                                                               const double *restrict w, long n, double eps,
-                                                               double *restrict t, double *restrict dl,
-                                                               double *restrict dr)
+                                                               const double *restrict p, double inv, long n,
+                                                               double eps, double *restrict t,
+                                                               double *restrict dl, double *restrict dr)
 {
     double *restrict L = t, *restrict R = t + n + 1;
     const double e_ = local ? -1.0 : eps; /* local: weno5_next's */
+#define W(m) ((p[(m) - 2] - p[(m) - 3]) * inv)
 #define WINDOWS(PAIR)                                                                                 \
     BLOCKS8(n + 1, {                                                                                  \
-        const double w0 = w[i], w1 = w[i + 1], w2 = w[i + 2], w3 = w[i + 3], w4 = w[i + 4];          \
+        const double w0 = W(i), w1 = W(i + 1), w2 = W(i + 2), w3 = W(i + 3), w4 = W(i + 4);          \
         PAIR(w0, w1, w2, w3, w4, max2(max4sq(w1, w2, w3, w4), w0 * w0), e_, L + i, R + i);            \
     });
     if (scheme == HJ_LS_WENO5A) WINDOWS(weno5a_pair)
     else WINDOWS(weno5b_pair)
 #undef WINDOWS
+#undef W
     ROWS({ STORE2(i, L[i], R[i + 1]); });
 }
 
@@ -450,12 +455,12 @@ static inline __attribute__((always_inline)) void upwind_row(int mode, int schem
         /* Along the row the six rows of differences are one row read at
          * six offsets: D1_{i+k+1/2} is w[i + k + 3] (the same expression,
          * computed once instead of six times). */
-        for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
         if (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B) {
-            if (eps < 0) weno5_windows(mode, 1, scheme, w, n, eps, w + n + 5, dl, dr);
-            else weno5_windows(mode, 0, scheme, w, n, eps, w + n + 5, dl, dr);
+            if (eps < 0) weno5_windows(mode, 1, scheme, p, inv, n, eps, w, dl, dr);
+            else weno5_windows(mode, 0, scheme, p, inv, n, eps, w, dl, dr);
             return;
         }
+        for (long m = 0; m < n + 5; m++) w[m] = (p[m - 2] - p[m - 3]) * inv;
         for (int k = 0; k < 6; k++) D[k] = w + k;
         upwind_diffs(mode, 0, scheme, D, p, s, inv, n, eps, dl, dr);
     } else /* across rows: the differences in registers, not through w */
