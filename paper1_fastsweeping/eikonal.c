@@ -159,6 +159,11 @@ static void read_map(hj_vol *v, const char *path, const long *raw, int raw_bytes
 {
     hj_error err;
     const int rc = raw ? hj_vol_read_raw(v, path, raw, raw_bytes, &err) : hj_vol_read(v, path, pgm[0], pgm[1], &err);
+    /* the library names its raw reader; a user of the tool needs the option */
+    const char *bin = rc && !raw ? strstr(err.msg, " (binary data:") : NULL;
+    if (bin)
+        hj_cli_fail(prog, HJ_EXIT_RUN, "%.*s (binary data: a raw volume is read with --raw NX,NY[,NZ])",
+                    (int)(bin - err.msg), err.msg);
     if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
 }
 

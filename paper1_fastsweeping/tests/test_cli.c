@@ -181,6 +181,9 @@ static void eikonal_bad_files(void **state)
     expect_failure(cmd, 1, "ragged.txt:2:3: '0x1p3' is not a decimal number");
     write_text(path, sizeof path, "ragged.txt", "0 0 0\n0 0 0\n");
     expect_failure(cmd, 1, "every value is 0");
+    /* a raw float32 volume given without --raw: the tool names the option */
+    write_text(path, sizeof path, "ragged.txt", "\x01\x02\x80\x3f\x01\x02\x80\x3f");
+    expect_failure(cmd, 1, "binary data: a raw volume is read with --raw NX,NY[,NZ]");
     /* PGM told by content, whatever the name; P2 numbers strict */
     write_text(path, sizeof path, "bad.txt", "P2\n3 3\n255\n1 2 3\n4 5\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --slowness %s --source 0,0", path);
