@@ -150,7 +150,7 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
     return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
 }
 
-/* An infinite bound is no error: no motion (still_at_end). */
+/* An infinite bound is checked with the term's values (moves_at). */
 static int check_bound(double b, double t, hj_error *err)
 {
     if (isnan(b) || b == -INFINITY) return hj_error_set(err, HJ_ENONFINITE, "non-finite CFL bound at t = %g", t);
@@ -158,18 +158,38 @@ static int check_bound(double b, double t, hj_error *err)
     return HJ_OK;
 }
 
-/* A step of an infinite bound (no motion at t) and no MaxStep runs to the
- * next output time; it holds only if nothing moves at its end either.  The
- * term is evaluated at t + dt into scratch: a finite bound there (a
- * velocity that starts from zero) would have been stepped over. */
-static int still_at_end(const hj_ls_term *term, double t, double dt, double *y, double *scratch,
+/* Whether ydot is non-zero at some interior node (of any block): an
+ * infinite bound says only that no stencil limits the step (a forcing
+ * term, G = -F, has one and moves), not that nothing moves. */
+static int moves_at(const hj_ls_grid *g, const double *ydot)
+{
+    double any = 0;
+    for (size_t r = 0; r < g->rows && !(any > 0); r++) {
+        long idx[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        for (long j = 0; j < g->N[0]; j++)
+            if (ydot[k + (size_t)j] != 0) {
+                any = 1;
+                break;
+            }
+    }
+    hj_ls_grid_reduce(g, &any, 1, HJ_LS_REDUCE_MAX);
+    return any > 0;
+}
+
+/* A step of an infinite bound without MaxStep: only where nothing moves
+ * (ydot zero at every node), run to the next output time; it holds only if
+ * nothing moves at its end either.  The term is evaluated at t + dt into
+ * scratch: motion there (a velocity that starts from zero) would have been
+ * stepped over. */
+static int still_at_end(const hj_ls_grid *g, const hj_ls_term *term, double t, double dt, double *y, double *scratch,
                         hj_ls_ode_stats *st, hj_error *err)
 {
     double b;
     int rc = term->eval(term, t + dt, y, scratch, &b, err);
     st->evals++;
     if (rc) return rc;
-    if (!(b == INFINITY))
+    if (!(b == INFINITY) || moves_at(g, scratch))
         return hj_error_set(err, HJ_EINVAL,
                             "no motion at t = %g (infinite CFL bound) but motion at t = %g, the end of the step to "
                             "the next output time: give a MaxStep",
@@ -177,8 +197,6 @@ static int still_at_end(const hj_ls_term *term, double t, double dt, double *y, 
     return HJ_OK;
 }
 
-/* The step for bound b: FactorCFL b, at most MaxStep and the time left
- * (*last = 1 when the time left is taken). */
 static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
 {
     double dt = o->factor_cfl * b;
@@ -271,23 +289,36 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                 st.evals++;
                 if ((rc = check_bound(b, t, err))) goto done;
                 dt = step_of(b, tk - t, &o, &last);
+                /* a step that leaves t as it is never ends the run */
+                if (!last && t + dt == t) {
+                    rc = hj_error_set(err, HJ_EINVAL, "the step %g (CFL bound %g) does not advance t = %g", dt, b, t);
+                    goto done;
+                }
                 /* more than 2^52 steps to the output time never end (t + dt
                  * rounds to t long before); the guessed steps repeat this dt.
-                 * A PostTimestep may end the run itself (a non-zero return:
-                 * hj_reach stops on convergence within a span of DBL_MAX / 4) */
-                if (!o.post && !last && (tk - t) / dt > 0x1p52) {
+                 * A PostTimestep or a SingleStep caller may end the run
+                 * itself (hj_reach stops on convergence within a span of
+                 * DBL_MAX / 4, hj_ls_signed_distance steps to a t_max) */
+                if (!o.post && !o.single_step && !last && (tk - t) / dt > 0x1p52) {
                     rc = hj_error_set(err, HJ_EINVAL,
                                       "the span from t = %g to %g needs more than 2^52 steps of %g (CFL bound %g)", t,
                                       tk, dt, b);
                     goto done;
                 }
                 if (b == INFINITY && !(o.max_step < DBL_MAX)) {
+                    if (moves_at(g, f)) {
+                        rc = hj_error_set(err, HJ_ENONFINITE,
+                                          "infinite CFL bound at t = %g and no MaxStep, but the term moves (a "
+                                          "forcing term, say): give a MaxStep",
+                                          t);
+                        goto done;
+                    }
                     /* u is free here (order 1: spare, or allocated now) */
                     if (!u && !(u = hj_ls_alloc(g))) {
                         rc = hj_error_set(err, HJ_ENOMEM, "out of memory for the integrator's stage arrays");
                         goto done;
                     }
-                    if ((rc = still_at_end(term, t, dt, ys, u, &st, err))) goto done;
+                    if ((rc = still_at_end(g, term, t, dt, ys, u, &st, err))) goto done;
                 }
             }
             same = memcmp(&b, &bprev, sizeof b) ? 0 : same + 1;

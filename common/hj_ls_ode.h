@@ -12,13 +12,15 @@
  * step (as in the toolbox, later stages are not re-limited; a stage whose
  * bound is below dt / FactorCFL is counted in the statistics).
  *
- * No motion: a term whose bound is infinite (a velocity, speed or
- * Hamiltonian that is zero everywhere) is stepped to the next output time
- * in one step (or by MaxStep when one is given).  Without MaxStep the term
- * is evaluated once more at the end of that step: if it moves there (a
- * velocity starting from zero), the step would have skipped the motion,
- * and HJ_EINVAL asks for a MaxStep.  Motion that starts and stops within
- * one such step is not seen: give a MaxStep for such a term.
+ * No motion: a term whose bound is infinite and whose values are zero at
+ * every node (a velocity, speed or Hamiltonian that is zero everywhere) is
+ * stepped to the next output time in one step (or by MaxStep when one is
+ * given).  Without MaxStep the term is evaluated once more at the end of
+ * that step: if it moves there (a velocity starting from zero), the step
+ * would have skipped the motion, and HJ_EINVAL asks for a MaxStep.  Motion
+ * that starts and stops within one such step is not seen: give a MaxStep
+ * for such a term.  An infinite bound with non-zero values (a forcing
+ * term, whose step no stencil limits) needs a MaxStep (HJ_ENONFINITE).
  *
  * FactorCFL must lie in (0, 1] (HJ_EINVAL otherwise): a term's bound is
  * the largest step for which one forward Euler step is stable (CFL number
@@ -41,8 +43,9 @@
  * which then holds the state (y receives it at every output time and on
  * return); not with a PostTimestep, which sees y itself.
  *
- * Errors (returned, never printed): a span of more than 2^52 steps without
- * a PostTimestep (which may end the run), a NaN bound, a zero bound, motion at
+ * Errors (returned, never printed): a step that does not advance t, a span
+ * of more than 2^52 steps without a PostTimestep or SingleStep (which may
+ * end the run), a NaN bound, a zero bound, motion at
  * the end of a step taken without it (above), the term's own errors, and
  * a blow-up: NaN or Inf in the state after a step, or finite growth
  * beyond blowup_factor

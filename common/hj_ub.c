@@ -349,10 +349,13 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
     int lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX], idx[HJ_BAND_DMAX];
     long cells = 1;
     for (int k = 0; k < d; k++) {
-        lo[k] = (int)floor((pb->bbox_lo[k] - pb->lo[k]) / sv->dx[k]) - 2;
-        hi[k] = (int)ceil((pb->bbox_hi[k] - pb->lo[k]) / sv->dx[k]) + 2;
-        lo[k] = lo[k] < 0 ? 0 : lo[k];
-        hi[k] = hi[k] > n - 1 ? n - 1 : hi[k];
+        /* clamped to [-1, n] as doubles first: a box far beyond the domain
+         * would overflow the conversion to int */
+        double qlo = floor((pb->bbox_lo[k] - pb->lo[k]) / sv->dx[k]) - 2,
+               qhi = ceil((pb->bbox_hi[k] - pb->lo[k]) / sv->dx[k]) + 2;
+        qlo = qlo < 0 ? 0 : qlo > n ? n : qlo;
+        qhi = qhi > n - 1 ? n - 1 : qhi < -1 ? -1 : qhi;
+        lo[k] = (int)qlo, hi[k] = (int)qhi;
         if (hi[k] < lo[k]) return HJ_OK; /* Omega_0 outside the domain */
         cells *= hi[k] - lo[k] + 1;
     }

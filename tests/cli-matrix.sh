@@ -44,6 +44,7 @@ conflicts=(
     'eikonal|--speed-const 1 --source 0,0 --format vtk --out -'
     'hjreach|--horizon 1e12'
     'hjreach|--min -2,-2,0 --max 2,2,1e-300'
+    'hjreach|--system double_integrator --N 11,11 --discount 1e4 --horizon 1 --max-steps 100'
 )
 
 shopt -s nullglob dotglob

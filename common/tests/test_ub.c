@@ -316,7 +316,25 @@ static void bad_parameters(void **state)
     }
 }
 
-HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+/* A bounding box far beyond the domain (finite) is clamped to the grid
+ * before the conversion to int, which overflowed (undefined behaviour:
+ * caught by the sanitizer build): the box over the whole domain and a box
+ * wholly outside it both start. */
+static void huge_bounding_box(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+    for (int k = 0; k < 2; k++) {
+        hj_ub_problem pb = square_problem(&c, 41);
+        for (int d = 0; d < 2; d++) pb.bbox_lo[d] = k ? 1e10 : -1e10, pb.bbox_hi[d] = k ? 2e10 : 1e10;
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+        hj_ub_free(&sv);
+    }
+}
+
+HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
              cmocka_unit_test(nonfinite_dynamics_and_times))

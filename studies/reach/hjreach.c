@@ -135,9 +135,11 @@ static void parse_list(const char *s, const char *what, double *out, int n)
 /* The CFL step the solver will take, estimated before the run: factor_cfl
  * / max over the nodes of sum_d alpha_d / dx_d, with alpha_d the partial
  * bounds of the dynamics (they do not depend on the gradient, and these
- * systems not on time).  *dim_most: the dimension with the largest term at
- * that node, the one that limits the step.  INFINITY when nothing moves. */
-static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor_cfl, int *dim_most)
+ * systems not on time), plus the discount's rate lambda (the kernel's sum
+ * of terms adds the inverse bounds).  *dim_most: the dimension with the
+ * largest term at that node, the one that limits the step, or -1 when the
+ * discount's rate exceeds the dynamics'.  INFINITY when nothing moves. */
+static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor_cfl, double discount, int *dim_most)
 {
     long idx[HJ_LS_MAXDIM] = {0};
     double worst = 0;
@@ -154,7 +156,8 @@ static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor
         if (sum > worst) worst = sum, *dim_most = dtop;
         for (int d = 0; d < g->dim && ++idx[d] == g->N[d]; d++) idx[d] = 0;
     }
-    return worst > 0 ? factor_cfl / worst : INFINITY;
+    if (discount > worst) *dim_most = -1;
+    return worst + discount > 0 ? factor_cfl / (worst + discount) : INFINITY;
 }
 
 static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi, const double *ttr)
@@ -308,7 +311,12 @@ int main(int argc, char **argv)
     /* The run's length before it starts: a horizon far beyond the CFL step
      * (a long horizon, or a tiny period or spacing) would run for ever. */
     int dlim;
-    const double dt = cfl_step(&g, &s, pb.factor_cfl, &dlim);
+    const double dt = cfl_step(&g, &s, pb.factor_cfl, discount, &dlim);
+    if (horizon > 0 && isfinite(dt) && horizon / dt > (double)max_steps && dlim < 0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE,
+                    "--horizon %g needs about %.3g time steps (CFL step %.3g, limited by --discount %g), more than "
+                    "--max-steps %ld: shorten the horizon, lower the discount or raise --max-steps",
+                    horizon, ceil(horizon / dt), dt, discount, max_steps);
     if (horizon > 0 && isfinite(dt) && horizon / dt > (double)max_steps)
         hj_cli_fail(prog, HJ_EXIT_USAGE,
                     "--horizon %g needs about %.3g time steps (CFL step %.3g, limited by dimension %d of spacing %.3g), "
