@@ -608,6 +608,9 @@ static void lax_friedrichs_ham_partial_row(void **state)
                         hj_ls_lax_friedrichs_init(&lf, &g, schemes[si], diss, NULL, NULL, NULL);
                         lf.ham_row = ham_mix_row, lf.partial_row = partial_mix_row;
                         if (form) lf.ham_partial_row = diss == HJ_LS_LLF ? ham_partial_wrong_row : ham_mix_partial_row;
+                        /* GLF and LLLF: the combined callback alone, so that a
+                         * path that skipped it fails instead of agreeing */
+                        if (form && diss != HJ_LS_LLF) lf.ham_row = NULL, lf.partial_row = NULL;
                         double *f = form ? f1 : f0;
                         if (fused) {
                             hj_ls_stage st = {0.25, 0.75, 0.01, y, f, 0, 0};
