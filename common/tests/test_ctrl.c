@@ -85,17 +85,26 @@ static double obstacle_fn(double t, const double *x, void *c)
     return fabs(x[0] - 1.0) - 0.05; /* around 1.0 */
 }
 
+/* x' = u, |u| <= 1 on [-2, 2] (41 nodes), the value |x| - 0.5 (an array
+ * the caller frees). */
+static double *setup_1d(hj_ls_grid *g, hj_reach_dyn *s)
+{
+    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    assert_int_equal(hj_ls_grid_init(g, 1, (double[]){-2}, (double[]){2}, (long[]){41}, &bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(g);
+    assert_non_null(a);
+    fill(g, a, absx);
+    hj_reach_dyn_init(s, 1, NULL, NULL);
+    hj_reach_dyn_control_box(s, one_g, 1, (double[]){-1}, (double[]){1});
+    return a;
+}
+
 static void simulate_reaches(void **state)
 {
     (void)state;
     hj_ls_grid g;
-    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
-    assert_int_equal(hj_ls_grid_init(&g, 1, (double[]){-2}, (double[]){2}, (long[]){41}, &bc, NULL), HJ_OK);
-    double *a = hj_ls_alloc(&g);
-    fill(&g, a, absx);
     hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, NULL, NULL);
-    hj_reach_dyn_control_box(&s, one_g, 1, (double[]){-1}, (double[]){1});
+    double *a = setup_1d(&g, &s);
     double u;
     hj_ctrl_optimal(&s, &g, a, 0, (double[]){1.2}, &u, NULL);
     assert_close(u, -1, 0, 0);
@@ -141,13 +150,8 @@ static void bad_trajectories_and_options(void **state)
     assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, 1, HJ_REACH_MAXIN + 1, 10, &err), HJ_EINVAL);
     assert_int_equal(hj_ctrl_traj_alloc(&tr, HJ_LS_MAXDIM + 1, 1, 0, 10, &err), HJ_EINVAL);
     hj_ls_grid g;
-    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
-    assert_int_equal(hj_ls_grid_init(&g, 1, (double[]){-2}, (double[]){2}, (long[]){41}, &bc, NULL), HJ_OK);
-    double *a = hj_ls_alloc(&g);
-    fill(&g, a, absx);
     hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, NULL, NULL);
-    hj_reach_dyn_control_box(&s, one_g, 1, (double[]){-1}, (double[]){1});
+    double *a = setup_1d(&g, &s);
     hj_ctrl_sim_opts o;
     hj_ctrl_sim_defaults(&o);
     assert_int_equal(hj_ctrl_traj_alloc(&tr, 1, 1, 0, 200, &err), HJ_OK);
