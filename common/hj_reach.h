@@ -166,7 +166,7 @@ static inline double hj_reach_set_constrain(const hj_reach_set *target, const hj
  * run would never end.  Both solver paths check every step. */
 static inline int hj_reach_check_steps_left(double horizon, double tau, double dt, hj_error *err)
 {
-    if ((horizon - tau) / dt > 4503599627370496.0)
+    if ((horizon - tau) / dt > 4503599627370496.0) /* 2^52, written in decimal for C++11 */
         return hj_error_set(err, HJ_EINVAL,
                             "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); for the "
                             "limit value use an infinite horizon with conv_tol",
