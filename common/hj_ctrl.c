@@ -48,6 +48,7 @@ void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, d
 {
     double y[HJ_LS_MAXDIM];
     for (int d = 0; d < g->dim; d++) y[d] = x[d];
+    const double c = hj_ctrl_value(g, phi, x);
     for (int d = 0; d < g->dim; d++) {
         const double h = g->dx[d];
         y[d] = x[d] + h;
@@ -55,8 +56,37 @@ void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, d
         y[d] = x[d] - h;
         const double b = hj_ctrl_value(g, phi, y);
         y[d] = x[d];
-        p[d] = (a - b) / (2 * h);
+        /* A time-to-reach is INFINITY where nothing arrives: beside such
+         * nodes the one-sided difference on the finite side, and NaN where
+         * neither side is finite (an infinite p made G^T p = 0 * inf). */
+        if (isfinite(a) && isfinite(b))
+            p[d] = (a - b) / (2 * h);
+        else if (isfinite(c) && isfinite(a))
+            p[d] = (a - c) / h;
+        else if (isfinite(c) && isfinite(b))
+            p[d] = (c - b) / h;
+        else
+            p[d] = NAN;
     }
+}
+
+static int all_finite(const double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (!isfinite(v[k])) return 0;
+    return 1;
+}
+
+/* The inputs for gradient p, NaN when p is not finite (no value to steer
+ * by: the argument of the optima would be an arbitrary corner). */
+static void optimal_from(const hj_reach_dyn *s, double t, const double *x, const double *p, double *u, double *d)
+{
+    if (all_finite(p, s->nx)) {
+        hj_reach_dyn_optimal(s, t, x, p, u, d);
+        return;
+    }
+    for (int j = 0; u && j < s->u.n; j++) u[j] = NAN;
+    for (int j = 0; d && j < s->d.n; j++) d[j] = NAN;
 }
 
 void hj_ctrl_optimal(const hj_reach_dyn *s, const hj_ls_grid *g, const double *phi, double t, const double *x,
@@ -64,7 +94,7 @@ void hj_ctrl_optimal(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
 {
     double p[HJ_LS_MAXDIM];
     hj_ctrl_gradient(g, phi, x, p);
-    hj_reach_dyn_optimal(s, t, x, p, u, d);
+    optimal_from(s, t, x, p, u, d);
 }
 
 int hj_ctrl_traj_alloc(hj_ctrl_traj *tr, int nx, int nu, int nd, long cap, hj_error *err)
@@ -157,6 +187,11 @@ int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
         const double h = (double)(k + 1) * o->dt > o->t_max ? o->t_max - t : o->dt;
         double p[HJ_LS_MAXDIM];
         hj_ctrl_gradient(g, phi, x, p);
+        if (!all_finite(p, nx))
+            return hj_error_set(err, HJ_ENONFINITE,
+                                "simulate: no finite gradient of the value at t = %g (a node near the state is not "
+                                "finite: outside the reached set of a time-to-reach?)",
+                                t);
         hj_reach_dyn_optimal(s, t, x, p, u, o->disturbance == HJ_CTRL_D_OPTIMAL ? d : NULL);
         if (o->disturbance == HJ_CTRL_D_FN) o->d_fn(t, x, d, o->d_ctx);
         for (int j = 0; j < nu; j++) tr->u[(size_t)k * (size_t)nu + (size_t)j] = u[j];

@@ -6,8 +6,12 @@
  * wrap, others clamp to the grid's box.  Its gradient at a state x is the
  * central difference of the interpolant with step dx_d in each dimension
  * (the interpolant is only piecewise linear: one cell's width averages
- * its kinks).  The optimal inputs are the arguments of the players' optima
- * in the Hamiltonian for that gradient (hj_reach_dyn_optimal).
+ * its kinks); where the value on one side is not finite (a time-to-reach
+ * is INFINITY where nothing arrives) the one-sided difference on the
+ * finite side, and NaN where neither side nor the state itself has a
+ * finite value.  The optimal inputs are the arguments of the players'
+ * optima in the Hamiltonian for that gradient (hj_reach_dyn_optimal);
+ * hj_ctrl_optimal gives NaN inputs for a gradient that is not finite.
  *
  * Simulation: classical RK4 with the control (and disturbance) held over
  * each step of length dt, both recomputed from the value at the start of
@@ -74,7 +78,9 @@ void hj_ctrl_sim_defaults(hj_ctrl_sim_opts *o);
  * room for ceil(t_max / dt) steps (HJ_EINVAL otherwise).  The target and
  * obstacle are given as functions (fn): a trajectory leaves the nodes, so
  * an array alone is refused.  HJ_ENONFINITE if the state leaves the
- * finite numbers. */
+ * finite numbers, or if the value has no finite gradient at a state (no
+ * finite value around it: e.g. outside the reached set of a
+ * time-to-reach); tr then holds the run up to that state. */
 int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *phi, const double *x0,
                      const hj_ctrl_sim_opts *o, hj_ctrl_traj *tr, hj_error *err);
 

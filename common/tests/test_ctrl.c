@@ -171,6 +171,68 @@ static void bad_trajectories_and_options(void **state)
     hj_ls_free(a);
 }
 
+/* A time-to-reach is INFINITY where the target is not reached within the
+ * horizon.  Next to such a node the central difference was infinite, G^T p
+ * then took 0 * inf = NaN and the control came out arbitrary (u = +1 where
+ * -1 is optimal); a state whose value is not finite got a control all the
+ * same and its run returned HJ_OK. */
+static void v_g(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 0, o[1] = 1;
+}
+static double far_x(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fabs(x[1]) - 0.05;
+}
+
+static void infinite_neighbours(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, (double[]){-2, -2}, (double[]){2, 2}, (long[]){41, 41}, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    assert_non_null(a);
+    /* 10 + x_1 where x_0 < 1.55, not reached (INFINITY) beyond. */
+    for (long j = 0; j < 41; j++)
+        for (long i = 0; i < 41; i++) {
+            double x[2];
+            hj_ls_coord(&g, (long[]){i, j}, x);
+            a[hj_ls_index(&g, (long[]){i, j})] = x[0] < 1.55 ? 10 + x[1] : INFINITY;
+        }
+    double p[2], u;
+    const double x0[2] = {1.5, 0.3};
+    hj_ctrl_gradient(&g, a, x0, p);
+    assert_close(p[0], 0, 1e-12, 0); /* one-sided, from the finite side */
+    assert_close(p[1], 1, 1e-12, 0);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 2, NULL, NULL);
+    hj_reach_dyn_control_box(&s, v_g, 1, (double[]){-1}, (double[]){1});
+    hj_ctrl_optimal(&s, &g, a, 0, x0, &u, NULL);
+    assert_close(u, -1, 0, 0);
+    /* No finite value on either side: no gradient, no control. */
+    hj_ctrl_gradient(&g, a, (double[]){1.7, 0.3}, p);
+    assert_true(isnan(p[0]));
+    hj_ctrl_optimal(&s, &g, a, 0, (double[]){1.7, 0.3}, &u, NULL);
+    assert_true(isnan(u));
+    hj_ctrl_sim_opts o;
+    hj_ctrl_sim_defaults(&o);
+    o.target.fn = far_x;
+    hj_ctrl_traj tr;
+    hj_error err;
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, 1, 0, 100, &err), HJ_OK);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){1.7, 0.3}, &o, &tr, &err), HJ_ENONFINITE);
+    assert_non_null(strstr(err.msg, "no finite gradient"));
+    assert_int_equal(tr.n, 1);
+    /* From a state with finite values around it the run goes on. */
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, x0, &o, &tr, &err), HJ_OK);
+    assert_true(tr.reached);
+    hj_ctrl_traj_free(&tr);
+    hj_ls_free(a);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("ctrl", NULL, NULL, cmocka_unit_test(interpolation_exact),
                         cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches),
-                        cmocka_unit_test(bad_trajectories_and_options))
+                        cmocka_unit_test(bad_trajectories_and_options), cmocka_unit_test(infinite_neighbours))
