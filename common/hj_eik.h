@@ -1,7 +1,10 @@
 /* hj_eik.h -- fast sweeping for the Eikonal equation |grad T| = f in 2-D
- * and 3-D, for users' problems: orders 1, 3 and 5, point sources at full
- * order (factored near the sources), obstacles, several sources, dx != dy,
- * a scale-free stopping rule.  (Paper 1's own solver, with its inflow
+ * and 3-D, for users' problems: orders 1, 3 and 5, point sources factored
+ * (T = T0 tau near them, so the source does not spoil the order: order 3
+ * keeps 3, order 5 measures about 4 in L1 and 3 in Linf, held by the
+ * boundary closure), obstacles, several sources (first order in Linf
+ * where their fronts meet: T has a kink there), dx != dy, a scale-free
+ * stopping rule.  (Paper 1's own solver, with its inflow
  * treatments, stays in hj_fsm.h.)
  *
  * f is the slowness (1 / speed), f > 0 where the front may pass; nodes
