@@ -833,7 +833,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
          * check): an infinite horizon, which the check above skips, or a
          * finite one whose steps shrink far below the ulp of tau */
         if (!last && tau + dt == tau) {
-            rc = hj_error_set(err, HJ_EINVAL, "reach: the step %g (the CFL bound) does not advance tau = %g", dt,
+            rc = hj_error_set(err, HJ_EINVAL, "reach: the step %g (from the CFL bound) does not advance tau = %g", dt,
                               tau);
             break;
         }
