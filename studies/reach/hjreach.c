@@ -221,7 +221,8 @@ static void check_sets(const hj_ls_grid *g, const sets *s, int obstacle, int avo
 /* Progress on stderr at most once a second, from the solver's callback. */
 typedef struct {
     int tty;        /* a terminal: one line rewritten in place */
-    int until_conv; /* --horizon 0: the horizon is the step limit's */
+    int until_conv; /* --horizon 0: the solver's horizon is the step limit's
+                     * (INFINITY where nothing moves) */
     double start, last;
     long max_steps;
 } progress;
@@ -236,7 +237,8 @@ static double now(void)
 static void progress_line(const progress *p, double tau, double horizon, long steps, int final)
 {
     char where[96];
-    if (p->until_conv) snprintf(where, sizeof where, "until converged, at most %ld steps", p->max_steps);
+    if (p->until_conv && !isfinite(horizon)) snprintf(where, sizeof where, "until converged");
+    else if (p->until_conv) snprintf(where, sizeof where, "until converged, at most %ld steps", p->max_steps);
     else snprintf(where, sizeof where, "of %g, %.0f%%", horizon, 100 * tau / horizon);
     fprintf(stderr, "%s%s: step %ld, tau = %g (%s), %.0f s%s%s", p->tty ? "\r" : "", prog, steps, tau, where,
             now() - p->start, p->tty ? "   " : "", p->tty && !final ? "" : "\n");
@@ -429,7 +431,7 @@ int main(int argc, char **argv)
     double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
     if (!phi || !ttr) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for a %zu-node grid", g.nodes);
     const int tty = isatty(STDERR_FILENO), show = !quiet && (tty || force_progress);
-    progress pr = {tty, horizon == 0 && isfinite(pb.horizon), now(), now(), max_steps};
+    progress pr = {tty, horizon == 0, now(), now(), max_steps};
     if (show) {
         fprintf(stderr, "%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
         pb.progress = show_progress, pb.progress_ctx = &pr;
