@@ -70,7 +70,8 @@ static int check_input(const hj_reach_input *in, const char *who, int have_matri
     if (in->n < 0 || in->n > HJ_REACH_MAXIN)
         return hj_error_set(err, HJ_EINVAL, "%s: %d inputs, must be 0..%d", who, in->n, HJ_REACH_MAXIN);
     if (in->n == 0) return HJ_OK;
-    if (!have_matrix) return hj_error_set(err, HJ_EINVAL, "%s: %d inputs but no input matrix", who, in->n);
+    if (!have_matrix)
+        return hj_error_set(err, HJ_EINVAL, "%s: %d input%s but no input matrix", who, in->n, hj_plural(in->n));
     if (in->mode != HJ_REACH_MIN && in->mode != HJ_REACH_MAX)
         return hj_error_set(err, HJ_EINVAL, "%s: mode must be HJ_REACH_MIN or HJ_REACH_MAX", who);
     if (in->shape == HJ_REACH_BOX) {
@@ -415,10 +416,18 @@ typedef struct {
     int converged;
     long steps;
     int bad; /* a set function returned NaN */
+    double horizon; /* the caller's (pb holds T, 0 for an infinite one) */
+    double span_end; /* the integrator's last time: DBL_MAX / 4 for an
+                      * infinite horizon, which only a step where nothing
+                      * moves reaches */
+    int stop_code;   /* the progress callback's nonzero return */
 } post_ctx;
 
-/* A private code that ends the integration at convergence (not an error). */
+/* Private codes that end the integration: at convergence (not an error),
+ * and at the progress callback's request (its code is in stop_code, since
+ * any value, these included, may be its own). */
 #define STOP_CONVERGED (-1)
+#define STOP_PROGRESS (-2)
 
 static int post_step(double tau, double *y, void *ctx, hj_error *err)
 {
@@ -459,16 +468,25 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
     }
     if (bad) return hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
     /* (an infinite horizon runs with pb->horizon 0 here: nothing left) */
-    const int rc = hj_reach_check_steps_left(pb->horizon, tau, dt, err);
+    const int rc = hj_reach_check_steps_left(pb->horizon, tau, dt, pb->conv_tol, err);
     if (rc) return rc;
-    c->change = change / dt;
-    c->tau_prev = tau;
     c->steps++;
-    if (pb->conv_tol > 0 && c->change <= pb->conv_tol) {
+    if (isinf(c->horizon) && tau == c->span_end && change == 0) {
+        /* Nothing moves under an infinite horizon: the value is the limit
+         * from the step's start, which tau stays at (as the fused path). */
+        c->change = 0;
         c->converged = 1;
-        return STOP_CONVERGED;
+    } else {
+        c->change = change / dt;
+        c->tau_prev = tau;
+        c->converged = pb->conv_tol > 0 && c->change <= pb->conv_tol;
     }
-    return HJ_OK;
+    const int code = hj_reach_progress_call(c->pb, c->horizon, c->tau_prev, c->steps, err);
+    if (code) {
+        c->stop_code = code;
+        return STOP_PROGRESS;
+    }
+    return c->converged ? STOP_CONVERGED : HJ_OK;
 }
 
 int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
@@ -525,7 +543,9 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     const double T = isinf(pb->horizon) ? 0 : pb->horizon;
     hj_reach_problem p = *pb;
     p.horizon = T;
-    post_ctx pc = {&p, hj_ls_alloc(g), ttr, 0, INFINITY, 0, 0, 0};
+    /* An infinite horizon runs until convergence: a long finite span. */
+    const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
+    post_ctx pc = {&p, hj_ls_alloc(g), ttr, 0, INFINITY, 0, 0, 0, pb->horizon, tspan[1], 0};
     if (!pc.prev) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory");
     /* tau = 0: max(target(T), -obstacle(T)). */
     const int obst = hj_reach_set_given(&pb->obstacle);
@@ -597,12 +617,11 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     o.post = post_step;
     o.post_ctx = &pc;
     o.blowup_factor = 0; /* obstacle and target bound phi; discount decays */
-    /* An infinite horizon runs until convergence: a long finite span. */
-    const double tspan[2] = {0, isinf(pb->horizon) ? DBL_MAX / 4 : T};
     const double steps_start = wall();
     rc = hj_ls_ode(pb->order, g, term, tspan, 2, phi, &o, NULL, NULL, NULL, err);
     step_seconds = wall() - steps_start;
     if (rc == STOP_CONVERGED) rc = HJ_OK, hj_error_clear(err);
+    if (rc == STOP_PROGRESS) hj_ls_fill_ghosts(g, phi), rc = pc.stop_code;
     if (rc == HJ_OK) hj_ls_fill_ghosts(g, phi);
 done:
     if (have_sum) hj_ls_sum_free(&sum);

@@ -163,16 +163,30 @@ static inline double hj_reach_set_constrain(const hj_reach_set *target, const hj
 
 /* HJ_EINVAL when the time left to the horizon, horizon - tau, is more than
  * 2^52 steps of dt: tau + dt stops changing before the horizon, and the
- * run would never end.  Both solver paths check every step. */
-static inline int hj_reach_check_steps_left(double horizon, double tau, double dt, hj_error *err)
+ * run would never end.  Both solver paths check every step.  Refused even
+ * when conv_tol > 0 could stop the run sooner: such a run reaches the
+ * horizon only if it does not converge, which it then cannot; if it
+ * converges, its value is the infinite horizon's limit, computed with the
+ * forward time t = T - tau rounded to more than a quarter of a step (the
+ * whole run sees t = T for a horizon far beyond), so the infinite horizon
+ * is the problem to state.  conv_tol is the caller's tolerance (only the
+ * message depends on it). */
+static inline int hj_reach_check_steps_left(double horizon, double tau, double dt, double conv_tol, hj_error *err)
 {
     if ((horizon - tau) / dt > 4503599627370496.0) /* 2^52, written in decimal for C++11 */
         return hj_error_set(err, HJ_EINVAL,
-                            "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); for the "
-                            "limit value use an infinite horizon with conv_tol",
-                            horizon, dt);
+                            "reach: the horizon %g needs more than 2^52 steps of dt = %g (the CFL bound); %s",
+                            horizon, dt,
+                            conv_tol > 0 ? "conv_tol could stop it sooner, but only at the infinite horizon's limit: "
+                                           "give horizon = INFINITY"
+                                         : "for the limit value use an infinite horizon with conv_tol");
     return HJ_OK;
 }
+
+/* Progress of a solve (hj_reach_problem.progress): tau the backward time
+ * reached, horizon the problem's (INFINITY for an infinite one), steps the
+ * steps taken.  Nonzero ends the solve with that value as its code. */
+typedef int (*hj_reach_progress_fn)(double tau, double horizon, long steps, void *ctx);
 
 enum { HJ_REACH_BRS, HJ_REACH_BRT };
 
@@ -207,14 +221,40 @@ typedef struct {
                            * the fused path; its measure is
                            * hj_reach_measure_compact.  0 (default): arrays
                            * on the grid (hj_ls_alloc) */
+    hj_reach_progress_fn progress; /* optional, both paths: called on the
+                           * calling thread after every progress_every-th
+                           * step (every step when progress_every <= 1),
+                           * that ending the run included, after the
+                           * target, obstacle and time-to-reach; nonzero
+                           * stops the solve: hj_reach_solve returns that
+                           * value, err names the step, phi (and ttr)
+                           * hold the value at stats.tau */
+    void *progress_ctx;
+    long progress_every;
 } hj_reach_problem;
+
+/* The progress callback after step `steps` at tau, when one is due
+ * (both solver paths): its nonzero return, with err naming the step. */
+static inline int hj_reach_progress_call(const hj_reach_problem *pb, double horizon, double tau, long steps,
+                                         hj_error *err)
+{
+    if (!pb->progress || (pb->progress_every > 1 && steps % pb->progress_every)) return HJ_OK;
+    const int code = pb->progress(tau, horizon, steps, pb->progress_ctx);
+    if (code)
+        hj_error_set(err, code, "reach: stopped by the progress callback at tau = %g after %ld step%s (code %d)", tau,
+                     steps, hj_plural(steps), code);
+    return code;
+}
 
 /* Defaults above for grid g and system s (target and horizon to set). */
 void hj_reach_problem_init(hj_reach_problem *pb, const hj_ls_grid *g, const hj_reach_dyn *s);
 
 typedef struct {
     long steps;
-    double tau;    /* backward time reached (T, or less when converged) */
+    double tau;    /* backward time reached (T, or less when converged;
+                    * where nothing moves under an infinite horizon, the
+                    * tau of the step that found it: the value is the
+                    * limit from there) */
     int converged; /* the convergence stop ended the run */
     double seconds;
     double step_seconds; /* of which in the time steps (no setup) */
@@ -231,8 +271,10 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
  * be NULL.  HJ_EINVAL for a problem that cannot be solved (checked before
  * any step: no target, zero horizon, dimensions that do not match, an
  * unknown scheme, order or dissipation, a NULL phi, ...; from the first
- * step's bound: a finite horizon more than 2^52 steps away), HJ_ENOMEM,
- * HJ_ENONFINITE when the value stops being finite. */
+ * step's bound: a finite horizon more than 2^52 steps away, whatever
+ * conv_tol), HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite,
+ * HJ_EINVAL for a step too short to advance tau (tau + dt == tau), the
+ * progress callback's nonzero value when it stops the solve. */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
 /* The fused path, which hj_reach_solve takes by itself when it applies:

@@ -687,7 +687,7 @@ static int report_bad(const hj_ls_grid *g, size_t r, long j, double tau, hj_erro
     char pos[256];
     hj_ls_format_node(g, r, j, pos, sizeof pos);
     return hj_error_set(err, HJ_ENONFINITE,
-                        "Hamiltonian or partial callback returned a non-finite value at x = (%s), t = %g", pos, tau);
+                        "Hamiltonian or partial callback returned a non-finite value at x = (%s), tau = %g", pos, tau);
 }
 
 /* ydot of the state y into out over every block, in parallel; *m = the
@@ -736,7 +736,8 @@ static int eval_pass(const fused *fs, double tau, const double *y, double *out, 
     if (nomem) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for the row workspace");
     if (bad_r != (size_t)-1) return report_bad(g, bad_r, bad_j, tau, err);
     if (m != m || m == INFINITY)
-        return hj_error_set(err, HJ_ENONFINITE, "Hamiltonian or partial callback: non-finite CFL bound at t = %g", tau);
+        return hj_error_set(err, HJ_ENONFINITE, "Hamiltonian or partial callback: non-finite CFL bound at tau = %g",
+                            tau);
     *m_out = m;
     return HJ_OK;
 }
@@ -778,11 +779,12 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
      * a Runge-Kutta stage u */
     const size_t narrays = (compact ? 1 : 2) + (pb->order > 1);
     double *own = malloc(sizeof(double) * g->nodes * narrays);
-    if (!own) return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for %zu nodes", g->nodes);
+    if (!own)
+        return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for %zu node%s", g->nodes, hj_plural((long)g->nodes));
     double *y = compact ? phi : own + g->nodes * (narrays - 1), *f = own, *u = pb->order > 1 ? own + g->nodes : NULL;
     long steps = 0;
     double tau = 0, change = INFINITY;
-    int converged = 0;
+    int converged = 0, stopped = 0;
     /* tau = 0: max(target(T), -obstacle(T)), node by node in parallel. */
     int nan_target = 0;
 #ifdef _OPENMP
@@ -824,9 +826,17 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         }
         double dt = m > 0 ? pb->factor_cfl * (1 / m) : DBL_MAX;
         dt = dt < DBL_MAX ? dt : DBL_MAX;
-        if (!isinf(pb->horizon) && (rc = hj_reach_check_steps_left(tk, tau, dt, err))) break;
+        if (!isinf(pb->horizon) && (rc = hj_reach_check_steps_left(tk, tau, dt, pb->conv_tol, err))) break;
         int last = 0;
         if (dt >= tk - tau) dt = tk - tau, last = 1;
+        /* a step that leaves tau as it is never ends the run (hj_ls_ode's
+         * check): an infinite horizon, which the check above skips, or a
+         * finite one whose steps shrink far below the ulp of tau */
+        if (!last && tau + dt == tau) {
+            rc = hj_error_set(err, HJ_EINVAL, "reach: the step %g (from the CFL bound) does not advance tau = %g", dt,
+                              tau);
+            break;
+        }
         if (!(m > 0)) {
             /* No motion (an infinite bound): one step to the horizon, as
              * hj_ls_ode takes it, if nothing moves at its end either; f is
@@ -895,7 +905,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         }
         steps++;
         if (bad_state) {
-            rc = hj_error_set(err, HJ_ENONFINITE, "blow-up: NaN or Inf in the state at t = %.17g after step %ld",
+            rc = hj_error_set(err, HJ_ENONFINITE, "blow-up: NaN or Inf in the state at tau = %.17g after step %ld",
                               tau_new, steps);
             break;
         }
@@ -903,16 +913,27 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             rc = hj_error_set(err, HJ_ENONFINITE, "a target or obstacle function returned NaN at t = %g", t);
             break;
         }
-        tau = tau_new;
-        change = ch / dtp;
-        if (pb->conv_tol > 0 && change <= pb->conv_tol) {
+        if (isinf(pb->horizon) && last && ch == 0) {
+            /* Nothing moves under an infinite horizon (only such a step
+             * reaches tk): the value is the limit from the step's start,
+             * which tau stays at. */
+            change = 0;
             converged = 1;
+        } else {
+            tau = tau_new;
+            change = ch / dtp;
+            converged = pb->conv_tol > 0 && change <= pb->conv_tol;
+        }
+        if ((rc = hj_reach_progress_call(pb, pb->horizon, tau, steps, err))) {
+            stopped = 1;
             break;
         }
+        if (converged) break;
     }
     const double step_seconds = wall() - steps_start;
-    /* the value into the caller's array */
-    if (rc == HJ_OK) {
+    /* the value into the caller's array (that of stats.tau when the
+     * progress callback stopped the run) */
+    if (rc == HJ_OK || stopped) {
         if (!compact) {
             for (size_t r = 0; r < g->rows; r++)
                 memcpy(phi + user_row(g, 0, r), y + r * (size_t)n, sizeof(double) * (size_t)n);

@@ -45,6 +45,12 @@ conflicts=(
     'hjreach|--horizon 1e12'
     'hjreach|--min -2,-2,0 --max 2,2,1e-300'
     'hjreach|--system double_integrator --N 11,11 --discount 1e4 --horizon 1 --max-steps 100'
+    'hjreach|--system dubins --target-centre 10,0'
+    'hjreach|--system double_integrator --target-centre 0.05 --target-radius 0.01'
+    'hjreach|--obstacle -3,-3:3,3'
+    'hjreach|--obstacle -1,-1:1,1'
+    'hjreach|--system air3d --N 11 --target-radius 100'
+    'hjreach|--quiet --progress'
 )
 
 shopt -s nullglob dotglob

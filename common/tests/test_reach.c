@@ -8,6 +8,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hj_ls_shape.h"
 #include "hj_math.h"
@@ -131,6 +132,7 @@ static void invalid_systems(void **state)
     hj_reach_dyn_init(&s, 2, f2, NULL);
     hj_reach_dyn_control_box(&s, NULL, 1, (double[]){-1}, (double[]){1});
     assert_int_equal(hj_reach_dyn_check(&s, &err), HJ_EINVAL);
+    assert_string_equal(err.msg, "control: 1 input but no input matrix");
     hj_reach_dyn_control_box(&s, G2, 2, (double[]){1, 0}, (double[]){-1, 1});
     assert_int_equal(hj_reach_dyn_check(&s, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "empty"));
@@ -220,7 +222,8 @@ static void f_rest_at_end(double t, const double *x, double *o, void *c)
 /* Nothing moves (x' = 0, the control's box a point): one step to the
  * horizon, the value is the target and ttr 0 inside, inf outside, on the
  * fused and the general path; it was an error ("infinite CFL bound ... no
- * MaxStep").  Dynamics at rest at tau = 0 only: an error naming both
+ * MaxStep").  Under an infinite horizon: converged at the first step, at
+ * tau = 0.  Dynamics at rest at tau = 0 only: an error naming both
  * times, not a step over the motion. */
 static void no_motion(void **state)
 {
@@ -245,7 +248,9 @@ static void no_motion(void **state)
             assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
             assert_int_equal(st.steps, 1);
             assert_int_equal(st.converged, inf);
-            if (!inf) assert_close(st.tau, 1, 0, 0);
+            /* infinite: the value is the limit from tau = 0 (it reported
+             * tau = DBL_MAX / 4, the integrator's span) */
+            assert_close(st.tau, inf ? 0 : 1, 0, 0);
             for (long i = 0; i < g.N[0]; i++) {
                 const double x = -2 + g.dx[0] * (double)i;
                 assert_close(phi[g.offset + (size_t)i], fabs(x) - r, 1e-15, 0);
@@ -849,6 +854,20 @@ static void invalid_problems(void **state)
         assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_EINVAL);
         assert_non_null(strstr(err.msg, "2^52 steps"));
     }
+    /* Also with a convergence tolerance, which could end the run sooner
+     * (then at the infinite horizon's limit): refused at the first step's
+     * bound, the message saying what to give instead. */
+    pb.conv_tol = 1e-6;
+    for (int general = 0; general < 2; general++) {
+        hj_reach_stats st;
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, &st, &err), HJ_EINVAL);
+        assert_has(err.msg, "2^52 steps");
+        assert_has(err.msg, "conv_tol could stop it sooner, but only at the infinite horizon's limit: give horizon = "
+                            "INFINITY");
+        assert_int_equal(st.steps, 0);
+    }
+    pb.conv_tol = 0;
     pb.general = 0;
     pb.horizon = 1;
     s.nx = 2;
@@ -893,9 +912,134 @@ static void nan_target_names_node(void **state)
     hj_ls_free(phi);
 }
 
+/* x' = a(t): a speed so small at t > 1e19 that the first step of the
+ * horizon T = 1e20 ends 1e9 short of it (more than the round-off that
+ * ends a run, 100 eps T), then 1: a step of 0.05 that tau ~ 1e20 (ulp
+ * 16384) cannot take, with 2e10 steps left (the 2^52 check passes). */
+static void f_slow_then_fast(double t, const double *x, double *o, void *c)
+{
+    (void)x, (void)c;
+    o[0] = t > 1e19 ? 0.05 / (1e20 - 1e9) : 1;
+}
+
+/* A step that leaves tau as it is: an error on both paths (the fused one
+ * ran for ever; the alarm ends the test there). */
+static void step_does_not_advance(void **state)
+{
+    (void)state;
+    double r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f_slow_then_fast, NULL);
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    pb.horizon = 1e20, pb.scheme = HJ_LS_UPWIND_FIRST, pb.order = 1;
+    double *phi = hj_ls_alloc(&g);
+    alarm(60);
+    for (int general = 0; general <= 1; general++) {
+        hj_error err;
+        hj_reach_stats st;
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, &st, &err), HJ_EINVAL);
+        assert_has(err.msg, "does not advance");
+        assert_int_equal(st.steps, 1);
+    }
+    alarm(0);
+    hj_ls_free(phi);
+}
+
+typedef struct {
+    long calls, last_steps, stop_at;
+    double last_tau, horizon;
+    int order_ok;
+} progress_log;
+
+static int log_progress(double tau, double horizon, long steps, void *ctx)
+{
+    progress_log *l = ctx;
+    l->order_ok &= steps > l->last_steps && tau >= l->last_tau;
+    l->calls++, l->last_steps = steps, l->last_tau = tau, l->horizon = horizon;
+    return steps == l->stop_at ? 42 : 0;
+}
+
+/* The progress callback on both paths: every k-th step, with tau, the
+ * horizon as given and the step count; a nonzero return stops the solve
+ * with that code, the value then that of the step (the same bits on
+ * both paths). */
+static void progress_callback(void **state)
+{
+    (void)state;
+    double a = 1, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    double *phi[2] = {hj_ls_alloc(&g), hj_ls_alloc(&g)}, *ttr = hj_ls_alloc(&g);
+    for (int inf = 0; inf <= 1; inf++)
+        for (long every = 1; every <= 3; every += 2)
+            for (int general = 0; general <= 1; general++) {
+                hj_reach_stats st;
+                hj_error err;
+                progress_log l = {0, 0, -1, 0, 0, 1};
+                pb.general = general, pb.progress = log_progress, pb.progress_ctx = &l, pb.progress_every = every;
+                pb.horizon = inf ? INFINITY : 1, pb.conv_tol = inf ? 1e-6 : 0;
+                assert_int_equal(hj_reach_solve(&pb, phi[general], ttr, &st, &err), HJ_OK);
+                assert_true(st.steps > 6);
+                assert_int_equal(l.calls, st.steps / every);
+                assert_true(l.order_ok);
+                assert_int_equal(l.last_steps, st.steps - st.steps % every);
+                if (st.steps % every == 0) assert_close(l.last_tau, st.tau, 0, 0);
+                assert_true(l.horizon == pb.horizon);
+                /* stopped after step 6 */
+                l = (progress_log){0, 0, 6, 0, 0, 1};
+                assert_int_equal(hj_reach_solve(&pb, phi[general], ttr, &st, &err), 42);
+                assert_int_equal(err.code, 42);
+                assert_has(err.msg, "stopped by the progress callback");
+                assert_has(err.msg, "after 6 steps");
+                assert_int_equal(st.steps, 6);
+                assert_false(st.converged);
+                assert_close(l.last_tau, st.tau, 0, 0);
+                assert_true(st.tau > 0 && st.tau < 1);
+            }
+    for (size_t k = 0; k < g.total; k++) assert_memory_equal(&phi[0][k], &phi[1][k], sizeof(double));
+    hj_ls_free(phi[0]), hj_ls_free(phi[1]), hj_ls_free(ttr);
+}
+
+/* x' = inf beyond x = 1 (nodes at -2 + 0.1 i). */
+static void f_inf_right(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    o[0] = x[0] > 1 ? INFINITY : 0;
+}
+
+/* The fused path's messages name the backward time tau as such (they said
+ * t = for it, the forward time's name elsewhere in the module). */
+static void fused_messages_say_tau(void **state)
+{
+    (void)state;
+    double r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f_inf_right, NULL);
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r, pb.horizon = 1;
+    double *phi = hj_ls_alloc(&g);
+    hj_error err;
+    assert_int_equal(hj_reach_solve_fused(&pb, phi, NULL, NULL, &err), HJ_ENONFINITE);
+    assert_has(err.msg, "non-finite value at x = (1.1), tau = 0");
+    hj_ls_free(phi);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(no_motion), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
              cmocka_unit_test(dubins_threads_and_period), cmocka_unit_test(batched_rows_same_bits),
              cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),
-             cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node))
+             cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node),
+             cmocka_unit_test(step_does_not_advance), cmocka_unit_test(progress_callback),
+             cmocka_unit_test(fused_messages_say_tau))

@@ -169,11 +169,12 @@ int main(int argc, char **argv)
             }
             for (size_t q = 0; q < g.nodes; q++) cphi[q] = 0; /* the next run starts clean */
             printf("%s: %s fused / general: %.1fx the rate (wall), %.1fx in the steps alone, %.1fx per CPU second, "
-                   "%.1fx fewer bytes per node; %ld nodes differ\n", prog, name[k], r[1].rate / r[0].rate,
-                   r[1].step_rate / r[0].step_rate, r[1].cpu_rate / r[0].cpu_rate, r[0].bytes / r[1].bytes, differ);
-            fprintf(o.fp, "# %s fused / general: rate ratio %.2f (wall), %.2f (CPU), bytes ratio %.2f, %ld nodes "
-                          "differ\n", name[k], r[1].rate / r[0].rate, r[1].cpu_rate / r[0].cpu_rate,
-                    r[0].bytes / r[1].bytes, differ);
+                   "%.1fx fewer bytes per node; %ld node%s differ%s\n", prog, name[k], r[1].rate / r[0].rate,
+                   r[1].step_rate / r[0].step_rate, r[1].cpu_rate / r[0].cpu_rate, r[0].bytes / r[1].bytes, differ,
+                   hj_plural(differ), differ == 1 ? "s" : "");
+            fprintf(o.fp, "# %s fused / general: rate ratio %.2f (wall), %.2f (CPU), bytes ratio %.2f, %ld node%s "
+                          "differ%s\n", name[k], r[1].rate / r[0].rate, r[1].cpu_rate / r[0].cpu_rate,
+                    r[0].bytes / r[1].bytes, differ, hj_plural(differ), differ == 1 ? "s" : "");
         }
     }
     if (hj_out_commit(&o, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);

@@ -27,14 +27,22 @@
  * CFL step, estimated before the run) is checked against --max-steps
  * first: a long horizon, or a tiny period or spacing, is refused with the
  * count instead of running for ever; with --horizon 0 the run stops
- * unconverged after that many steps.  Progress on stderr; one line of results on
- * stdout: the steps, the final tau and the measure of the set (dimensions
- * 1 to 3).
+ * unconverged after that many steps.  A target with no node of the grid
+ * (outside it, or between its nodes), an obstacle over every node of the
+ * grid or of the target, and for air3d a capture set over every node are
+ * refused before the run: the answer would be a set of measure 0 (or the
+ * whole grid) that says nothing.  Progress on stderr, at most about once a
+ * second and a final line, by default only when stderr is a terminal
+ * (--progress: always, one line each; --quiet: never); one line of
+ * results on stdout: the steps, the final tau and the measure of the set
+ * (dimensions 1 to 3).
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "hj.h"
 
@@ -160,6 +168,94 @@ static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor
     return worst + discount > 0 ? factor_cfl / (worst + discount) : INFINITY;
 }
 
+/* Whether the target's ball (over its dimensions) meets the grid's box. */
+static int target_meets_grid(const sets *s, const hj_ls_grid *g)
+{
+    double d2 = 0;
+    for (int k = 0; k < s->dims; k++) {
+        const double c = s->c[k], e = c < g->min[k] ? g->min[k] - c : c > g->max[k] ? c - g->max[k] : 0;
+        d2 += e * e;
+    }
+    return sqrt(d2) <= s->r;
+}
+
+/* Refuse (exit 2) a problem whose value at tau = 0 says nothing: a target
+ * with no node of the grid, an obstacle over every node of the grid or of
+ * the target, and for a target to avoid (air3d's capture set) one over
+ * every node.  Every node is visited once, as cfl_step does. */
+static void check_sets(const hj_ls_grid *g, const sets *s, int obstacle, int avoid)
+{
+    long idx[HJ_LS_MAXDIM] = {0};
+    size_t in_target = 0, free_of_obstacle = 0, start = 0;
+    for (size_t n = 0; n < g->nodes; n++) {
+        double x[HJ_LS_MAXDIM];
+        for (int d = 0; d < g->dim; d++) x[d] = g->min[d] + (double)idx[d] * g->dx[d];
+        const int t = target_fn(0, x, (void *)s) <= 0, o = !obstacle || obstacle_fn(0, x, (void *)s) > 0;
+        in_target += t, free_of_obstacle += o, start += t && o;
+        for (int d = 0; d < g->dim && ++idx[d] == g->N[d]; d++) idx[d] = 0;
+    }
+    char c[64];
+    if (s->dims == 1) snprintf(c, sizeof c, "%g", s->c[0]);
+    else snprintf(c, sizeof c, "(%g, %g)", s->c[0], s->c[1]);
+    if (in_target == 0 && !target_meets_grid(s, g))
+        hj_cli_fail(prog, HJ_EXIT_USAGE,
+                    "the target (centre %s, radius %g) lies wholly outside the grid: move --target-centre into it "
+                    "(--min, --max) or enlarge --target-radius",
+                    c, s->r);
+    if (in_target == 0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE,
+                    "the target (centre %s, radius %g) holds no node of the grid (spacing %g): enlarge "
+                    "--target-radius or refine --N",
+                    c, s->r, g->dx[0]);
+    if (free_of_obstacle == 0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle covers every node of the grid: nothing is left to reach");
+    if (start == 0)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle covers every node of the target: the set would be empty");
+    if (avoid && in_target == g->nodes)
+        hj_cli_fail(prog, HJ_EXIT_USAGE,
+                    "the capture set (centre %s, radius %g) covers every node of the grid: every state is captured; "
+                    "shrink --target-radius or widen the grid",
+                    c, s->r);
+}
+
+/* Progress on stderr at most once a second, from the solver's callback. */
+typedef struct {
+    int tty;        /* a terminal: one line rewritten in place */
+    int until_conv; /* --horizon 0: the solver's horizon is the step limit's
+                     * (INFINITY where nothing moves) */
+    double start, last;
+    long max_steps;
+} progress;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void progress_line(const progress *p, double tau, double horizon, long steps, int final)
+{
+    char where[96];
+    if (p->until_conv && !isfinite(horizon)) snprintf(where, sizeof where, "until converged");
+    else if (p->until_conv) snprintf(where, sizeof where, "until converged, at most %ld steps", p->max_steps);
+    else snprintf(where, sizeof where, "of %g, %.0f%%", horizon, 100 * tau / horizon);
+    fprintf(stderr, "%s%s: step %ld, tau = %g (%s), %.0f s%s%s", p->tty ? "\r" : "", prog, steps, tau, where,
+            now() - p->start, p->tty ? "   " : "", p->tty && !final ? "" : "\n");
+    fflush(stderr);
+}
+
+static int show_progress(double tau, double horizon, long steps, void *ctx)
+{
+    progress *p = ctx;
+    const double t = now();
+    if (t - p->last >= 1) {
+        p->last = t;
+        progress_line(p, tau, horizon, steps, 0);
+    }
+    return 0;
+}
+
 static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi, const double *ttr)
 {
     hj_error err;
@@ -208,6 +304,7 @@ int main(int argc, char **argv)
     const char *lo_s = NULL, *hi_s = NULL, *centre_s = NULL, *obstacle_s = NULL, *out_dir = ".";
     double horizon = 1, radius = 0.5, tol = 0, speed = 1, umax = 1, discount = 0;
     long max_steps = 100000;
+    int quiet = 0, force_progress = 0;
     hj_cli_opt opts[] = {
         {.name = "--system", .type = HJ_OPT_CHOICE, .value = &sys, .choices = systems, .metavar = "NAME",
          .help = "the system from the catalogue"},
@@ -243,6 +340,11 @@ int main(int argc, char **argv)
          .help = "control bound (turn rate, acceleration)"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
          .help = "where to write value.dat, ttr.dat (and reach.vtk in 3-D)"},
+        {.name = "--progress", .type = HJ_OPT_FLAG, .value = &force_progress,
+         .help = "progress on stderr (about once a second, and a final line) even when stderr is not a terminal, "
+                 "one line each; without it only a terminal gets it, so that logs and scripts reading stderr see "
+                 "errors alone"},
+        {.name = "--quiet", .type = HJ_OPT_FLAG, .value = &quiet, .help = "no progress on stderr, even on a terminal"},
     };
     hj_cli_spec spec = {prog, "reachable sets of a catalogue system: the value and the time-to-reach", opts,
                         (int)(sizeof opts / sizeof opts[0]), NULL};
@@ -263,6 +365,7 @@ int main(int argc, char **argv)
     else if (ncount != dim)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--N: %s is %d-D, got %d counts", systems[sys], dim, ncount);
     if (horizon == 0 && !(tol > 0)) hj_cli_fail(prog, HJ_EXIT_USAGE, "--horizon 0 (until converged) needs --tol > 0");
+    if (quiet && force_progress) hj_cli_fail(prog, HJ_EXIT_USAGE, "--quiet and --progress contradict each other");
     sets st = {sys == 0 ? 1 : 2, {0, 0}, radius, {0, 0}, {0, 0}};
     if (centre_s) parse_list(centre_s, "--target-centre", st.c, st.dims);
     if (obstacle_s) {
@@ -287,6 +390,7 @@ int main(int argc, char **argv)
     if (sys == 1 || sys == 3) bc[2].type = HJ_LS_BC_PERIODIC;
     hj_ls_grid g;
     if (hj_ls_grid_init_period(&g, dim, lo, hi, N, bc, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    check_sets(&g, &st, obstacle_s != NULL, sys == 3);
 
     params p = {speed, umax};
     hj_reach_dyn s;
@@ -326,9 +430,16 @@ int main(int argc, char **argv)
     if (horizon == 0 && isfinite(dt)) pb.horizon = (double)max_steps * dt;
     double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
     if (!phi || !ttr) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for a %zu-node grid", g.nodes);
-    hj_progress("%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
+    const int tty = isatty(STDERR_FILENO), show = !quiet && (tty || force_progress);
+    progress pr = {tty, horizon == 0, now(), now(), max_steps};
+    if (show) {
+        fprintf(stderr, "%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
+        pb.progress = show_progress, pb.progress_ctx = &pr;
+    }
     hj_reach_stats stats;
-    if (hj_reach_solve(&pb, phi, ttr, &stats, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+    const int rc = hj_reach_solve(&pb, phi, ttr, &stats, &err);
+    if (show) progress_line(&pr, stats.tau, pb.horizon, stats.steps, 1);
+    if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
     if (horizon == 0 && !stats.converged)
         hj_cli_fail(prog, HJ_EXIT_RUN, "not converged (--tol %g) after %ld step%s, tau = %g: --max-steps %ld reached",
                     tol, stats.steps, hj_plural(stats.steps), stats.tau, max_steps);
