@@ -167,6 +167,26 @@ static double interval(double t, const double *x, void *c)
     return fabs(x[0]) - *(const double *)c;
 }
 
+/* The 1-D problem most tests share: x' = a x + u, u in [-umax, umax], on
+ * grid1(n), target |x| <= 0.5; the problem points at the struct's own
+ * dynamics, grid and radius. */
+typedef struct {
+    double a, r;
+    hj_reach_dyn s;
+    hj_ls_grid g;
+    hj_reach_problem pb;
+} line1;
+
+static void line1_init(line1 *L, double a, double umax, long n)
+{
+    L->a = a, L->r = 0.5;
+    hj_reach_dyn_init(&L->s, 1, f1, &L->a);
+    hj_reach_dyn_control_box(&L->s, G1, 1, (double[]){-umax}, (double[]){umax});
+    L->g = grid1(n);
+    hj_reach_problem_init(&L->pb, &L->g, &L->s);
+    L->pb.target.fn = interval, L->pb.target.ctx = &L->r;
+}
+
 /* Zero crossing of phi on x > 0 (the set's right end). */
 static double right_end(const hj_ls_grid *g, const double *phi)
 {
@@ -180,25 +200,19 @@ static double right_end(const hj_ls_grid *g, const double *phi)
 static void tube_and_time_to_reach(void **state)
 {
     (void)state;
-    double a = 0, r = 0.5;
-    hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, f1, &a);
-    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
-    hj_reach_dyn_goal(&s, HJ_REACH_REACH);
-    hj_ls_grid g = grid1(81);
-    hj_reach_problem pb;
-    hj_reach_problem_init(&pb, &g, &s);
-    pb.target.fn = interval, pb.target.ctx = &r;
-    pb.horizon = 1;
-    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    line1 L;
+    line1_init(&L, 0, 1, 81);
+    hj_reach_dyn_goal(&L.s, HJ_REACH_REACH);
+    L.pb.horizon = 1;
+    double *phi = hj_ls_alloc(&L.g), *ttr = hj_ls_alloc(&L.g);
     hj_reach_stats st;
     hj_error err;
-    assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
+    assert_int_equal(hj_reach_solve(&L.pb, phi, ttr, &st, &err), HJ_OK);
     /* The set is |x| <= 0.5 + T; time-to-reach |x| - 0.5 (exact for the
      * linear value: the scheme is exact on linear data away from the kink). */
-    assert_close(right_end(&g, phi), 1.5, 1e-4, 0);
-    for (long i = 0; i < g.N[0]; i++) {
-        const double x = -2 + g.dx[0] * (double)i, t = ttr[g.offset + (size_t)i];
+    assert_close(right_end(&L.g, phi), 1.5, 1e-4, 0);
+    for (long i = 0; i < L.g.N[0]; i++) {
+        const double x = -2 + L.g.dx[0] * (double)i, t = ttr[L.g.offset + (size_t)i];
         if (fabs(x) <= 0.5) assert_close(t, 0, 0, 0);
         else if (fabs(x) < 1.5 - 1e-9) assert_close(t, fabs(x) - 0.5, 1e-4, 0);
         else if (fabs(x) > 1.5 + 1e-9) assert_true(isinf(t));
@@ -206,9 +220,9 @@ static void tube_and_time_to_reach(void **state)
     assert_close(st.tau, 1, 0, 0);
     assert_false(st.converged);
     /* An avoiding control against the same set: the set does not grow. */
-    hj_reach_dyn_goal(&s, HJ_REACH_AVOID);
-    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_OK);
-    assert_close(right_end(&g, phi), 0.5, 1e-12, 0); /* an avoider leaves whenever it can */
+    hj_reach_dyn_goal(&L.s, HJ_REACH_AVOID);
+    assert_int_equal(hj_reach_solve(&L.pb, phi, NULL, NULL, &err), HJ_OK);
+    assert_close(right_end(&L.g, phi), 0.5, 1e-12, 0); /* an avoider leaves whenever it can */
     hj_ls_free(phi), hj_ls_free(ttr);
 }
 
@@ -228,43 +242,37 @@ static void f_rest_at_end(double t, const double *x, double *o, void *c)
 static void no_motion(void **state)
 {
     (void)state;
-    double a = 0, r = 0.5;
-    hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, f1, &a);
-    hj_reach_dyn_control_box(&s, G1, 1, (double[]){0}, (double[]){0});
-    hj_reach_dyn_goal(&s, HJ_REACH_REACH);
-    hj_ls_grid g = grid1(41);
-    hj_reach_problem pb;
-    hj_reach_problem_init(&pb, &g, &s);
-    pb.target.fn = interval, pb.target.ctx = &r;
-    pb.horizon = 1;
-    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    line1 L;
+    line1_init(&L, 0, 0, 41);
+    hj_reach_dyn_goal(&L.s, HJ_REACH_REACH);
+    L.pb.horizon = 1;
+    double *phi = hj_ls_alloc(&L.g), *ttr = hj_ls_alloc(&L.g);
     hj_reach_stats st;
     hj_error err;
     for (int general = 0; general <= 1; general++)
         for (int inf = 0; inf <= 1; inf++) { /* an infinite horizon converges at once */
-            pb.general = general;
-            pb.horizon = inf ? INFINITY : 1, pb.conv_tol = inf ? 1e-6 : 0;
-            assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_OK);
+            L.pb.general = general;
+            L.pb.horizon = inf ? INFINITY : 1, L.pb.conv_tol = inf ? 1e-6 : 0;
+            assert_int_equal(hj_reach_solve(&L.pb, phi, ttr, &st, &err), HJ_OK);
             assert_int_equal(st.steps, 1);
             assert_int_equal(st.converged, inf);
             /* infinite: the value is the limit from tau = 0 (it reported
              * tau = DBL_MAX / 4, the integrator's span) */
             assert_close(st.tau, inf ? 0 : 1, 0, 0);
-            for (long i = 0; i < g.N[0]; i++) {
-                const double x = -2 + g.dx[0] * (double)i;
-                assert_close(phi[g.offset + (size_t)i], fabs(x) - r, 1e-15, 0);
-                const double t = ttr[g.offset + (size_t)i];
-                if (fabs(x) <= r) assert_close(t, 0, 0, 0);
+            for (long i = 0; i < L.g.N[0]; i++) {
+                const double x = -2 + L.g.dx[0] * (double)i;
+                assert_close(phi[L.g.offset + (size_t)i], fabs(x) - L.r, 1e-15, 0);
+                const double t = ttr[L.g.offset + (size_t)i];
+                if (fabs(x) <= L.r) assert_close(t, 0, 0, 0);
                 else assert_true(isinf(t));
             }
         }
-    pb.horizon = 1, pb.conv_tol = 0;
-    hj_reach_dyn_init(&s, 1, f_rest_at_end, NULL);
-    hj_reach_dyn_control_box(&s, G1, 1, (double[]){0}, (double[]){0});
+    L.pb.horizon = 1, L.pb.conv_tol = 0;
+    hj_reach_dyn_init(&L.s, 1, f_rest_at_end, NULL);
+    hj_reach_dyn_control_box(&L.s, G1, 1, (double[]){0}, (double[]){0});
     for (int general = 0; general <= 1; general++) {
-        pb.general = general;
-        assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_EINVAL);
+        L.pb.general = general;
+        assert_int_equal(hj_reach_solve(&L.pb, phi, ttr, &st, &err), HJ_EINVAL);
         assert_has(err.msg, "no motion at");
         assert_has(err.msg, "but motion at");
     }
@@ -276,30 +284,24 @@ static void no_motion(void **state)
 static void convergence_stop(void **state)
 {
     (void)state;
-    double a = 1, r = 0.5;
-    hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, f1, &a);
-    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
-    hj_ls_grid g = grid1(201);
-    hj_reach_problem pb;
-    hj_reach_problem_init(&pb, &g, &s);
-    pb.target.fn = interval, pb.target.ctx = &r;
-    pb.horizon = INFINITY;
-    pb.conv_tol = 1e-6;
-    double *phi = hj_ls_alloc(&g), *ttr = hj_ls_alloc(&g);
+    line1 L;
+    line1_init(&L, 1, 1, 201);
+    L.pb.horizon = INFINITY;
+    L.pb.conv_tol = 1e-6;
+    double *phi = hj_ls_alloc(&L.g), *ttr = hj_ls_alloc(&L.g);
     hj_reach_stats st;
     hj_error err;
-    if (hj_reach_solve(&pb, phi, ttr, &st, &err)) fail_msg("%s", err.msg);
+    if (hj_reach_solve(&L.pb, phi, ttr, &st, &err)) fail_msg("%s", err.msg);
     assert_true(st.converged);
     assert_true(st.tau > 3 && st.tau < 100);
-    assert_close(right_end(&g, phi), 1.0, 2 * g.dx[0], 0);
-    for (long i = 0; i < g.N[0]; i++) {
-        const double x = -2 + g.dx[0] * (double)i;
-        if (fabs(x) > 0.55 && fabs(x) < 0.9) assert_close(ttr[g.offset + (size_t)i], log(0.5 / (1 - fabs(x))), 0.03, 0);
+    assert_close(right_end(&L.g, phi), 1.0, 2 * L.g.dx[0], 0);
+    for (long i = 0; i < L.g.N[0]; i++) {
+        const double x = -2 + L.g.dx[0] * (double)i;
+        if (fabs(x) > 0.55 && fabs(x) < 0.9) assert_close(ttr[L.g.offset + (size_t)i], log(0.5 / (1 - fabs(x))), 0.03, 0);
     }
     /* Without a tolerance an infinite horizon is refused. */
-    pb.conv_tol = 0;
-    assert_int_equal(hj_reach_solve(&pb, phi, ttr, &st, &err), HJ_EINVAL);
+    L.pb.conv_tol = 0;
+    assert_int_equal(hj_reach_solve(&L.pb, phi, ttr, &st, &err), HJ_EINVAL);
     hj_ls_free(phi), hj_ls_free(ttr);
 }
 
@@ -970,33 +972,27 @@ static int log_progress(double tau, double horizon, long steps, void *ctx)
 static void progress_callback(void **state)
 {
     (void)state;
-    double a = 1, r = 0.5;
-    hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, f1, &a);
-    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
-    hj_ls_grid g = grid1(41);
-    hj_reach_problem pb;
-    hj_reach_problem_init(&pb, &g, &s);
-    pb.target.fn = interval, pb.target.ctx = &r;
-    double *phi[2] = {hj_ls_alloc(&g), hj_ls_alloc(&g)}, *ttr = hj_ls_alloc(&g);
+    line1 L;
+    line1_init(&L, 1, 1, 41);
+    double *phi[2] = {hj_ls_alloc(&L.g), hj_ls_alloc(&L.g)}, *ttr = hj_ls_alloc(&L.g);
     for (int inf = 0; inf <= 1; inf++)
         for (long every = 1; every <= 3; every += 2)
             for (int general = 0; general <= 1; general++) {
                 hj_reach_stats st;
                 hj_error err;
                 progress_log l = {0, 0, -1, 0, 0, 1};
-                pb.general = general, pb.progress = log_progress, pb.progress_ctx = &l, pb.progress_every = every;
-                pb.horizon = inf ? INFINITY : 1, pb.conv_tol = inf ? 1e-6 : 0;
-                assert_int_equal(hj_reach_solve(&pb, phi[general], ttr, &st, &err), HJ_OK);
+                L.pb.general = general, L.pb.progress = log_progress, L.pb.progress_ctx = &l, L.pb.progress_every = every;
+                L.pb.horizon = inf ? INFINITY : 1, L.pb.conv_tol = inf ? 1e-6 : 0;
+                assert_int_equal(hj_reach_solve(&L.pb, phi[general], ttr, &st, &err), HJ_OK);
                 assert_true(st.steps > 6);
                 assert_int_equal(l.calls, st.steps / every);
                 assert_true(l.order_ok);
                 assert_int_equal(l.last_steps, st.steps - st.steps % every);
                 if (st.steps % every == 0) assert_close(l.last_tau, st.tau, 0, 0);
-                assert_true(l.horizon == pb.horizon);
+                assert_true(l.horizon == L.pb.horizon);
                 /* stopped after step 6 */
                 l = (progress_log){0, 0, 6, 0, 0, 1};
-                assert_int_equal(hj_reach_solve(&pb, phi[general], ttr, &st, &err), 42);
+                assert_int_equal(hj_reach_solve(&L.pb, phi[general], ttr, &st, &err), 42);
                 assert_int_equal(err.code, 42);
                 assert_has(err.msg, "stopped by the progress callback");
                 assert_has(err.msg, "after 6 steps");
@@ -1005,7 +1001,7 @@ static void progress_callback(void **state)
                 assert_close(l.last_tau, st.tau, 0, 0);
                 assert_true(st.tau > 0 && st.tau < 1);
             }
-    for (size_t k = 0; k < g.total; k++) assert_memory_equal(&phi[0][k], &phi[1][k], sizeof(double));
+    for (size_t k = 0; k < L.g.total; k++) assert_memory_equal(&phi[0][k], &phi[1][k], sizeof(double));
     hj_ls_free(phi[0]), hj_ls_free(phi[1]), hj_ls_free(ttr);
 }
 
