@@ -1146,13 +1146,12 @@ static int lf_finish_dim(int diffs, int dim, int cm, long n, const double *A, co
 }
 
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
- * scheme of six rows of differences (ENO3, WENO5).  WENO5 takes the
- * differences in registers from the values along stride[1] (as
- * lf_dim2_plane: no rows of differences stored and read back) and carries
+ * scheme of six differences (ENO3, WENO5), the differences in registers
+ * from the values along stride[1] (as along dimension 2: no rows of
+ * differences stored and read back, no ring to keep).  WENO5 also carries
  * the next row's left derivatives, in one of two buffers at ring + 7 n,
  * ring + 8 n by the parity of idx[1], read by the next row if this thread
- * evaluates it next (rc->cache_r: the row that left them).  ENO3 reads the
- * rows of differences of dim1_ring (6 n doubles at ring).  The caller
+ * evaluates it next (rc->cache_r: the row that left them).  The caller
  * keeps ring + 6 n for itself. */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
                          int mean, double *l, double *r)
@@ -1168,9 +1167,8 @@ static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_c
         rc->cache_r = rc->r;
         return;
     }
-    const double *D[6];
-    dim1_ring(g, y, rc, ring, D);
-    hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
+    if (mean) hj_ls_upwind_row_mean_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
+    else hj_ls_upwind_row_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
 }
 
 /* Whether the row's H and alphas come from ham_partial_row: set, and one
