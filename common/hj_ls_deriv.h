@@ -102,10 +102,11 @@ void hj_ls_upwind_diffs_eps(int scheme, const double *const *D, long n, double e
 int hj_ls_weno5_diffs_next_eps(int scheme, const double *const *D, long n, double eps, int mean, const double *left,
                                double *next, double *dl, double *dr);
 /* hj_ls_weno5_diffs_next_eps with the differences taken from the values
- * p along stride s (spacing dx), as hj_ls_upwind_row_eps takes them: for
- * rows whose neighbour in a dimension other than 0 and 1 comes later (the
- * next plane), whose left derivatives the caller keeps.  The same bits as
- * hj_ls_upwind_row_eps. */
+ * p along stride s (spacing dx), as hj_ls_upwind_row_eps takes them (no
+ * rows of differences stored and read back): for rows whose neighbour in
+ * a dimension other than 0 comes later (the next row along dimension 1,
+ * the next plane along dimension 2), whose left derivatives the caller
+ * keeps.  The same bits as hj_ls_upwind_row_eps. */
 int hj_ls_weno5_row_next_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, int mean,
                              const double *left, double *next, double *dl, double *dr);
 /* mean = 1 above, and hj_ls_upwind_row_mean_eps: instead of D- and D+,

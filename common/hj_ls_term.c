@@ -1146,23 +1146,29 @@ static int lf_finish_dim(int diffs, int dim, int cm, long n, const double *A, co
 }
 
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
- * scheme of six rows of differences (ENO3, WENO5), the rows from
- * dim1_ring (6 n doubles at ring).  WENO5 also carries the next row's
- * left derivatives, in one of two buffers at ring + 7 n, ring + 8 n by
- * the parity of the ring's head, which alternates from row to row while
- * the ring carries on (the caller keeps ring + 6 n for itself). */
+ * scheme of six differences (ENO3, WENO5), the differences in registers
+ * from the values along stride[1] (as along dimension 2: no rows of
+ * differences stored and read back, no ring to keep).  WENO5 also carries
+ * the next row's left derivatives, in one of two buffers at ring + 7 n,
+ * ring + 8 n by the parity of idx[1], read by the next row if this thread
+ * evaluates it next (rc->cache_r: the row that left them).  The caller
+ * keeps ring + 6 n for itself. */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
                          int mean, double *l, double *r)
 {
-    const double *D[6];
     const size_t n = (size_t)g->N[0];
-    /* dim1_ring's test: the ring holds the previous row's differences */
+    /* dim1_ring's test: this thread's previous row is row r - 1 */
     const int cont = rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0;
-    dim1_ring(g, y, rc, ring, D);
-    const int h = rc->head & 1;
-    double *next = ring + (size_t)(7 + h) * n, *left = ring + (size_t)(8 - h) * n;
-    if (!hj_ls_weno5_diffs_next_eps(scheme, D, g->N[0], eps, mean, cont ? left : NULL, next, l, r))
-        hj_ls_upwind_diffs_eps(scheme, D, g->N[0], eps, mean, l, r);
+    if (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B) {
+        const size_t h = (size_t)(rc->idx[1] & 1);
+        double *next = ring + (7 + h) * n, *left = ring + (8 - h) * n;
+        hj_ls_weno5_row_next_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, mean, cont ? left : NULL,
+                                 next, l, r);
+        rc->cache_r = rc->r;
+        return;
+    }
+    if (mean) hj_ls_upwind_row_mean_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
+    else hj_ls_upwind_row_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
 }
 
 /* Whether the row's H and alphas come from ham_partial_row: set, and one

@@ -722,6 +722,54 @@ static void lax_friedrichs_range_free(void **state)
     free(work);
 }
 
+/* ENO3 and WENO5 across rows (the differences along dimensions 1 and 2
+ * taken from the values; WENO5 along dimension 1: a row's right
+ * derivatives and the next row's left ones from one window, likewise
+ * across planes along dimension 2) give the bits of the range pass's
+ * derivatives, row by row (hj_ls_upwind_row): ENO3A and B, WENO5A and B,
+ * GLF (the mean and D+ - D-) and LLF (D- and D+), local and grid
+ * epsilons, on grids of odd and even N[1], rows shorter than, not a
+ * multiple of and a multiple of a vector block, with 1 and 2 threads (a
+ * thread's rows may start in the middle of a plane and follow another
+ * thread's). */
+static void lax_friedrichs_rows_across(void **state)
+{
+    (void)state;
+    const long shapes[3][3] = {{5, 9, 4}, {13, 8, 5}, {16, 7, 6}};
+    const int threads = hj_test_max_threads();
+    for (int si = 0; si < 3; si++) {
+        hj_ls_grid g;
+        double mn[3] = {-1, -1, -1}, mx[3] = {1, 1.3, 0.8};
+        hj_ls_bc bc[3];
+        for (int d = 0; d < 3; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+        assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, shapes[si], bc, NULL), HJ_OK);
+        double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), b0, b;
+        double *work = malloc(sizeof(double) * hj_ls_lax_friedrichs_work_size(&g));
+        assert_non_null(work);
+        hj_ls_fill(&g, y, bump3, NULL);
+        for (int q = 0; q < 16; q++) {
+            const int schemes[4] = {HJ_LS_ENO3A, HJ_LS_ENO3B, HJ_LS_WENO5A, HJ_LS_WENO5B};
+            const int scheme = schemes[q & 3], diss = q & 4 ? HJ_LS_LLF : HJ_LS_GLF;
+            hj_test_one_thread();
+            hj_ls_lax_friedrichs lf;
+            hj_ls_lax_friedrichs_init(&lf, &g, scheme, diss, ham_mix, partial_x, NULL);
+            lf.weno_eps = q & 8 ? HJ_LS_WENO_EPS_GRID : HJ_LS_WENO_EPS_LOCAL;
+            lf.work = work; /* the range pass: hj_ls_upwind_row along every dimension */
+            assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
+            for (int th = 1; th <= threads; th++) {
+                hj_test_threads(th);
+                lf.work = NULL, lf.range_free = 1;
+                assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b, NULL), HJ_OK);
+                assert_memory_equal(&b, &b0, sizeof b);
+                assert_interior_equal(&g, f0, f1);
+            }
+        }
+        hj_test_one_thread();
+        hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
+        free(work);
+    }
+}
+
 /* row_const: partials constant along each row of x_0 (dimensions 0 and 2,
  * the mask with a loop of its own, and dimension 0 alone, whose row is
  * filled), written at node 0 only with NaN after it, give the bits of the
@@ -1205,7 +1253,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
                         cmocka_unit_test(callback_errors_rows), cmocka_unit_test(lax_friedrichs_ham_partial_row),
-                        cmocka_unit_test(lax_friedrichs_range_free),
+                        cmocka_unit_test(lax_friedrichs_range_free), cmocka_unit_test(lax_friedrichs_rows_across),
                         cmocka_unit_test(lax_friedrichs_row_const),
                         cmocka_unit_test(scalar_rows_equal_nodes),
                         cmocka_unit_test(curvature_shrinking_circle), cmocka_unit_test(hessian_heat),
