@@ -829,22 +829,23 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
 }
 
 /* The nodes of one block in sweep coordinates (u: block index per
- * dimension), in the sweep's lexicographic order; returns the largest
- * change of T. */
-static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], int order, int q, int first,
-                          size_t *nu)
+ * dimension within the box [lo, hi) of nodes), in the sweep's
+ * lexicographic order; returns the largest change of T. */
+static double sweep_block(eik_work *w, int s, const long lo[3], const long hi[3], const long u[3], const long B[3],
+                          int order, int q, int first, size_t *nu)
 {
-    const long n0 = w->n[0], n1 = w->n[1], n2 = w->n[2];
+    const long m0 = hi[0] - lo[0], m1 = hi[1] - lo[1], m2 = hi[2] - lo[2];
     const int s0 = s & 1, s1 = (s >> 1) & 1, s2 = (s >> 2) & 1;
     const long i0 = u[0] * B[0], j0 = u[1] * B[1], k0 = u[2] * B[2];
-    const long i1 = i0 + B[0] < n0 ? i0 + B[0] : n0, j1 = j0 + B[1] < n1 ? j0 + B[1] : n1,
-               k1 = k0 + B[2] < n2 ? k0 + B[2] : n2;
+    const long i1 = i0 + B[0] < m0 ? i0 + B[0] : m0, j1 = j0 + B[1] < m1 ? j0 + B[1] : m1,
+               k1 = k0 + B[2] < m2 ? k0 + B[2] : m2;
     double change = 0;
     for (long kk = k0; kk < k1; kk++)
         for (long jj = j0; jj < j1; jj++)
             for (long ii = i0; ii < i1; ii++) {
-                const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + w->G[0], (s1 ? n1 - 1 - jj : jj) + w->G[1],
-                                    (s2 ? n2 - 1 - kk : kk) + w->G[2]};
+                const long ip[3] = {(s0 ? hi[0] - 1 - ii : lo[0] + ii) + w->G[0],
+                                    (s1 ? hi[1] - 1 - jj : lo[1] + jj) + w->G[1],
+                                    (s2 ? hi[2] - 1 - kk : lo[2] + kk) + w->G[2]};
                 const double c = visit(w, ip, s, order, q, first, nu);
                 if (c > change) change = c;
             }
@@ -864,11 +865,12 @@ static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], 
  * grid) is the serial sweep, whose memory access runs along the rows:
  * node hyperplanes touch a new cache line at every node, which made the
  * serial 3-D sweep several times slower. */
-static double sweep(eik_work *w, int s, int order, int q, int first, long par_min, const long B[3], size_t *nup)
+static double sweep(eik_work *w, int s, const long lo[3], const long hi[3], int order, int q, int first, long par_min,
+                    const long B[3], size_t *nup)
 {
     long nb[3], Lmax = 0;
     for (int d = 0; d < 3; d++) {
-        nb[d] = (w->n[d] + B[d] - 1) / B[d];
+        nb[d] = (hi[d] - lo[d] + B[d] - 1) / B[d];
         Lmax += nb[d] - 1;
     }
     double change = 0;
@@ -892,7 +894,7 @@ static double sweep(eik_work *w, int s, int order, int q, int first, long par_mi
                 const long jlo = M - (nb[0] - 1) > 0 ? M - (nb[0] - 1) : 0, jhi = M < nb[1] - 1 ? M : nb[1] - 1;
                 if (rest <= jhi - jlo) {
                     const long J = jlo + rest, u[3] = {M - J, J, K};
-                    const double ch = sweep_block(w, s, u, B, order, q, first, &nu);
+                    const double ch = sweep_block(w, s, lo, hi, u, B, order, q, first, &nu);
                     if (ch > change) change = ch;
                     break;
                 }
@@ -902,6 +904,16 @@ static double sweep(eik_work *w, int s, int order, int q, int first, long par_mi
     }
     *nup += nu;
     return change;
+}
+
+/* The orthants around source s: along dimension d the nodes below
+ * cut[d] lie at or before the source (x <= s), the others after it. */
+static void source_cut(const eik_work *w, const src_info *s, long cut[3])
+{
+    for (int d = 0; d < w->dim; d++) {
+        const double u = floor((s->x[d] - w->x0[d]) / w->h[d]) + 1;
+        cut[d] = u < 0 ? 0 : u > (double)w->n[d] ? w->n[d] : (long)u;
+    }
 }
 
 /* Block edges for the sweeps: the whole grid with one thread or on a grid
@@ -1465,7 +1477,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
 
     /* Nodes: state and slowness; bad values before anything else. */
     const long n0 = w.n[0], n1 = w.n[1], n2 = w.n[2];
-    size_t nfixed = 0;
+    size_t nfixed = 0, nobst = 0;
     for (long c = 0; c < n2 && rc == HJ_OK; c++)
         for (long b = 0; b < n1 && rc == HJ_OK; b++)
             for (long a = 0; a < n0; a++) {
@@ -1473,6 +1485,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 const long k = (a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2];
                 if (obstacle && obstacle[u]) {
                     w.state[k] = ST_OBST;
+                    nobst++;
                     if (fixed && !isnan(fixed[u])) {
                         rc = hj_error_set(err, HJ_EINVAL, "node (%ld, %ld, %ld) is both an obstacle and a fixed value",
                                           a, b, c);
@@ -1631,6 +1644,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     const long par_min = opt->parallel_min > 0 ? opt->parallel_min : 4096;
     long B[3];
     sweep_blocks(&w, opt->block, par_min, B);
+    const long all_lo[3] = {0, 0, 0}, all_hi[3] = {w.n[0], w.n[1], w.n[2]};
 
     /* First order sweeps to convergence. */
     int q = 1;
@@ -1640,7 +1654,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     for (long it = 1; it <= opt->max_iter; it++) {
         double change = 0;
         for (int s = 0; s < nsw; s++, q++) {
-            const double c = sweep(&w, s, 1, q, 1, par_min, B, &st->updates);
+            const double c = sweep(&w, s, all_lo, all_hi, 1, q, 1, par_min, B, &st->updates);
             if (c > change) change = c;
         }
         scale = 0;
@@ -1690,17 +1704,48 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                                 (double)np * (2 * sizeof(float) + 1) / 1e6);
         }
         mark_rough(&w);
+        /* One point source, no obstacle, no fixed data: the higher order
+         * iterations sweep the 2^dim orthants around the source, each away
+         * from it, so that every axis line is visited away from the
+         * source (source_cut); else the 2^dim full sweeps. */
+        const int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
+        long cut[3] = {0, 0, 0};
+        if (octants) source_cut(&w, &w.src[0], cut);
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
         double cyc[2] = {0, 0}; /* the same for the WENO5 cycle test */
         int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
+        /* the cycle and stall tests' blocks in units of work: a pass
+         * visits each node once, an iteration of full sweeps 2^dim times */
+        const int cyc_span = octants ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
+        const int stall_span = octants ? STALL_SPAN << w.dim : STALL_SPAN;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
             if (w.chg) memset(w.chg, 0, np * sizeof(float));
-            for (int s = 0; s < nsw; s++, q++) {
-                fill_ghosts(&w, deg, q);
-                const double c = sweep(&w, s, opt->order, q, 0, par_min, B, &st->updates);
-                if (c > change) change = c;
+            if (octants) {
+                /* one pass: each orthant swept away from the source, all
+                 * with the pass's number q (each node is visited once) */
+                for (int s = 0; s < nsw; s++) {
+                    long lo[3], hi[3];
+                    int empty = 0;
+                    for (int d = 0; d < 3; d++) {
+                        const int back = d < w.dim && ((s >> d) & 1);
+                        lo[d] = d < w.dim && !back ? cut[d] : 0;
+                        hi[d] = back ? cut[d] : w.n[d];
+                        empty = empty || lo[d] >= hi[d];
+                    }
+                    if (empty) continue;
+                    fill_ghosts(&w, deg, q);
+                    const double c = sweep(&w, s, lo, hi, opt->order, q, 0, par_min, B, &st->updates);
+                    if (c > change) change = c;
+                }
+                q++;
+            } else {
+                for (int s = 0; s < nsw; s++, q++) {
+                    fill_ghosts(&w, deg, q);
+                    const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, B, &st->updates);
+                    if (c > change) change = c;
+                }
             }
             scale = 0;
             for (size_t k = 0; k < np; k++)
@@ -1723,7 +1768,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
              * tolerance too small to reach) is no cycle. */
             if (opt->order == 5 && demoted < STALL_ROUNDS) {
                 if (change > cyc[1]) cyc[1] = change;
-                if (++ncyc == CYCLE_SPAN) {
+                if (++ncyc == cyc_span) {
                     if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > 1e-12 * scale) {
                         demote_cycling(&w, change, q);
                         demoted++;
@@ -1738,7 +1783,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 continue; /* the stall test below waits for the last round */
             }
             if (change > blk[1]) blk[1] = change;
-            if (++nblk == STALL_SPAN) {
+            if (++nblk == stall_span) {
                 /* a plateau at rounding level is no stall either */
                 const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
                 if (stall && opt->order == 3 && w.relax) {
