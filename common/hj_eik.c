@@ -1389,8 +1389,8 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     const long nmin = opt->order == 1 ? 2 : opt->order;
     for (int d = 0; d < g->dim; d++) {
         if (g->n[d] < nmin)
-            return hj_error_set(err, HJ_EINVAL, "grid: %ld nodes along dimension %d, order %d needs at least %ld",
-                                g->n[d], d, opt->order, nmin);
+            return hj_error_set(err, HJ_EINVAL, "grid: %ld node%s along dimension %d, order %d needs at least %ld",
+                                g->n[d], hj_plural(g->n[d]), d, opt->order, nmin);
         if (!(g->dx[d] > 0) || !isfinite(g->dx[d]) || !isfinite(g->x0[d]))
             return hj_error_set(err, HJ_EINVAL, "grid: spacing %g and origin %g along dimension %d must be finite, "
                                                 "spacing > 0", g->dx[d], g->x0[d], d);
@@ -1403,7 +1403,10 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     if (opt->block < 0) return hj_error_set(err, HJ_EINVAL, "block %ld: must be >= 0 (0: chosen by the solver)", opt->block);
     if (opt->parallel_min < 0)
         return hj_error_set(err, HJ_EINVAL, "parallel_min %ld: must be >= 0 (0: the default)", opt->parallel_min);
-    if (nsrc < 0 || (nsrc > 0 && !src)) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
+    if (nsrc < 0) return hj_error_set(err, HJ_EINVAL, "sources: count %d: must be >= 0", nsrc);
+    if (nsrc > 0 && !src) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
+    if (opt->factored != 0 && opt->factored != 1)
+        return hj_error_set(err, HJ_EINVAL, "factored %d: must be 0 or 1", opt->factored);
     if (!f && (!(f_const > 0) || !isfinite(f_const)))
         return hj_error_set(err, HJ_EINVAL, "constant slowness %g: must be finite and > 0", f_const);
     double npad = 1;
@@ -1664,6 +1667,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 if (v < INFINITY && v > scale) scale = v;
             }
         st->iterations = st->fo_iterations = it;
+        st->sweeps += nsw;
         st->change = scale > 0 ? change / scale : change;
         if (opt->progress) opt->progress(it, st->change, opt->progress_ctx);
         if (change <= opt->tol * scale) {
@@ -1740,12 +1744,14 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                     if (c > change) change = c;
                 }
                 q++;
+                st->sweeps++;
             } else {
                 for (int s = 0; s < nsw; s++, q++) {
                     fill_ghosts(&w, deg, q);
                     const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, B, &st->updates);
                     if (c > change) change = c;
                 }
+                st->sweeps += nsw;
             }
             scale = 0;
             for (size_t k = 0; k < np; k++)
@@ -1840,12 +1846,13 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     /* The first order start can use up max_iter: then no higher order
      * iteration ran and the last change (the start's) is within tol. */
     if (!conv && opt->order > 1 && st->iterations == st->fo_iterations && st->change <= opt->tol)
-        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations: the first order start took all of "
-                                             "them (max_iter %ld), no order %d iteration ran; the first order result "
-                                             "is kept", st->iterations, opt->max_iter, opt->order);
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s: the first order start took all "
+                                             "of max_iter %ld, no order %d iteration ran; the first order result is "
+                                             "kept", st->iterations, hj_plural(st->iterations), opt->max_iter, opt->order);
     if (!conv)
-        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations (last change %.3g of the solution's "
-                                             "scale > tol %.3g); the last iterate is kept", st->iterations, st->change,
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s (last change %.3g of the solution's "
+                                             "scale > tol %.3g); the last iterate is kept", st->iterations,
+                            hj_plural(st->iterations), st->change,
                             opt->tol);
     return HJ_OK;
 }
