@@ -151,6 +151,7 @@
 #include "hj_eik.h"
 #include "hj_eik_guard.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -191,6 +192,18 @@ enum { STALL_SPAN = 8, STALL_ROUNDS = 8 };
  * 2-D), 0.12 or less over a block, and never reach it. */
 enum { CYCLE_SPAN = 4 };
 #define CYCLE_RATIO 0.5
+/* The rounding level of the largest change, relative to max |T|: the
+ * change levels off there, whatever tol asks (the one source of the
+ * linear speed 1 + 0.5 x + 0.3 y on [0, 1]^2, its maximum over 150
+ * iterations in the plateau: 1.4e-13, 3.0e-13, 8.9e-13, 2.6e-12 at N =
+ * 40, 80, 160, 320, orders 3 and 5; 3-D 1.0e-13 and 2.0e-13 at N = 20 and
+ * 40), about 2 to 5 eps n^1.5 with n the most nodes along a dimension.
+ * ROUND_LEVEL eps n^1.5, at least 1e-12, keeps a margin of 3 over those;
+ * a plateau below it is no stall or cycle to demote nodes for (with the
+ * 1e-12 alone the 2-D N = 320 order 5 case demoted 30591 nodes to first
+ * order at tol = 1e-12, L1 2.3e-6 instead of 3e-12), and it ends the
+ * iteration: tol is below what round-off lets it reach. */
+#define ROUND_LEVEL 16
 /* Rounds of demote_first, the last one demoting every node. */
 enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
@@ -1652,7 +1665,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     /* First order sweeps to convergence. */
     int q = 1;
     const int nsw = 1 << w.dim;
-    int conv = 0;
+    int conv = 0, at_round = 0;
     double scale = 0;
     for (long it = 1; it <= opt->max_iter; it++) {
         double change = 0;
@@ -1715,6 +1728,11 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         const int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
         long cut[3] = {0, 0, 0};
         if (octants) source_cut(&w, &w.src[0], cut);
+        long nmax = 0;
+        for (int d = 0; d < w.dim; d++) nmax = w.n[d] > nmax ? w.n[d] : nmax;
+        const double round_level = fmax(1e-12, ROUND_LEVEL * DBL_EPSILON * pow((double)nmax, 1.5));
+        double rnd[2] = {0, 0}; /* the rounding test's blocks, like blk */
+        int nrnd = 0;
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
         double cyc[2] = {0, 0}; /* the same for the WENO5 cycle test */
         int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
@@ -1767,15 +1785,28 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 conv = 1;
                 break;
             }
+            /* A block of stall_span iterations whose largest change is
+             * below the rounding level and not below STALL_RATIO times
+             * the last block's: round-off, tol cannot be reached. */
+            if (change > rnd[1]) rnd[1] = change;
+            if (++nrnd == stall_span) {
+                if (rnd[0] > 0 && rnd[1] >= STALL_RATIO * rnd[0] && rnd[1] <= round_level * scale) {
+                    at_round = 1;
+                    break;
+                }
+                rnd[0] = rnd[1];
+                rnd[1] = 0;
+                nrnd = 0;
+            }
             /* WENO5 cycling (the largest change of a block of
              * CYCLE_SPAN iterations not below CYCLE_RATIO times that of
              * the block before): the nodes that still move use WENO3.
-             * A plateau at rounding level (below 1e-12 of the scale: a
-             * tolerance too small to reach) is no cycle. */
+             * A plateau at rounding level (below round_level of the
+             * scale: a tolerance too small to reach) is no cycle. */
             if (opt->order == 5 && demoted < STALL_ROUNDS) {
                 if (change > cyc[1]) cyc[1] = change;
                 if (++ncyc == cyc_span) {
-                    if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > 1e-12 * scale) {
+                    if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > round_level * scale) {
                         demote_cycling(&w, change, q);
                         demoted++;
                         cyc[1] = 0; /* the next block starts afresh */
@@ -1791,7 +1822,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
             if (change > blk[1]) blk[1] = change;
             if (++nblk == stall_span) {
                 /* a plateau at rounding level is no stall either */
-                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
+                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > round_level * scale;
                 if (stall && opt->order == 3 && w.relax) {
                     /* order 3: the plain update from here on (the wall
                      * of eik_convergence at N = 40: changes of 3.5e-12
@@ -1849,6 +1880,11 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
         return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s: the first order start took all "
                                              "of max_iter %ld, no order %d iteration ran; the first order result is "
                                              "kept", st->iterations, hj_plural(st->iterations), opt->max_iter, opt->order);
+    if (at_round)
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s: tol %.3g is below the rounding level "
+                                             "reached (the change levels off at %.3g of the solution's scale); the "
+                                             "last iterate is kept", st->iterations, hj_plural(st->iterations), opt->tol,
+                            st->change);
     if (!conv)
         return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s (last change %.3g of the solution's "
                                              "scale > tol %.3g); the last iterate is kept", st->iterations,

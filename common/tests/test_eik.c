@@ -181,7 +181,24 @@ static void bad_input(void **state)
     assert_int_equal(solve_err(&g, f, 0, NULL, &big, 1, NULL, &o, &e), HJ_EINVAL);
     assert_non_null(strstr(e.msg, "source 1: time 1e+200 is out of range"));
     o.factored = 1;
+    /* a negative count is no NULL array; factored is a flag */
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, -1, NULL, &o, &e), HJ_EINVAL);
+    if (!strstr(e.msg, "count -1: must be >= 0")) fail_msg("message: %s", e.msg);
+    o.factored = 7;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
+    if (!strstr(e.msg, "factored 7: must be 0 or 1")) fail_msg("message: %s", e.msg);
+    o.factored = 1;
+    g1 = g;
+    g1.n[0] = 1;
+    assert_int_equal(solve_err(&g1, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
+    if (!strstr(e.msg, "grid: 1 node along dimension 0")) fail_msg("message: %s", e.msg);
     assert_int_equal(progress_calls, 0);
+    /* singular counts in the messages */
+    o.progress = NULL;
+    o.order = 1;
+    o.max_iter = 1;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_ENOCONV);
+    if (!strstr(e.msg, "no convergence in 1 iteration (")) fail_msg("message: %s", e.msg);
 }
 
 /* A linear velocity v = v0 + G.x: slowness and closed-form travel time. */
@@ -299,7 +316,11 @@ static void orders_on_small_case(void **state)
  * 2-D order 3 13 and 15 iterations, order 5 15 and 16; 3-D order 3 9
  * and 11, order 5 10 and 12 (with the plain slope against the flow and
  * the ghosts held for the sweep: 15 and 17, 20 and 21; 9 and 11, 11
- * and 13).  With the downwind nodes moved by the
+ * and 13).  Those were iterations of 2^dim full sweeps; the case now
+ * takes orthant passes (hj_eik.h), one sweep's work each, counted as
+ * iterations the same way: 2-D order 3 19 and 21, order 5 23 and 23;
+ * 3-D 19 and 19, 24 and 26 (stats.sweeps: 37 and 42, 41 and 44; 47 and
+ * 54, 52 and 61).  With the downwind nodes moved by the
  * node's change alone (no extrapolation) 2-D 19 and 20, 25 and 32,
  * 3-D 10 and 14, 12 and 16; without relaxation 2-D 20 and 34, 26 and
  * 49. */
@@ -435,6 +456,60 @@ static void orthant_pass_bitwise(void **state)
 #else
     skip();
 #endif
+}
+
+/* A tolerance below the rounding level: the largest change levels off
+ * at round-off (2-D, one source at (0.0013, 0.6183) in the speed
+ * 1 + 0.5 x + 0.3 y on [0, 1]^2, N = 320: 1.4e-12 to 1.9e-12 of the
+ * scale, above the 1e-12 that the stall and cycle tests used to take as
+ * the rounding level).  HJ_ENOCONV saying so, the last iterate kept and
+ * no node demoted: at tol = 1e-12 order 5 used to demote 30591 nodes to
+ * the first order update and return HJ_OK with L1 2.3e-6 (3e-12 at tol =
+ * 1e-11).  The same source given twice takes the full sweeps.  At N = 80
+ * and tol = 1e-14 the plateau (about 2e-13) ends the iteration too,
+ * where it used to run to max_iter. */
+static void round_off_plateau(void **state)
+{
+    (void)state;
+    for (int small = 0; small < 2; small++) {
+        const long N = small ? 80 : 320;
+        hj_eik_grid g = {2, {N + 1, N + 1, 1}, {0, 0, 0}, {1.0 / N, 1.0 / N, 1}};
+        const size_t n = nodes(&g);
+        double *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b), *f = malloc(n * sizeof *f);
+        for (size_t u = 0; u < n; u++) {
+            double x[3];
+            coords(&g, u, x);
+            f[u] = 1 / (1 + 0.5 * x[0] + 0.3 * x[1]);
+        }
+        const hj_eik_source s[2] = {{{0.0013, 0.6183, 0}, 0}, {{0.0013, 0.6183, 0}, 0}};
+        for (int order = small ? 3 : 5; order <= 5; order += 2)
+            for (int ns = 1; ns <= 2; ns++) {
+                hj_eik_options o = hj_eik_default_options();
+                o.order = order;
+                o.tol = small ? 1e-14 : 1e-12;
+                hj_eik_stats st;
+                hj_error e;
+                const int rc = hj_eik_solve(&g, f, 0, NULL, s, ns, NULL, &o, a, &st, &e);
+                if (rc != HJ_ENOCONV || !strstr(e.msg, "below the rounding level"))
+                    fail_msg("N = %ld, order %d, %d source(s): rc %d after %ld iterations, %zu nodes demoted: %s", N,
+                             order, ns, rc, st.iterations, st.first_order, rc ? e.msg : "");
+                assert_int_equal(st.first_order, 0);
+                assert_true(st.iterations < 200);
+                /* the kept iterate is as good as a converged one (measured:
+                 * within 5e-12 to 5e-11 of the scale) */
+                o.tol = 1e-11;
+                assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, ns, NULL, &o, b, &st, &e), HJ_OK);
+                double dmax = 0, tmax = 0;
+                for (size_t u = 0; u < n; u++) {
+                    dmax = fmax(dmax, fabs(a[u] - b[u]));
+                    tmax = fmax(tmax, fabs(b[u]));
+                }
+                if (!(dmax <= 1e-10 * tmax))
+                    fail_msg("N = %ld, order %d, %d source(s): %.3g of the scale from the tol = 1e-11 solution", N,
+                             order, ns, dmax / tmax);
+            }
+        free(a), free(b), free(f);
+    }
 }
 
 /* Two sources in constant slowness 1 on [0, 1]^2, the second one late:
@@ -835,6 +910,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(orders_on_small_case), cmocka_unit_test(iterations_flat_in_n),
                         cmocka_unit_test(work_level), cmocka_unit_test(orthant_pass_same_solution),
                         cmocka_unit_test(orthant_pass_bitwise),
+                        cmocka_unit_test(round_off_plateau),
                         cmocka_unit_test(late_source_overtaken),
                         cmocka_unit_test(wall_converges), cmocka_unit_test(varying_speed_converges),
                         cmocka_unit_test(varying_speed_order5_count),
