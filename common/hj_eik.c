@@ -68,9 +68,12 @@
  * per iteration, and the 3-D counts still grew (order 3 13, 16, 21, 23
  * iterations for N = 20 ... 160; 14 ... 31 with no relaxation at all).
  * Now the counts are about flat in N (linear speed, tol 1e-12, first
- * order start included: order 3 12, 12, 14, 16 iterations in 3-D for
- * N = 20 ... 160, 17, 17, 19, 20 in 2-D for N = 40 ... 320; see
- * paper1_fastsweeping/eik/notes).  Where the upwind neighbour did not
+ * order start included: order 3 12, 12, 14, 16 iterations of 2^dim full
+ * sweeps in 3-D for N = 20 ... 160, 17, 17, 19, 20 in 2-D for N = 40
+ * ... 320; see paper1_fastsweeping/eik/notes).  With one point source
+ * and no obstacle or fixed node an iteration is now one orthant pass
+ * (source_cut): 3-D order 3 27, 27, 29, 31 passes, a third fewer local
+ * solves and 1.4 to 2.3 times less CPU time, but a count that grows.  Where the upwind neighbour did not
  * change in this sweep (a fixed node, a locked one) du = 0 is its true
  * change.  The relaxation stays on after demote_cycling (with the first
  * form and c held at the linear weights' value there, the 40 x 40 map
@@ -151,6 +154,7 @@
 #include "hj_eik.h"
 #include "hj_eik_guard.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -191,6 +195,18 @@ enum { STALL_SPAN = 8, STALL_ROUNDS = 8 };
  * 2-D), 0.12 or less over a block, and never reach it. */
 enum { CYCLE_SPAN = 4 };
 #define CYCLE_RATIO 0.5
+/* The rounding level of the largest change, relative to max |T|: the
+ * change levels off there, whatever tol asks (the one source of the
+ * linear speed 1 + 0.5 x + 0.3 y on [0, 1]^2, its maximum over 150
+ * iterations in the plateau: 1.4e-13, 3.0e-13, 8.9e-13, 2.6e-12 at N =
+ * 40, 80, 160, 320, orders 3 and 5; 3-D 1.0e-13 and 2.0e-13 at N = 20 and
+ * 40), about 2 to 5 eps n^1.5 with n the most nodes along a dimension.
+ * ROUND_LEVEL eps n^1.5, at least 1e-12, keeps a margin of 3 over those;
+ * a plateau below it is no stall or cycle to demote nodes for (with the
+ * 1e-12 alone the 2-D N = 320 order 5 case demoted 30591 nodes to first
+ * order at tol = 1e-12, L1 2.3e-6 instead of 3e-12), and it ends the
+ * iteration: tol is below what round-off lets it reach. */
+#define ROUND_LEVEL 16
 /* Rounds of demote_first, the last one demoting every node. */
 enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
@@ -829,22 +845,23 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
 }
 
 /* The nodes of one block in sweep coordinates (u: block index per
- * dimension), in the sweep's lexicographic order; returns the largest
- * change of T. */
-static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], int order, int q, int first,
-                          size_t *nu)
+ * dimension within the box [lo, hi) of nodes), in the sweep's
+ * lexicographic order; returns the largest change of T. */
+static double sweep_block(eik_work *w, int s, const long lo[3], const long hi[3], const long u[3], const long B[3],
+                          int order, int q, int first, size_t *nu)
 {
-    const long n0 = w->n[0], n1 = w->n[1], n2 = w->n[2];
+    const long m0 = hi[0] - lo[0], m1 = hi[1] - lo[1], m2 = hi[2] - lo[2];
     const int s0 = s & 1, s1 = (s >> 1) & 1, s2 = (s >> 2) & 1;
     const long i0 = u[0] * B[0], j0 = u[1] * B[1], k0 = u[2] * B[2];
-    const long i1 = i0 + B[0] < n0 ? i0 + B[0] : n0, j1 = j0 + B[1] < n1 ? j0 + B[1] : n1,
-               k1 = k0 + B[2] < n2 ? k0 + B[2] : n2;
+    const long i1 = i0 + B[0] < m0 ? i0 + B[0] : m0, j1 = j0 + B[1] < m1 ? j0 + B[1] : m1,
+               k1 = k0 + B[2] < m2 ? k0 + B[2] : m2;
     double change = 0;
     for (long kk = k0; kk < k1; kk++)
         for (long jj = j0; jj < j1; jj++)
             for (long ii = i0; ii < i1; ii++) {
-                const long ip[3] = {(s0 ? n0 - 1 - ii : ii) + w->G[0], (s1 ? n1 - 1 - jj : jj) + w->G[1],
-                                    (s2 ? n2 - 1 - kk : kk) + w->G[2]};
+                const long ip[3] = {(s0 ? hi[0] - 1 - ii : lo[0] + ii) + w->G[0],
+                                    (s1 ? hi[1] - 1 - jj : lo[1] + jj) + w->G[1],
+                                    (s2 ? hi[2] - 1 - kk : lo[2] + kk) + w->G[2]};
                 const double c = visit(w, ip, s, order, q, first, nu);
                 if (c > change) change = c;
             }
@@ -864,11 +881,12 @@ static double sweep_block(eik_work *w, int s, const long u[3], const long B[3], 
  * grid) is the serial sweep, whose memory access runs along the rows:
  * node hyperplanes touch a new cache line at every node, which made the
  * serial 3-D sweep several times slower. */
-static double sweep(eik_work *w, int s, int order, int q, int first, long par_min, const long B[3], size_t *nup)
+static double sweep(eik_work *w, int s, const long lo[3], const long hi[3], int order, int q, int first, long par_min,
+                    const long B[3], size_t *nup)
 {
     long nb[3], Lmax = 0;
     for (int d = 0; d < 3; d++) {
-        nb[d] = (w->n[d] + B[d] - 1) / B[d];
+        nb[d] = (hi[d] - lo[d] + B[d] - 1) / B[d];
         Lmax += nb[d] - 1;
     }
     double change = 0;
@@ -892,7 +910,7 @@ static double sweep(eik_work *w, int s, int order, int q, int first, long par_mi
                 const long jlo = M - (nb[0] - 1) > 0 ? M - (nb[0] - 1) : 0, jhi = M < nb[1] - 1 ? M : nb[1] - 1;
                 if (rest <= jhi - jlo) {
                     const long J = jlo + rest, u[3] = {M - J, J, K};
-                    const double ch = sweep_block(w, s, u, B, order, q, first, &nu);
+                    const double ch = sweep_block(w, s, lo, hi, u, B, order, q, first, &nu);
                     if (ch > change) change = ch;
                     break;
                 }
@@ -902,6 +920,16 @@ static double sweep(eik_work *w, int s, int order, int q, int first, long par_mi
     }
     *nup += nu;
     return change;
+}
+
+/* The orthants around source s: along dimension d the nodes below
+ * cut[d] lie at or before the source (x <= s), the others after it. */
+static void source_cut(const eik_work *w, const src_info *s, long cut[3])
+{
+    for (int d = 0; d < w->dim; d++) {
+        const double u = floor((s->x[d] - w->x0[d]) / w->h[d]) + 1;
+        cut[d] = u < 0 ? 0 : u > (double)w->n[d] ? w->n[d] : (long)u;
+    }
 }
 
 /* Block edges for the sweeps: the whole grid with one thread or on a grid
@@ -1377,8 +1405,8 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     const long nmin = opt->order == 1 ? 2 : opt->order;
     for (int d = 0; d < g->dim; d++) {
         if (g->n[d] < nmin)
-            return hj_error_set(err, HJ_EINVAL, "grid: %ld nodes along dimension %d, order %d needs at least %ld",
-                                g->n[d], d, opt->order, nmin);
+            return hj_error_set(err, HJ_EINVAL, "grid: %ld node%s along dimension %d, order %d needs at least %ld",
+                                g->n[d], hj_plural(g->n[d]), d, opt->order, nmin);
         if (!(g->dx[d] > 0) || !isfinite(g->dx[d]) || !isfinite(g->x0[d]))
             return hj_error_set(err, HJ_EINVAL, "grid: spacing %g and origin %g along dimension %d must be finite, "
                                                 "spacing > 0", g->dx[d], g->x0[d], d);
@@ -1391,7 +1419,10 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     if (opt->block < 0) return hj_error_set(err, HJ_EINVAL, "block %ld: must be >= 0 (0: chosen by the solver)", opt->block);
     if (opt->parallel_min < 0)
         return hj_error_set(err, HJ_EINVAL, "parallel_min %ld: must be >= 0 (0: the default)", opt->parallel_min);
-    if (nsrc < 0 || (nsrc > 0 && !src)) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
+    if (nsrc < 0) return hj_error_set(err, HJ_EINVAL, "sources: count %d: must be >= 0", nsrc);
+    if (nsrc > 0 && !src) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
+    if (opt->factored != 0 && opt->factored != 1)
+        return hj_error_set(err, HJ_EINVAL, "factored %d: must be 0 or 1", opt->factored);
     if (!f && (!(f_const > 0) || !isfinite(f_const)))
         return hj_error_set(err, HJ_EINVAL, "constant slowness %g: must be finite and > 0", f_const);
     double npad = 1;
@@ -1465,7 +1496,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
 
     /* Nodes: state and slowness; bad values before anything else. */
     const long n0 = w.n[0], n1 = w.n[1], n2 = w.n[2];
-    size_t nfixed = 0;
+    size_t nfixed = 0, nobst = 0;
     for (long c = 0; c < n2 && rc == HJ_OK; c++)
         for (long b = 0; b < n1 && rc == HJ_OK; b++)
             for (long a = 0; a < n0; a++) {
@@ -1473,6 +1504,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 const long k = (a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2];
                 if (obstacle && obstacle[u]) {
                     w.state[k] = ST_OBST;
+                    nobst++;
                     if (fixed && !isnan(fixed[u])) {
                         rc = hj_error_set(err, HJ_EINVAL, "node (%ld, %ld, %ld) is both an obstacle and a fixed value",
                                           a, b, c);
@@ -1631,16 +1663,17 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     const long par_min = opt->parallel_min > 0 ? opt->parallel_min : 4096;
     long B[3];
     sweep_blocks(&w, opt->block, par_min, B);
+    const long all_lo[3] = {0, 0, 0}, all_hi[3] = {w.n[0], w.n[1], w.n[2]};
 
     /* First order sweeps to convergence. */
     int q = 1;
     const int nsw = 1 << w.dim;
-    int conv = 0;
+    int conv = 0, at_round = 0;
     double scale = 0;
     for (long it = 1; it <= opt->max_iter; it++) {
         double change = 0;
         for (int s = 0; s < nsw; s++, q++) {
-            const double c = sweep(&w, s, 1, q, 1, par_min, B, &st->updates);
+            const double c = sweep(&w, s, all_lo, all_hi, 1, q, 1, par_min, B, &st->updates);
             if (c > change) change = c;
         }
         scale = 0;
@@ -1650,6 +1683,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 if (v < INFINITY && v > scale) scale = v;
             }
         st->iterations = st->fo_iterations = it;
+        st->sweeps += nsw;
         st->change = scale > 0 ? change / scale : change;
         if (opt->progress) opt->progress(it, st->change, opt->progress_ctx);
         if (change <= opt->tol * scale) {
@@ -1690,17 +1724,55 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                                 (double)np * (2 * sizeof(float) + 1) / 1e6);
         }
         mark_rough(&w);
+        /* One point source, no obstacle, no fixed data: the higher order
+         * iterations sweep the 2^dim orthants around the source, each away
+         * from it, so that every axis line is visited away from the
+         * source (source_cut); else the 2^dim full sweeps. */
+        const int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
+        long cut[3] = {0, 0, 0};
+        if (octants) source_cut(&w, &w.src[0], cut);
+        long nmax = 0;
+        for (int d = 0; d < w.dim; d++) nmax = w.n[d] > nmax ? w.n[d] : nmax;
+        const double round_level = fmax(1e-12, ROUND_LEVEL * DBL_EPSILON * pow((double)nmax, 1.5));
+        double rnd[2] = {0, 0}; /* the rounding test's blocks, like blk */
+        int nrnd = 0;
         double blk[2] = {0, 0}; /* largest change of the last full block and of the current one */
         double cyc[2] = {0, 0}; /* the same for the WENO5 cycle test */
         int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
+        /* the cycle and stall tests' blocks in units of work: a pass
+         * visits each node once, an iteration of full sweeps 2^dim times */
+        const int cyc_span = octants ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
+        const int stall_span = octants ? STALL_SPAN << w.dim : STALL_SPAN;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
             if (w.chg) memset(w.chg, 0, np * sizeof(float));
-            for (int s = 0; s < nsw; s++, q++) {
-                fill_ghosts(&w, deg, q);
-                const double c = sweep(&w, s, opt->order, q, 0, par_min, B, &st->updates);
-                if (c > change) change = c;
+            if (octants) {
+                /* one pass: each orthant swept away from the source, all
+                 * with the pass's number q (each node is visited once) */
+                for (int s = 0; s < nsw; s++) {
+                    long lo[3], hi[3];
+                    int empty = 0;
+                    for (int d = 0; d < 3; d++) {
+                        const int back = d < w.dim && ((s >> d) & 1);
+                        lo[d] = d < w.dim && !back ? cut[d] : 0;
+                        hi[d] = back ? cut[d] : w.n[d];
+                        empty = empty || lo[d] >= hi[d];
+                    }
+                    if (empty) continue;
+                    fill_ghosts(&w, deg, q);
+                    const double c = sweep(&w, s, lo, hi, opt->order, q, 0, par_min, B, &st->updates);
+                    if (c > change) change = c;
+                }
+                q++;
+                st->sweeps++;
+            } else {
+                for (int s = 0; s < nsw; s++, q++) {
+                    fill_ghosts(&w, deg, q);
+                    const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, B, &st->updates);
+                    if (c > change) change = c;
+                }
+                st->sweeps += nsw;
             }
             scale = 0;
             for (size_t k = 0; k < np; k++)
@@ -1716,15 +1788,28 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 conv = 1;
                 break;
             }
+            /* A block of stall_span iterations whose largest change is
+             * below the rounding level and not below STALL_RATIO times
+             * the last block's: round-off, tol cannot be reached. */
+            if (change > rnd[1]) rnd[1] = change;
+            if (++nrnd == stall_span) {
+                if (rnd[0] > 0 && rnd[1] >= STALL_RATIO * rnd[0] && rnd[1] <= round_level * scale) {
+                    at_round = 1;
+                    break;
+                }
+                rnd[0] = rnd[1];
+                rnd[1] = 0;
+                nrnd = 0;
+            }
             /* WENO5 cycling (the largest change of a block of
              * CYCLE_SPAN iterations not below CYCLE_RATIO times that of
              * the block before): the nodes that still move use WENO3.
-             * A plateau at rounding level (below 1e-12 of the scale: a
-             * tolerance too small to reach) is no cycle. */
+             * A plateau at rounding level (below round_level of the
+             * scale: a tolerance too small to reach) is no cycle. */
             if (opt->order == 5 && demoted < STALL_ROUNDS) {
                 if (change > cyc[1]) cyc[1] = change;
-                if (++ncyc == CYCLE_SPAN) {
-                    if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > 1e-12 * scale) {
+                if (++ncyc == cyc_span) {
+                    if (cyc[0] > 0 && cyc[1] >= CYCLE_RATIO * cyc[0] && cyc[1] > round_level * scale) {
                         demote_cycling(&w, change, q);
                         demoted++;
                         cyc[1] = 0; /* the next block starts afresh */
@@ -1738,9 +1823,9 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                 continue; /* the stall test below waits for the last round */
             }
             if (change > blk[1]) blk[1] = change;
-            if (++nblk == STALL_SPAN) {
+            if (++nblk == stall_span) {
                 /* a plateau at rounding level is no stall either */
-                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > 1e-12 * scale;
+                const int stall = blk[0] > 0 && blk[1] >= STALL_RATIO * blk[0] && blk[1] > round_level * scale;
                 if (stall && opt->order == 3 && w.relax) {
                     /* order 3: the plain update from here on (the wall
                      * of eik_convergence at N = 40: changes of 3.5e-12
@@ -1795,12 +1880,18 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     /* The first order start can use up max_iter: then no higher order
      * iteration ran and the last change (the start's) is within tol. */
     if (!conv && opt->order > 1 && st->iterations == st->fo_iterations && st->change <= opt->tol)
-        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations: the first order start took all of "
-                                             "them (max_iter %ld), no order %d iteration ran; the first order result "
-                                             "is kept", st->iterations, opt->max_iter, opt->order);
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s: the first order start took all "
+                                             "of max_iter %ld, no order %d iteration ran; the first order result is "
+                                             "kept", st->iterations, hj_plural(st->iterations), opt->max_iter, opt->order);
+    if (at_round)
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s: tol %.3g is below the rounding level "
+                                             "reached (the change levels off at %.3g of the solution's scale); the "
+                                             "last iterate is kept", st->iterations, hj_plural(st->iterations), opt->tol,
+                            st->change);
     if (!conv)
-        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iterations (last change %.3g of the solution's "
-                                             "scale > tol %.3g); the last iterate is kept", st->iterations, st->change,
+        return hj_error_set(err, HJ_ENOCONV, "no convergence in %ld iteration%s (last change %.3g of the solution's "
+                                             "scale > tol %.3g); the last iterate is kept", st->iterations,
+                            hj_plural(st->iterations), st->change,
                             opt->tol);
     return HJ_OK;
 }

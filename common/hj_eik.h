@@ -44,9 +44,10 @@ typedef struct {
     int factored;       /* 1 (default): T = T0 tau near point sources */
     double tol;         /* stop when max |T_new - T_old| <= tol * scale,
                          * scale = max finite |T|; default 1e-10 */
-    long max_iter;      /* full iterations (2^dim sweeps each), the first
-                         * order start included; default 1000 */
-    /* Called after each full iteration (NULL: none). */
+    long max_iter;      /* bound on stats.iterations (convergence tests),
+                         * the first order start included; default 1000 */
+    /* Called after each iteration, with its count and change (NULL:
+     * none). */
     void (*progress)(long iter, double change, void *ctx);
     void *progress_ctx;
     long parallel_min;  /* hyperplanes of blocks holding at least this
@@ -59,8 +60,14 @@ typedef struct {
                          * depend on it */
 } hj_eik_options;
 
+/* An iteration ends with a convergence test.  In the first order start,
+ * and in the higher order phase in general, it is 2^dim sweeps of the
+ * whole grid.  With one point source and neither obstacles nor fixed
+ * data, a higher order iteration is one pass instead: the 2^dim orthants
+ * around the source, each swept away from it, a grid's worth of work.
+ * sweeps counts the work in whole-grid sweeps (a pass counts one). */
 typedef struct {
-    long iterations;
+    long iterations;    /* iterations (convergence tests) made */
     double change;      /* last max change / scale */
     int converged;
     size_t unreachable; /* nodes left at +INFINITY outside obstacles */
@@ -71,6 +78,8 @@ typedef struct {
                          * update, where the high order one failed its
                          * safeguard or kept the iteration from
                          * converging (under-resolved data) */
+    long sweeps;        /* whole-grid sweeps done, first order start
+                         * included (an orthant pass counts one) */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);

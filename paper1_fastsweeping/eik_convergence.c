@@ -14,8 +14,12 @@
  *   quick run: 192, four times its finest size 48).
  *
  * Errors are the mean over the nodes (L1) and the maximum (Linf), over all
- * nodes and "away" from the source (|x - s| >= 0.25); iterations count the
- * first order start and the higher order sweeps (2^dim sweeps each);
+ * nodes and "away" from the source (|x - s| >= 0.25); iter counts the
+ * iterations (convergence tests) of the first order start and of the
+ * higher order phase, where an iteration is one orthant pass for
+ * `const` and `linear` (one point source, no obstacle: hj_eik.h) and
+ * 2^dim full sweeps for `obstacle`; sweeps counts the work in whole-grid
+ * sweeps (an iteration of 2^dim full sweeps is 2^dim, a pass one);
  * solves are the local solves per node (hj_eik_stats.updates / nodes:
  * locking skips the nodes whose stencil did not change).
  * Orders e = C h^p are fitted with Ceres (common/hj_fit.h) over the sizes
@@ -44,7 +48,7 @@ typedef struct {
     int cs, dim, order;
     long N;
     double h, l1, linf, l1a, linfa;
-    long iter, fo_iter;
+    long iter, fo_iter, sweeps;
     double solves; /* local solves per node (locking skips the others) */
     int converged;
 } row;
@@ -125,7 +129,7 @@ static int run(int cs, int dim, int order, long N, long Nref, double **ref_cache
     }
     memset(r, 0, sizeof *r);
     r->cs = cs, r->dim = dim, r->order = order, r->N = N, r->h = 2.0 / N;
-    r->iter = st.iterations, r->fo_iter = st.fo_iterations, r->converged = st.converged;
+    r->iter = st.iterations, r->fo_iter = st.fo_iterations, r->sweeps = st.sweeps, r->converged = st.converged;
     const hj_eik_grid g = {dim, {N + 1, N + 1, dim == 3 ? N + 1 : 1}, {-1, -1, -1}, {2.0 / N, 2.0 / N, 2.0 / N}};
     const size_t n = (size_t)(g.n[0] * g.n[1] * g.n[2]);
     r->solves = (double)st.updates / (double)n;
@@ -210,11 +214,11 @@ int main(int argc, char **argv)
     hj_out tab, fit;
     if (hj_out_open(&tab, path, &err) != HJ_OK) hj_cli_fail(spec.prog, HJ_EXIT_RUN, "%s", err.msg);
     fprintf(tab.fp, "# hj_eik convergence (paper1_fastsweeping/eik_convergence.c); away: |x - s| >= %g\n", AWAY);
-    fprintf(tab.fp, "case\tdim\torder\tN\th\tL1\tLinf\tL1_away\tLinf_away\titer\tfo_iter\tsolves\tconverged\n");
+    fprintf(tab.fp, "case\tdim\torder\tN\th\tL1\tLinf\tL1_away\tLinf_away\titer\tfo_iter\tsweeps\tsolves\tconverged\n");
     for (int i = 0; i < nr; i++) {
         const row *r = &rows[i];
-        fprintf(tab.fp, "%s\t%d\t%d\t%ld\t%.6g\t%.3e\t%.3e\t%.3e\t%.3e\t%ld\t%ld\t%.1f\t%d\n", case_names[r->cs],
-                r->dim, r->order, r->N, r->h, r->l1, r->linf, r->l1a, r->linfa, r->iter, r->fo_iter, r->solves,
+        fprintf(tab.fp, "%s\t%d\t%d\t%ld\t%.6g\t%.3e\t%.3e\t%.3e\t%.3e\t%ld\t%ld\t%ld\t%.1f\t%d\n", case_names[r->cs],
+                r->dim, r->order, r->N, r->h, r->l1, r->linf, r->l1a, r->linfa, r->iter, r->fo_iter, r->sweeps, r->solves,
                 r->converged);
     }
     if (hj_out_open(&fit, fpath, &err) != HJ_OK) hj_cli_fail(spec.prog, HJ_EXIT_RUN, "%s", err.msg);

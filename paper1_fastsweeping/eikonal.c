@@ -334,7 +334,8 @@ int main(int argc, char **argv)
         {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &opt.tol, .min = 1e-300, .max = 1, .metavar = "X",
          .help = "stop when an iteration changes T by at most X times max |T| (scale-free)"},
         {.name = "--max-iter", .type = HJ_OPT_LONG, .value = &max_iter, .min = 1, .max = 100000000, .metavar = "N",
-         .help = "at most N iterations (2^dim sweeps each)"},
+         .help = "at most N iterations (convergence tests: 2^dim sweeps each; one orthant pass with one point "
+                 "source and no obstacle or fixed nodes)"},
         {.name = "--format", .type = HJ_OPT_CHOICE, .value = &format, .metavar = "F", .choices = format_w,
          .help = "output: auto (tsv in 2-D, vtk in 3-D), tsv (x y [z] T), matrix (2-D), vtk"},
         {.name = "--out", .type = HJ_OPT_STRING, .value = &out_path, .metavar = "FILE",
