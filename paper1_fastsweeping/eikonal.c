@@ -586,8 +586,9 @@ int main(int argc, char **argv)
     if (st.first_order > 0)
         snprintf(fell, sizeof fell, ", %zu node%s at first order (map not resolved there)", st.first_order,
                  hj_plural((long)st.first_order));
-    snprintf(title, sizeof title, "eikonal: T, order %d%s, %ld iteration%s%s, change %.3g of max |T|", opt.order, fell,
-             st.iterations, hj_plural(st.iterations), converged ? "" : " (not converged: the last iterate)", st.change);
+    snprintf(title, sizeof title, "eikonal: T, order %d%s, %ld iteration%s (%ld grid sweep%s)%s, change %.3g of max |T|",
+             opt.order, fell, st.iterations, hj_plural(st.iterations), st.sweeps, hj_plural(st.sweeps),
+             converged ? "" : " (not converged: the last iterate)", st.change);
     if (fmt == 3) {
         if (hj_vol_write_vtk(out_path, g.n, g.x0, g.dx, title, "T", T, -1, &err)) {
             free(T);
