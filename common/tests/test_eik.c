@@ -515,6 +515,36 @@ static void round_off_plateau(void **state)
     }
 }
 
+/* Order 3's downwind relaxation has a plateau of its own (the obstacle
+ * case of eik_convergence: a wall |x| < 0.05, y < 0.5, source (-0.5,
+ * 0.1)); where it lies below the rounding level (N = 480, not N = 320)
+ * the rounding stop must first drop the relaxation, which then converges
+ * (the stop ended the study's reference solve with HJ_ENOCONV at 2.8e-12
+ * of the scale). */
+static void relaxation_plateau_converges(void **state)
+{
+    (void)state;
+    const long N = 480;
+    hj_eik_grid g = {2, {N + 1, N + 1, 1}, {-1, -1, 0}, {2.0 / N, 2.0 / N, 1}};
+    const size_t n = nodes(&g);
+    double *T = malloc(n * sizeof *T);
+    unsigned char *ob = calloc(n, 1);
+    for (size_t u = 0; u < n; u++) {
+        double x[3];
+        coords(&g, u, x);
+        ob[u] = fabs(x[0]) < 0.05 + 1e-12 && x[1] < 0.5 + 1e-12;
+    }
+    const hj_eik_source s = {{-0.5, 0.1, 0}, 0};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 3;
+    o.tol = 1e-12;
+    hj_eik_stats st;
+    hj_error e;
+    const int rc = hj_eik_solve(&g, NULL, 1, ob, &s, 1, NULL, &o, T, &st, &e);
+    if (rc != HJ_OK) fail_msg("N = %ld: rc %d after %ld iterations: %s", N, rc, st.iterations, e.msg);
+    free(T), free(ob);
+}
+
 /* Two sources in constant slowness 1 on [0, 1]^2, the second one late:
  * a source's time is a bound, so where the first front arrives before the
  * second source starts, the first front passes (T(0.8, 0.8) = 0.6 sqrt 2,
@@ -914,6 +944,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(work_level), cmocka_unit_test(orthant_pass_same_solution),
                         cmocka_unit_test(orthant_pass_bitwise),
                         cmocka_unit_test(round_off_plateau),
+                        cmocka_unit_test(relaxation_plateau_converges),
                         cmocka_unit_test(late_source_overtaken),
                         cmocka_unit_test(wall_converges), cmocka_unit_test(varying_speed_converges),
                         cmocka_unit_test(varying_speed_order5_count),
