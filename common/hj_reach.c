@@ -481,7 +481,8 @@ static int post_step(double tau, double *y, void *ctx, hj_error *err)
         c->tau_prev = tau;
         c->converged = pb->conv_tol > 0 && c->change <= pb->conv_tol;
     }
-    const int code = hj_reach_progress_call(c->pb, c->horizon, c->tau_prev, c->steps, err);
+    const int last = c->converged || tau >= c->span_end; /* the step that ends the run is reported too */
+    const int code = hj_reach_progress_call(c->pb, c->horizon, c->tau_prev, c->steps, last, err);
     if (code) {
         c->stop_code = code;
         return STOP_PROGRESS;

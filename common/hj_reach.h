@@ -236,9 +236,9 @@ typedef struct {
 /* The progress callback after step `steps` at tau, when one is due
  * (both solver paths): its nonzero return, with err naming the step. */
 static inline int hj_reach_progress_call(const hj_reach_problem *pb, double horizon, double tau, long steps,
-                                         hj_error *err)
+                                         int last, hj_error *err)
 {
-    if (!pb->progress || (pb->progress_every > 1 && steps % pb->progress_every)) return HJ_OK;
+    if (!pb->progress || (!last && pb->progress_every > 1 && steps % pb->progress_every)) return HJ_OK;
     const int code = pb->progress(tau, horizon, steps, pb->progress_ctx);
     if (code)
         hj_error_set(err, code, "reach: stopped by the progress callback at tau = %g after %ld step%s (code %d)", tau,

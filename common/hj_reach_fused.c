@@ -924,7 +924,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
             change = ch / dtp;
             converged = pb->conv_tol > 0 && change <= pb->conv_tol;
         }
-        if ((rc = hj_reach_progress_call(pb, pb->horizon, tau, steps, err))) {
+        if ((rc = hj_reach_progress_call(pb, pb->horizon, tau, steps, last || converged, err))) {
             stopped = 1;
             break;
         }

@@ -976,7 +976,7 @@ static void progress_callback(void **state)
     line1_init(&L, 1, 1, 41);
     double *phi[2] = {hj_ls_alloc(&L.g), hj_ls_alloc(&L.g)}, *ttr = hj_ls_alloc(&L.g);
     for (int inf = 0; inf <= 1; inf++)
-        for (long every = 1; every <= 3; every += 2)
+        for (long every = 1; every <= 7; every = 2 * every + 1) /* 1, 3, 7 */
             for (int general = 0; general <= 1; general++) {
                 hj_reach_stats st;
                 hj_error err;
@@ -985,18 +985,22 @@ static void progress_callback(void **state)
                 L.pb.horizon = inf ? INFINITY : 1, L.pb.conv_tol = inf ? 1e-6 : 0;
                 assert_int_equal(hj_reach_solve(&L.pb, phi[general], ttr, &st, &err), HJ_OK);
                 assert_true(st.steps > 6);
-                assert_int_equal(l.calls, st.steps / every);
+                /* every k-th step and the step that ends the run */
+                assert_int_equal(l.calls, st.steps / every + (st.steps % every != 0));
                 assert_true(l.order_ok);
-                assert_int_equal(l.last_steps, st.steps - st.steps % every);
-                if (st.steps % every == 0) assert_close(l.last_tau, st.tau, 0, 0);
+                assert_int_equal(l.last_steps, st.steps);
+                assert_close(l.last_tau, st.tau, 0, 0);
                 assert_true(l.horizon == L.pb.horizon);
-                /* stopped after step 6 */
-                l = (progress_log){0, 0, 6, 0, 0, 1};
+                /* stopped at the first call from step 6 on */
+                const long stop = every * ((6 + every - 1) / every);
+                char after[32];
+                snprintf(after, sizeof after, "after %ld steps", stop);
+                l = (progress_log){0, 0, stop, 0, 0, 1};
                 assert_int_equal(hj_reach_solve(&L.pb, phi[general], ttr, &st, &err), 42);
                 assert_int_equal(err.code, 42);
                 assert_has(err.msg, "stopped by the progress callback");
-                assert_has(err.msg, "after 6 steps");
-                assert_int_equal(st.steps, 6);
+                assert_has(err.msg, after);
+                assert_int_equal(st.steps, stop);
                 assert_false(st.converged);
                 assert_close(l.last_tau, st.tau, 0, 0);
                 assert_true(st.tau > 0 && st.tau < 1);
