@@ -48,7 +48,8 @@ void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, d
 {
     double y[HJ_LS_MAXDIM];
     for (int d = 0; d < g->dim; d++) y[d] = x[d];
-    const double c = hj_ctrl_value(g, phi, x);
+    double c = NAN; /* the value at x, interpolated only when a side is not finite */
+    int have_c = 0;
     for (int d = 0; d < g->dim; d++) {
         const double h = g->dx[d];
         y[d] = x[d] + h;
@@ -59,9 +60,12 @@ void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, d
         /* A time-to-reach is INFINITY where nothing arrives: beside such
          * nodes the one-sided difference on the finite side, and NaN where
          * neither side is finite (an infinite p made G^T p = 0 * inf). */
-        if (isfinite(a) && isfinite(b))
+        if (isfinite(a) && isfinite(b)) {
             p[d] = (a - b) / (2 * h);
-        else if (isfinite(c) && isfinite(a))
+            continue;
+        }
+        if (!have_c) c = hj_ctrl_value(g, phi, x), have_c = 1;
+        if (isfinite(c) && isfinite(a))
             p[d] = (a - c) / h;
         else if (isfinite(c) && isfinite(b))
             p[d] = (c - b) / h;

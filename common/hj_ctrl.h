@@ -8,8 +8,9 @@
  * (the interpolant is only piecewise linear: one cell's width averages
  * its kinks); where the value on one side is not finite (a time-to-reach
  * is INFINITY where nothing arrives) the one-sided difference on the
- * finite side, and NaN where neither side nor the state itself has a
- * finite value.  The optimal inputs are the arguments of the players'
+ * finite side, and NaN where the state's own value is not finite (the
+ * interpolant is INFINITY in every cell with a node not reached, so within
+ * one cell of the reached set's edge) or neither side's is.  The optimal inputs are the arguments of the players'
  * optima in the Hamiltonian for that gradient (hj_reach_dyn_optimal);
  * hj_ctrl_optimal gives NaN inputs for a gradient that is not finite.
  *

@@ -436,7 +436,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: %s on %zu nodes, horizon %g\n", prog, systems[sys], g.nodes, horizon);
         pb.progress = show_progress, pb.progress_ctx = &pr;
     }
-    hj_reach_stats stats;
+    hj_reach_stats stats = {0}; /* read for the last progress line even when the solve failed early */
     const int rc = hj_reach_solve(&pb, phi, ttr, &stats, &err);
     if (show) progress_line(&pr, stats.tau, pb.horizon, stats.steps, 1);
     if (rc) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
