@@ -1153,8 +1153,10 @@ static int lf_finish_dim(int diffs, int dim, int cm, long n, const double *A, co
  * ring + 8 n by the parity of idx[1], read by the next row if this thread
  * evaluates it next (rc->cache_r: the row that left them).  The caller
  * keeps ring + 6 n for itself. */
+/* ring: the carried WENO5 rows at ring + 7n and + 8n; w: the row's
+ * HJ_LS_ROW_WORK n workspace the ENO kernels may use. */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
-                         int mean, double *l, double *r)
+                         double *w, int mean, double *l, double *r)
 {
     const size_t n = (size_t)g->N[0];
     /* dim1_ring's test: this thread's previous row is row r - 1 */
@@ -1167,8 +1169,8 @@ static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_c
         rc->cache_r = rc->r;
         return;
     }
-    if (mean) hj_ls_upwind_row_mean_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
-    else hj_ls_upwind_row_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, ring);
+    if (mean) hj_ls_upwind_row_mean_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, w);
+    else hj_ls_upwind_row_eps(scheme, y + rc->k, g->stride[1], g->N[0], g->dx[1], eps, l, r, w);
 }
 
 /* Whether the row's H and alphas come from ham_partial_row: set, and one
@@ -1323,7 +1325,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         if (diffs) { /* the mean and D+ - D- straight from the kernel */
             if (all)
                 ;
-            else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 1, pd, r);
+            else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, w, 1, pd, r);
             else if (d == 2 && lf_dim2_plane(c->scheme, g, y, rc, ps->eps[2], plane, 1, pd, r))
                 ;
             else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
@@ -1338,7 +1340,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         if (ps->cache) /* the range pass computed them */
             l = (double *)DL + (size_t)d * ds_stride, r = (double *)DR + (size_t)d * ds_stride;
         else if (d == 1 && six)
-            lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, 0, l, r);
+            lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, w, 0, l, r);
         else if (d == 2 && lf_dim2_plane(c->scheme, g, y, rc, ps->eps[2], plane, 0, l, r))
             ;
         else
