@@ -73,9 +73,9 @@
  * ... 320; see paper1_fastsweeping/eik/notes).  With one point source
  * and no obstacle or fixed node an iteration is now one orthant pass
  * (source_cut): 3-D order 3 27, 27, 29, 31 passes, a third fewer local
- * solves and 1.4 to 2.3 times less CPU time, but a count that grows.  Where the upwind neighbour did not
- * change in this sweep (a fixed node, a locked one) du = 0 is its true
- * change.  The relaxation stays on after demote_cycling (with the first
+ * solves and 1.4 to 2.3 times less CPU time, but a count that grows.
+ * Where the upwind neighbour did not change in this sweep (a fixed node,
+ * a locked one) du = 0 is its true change.  The relaxation stays on after demote_cycling (with the first
  * form and c held at the linear weights' value there, the 40 x 40 map
  * below took 105 iterations at order 5, with the quicker cycle test;
  * 64 instead of 33 now).  In the
