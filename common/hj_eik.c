@@ -1423,6 +1423,8 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     if (nsrc > 0 && !src) return hj_error_set(err, HJ_EINVAL, "sources: %d given with a NULL array", nsrc);
     if (opt->factored != 0 && opt->factored != 1)
         return hj_error_set(err, HJ_EINVAL, "factored %d: must be 0 or 1", opt->factored);
+    if (opt->separate_sources != 0 && opt->separate_sources != 1)
+        return hj_error_set(err, HJ_EINVAL, "separate_sources %d: must be 0 or 1", opt->separate_sources);
     if (!f && (!(f_const > 0) || !isfinite(f_const)))
         return hj_error_set(err, HJ_EINVAL, "constant slowness %g: must be finite and > 0", f_const);
     double npad = 1;
@@ -1437,9 +1439,13 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
  * walled off. */
 #define EIK_T_RANGE 1e150
 
-int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle,
-                 const hj_eik_source *src, int nsrc, const double *fixed, const hj_eik_options *opt, double *T,
-                 hj_eik_stats *st, hj_error *err)
+/* One solve with every source and the fixed data together (the joint
+ * solve).  fo_out (NULL: none): per node 1 where the result took the first
+ * order update.  check_only: return after the input checks, before any
+ * sweep. */
+static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle,
+                       const hj_eik_source *src, int nsrc, const double *fixed, const hj_eik_options *opt, double *T,
+                       hj_eik_stats *st, unsigned char *fo_out, int check_only, hj_error *err)
 {
     hj_eik_stats dummy;
     if (!st) st = &dummy;
@@ -1577,7 +1583,7 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     }
     if (rc == HJ_OK && nsrc == 0 && nfixed == 0)
         rc = hj_error_set(err, HJ_EINVAL, "no source and no fixed node: nothing to propagate from");
-    if (rc != HJ_OK) {
+    if (rc != HJ_OK || check_only) {
         work_free(&w);
         return rc;
     }
@@ -1857,6 +1863,13 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     st->converged = conv;
     if (w.fo)
         for (size_t k = 0; k < np; k++) st->first_order += w.fo[k] && w.state[k] == ST_FREE;
+    if (fo_out)
+        for (long c = 0; c < n2; c++)
+            for (long b = 0; b < n1; b++)
+                for (long a = 0; a < n0; a++) {
+                    const long k = (a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2];
+                    fo_out[a + n0 * (b + n1 * c)] = w.fo && w.fo[k] && w.state[k] == ST_FREE;
+                }
 
     for (long c = 0; c < n2; c++)
         for (long b = 0; b < n1; b++)
@@ -1904,4 +1917,116 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
                             hj_plural(st->iterations), st->change,
                             opt->tol);
     return HJ_OK;
+}
+
+/* Progress of the separate solves: iterations counted from the first
+ * solve's first. */
+typedef struct {
+    const hj_eik_options *opt;
+    long offset;
+} sep_progress;
+
+static void sep_progress_cb(long iter, double change, void *ctx)
+{
+    const sep_progress *p = ctx;
+    p->opt->progress(p->offset + iter, change, p->opt->progress_ctx);
+}
+
+/* Several sources (the fixed data one more): T = min_k T_k, each T_k solved
+ * alone.  Each T_k is smooth away from its own source, so the minimum has
+ * the scheme's order up to the kink where two fronts meet, where the joint
+ * solve's stencils straddle the kink and fall to first order. */
+static int solve_separate(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle,
+                          const hj_eik_source *src, int nsrc, const double *fixed, size_t n, int nfix,
+                          const hj_eik_options *opt, double *T, hj_eik_stats *st, hj_error *err)
+{
+    hj_eik_options o = *opt;
+    o.separate_sources = 0;
+    sep_progress pctx = {opt, 0};
+    if (opt->progress) {
+        o.progress = sep_progress_cb;
+        o.progress_ctx = &pctx;
+    }
+    /* Tc: the current solve; fw, fc: the first order flags of the running
+     * minimum's solve and of the current one. */
+    double *Tc = malloc(n * sizeof *Tc);
+    unsigned char *fw = opt->order > 1 ? calloc(n, 2) : NULL, *fc = fw ? fw + n : NULL;
+    if (!Tc || (opt->order > 1 && !fw)) {
+        free(Tc);
+        free(fw);
+        return hj_error_set(err, HJ_ENOMEM, "out of memory: the separate solves need %.3g MB besides the solver's",
+                            (double)n * (sizeof(double) + 2) / 1e6);
+    }
+    int rc = HJ_OK;
+    hj_error first;
+    hj_error_clear(&first);
+    st->converged = 1;
+    const int ncomp = nsrc + nfix;
+    for (int c = 0; c < ncomp; c++) {
+        hj_eik_stats sc;
+        hj_error e;
+        hj_error_clear(&e);
+        double *Tk = c == 0 ? T : Tc;
+        unsigned char *fk = c == 0 ? fw : fc;
+        const int r = c < nsrc ? solve_joint(g, f, f_const, obstacle, src + c, 1, NULL, &o, Tk, &sc, fk, 0, &e)
+                               : solve_joint(g, f, f_const, obstacle, NULL, 0, fixed, &o, Tk, &sc, fk, 0, &e);
+        st->iterations += sc.iterations;
+        st->fo_iterations += sc.fo_iterations;
+        st->updates += sc.updates;
+        st->sweeps += sc.sweeps;
+        st->change = sc.change > st->change ? sc.change : st->change;
+        st->converged = st->converged && sc.converged;
+        pctx.offset = st->iterations;
+        if (r != HJ_OK && r != HJ_ENOCONV) { /* out of memory: nothing to keep */
+            free(Tc);
+            free(fw);
+            if (c < nsrc) return hj_error_set(err, r, "source %d solved alone: %s", c + 1, e.msg);
+            return hj_error_set(err, r, "the fixed data solved alone: %s", e.msg);
+        }
+        if (r != HJ_OK && rc == HJ_OK) {
+            /* the first failure is reported; the others are still solved
+             * and the minimum of the last iterates kept, as the joint
+             * solve keeps its last iterate */
+            rc = r;
+            if (c < nsrc) hj_error_set(&first, r, "source %d solved alone: %s", c + 1, e.msg);
+            else hj_error_set(&first, r, "the fixed data solved alone: %s", e.msg);
+        }
+        if (c == 0) continue;
+        for (size_t u = 0; u < n; u++)
+            if (Tc[u] < T[u]) {
+                T[u] = Tc[u];
+                if (fw) fw[u] = fc[u];
+            }
+    }
+    /* The fixed nodes hold their values, as in the joint solve (a source
+     * may reach one before its value). */
+    for (size_t u = 0; fixed && u < n; u++)
+        if (!isnan(fixed[u])) T[u] = fixed[u];
+    for (size_t u = 0; u < n; u++) {
+        if (obstacle && obstacle[u]) continue;
+        st->unreachable += !(T[u] < INFINITY);
+        if (fw) st->first_order += fw[u] && (!fixed || isnan(fixed[u]));
+    }
+    free(Tc);
+    free(fw);
+    if (rc != HJ_OK) return hj_error_set(err, rc, "%s", first.msg);
+    return HJ_OK;
+}
+
+int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const unsigned char *obstacle,
+                 const hj_eik_source *src, int nsrc, const double *fixed, const hj_eik_options *opt, double *T,
+                 hj_eik_stats *st, hj_error *err)
+{
+    if (!opt || !opt->separate_sources || nsrc < 1)
+        return solve_joint(g, f, f_const, obstacle, src, nsrc, fixed, opt, T, st, NULL, 0, err);
+    /* every check of the joint solve, on all the sources, before any sweep */
+    hj_eik_stats dummy;
+    if (!st) st = &dummy;
+    int rc = solve_joint(g, f, f_const, obstacle, src, nsrc, fixed, opt, T, st, NULL, 1, err);
+    if (rc != HJ_OK) return rc;
+    const size_t n = (size_t)g->n[0] * (size_t)g->n[1] * (size_t)(g->dim == 3 ? g->n[2] : 1);
+    int nfix = 0;
+    for (size_t u = 0; fixed && u < n && !nfix; u++) nfix = !isnan(fixed[u]);
+    if (nsrc + nfix < 2) return solve_joint(g, f, f_const, obstacle, src, nsrc, fixed, opt, T, st, NULL, 0, err);
+    return solve_separate(g, f, f_const, obstacle, src, nsrc, fixed, n, nfix, opt, T, st, err);
 }

@@ -58,6 +58,10 @@ typedef struct {
                          * automatic: the whole grid with one thread;
                          * 1: node hyperplanes); the result does not
                          * depend on it */
+    int separate_sources; /* 1: with two or more sources (the fixed data
+                           * counting as one more), solve each alone and
+                           * take the node-wise minimum (see
+                           * hj_eik_solve); 0 (default): one joint solve */
 } hj_eik_options;
 
 /* An iteration ends with a convergence test.  In the first order start,

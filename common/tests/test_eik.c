@@ -884,6 +884,173 @@ static void slowness_scale_free(void **state)
         }
 }
 
+/* Two sources in the linear speed of lin_v (times 0 and 0.1), solved each
+ * alone (separate_sources): T = min_k (t0_k + T_k) converges at order 3 in
+ * Linf and L1 on two grids, 2-D N = 40 and 80, order 3 (the joint solve
+ * measures 0.88 in Linf, 1.1e-2 and 6.0e-3, and 1.96 in L1: its stencils
+ * straddle the kink where the fronts meet). */
+static void separate_sources_order(void **state)
+{
+    (void)state;
+    static const double S2[2][3] = {{-0.4123, -0.3567, 0}, {0.3789, 0.3133, 0}}, t0[2] = {0, 0.1};
+    double linf[2], l1[2];
+    for (int k = 0; k < 2; k++) {
+        const long N = 40L << k;
+        hj_eik_grid g = {2, {N + 1, N + 1, 1}, {-1, -1, 0}, {2.0 / N, 2.0 / N, 1}};
+        const size_t n = nodes(&g);
+        double *T = malloc(n * sizeof *T), *f = malloc(n * sizeof *f);
+        for (size_t u = 0; u < n; u++) {
+            double x[3];
+            coords(&g, u, x);
+            f[u] = 1 / lin_v(x, 2);
+        }
+        hj_eik_source s[2];
+        for (int j = 0; j < 2; j++) s[j] = (hj_eik_source){{S2[j][0], S2[j][1], 0}, t0[j]};
+        hj_eik_options o = hj_eik_default_options();
+        o.tol = 1e-12;
+        o.separate_sources = 1;
+        hj_eik_stats st;
+        hj_error e;
+        assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 2, NULL, &o, T, &st, &e), HJ_OK);
+        linf[k] = l1[k] = 0;
+        for (size_t u = 0; u < n; u++) {
+            double x[3];
+            coords(&g, u, x);
+            const double ex = fmin(t0[0] + lin_time(x, S2[0], 2), t0[1] + lin_time(x, S2[1], 2)),
+                         d = fabs(T[u] - ex);
+            linf[k] = fmax(linf[k], d);
+            l1[k] += d / (double)n;
+        }
+        free(T), free(f);
+    }
+    const double p = log2(linf[0] / linf[1]), p1 = log2(l1[0] / l1[1]);
+    if (!(p >= 2.5 && p1 >= 2.5))
+        fail_msg("separate sources: Linf %.3g, %.3g (order %.2f), L1 %.3g, %.3g (order %.2f)", linf[0], linf[1], p, l1[0],
+                 l1[1], p1);
+}
+
+/* separate_sources is the minimum of the solves of each source alone (the
+ * fixed data one more), bit for bit, with the fixed nodes held; the same
+ * bits for 1 and 2 threads and any block edge; the stats are the sums of
+ * the solves' (first_order, unreachable: of the minimum); one source alone
+ * gives the joint solve's bits.  3-D, an obstacle that walls off a box of
+ * nodes, orders 1, 3 and 5. */
+static void separate_sources_min_bitwise(void **state)
+{
+    (void)state;
+    hj_eik_grid g = {3, {20, 18, 16}, {0, 0, 0}, {1, 1, 1.25}};
+    const size_t n = nodes(&g);
+    double *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b), *c = malloc(n * sizeof *c),
+           *f = malloc(n * sizeof *f), *fx = malloc(n * sizeof *fx);
+    unsigned char *ob = calloc(n, 1);
+    size_t walled = 0;
+    for (size_t u = 0; u < n; u++) {
+        double x[3];
+        coords(&g, u, x);
+        f[u] = 1 + 0.5 * sin(0.2 * x[0]) * cos(0.15 * x[1]) + 0.01 * x[2];
+        ob[u] = fabs(x[0] - 9) < 1.5 && x[1] < 12;
+        /* a shell around the nodes 16 <= x, y <= 17 */
+        const int in = x[0] >= 16 && x[0] <= 17 && x[1] >= 15 && x[1] <= 16, shell = x[0] >= 15 && x[1] >= 14;
+        if (shell && !in) ob[u] = 1;
+        walled += in;
+        fx[u] = x[1] == 0 && x[0] < 5 ? 8 + 0.1 * x[0] : NAN; /* fixed data along part of y = 0 */
+    }
+    const hj_eik_source s[2] = {{{3.3, 4.1, 10.2}, 0}, {{9.5, 15, 5}, 2}};
+    for (int order = 1; order <= 5; order += 2) {
+        hj_eik_options o = hj_eik_default_options();
+        o.order = order;
+        o.parallel_min = 16;
+        hj_eik_stats st, sk;
+        hj_error e;
+        /* the minimum, built from the joint solves of each part alone */
+        long iter = 0, sweeps = 0;
+        size_t updates = 0;
+        for (int k = 0; k < 3; k++) {
+            const int rc = k < 2 ? hj_eik_solve(&g, f, 0, ob, s + k, 1, NULL, &o, k ? b : c, &sk, &e)
+                                 : hj_eik_solve(&g, f, 0, ob, NULL, 0, fx, &o, b, &sk, &e);
+            assert_int_equal(rc, HJ_OK);
+            iter += sk.iterations, sweeps += sk.sweeps, updates += sk.updates;
+            if (k)
+                for (size_t u = 0; u < n; u++) c[u] = b[u] < c[u] ? b[u] : c[u];
+        }
+        for (size_t u = 0; u < n; u++) c[u] = isnan(fx[u]) ? c[u] : fx[u];
+        o.separate_sources = 1;
+        for (int th = 1; th <= 2; th++) {
+#ifdef _OPENMP
+            omp_set_num_threads(th);
+#endif
+            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, fx, &o, th == 1 ? a : b, &st, &e), HJ_OK);
+        }
+        assert_memory_equal(a, b, n * sizeof *a);
+        assert_memory_equal(a, c, n * sizeof *a);
+        assert_int_equal(st.iterations, iter);
+        assert_int_equal(st.sweeps, sweeps);
+        assert_true(st.updates == updates);
+        assert_int_equal(st.unreachable, walled);
+        assert_true(st.converged);
+        const long blocks[3] = {1, 3, 7};
+        for (int kb = 0; kb < 3; kb++) {
+            o.block = blocks[kb];
+            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, fx, &o, b, &st, &e), HJ_OK);
+            assert_memory_equal(a, b, n * sizeof *a);
+        }
+        /* one source: the joint solve, to the bit */
+        o.block = 0;
+        assert_int_equal(hj_eik_solve(&g, f, 0, ob, s + 1, 1, NULL, &o, a, &st, &e), HJ_OK);
+        o.separate_sources = 0;
+        assert_int_equal(hj_eik_solve(&g, f, 0, ob, s + 1, 1, NULL, &o, b, &sk, &e), HJ_OK);
+        assert_memory_equal(a, b, n * sizeof *a);
+        assert_int_equal(st.iterations, sk.iterations);
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    free(a), free(b), free(c), free(f), free(fx), free(ob);
+}
+
+/* separate_sources: every input check of the joint solve, on all the
+ * sources (numbered as given) and before any sweep; a value other than 0
+ * or 1 is refused. */
+static void separate_sources_bad_input(void **state)
+{
+    (void)state;
+    hj_eik_grid g = {2, {8, 8, 1}, {0, 0, 0}, {1, 1, 1}};
+    hj_eik_source s[3] = {{{3.4, 2.25, 0}, 0}, {{1, 6, 0}, 0}, {{6, 6, 0}, 0}};
+    hj_eik_options o = hj_eik_default_options();
+    o.progress = count_progress;
+    o.separate_sources = 1;
+    hj_error e;
+    unsigned char ob[64] = {0};
+    progress_calls = 0;
+    ob[6 * 8 + 6] = 1;
+    assert_int_equal(solve_err(&g, NULL, 1, ob, s, 3, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "source 3 at (6, 6, 0) lies in an obstacle"));
+    s[1].x[0] = 7.5;
+    assert_int_equal(solve_err(&g, NULL, 1, NULL, s, 3, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "source 2: coordinate"));
+    s[1].x[0] = 1;
+    s[1].t0 = NAN;
+    assert_int_equal(solve_err(&g, NULL, 1, NULL, s, 3, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "source 2: time"));
+    s[1].t0 = 0;
+    double f[64];
+    for (int k = 0; k < 64; k++) f[k] = 1;
+    f[63] = 0;
+    assert_int_equal(solve_err(&g, f, 0, NULL, s, 3, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "slowness 0 at node (7, 7, 0)"));
+    assert_int_equal(progress_calls, 0);
+    o.separate_sources = 2;
+    assert_int_equal(solve_err(&g, NULL, 1, NULL, s, 3, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "separate_sources 2"));
+    /* progress counts on across the solves */
+    o.separate_sources = 1;
+    progress_calls = 0;
+    hj_eik_stats st;
+    double T[64];
+    assert_int_equal(hj_eik_solve(&g, NULL, 1, NULL, s, 3, NULL, &o, T, &st, &e), HJ_OK);
+    assert_int_equal(progress_calls, st.iterations);
+}
+
 static void threads_bitwise(void **state)
 {
     (void)state;
@@ -950,4 +1117,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(varying_speed_order5_count),
                         cmocka_unit_test(varying_speed_bitwise), cmocka_unit_test(noisy_map_converges),
                         cmocka_unit_test(noisy_start_in_bounds), cmocka_unit_test(slowness_scale_free),
-                        cmocka_unit_test(threads_bitwise))
+                        cmocka_unit_test(threads_bitwise), cmocka_unit_test(separate_sources_order),
+                        cmocka_unit_test(separate_sources_min_bitwise), cmocka_unit_test(separate_sources_bad_input))
