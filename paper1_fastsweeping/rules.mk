@@ -105,8 +105,8 @@ bench-eikonal: $(BUILD)/bin/$(P1)/bench_eik
 # design orders (paper1_fastsweeping/eik/reference/) as the check "eik".
 EIK := $(P1)/eik
 EIK_OUT := $(RESULTS)/eik
-EIK_RESULTS := $(EIK_OUT)/eik_convergence.tsv $(EIK_OUT)/eik_orders.tsv
-$(EIK_OUT)/eik_orders.tsv: $(EIK_OUT)/eik_convergence.tsv
+EIK_RESULTS := $(EIK_OUT)/eik_convergence.tsv $(EIK_OUT)/eik_orders.tsv $(EIK_OUT)/eik_sources.tsv
+$(EIK_OUT)/eik_orders.tsv $(EIK_OUT)/eik_sources.tsv: $(EIK_OUT)/eik_convergence.tsv
 $(EIK_OUT)/eik_convergence.tsv: $(BUILD)/bin/$(P1)/eik_convergence | $(HJTIME)
 	@mkdir -p $(@D)
 	$(call hj_timed,$(@D),eik_convergence) $< $(QUICKFLAG) --out-dir $(@D)
