@@ -20,7 +20,10 @@
  * on each source's side of the meeting line; where two owners meet, the
  * neighbour values are converted into the node's own factorisation (T is
  * continuous there, tau is not).  Without sources, or with factored = 0,
- * T0 = 1 and t0 = 0: the plain Godunov scheme on T.
+ * T0 = 1 and t0 = 0: the plain Godunov scheme on T.  T has a kink where
+ * two owners meet, and the stencils that straddle it make this joint
+ * solve first order in Linf there; with separate_sources each source is
+ * solved alone and the node-wise minimum taken (solve_separate).
  *
  * The discretisation.  Along dimension d the derivative of T is
  * p_d tau + T0 D_d tau (p = grad T0), with D_d tau one-sided: first order

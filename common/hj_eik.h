@@ -2,9 +2,10 @@
  * and 3-D, for users' problems: orders 1, 3 and 5, point sources factored
  * (T = T0 tau near them, so the source does not spoil the order: order 3
  * keeps 3, order 5 measures about 4 in L1 and 3 in Linf, held by the
- * boundary closure), obstacles, several sources (first order in Linf
- * where their fronts meet: T has a kink there), dx != dy, a scale-free
- * stopping rule.  (Paper 1's own solver, with its inflow
+ * boundary closure), obstacles, several sources (T has a kink where
+ * their fronts meet: one joint solve is first order in Linf there,
+ * separate_sources keeps the order), dx != dy, a scale-free stopping
+ * rule.  (Paper 1's own solver, with its inflow
  * treatments, stays in hj_fsm.h.)
  *
  * f is the slowness (1 / speed), f > 0 where the front may pass; nodes
@@ -69,7 +70,12 @@ typedef struct {
  * whole grid.  With one point source and neither obstacles nor fixed
  * data, a higher order iteration is one pass instead: the 2^dim orthants
  * around the source, each swept away from it, a grid's worth of work.
- * sweeps counts the work in whole-grid sweeps (a pass counts one). */
+ * sweeps counts the work in whole-grid sweeps (a pass counts one).
+ * With separate_sources the counts (iterations, fo_iterations, updates,
+ * sweeps) are the sums over the solves, change is the largest of their
+ * last changes, converged says that every solve converged; unreachable
+ * and first_order count the nodes of the result (first_order: where the
+ * solve that gives the node its minimum left it at first order). */
 typedef struct {
     long iterations;    /* iterations (convergence tests) made */
     double change;      /* last max change / scale */
@@ -98,7 +104,30 @@ hj_eik_options hj_eik_default_options(void);
  * outside obstacles, a source in an obstacle or outside the grid, no
  * source and no fixed node, a fixed value or source time beyond 1e150 in
  * the solver's units, ...) gives HJ_EINVAL with a message before any
- * sweep.  Messages number the sources from 1. */
+ * sweep.  Messages number the sources from 1.
+ *
+ * Several sources.  The viscosity solution is T = min_k T_k, T_k the
+ * solution from source k alone (with the obstacles; the fixed data, when
+ * some node is fixed, count as one more source).  One joint solve (the
+ * default) is first order in Linf and second in L1 where two fronts meet,
+ * at every order: T has a kink there and the WENO stencils straddle it.
+ * With opt->separate_sources = 1 and two or more sources (the fixed data
+ * counting), each is solved alone, as a single-source problem (the
+ * orthant pass when there is no obstacle), and T is their node-wise
+ * minimum: each T_k is smooth away from its own source, so the minimum
+ * has the scheme's order everywhere, the kink included; the fixed nodes
+ * hold their values.  Cost: one solve per source (two sources: 0.96 to
+ * 1.5 times the joint solve's instructions at orders 3 and 5, twice at
+ * order 1; paper1_fastsweeping/eik/notes/eik-convergence.md); memory:
+ * n more doubles (the solve under way beside the running minimum in T)
+ * and 2 n bytes at orders 3 and 5 (which solve left a node at first
+ * order), one solve's work arrays at a time.  max_iter bounds each solve;
+ * progress is called with the iterations counted on across the solves.
+ * The input is checked for all the sources before the first solve.  On
+ * HJ_ENOCONV from a solve the others still run, T is the minimum of the
+ * last iterates and the message names the first solve that failed.  One
+ * source and no fixed data (or fixed data alone) is the joint solve, to
+ * the bit.  The result does not depend on the thread count. */
 int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
                  const unsigned char *obstacle, const hj_eik_source *src, int nsrc,
                  const double *fixed, const hj_eik_options *opt, double *T,
