@@ -555,6 +555,13 @@ int main(int argc, char **argv)
     if (!T) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory for %ld nodes", total);
     opt.progress = show_progress;
     hj_eik_stats st = {0};
+    /* a map without a zero (or an empty mask) has no obstacle: the solver
+     * then skips its visibility pass, a walk from every node to its
+     * source (17 of 18 s of CPU on a 1000 x 1000 image), with the same bits */
+    if (obst && nobst == 0) {
+        free(obst);
+        obst = NULL;
+    }
     int rc = hj_eik_solve(&g, f, f_const, obst, src, (int)npts, fixed, &opt, T, &st, &err);
     hj_progress("\n");
     free(obst);
