@@ -138,6 +138,14 @@ int hj_map_read_pgm(hj_map *m, const char *path, double fmin, double fmax, hj_er
     /* "P2" or "P5", then white space or a comment */
     if (nm < 2 || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '5') || (c != '#' && !isspace(c))) {
         fclose(f);
+        /* the other Netpbm kinds are named: a colour or bitmap image is a
+         * likely mistake, and converting it to grey is the remedy */
+        static const char *const kind[8] = {"", "a PBM bitmap", "", "a PPM colour image", "a PBM bitmap", "",
+                                            "a PPM colour image", "a PAM image"};
+        if (nm == 2 && magic[0] == 'P' && magic[1] >= '1' && magic[1] <= '7' && (c == '#' || isspace(c)))
+            return hj_error_set(err, HJ_EFORMAT, "%s:1:1: %s (%c%c), not a PGM grey image (P2 or P5): convert it "
+                                                 "to grey levels first", path, kind[magic[1] - '0'], magic[0],
+                                magic[1]);
         return hj_error_set(err, HJ_EFORMAT, "%s:1:1: not a PGM image: it starts with '%s', not P2 or P5", path,
                             hj_error_quote(magic, (size_t)nm, q, sizeof q));
     }

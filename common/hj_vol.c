@@ -236,7 +236,10 @@ int hj_vol_is_pgm(const char *path, int *is_pgm, hj_error *err)
     unsigned char b[3] = {0, 0, 0};
     const size_t got = fread(b, 1, 3, f);
     fclose(f);
-    *is_pgm = got == 3 && b[0] == 'P' && (b[1] == '2' || b[1] == '5') && (b[2] == '#' || isspace(b[2]));
+    /* any Netpbm magic (P1 .. P7) goes to the PGM reader, which reads P2
+     * and P5 and names the other kinds, rather than to the text reader,
+     * whose message would be that 'P6' is not a number */
+    *is_pgm = got == 3 && b[0] == 'P' && b[1] >= '1' && b[1] <= '7' && (b[2] == '#' || isspace(b[2]));
     return HJ_OK;
 }
 

@@ -49,8 +49,10 @@ int hj_vol_read_text(hj_vol *vol, const char *path, int slices, hj_error *err);
  * k) of the first negative or non-finite value. */
 int hj_vol_read_raw(hj_vol *vol, const char *path, const long n[3], int bytes, hj_error *err);
 
-/* *is_pgm = whether the file starts as a PGM image does: "P2" or "P5",
- * then white space or a comment.  HJ_EIO when it cannot be read. */
+/* *is_pgm = whether the file starts as a Netpbm image does: "P1" .. "P7"
+ * ("P2" and "P5" are PGM), then white space or a comment; such a file is
+ * for the PGM reader, which refuses the other kinds by name.  HJ_EIO when
+ * it cannot be read. */
 int hj_vol_is_pgm(const char *path, int *is_pgm, hj_error *err);
 
 /* A grid file whose format is told by its content: a PGM image (it starts

@@ -149,7 +149,7 @@ static void pgm_messages_name_line_and_column(void **state)
     assert_has(PGM_ERROR("mv.pgm", "P5 2 2\n\t70000\n", HJ_EFORMAT), "mv.pgm:2:2: the maxval is 70000, outside 1..65535");
     assert_has(PGM_ERROR("big.pgm", "P2\n2 2\n4\n0 5\n1 1\n", HJ_EFORMAT),
                "big.pgm:4:3: the pixel at row 1, column 2 is 5, outside 0..4");
-    assert_has(PGM_ERROR("m.pgm", "P7\n2 2\n", HJ_EFORMAT), "m.pgm:1:1: not a PGM image: it starts with 'P7'");
+    assert_has(PGM_ERROR("m.pgm", "P7\n2 2\n", HJ_EFORMAT), "m.pgm:1:1: a PAM image (P7), not a PGM grey image (P2 or P5)");
     assert_has(PGM_ERROR("b.pgm", "\001\377", HJ_EFORMAT), "it starts with '\\x01\\xff'");
     assert_has(PGM_ERROR("j.pgm", "P22 2 255\n1 2\n3 4\n", HJ_EFORMAT), "not a PGM image");
     assert_has(PGM_ERROR("h.pgm", "P2\n2 2\n", HJ_EFORMAT), "h.pgm:3:1: truncated or malformed: the file ends before the maxval");

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hj_map.h"
 #include "hj_vol.h"
 
 #define dir hj_test_dir()
@@ -157,6 +158,14 @@ static void format_by_content(void **state)
     assert_close(v.v[3], 1.0, 0, 1e-15);
     hj_vol_free(&v);
     assert_int_equal(hj_vol_read(&v, "/nonexistent/x", 0, 1, &err), HJ_EIO);
+    /* other Netpbm kinds are named, not read as text ("'P6' is not a number") */
+    assert_int_equal(hj_vol_read(&v, WRITE("colour.ppm", "P6\n2 2\n255\n012345678901"), 0, 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "a PPM colour image (P6), not a PGM grey image");
+    assert_int_equal(hj_vol_read(&v, WRITE("bits.pbm", "P1\n2 2\n0 1\n1 0\n"), 0, 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "a PBM bitmap (P1)");
+    hj_map m = {0};
+    assert_int_equal(hj_map_read(&m, WRITE("colour2.ppm", "P3\n2 2\n255\n"), 0, 1, &err), HJ_EFORMAT);
+    assert_has(err.msg, "a PPM colour image (P3)");
 }
 
 static void all_zero(void **state)

@@ -330,6 +330,28 @@ static void pixel_units_and_no_convergence(void **state)
     assert_non_null(strstr(line, "not converged"));
 }
 
+/* Not converged: the warning gives the solver's reason, since the remedy
+ * depends on it (a tol below the rounding level is not helped by more
+ * iterations, a --max-iter too small is). */
+static void no_convergence_says_why(void **state)
+{
+    (void)state;
+    char path[256], out[300], cmd[1024];
+    static char text[48 * 40 * 8 + 64];
+    int n = 0;
+    for (int j = 0; j < 40; j++)
+        for (int i = 0; i < 48; i++)
+            n += snprintf(text + n, sizeof text - (size_t)n, "%.4f%c", 1 + 0.5 * i / 47.0 + 0.3 * j / 39.0,
+                          i == 47 ? '\n' : ' ');
+    write_text(path, sizeof path, "lin.txt", text);
+    snprintf(out, sizeof out, "%s/lin.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 10.3,20.6 --tol 1e-17 --out %s", path, out);
+    expect_failure(cmd, 3, "below the rounding level");
+    assert_non_null(strstr(err_text, "the last iterate is written"));
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 10.3,20.6 --max-iter 2 --out %s", path, out);
+    expect_failure(cmd, 3, "no convergence in 2 iterations (last change");
+}
+
 /* Max |T - r| over every node of an eikonal run with f = 1 and a source at
  * the origin on N intervals. */
 static double distance_error(int N)
@@ -468,7 +490,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bad_options),      cmocka_unit_test(help_works),        cmocka_unit_test(unwritable_output_leaves_nothing),
         cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance), cmocka_unit_test(speed_means_speed),
-        cmocka_unit_test(pixel_units_and_no_convergence), cmocka_unit_test(eikonal_features),
+        cmocka_unit_test(pixel_units_and_no_convergence), cmocka_unit_test(no_convergence_says_why), cmocka_unit_test(eikonal_features),
         cmocka_unit_test(exclusion_distance_measures_more),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
