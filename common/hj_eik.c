@@ -132,8 +132,8 @@
  *
  * Kinks.  WENO5 is replaced by WENO3 within 3 nodes of obstacles and of
  * the lines where two sources' fronts meet, and nodes that their source
- * cannot see in a straight line are not factored (mark_low,
- * hide_shadows): without these the WENO5 iteration settled into a cycle
+ * cannot see in a straight line are not factored, in either phase (mark_low,
+ * sees, hide_shadows): without these the WENO5 iteration settled into a cycle
  * there (changes of 2e-5 to 4e-5 of the solution's scale for 1000
  * iterations) on a wall with a gap and on two meeting fronts.  Where the
  * speed varies by a large factor over a few cells WENO5's weights can
