@@ -446,8 +446,10 @@ int main(int argc, char **argv)
     write_fields(out_dir, &g, phi, ttr);
     double m = NAN;
     if (dim <= 3 && hj_reach_measure(&g, phi, &m, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
-    printf("%s: %s, %ld step%s, tau = %g%s, measure of the set %.6g\n", prog, systems[sys], stats.steps,
-           hj_plural(stats.steps), stats.tau, stats.converged ? " (converged)" : "", m);
+    printf("%s: %s, %ld step%s, tau = %g%s", prog, systems[sys], stats.steps, hj_plural(stats.steps), stats.tau,
+           stats.converged ? " (converged)" : "");
+    if (dim <= 3) printf(", measure of the set %.6g\n", m);
+    else printf(", measure of the set not computed (%d-D; hj_reach_measure covers 1 to 3)\n", dim);
     hj_ls_free(phi), hj_ls_free(ttr);
     return 0;
 }
