@@ -1014,6 +1014,13 @@ static long first_nonfinite(const double *v, long bad)
 
 
 
+/* LF_MONO: every alpha but one (dimension LF_MONO_DIM) constant along the
+ * row (row_const), as in LF_ROW_CONST's loop: the row's largest CFL sum
+ * is that of the largest |alpha| of that dimension, found per node
+ * instead of the sum (lf_finish). */
+#define LF_MONO(dim, cm) ((dim) == 3 && (cm) == 5)
+#define LF_MONO_DIM(cm) 1
+
 /* A fused RK stage on one row (hj_ls_stage): dst = a y0 + b (u + dt G),
  * u the row of the term's input; max |dst| and sum (dst - dst) (0, or NaN
  * where a value is not finite) accumulate in smax, sbad.  In place (dst
@@ -1055,6 +1062,8 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
     double smax = 0, sbad = 0, sa = 0, sb = 0, sdt = 0;
     const double *restrict y0 = NULL, *restrict u = NULL;
     if (stage) smax = sr->smax, sbad = sr->sbad, sa = sr->a, sb = sr->b, sdt = sr->dt, y0 = sr->y0, u = sr->u;
+    /* one dimension vd varies along the row (LF_MONO): no CFL sum per node */
+    const int mono = LF_MONO(dim, cm), vd = mono ? LF_MONO_DIM(cm) : 0;
     SIMD_CLAUSES(reduction(max : m, smax) reduction(+ : nf, sbad))
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
@@ -1062,9 +1071,10 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
             const double a = cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * astride + (size_t)j]);
             const size_t q = (size_t)d * ds_stride + (size_t)j;
             ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
-            s += a * hinv[d];
+            if (!mono) s += a * hinv[d];
         }
-        const double sh = s + H[j];
+        const double am = mono ? fabs(A[(size_t)vd * astride + (size_t)j]) : 0;
+        const double sh = (mono ? am : s) + H[j];
         nf += sh - sh;
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
@@ -1076,8 +1086,11 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
             smax = av > smax ? av : smax;
         }
         out[j] = v;
-        SP[j] = s;
-        m = s > m ? s : m;
+        if (mono) m = am > m ? am : m;
+        else {
+            SP[j] = s;
+            m = s > m ? s : m;
+        }
     }
     *mp = m, *nfp = nf;
     if (stage) sr->smax = smax, sr->sbad = sbad;
@@ -1111,6 +1124,9 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
     double hinv[HJ_LS_MAXDIM], ac[HJ_LS_MAXDIM];
     for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d], ac[d] = fabs(A[(size_t)d * astride]);
     double mp = 0, nf = 0;
+    if (LF_MONO(dim, cm)) /* the constant alphas' finiteness, once */
+        for (int d = 0; d < dim; d++)
+            if (cm >> d & 1) nf += ac[d] - ac[d];
 #define LF_RANGE(j0, j1) \
     lf_finish_range(diffs, dim, cm, stage, astride, (j0), (j1), ac, A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, \
                     &nf);
@@ -1121,6 +1137,17 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
     } else
         HJ_LS_ROW_BLOCKS8(n, LF_RANGE);
 #undef LF_RANGE
+    if (LF_MONO(dim, cm)) {
+        /* mp: the row's largest |alpha_vd|; s, made of additions and
+         * divisions by dx_d > 0, does not decrease as it grows: its
+         * largest s is the s of mp, the bits of the largest of the nodes'
+         * (a NaN alpha is not in mp, but nf reports it) */
+        double s = 0.0;
+        for (int d = 0; d < dim; d++) s += (cm >> d & 1 ? ac[d] : mp) / dx[d];
+        (void)floor;
+        *inv = s;
+        return nf != 0;
+    }
     /* (far from underflow and overflow, where the bound holds; else every
      * node exactly) */
     if (floor > 1e-290 && floor < 1e290 && mp < floor * (1 - 1e-12)) {
