@@ -1298,24 +1298,31 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     const int cm = (int)(c->row_const & ((1u << dim) - 1));
     const int cmloop = LF_ROW_CONST(diffs, dim, cm), cmfill = cmloop ? 0 : cm;
     const int both = lf_both(c);
+    const int toolbox = c->cfl_rule == HJ_LS_CFL_TOOLBOX;
+    /* the work per dimension after the callback: none for ham_partial_row
+     * with every row_const mask in the finish's loop and the node rule */
+    const int per_dim = !both || cmfill || toolbox;
+    const hj_ls_ham_partial_row_fn hp = c->ham_partial_row;
+    void *const ctx = c->ctx;
     long idx[HJ_LS_MAXDIM];
     double x[HJ_LS_MAXDIM];
     if (nb > 1) memcpy(idx, rc->idx, sizeof(long) * (size_t)dim), memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    const double *pb[HJ_LS_MAXDIM];
+    double *Ab[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) pb[d] = pp[d], Ab[d] = A + (size_t)d * bn;
+    hj_ls_row_info row = {n, g->dx[0], nb > 1 ? x : rc->x, nb > 1 ? idx : rc->idx, rc->k};
     for (long b = 0; b < nb; b++) {
         const size_t o = (size_t)b * (size_t)n;
-        if (b) /* hj_ls_coord's expression */
+        if (b) { /* hj_ls_coord's expression */
             idx[1] = rc->idx[1] + b, x[1] = g->min[1] + (double)(idx[1] + g->origin[1]) * g->dx[1];
-        const hj_ls_row_info row = {n, g->dx[0], nb > 1 ? x : rc->x, nb > 1 ? idx : rc->idx,
-                                    rc->k + (size_t)b * (size_t)s1};
+            row.k += (size_t)s1;
+            for (int d = 0; d < dim; d++) pb[d] += n, Ab[d] += n;
+        }
         const double *phi = y + row.k;
-        const double *pb[HJ_LS_MAXDIM];
-        for (int d = 0; d < dim; d++) pb[d] = pp[d] + o;
-        if (both) {
-            double *Ad[HJ_LS_MAXDIM];
-            for (int d = 0; d < dim; d++) Ad[d] = A + (size_t)d * bn + o;
-            c->ham_partial_row(t, &row, phi, pb, lo, hi, H + o, Ad, c->ctx);
-        } else if (c->ham_row) c->ham_row(t, &row, phi, pb, H + o, c->ctx);
+        if (both) hp(t, &row, phi, pb, lo, hi, H + o, Ab, ctx);
+        else if (c->ham_row) c->ham_row(t, &row, phi, pb, H + o, c->ctx);
         else lf_ham_nodes(c, t, &row, phi, pb, H + o);
+        if (!per_dim) continue;
         for (int d = 0; d < dim; d++) {
             double *Ad = A + (size_t)d * bn + o;
             if (!both) {
@@ -1328,7 +1335,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
             }
             if (cmfill >> d & 1)
                 for (long j = 1; j < n; j++) Ad[j] = Ad[0];
-            if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
+            if (toolbox) { /* per-dimension maxima only where used */
                 const double dx = g->dx[d];
                 double dm = rc->dmax[d];
                 SIMD_REDUCE(max : dm)
