@@ -1025,12 +1025,18 @@ static long first_nonfinite(const double *v, long bad)
  * u the row of the term's input; max |dst| and sum (dst - dst) (0, or NaN
  * where a value is not finite) accumulate in smax, sbad.  In place (dst
  * = y0, the last stage) y0 is read through dst, so that dst stays a
- * restrict pointer, which the row's vector loop needs to be fast. */
+ * restrict pointer, which the row's vector loop needs to be fast.
+ *
+ * Euler's step (a = 0, b = 1, y0 = u: hj_ls_ode's fused first stage)
+ * runs as dst = u + dt G (stage 3 of lf_finish): the same bits where u is
+ * finite (0 u + w is w then, -0 included: w = -0 needs u = -0), and a
+ * non-finite u makes a non-finite dst either way, which sbad reports. */
 typedef struct {
     double a, b, dt;
     const double *y0, *u;
     double smax, sbad;
     int inplace;
+    int euler; /* a = 0, b = 1, y0 = u */
 } lf_stage_row;
 
 /* The end of a row of G (every partial known): per node, the dissipation
@@ -1079,7 +1085,7 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
         if (stage) {
-            v = sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
+            v = stage == 3 ? u[j] + sdt * v : sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
             sbad += v - v;
             /* fabs: one and; -0 and NaN leave smax >= 0 alone either way */
             const double av = fabs(v);
@@ -1228,6 +1234,7 @@ static int lf_finish_dim(int diffs, int dim, int cm, long n, long nb, long *bp, 
     }
     if (LF_ROW_CONST(diffs, dim, cm)) {
         if (sr && sr->inplace) { LF_FINISH_CLIPS(1, 3, 5, 2) }
+        if (sr && sr->euler) { LF_FINISH_CLIPS(1, 3, 5, 3) }
         if (sr) { LF_FINISH_CLIPS(1, 3, 5, 1) }
         LF_FINISH_CLIPS(1, 3, 5, 0)
     }
@@ -1351,7 +1358,8 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     lf_stage_row sr, *srp = NULL;
     if (ps->stage) { /* ydot is NULL */
         const hj_ls_stage *st = ps->stage;
-        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst};
+        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst,
+                            st->a == 0 && st->b == 1 && st->y0 == y};
         srp = &sr, out = st->dst + rc->k;
     } else
         out = ydot + rc->k;
