@@ -1541,7 +1541,7 @@ static int lf_rows_glf(const void *term, double t, double *y, double *ydot, row_
 
 /* Rows per block of lf_rows_glf: enough that the per-call costs are
  * shared, few enough that a block's buffers stay in the level-1 cache. */
-enum { LF_GLF_BLOCK = 8 };
+enum { LF_GLF_BLOCK = 4 };
 
 /* The evaluation, its output clipped as hj_ls_restrict would (clip 1:
  * G >= 0, -1: G <= 0, 0: not), in the same pass. */
