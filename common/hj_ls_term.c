@@ -1022,8 +1022,8 @@ static long first_nonfinite(const double *v, long bad)
 #define LF_MONO_DIM(cm) 1
 
 /* A fused RK stage on one row (hj_ls_stage): dst = a y0 + b (u + dt G),
- * u the row of the term's input; max |dst| and sum (dst - dst) (0, or NaN
- * where a value is not finite) accumulate in smax, sbad.  In place (dst
+ * u the row of the term's input; max |dst| accumulates in smax, and sbad
+ * is non-zero once a value of dst is not finite.  In place (dst
  * = y0, the last stage) y0 is read through dst, so that dst stays a
  * restrict pointer, which the row's vector loop needs to be fast.
  *
@@ -1044,10 +1044,14 @@ typedef struct {
  * accumulated in dimension order from 0.0 (the bits of one loop per
  * dimension), G = -(H - dissipation), clipped as the restriction asks
  * (clip 1: G >= 0, -1: G <= 0), the largest CFL sum in *inv; returns 0,
- * or non-zero when an alpha or H may not be finite: a sum of q - q over
- * q = SP + H, which is NaN where an alpha or H is not finite (SP, a sum
+ * or non-zero when an alpha or H may not be finite: some q = SP + H with
+ * q - q not 0, that is NaN where an alpha or H is not finite (SP, a sum
  * of |alpha_d| / dx_d, is then NaN or Inf), and may also be where the sum
- * overflows with every value finite (the caller looks for the node).  With stage set, out receives the stage's combination instead of
+ * overflows with every value finite (the caller looks for the node).
+ * Both finiteness tests are an or of flags, not a sum of q - q: gcc adds
+ * a double sum's vector lanes one after the other at the end of each
+ * range, an or's in a tree (air3D low: 10 % of the run's CPU time, the
+ * same bits).  With stage set, out receives the stage's combination instead of
  * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
  * from out).  One vector loop over the row; dim and stage are constants
  * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
@@ -1070,7 +1074,8 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
     if (stage) smax = sr->smax, sbad = sr->sbad, sa = sr->a, sb = sr->b, sdt = sr->dt, y0 = sr->y0, u = sr->u;
     /* one dimension vd varies along the row (LF_MONO): no CFL sum per node */
     const int mono = LF_MONO(dim, cm), vd = mono ? LF_MONO_DIM(cm) : 0;
-    SIMD_CLAUSES(reduction(max : m, smax) reduction(+ : nf, sbad))
+    long nfb = 0, sbb = 0;
+    SIMD_CLAUSES(reduction(max : m, smax) reduction(| : nfb, sbb))
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
         for (int d = 0; d < dim; d++) {
@@ -1081,12 +1086,12 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
         }
         const double am = mono ? fabs(A[(size_t)vd * astride + (size_t)j]) : 0;
         const double sh = (mono ? am : s) + H[j];
-        nf += sh - sh;
+        nfb |= !(sh - sh == 0);
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
         if (stage) {
             v = stage == 3 ? u[j] + sdt * v : sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
-            sbad += v - v;
+            sbb |= !(v - v == 0);
             /* fabs: one and; -0 and NaN leave smax >= 0 alone either way */
             const double av = fabs(v);
             smax = av > smax ? av : smax;
@@ -1098,8 +1103,8 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
             m = s > m ? s : m;
         }
     }
-    *mp = m, *nfp = nf;
-    if (stage) sr->smax = smax, sr->sbad = sbad;
+    *mp = m, *nfp = nfb ? 1 : nf;
+    if (stage) sr->smax = smax, sr->sbad = sbb ? 1 : sbad;
 }
 
 /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
