@@ -485,11 +485,10 @@ void hj_ls_upwind_row_mean_eps(int scheme, const double *p, ptrdiff_t s, long n,
  * dim dimensions (dim a constant where inlined: the loop unrolls). */
 static inline __attribute__((always_inline)) void upwind_rows_mean(int dim, int scheme, const double *p,
                                                                   const ptrdiff_t *s, long n, const double *dx,
-                                                                  double *mean, double *diff)
+                                                                  double *mean, double *diff, size_t dstride)
 {
     for (int d = 0; d < dim; d++)
-        upwind_row(1, scheme, p, s[d], n, dx[d], -1, mean + (size_t)d * (size_t)n, diff + (size_t)d * (size_t)n,
-                   NULL);
+        upwind_row(1, scheme, p, s[d], n, dx[d], -1, mean + (size_t)d * dstride, diff + (size_t)d * dstride, NULL);
 }
 
 /* upwind_rows_mean of first order in 3-D as one loop over the row: the
@@ -527,9 +526,28 @@ int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int 
     if (dim == 3 && scheme == HJ_LS_UPWIND_FIRST)
         first_rows_mean3(p, s[0], s[1], s[2], n, inv[0], inv[1], inv[2], mean, mean + n, mean + 2 * n, diff,
                          diff + n, diff + 2 * n);
-    else if (dim == 3) upwind_rows_mean(3, HJ_LS_ENO2, p, s, n, dx, mean, diff);
-    else if (scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(dim, HJ_LS_UPWIND_FIRST, p, s, n, dx, mean, diff);
-    else upwind_rows_mean(dim, HJ_LS_ENO2, p, s, n, dx, mean, diff);
+    else if (dim == 3) upwind_rows_mean(3, HJ_LS_ENO2, p, s, n, dx, mean, diff, (size_t)n);
+    else if (scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(dim, HJ_LS_UPWIND_FIRST, p, s, n, dx, mean, diff, (size_t)n);
+    else upwind_rows_mean(dim, HJ_LS_ENO2, p, s, n, dx, mean, diff, (size_t)n);
+    return 1;
+}
+
+HJ_LS_CLONES
+int hj_ls_upwind_rows_mean_block(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, long nrows,
+                                 const double *dx, const double *inv, double *mean, double *diff)
+{
+    if (scheme != HJ_LS_UPWIND_FIRST && scheme != HJ_LS_ENO2) return 0;
+    const size_t bn = (size_t)nrows * (size_t)n;
+    for (long b = 0; b < nrows; b++) {
+        const double *q = p + b * (dim > 1 ? s[1] : 0);
+        double *m = mean + (size_t)b * (size_t)n, *df = diff + (size_t)b * (size_t)n;
+        if (dim == 3 && scheme == HJ_LS_UPWIND_FIRST)
+            first_rows_mean3(q, s[0], s[1], s[2], n, inv[0], inv[1], inv[2], m, m + bn, m + 2 * bn, df, df + bn,
+                             df + 2 * bn);
+        else if (dim == 3) upwind_rows_mean(3, HJ_LS_ENO2, q, s, n, dx, m, df, bn);
+        else if (scheme == HJ_LS_UPWIND_FIRST) upwind_rows_mean(dim, HJ_LS_UPWIND_FIRST, q, s, n, dx, m, df, bn);
+        else upwind_rows_mean(dim, HJ_LS_ENO2, q, s, n, dx, m, df, bn);
+    }
     return 1;
 }
 

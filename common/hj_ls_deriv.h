@@ -122,6 +122,12 @@ void hj_ls_upwind_row_mean_eps(int scheme, const double *p, ptrdiff_t s, long n,
  * (a row pass divides once, not once per row). */
 int hj_ls_upwind_rows_mean(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, const double *dx,
                            const double *inv, double *mean, double *diff);
+/* hj_ls_upwind_rows_mean on nrows rows along x_0 that follow each other
+ * along dimension 1 (row b at p + b s[1]; nrows = 1 in 1-D), row b of
+ * dimension d into mean + d nrows n + b n and diff + d nrows n + b n: one
+ * call for a block of rows (the same bits). */
+int hj_ls_upwind_rows_mean_block(int scheme, const double *p, const ptrdiff_t *s, int dim, long n, long nrows,
+                                 const double *dx, const double *inv, double *mean, double *diff);
 
 /* ToolboxLS's WENO5 epsilon along dimension d ('maxOverGrid' in
  * upwindFirstWENO5a): 1e-6 max (D1)^2 + 1e-99 over every first difference

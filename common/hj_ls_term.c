@@ -40,6 +40,7 @@ typedef struct {
     double smax; /* a fused RK stage (hj_ls_stage): running max |dst| */
     int sbad;    /* and whether a value of dst was not finite */
     double imax; /* running maximum of the rows' exact *inv (Lax-Friedrichs) */
+    long nrows; /* rows of this call: 1, or a block (for_rows_blocks) */
 } row_ctx;
 
 /* The offset of row r's first node and its index in idx: one odometer
@@ -72,9 +73,15 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
+                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
+                           const char *what, hj_error *err);
 static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                            double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
-                           hj_error *err);
+                           hj_error *err)
+{
+    return for_rows_blocks(g, ws_doubles, f, 1, term, t, y, ydot, maxinv, dmax, st, layers, what, err);
+}
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
 {
@@ -100,10 +107,17 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
  * the row is evaluated, while the row is in cache, instead of a region and
  * a pass over the grid per dimension (the same bits: no stencil reads
  * another row's dimension-0 ghosts, nor an edge, a corner or a layer
- * beyond layers). */
-static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
-                           double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
-                           hj_error *err)
+ * beyond layers).
+ *
+ * blk > 1: f is called on blocks of up to blk consecutive rows of one
+ * plane (rows that follow each other along dimension 1, row b at offset
+ * rc->k + b stride[1]; rc->nrows of them), their dimension-0 ghosts
+ * filled first; f's *bad_j is then b N[0] + j for node j of the block's
+ * row b.  The rows' results are those of blk = 1 (each row computed
+ * alone; maxima and the first failing row do not depend on the grouping). */
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
+                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
+                           const char *what, hj_error *err)
 {
     double m = 0, smax = 0;
     int sbad = 0;
@@ -143,6 +157,40 @@ static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, con
             for (int d = 0; d < HJ_LS_MAXDIM; d++) rc.dmax[d] = 0;
             size_t prev = (size_t)-1;
             rc.k = 0;
+            rc.nrows = 1;
+            if (blk > 1) {
+                /* units of up to blk rows, none across a plane */
+                const size_t n1 = g->dim > 1 ? (size_t)g->N[1] : 1, per = (n1 + (size_t)blk - 1) / (size_t)blk;
+                const size_t units = g->rows / n1 * per, uchunk = (chunk + (size_t)blk - 1) / (size_t)blk;
+                const ptrdiff_t s1 = g->dim > 1 ? g->stride[1] : 0;
+#ifdef _OPENMP
+#pragma omp for schedule(guided, uchunk)
+#endif
+                for (size_t u = 0; u < units; u++) {
+                    const size_t sub = u % per, r0 = u / per * n1 + sub * (size_t)blk;
+                    const size_t cnt = n1 - sub * (size_t)blk < (size_t)blk ? n1 - sub * (size_t)blk : (size_t)blk;
+                    rc.k = row_next(g, r0, prev, rc.k, rc.idx);
+                    rc.r = r0, rc.nrows = (long)cnt;
+                    if (layers)
+                        for (size_t b = 0; b < cnt; b++) hj_ls_fill_row_ghosts(g, y, rc.k + b * (size_t)s1, layers);
+                    hj_ls_coord(g, rc.idx, rc.x);
+                    double inv = 0;
+                    long j = -1;
+                    int code = f(term, t, y, ydot, &rc, &inv, &j);
+                    /* the unit's last row, where row_next steps on from */
+                    prev = r0 + cnt - 1;
+                    if (cnt > 1) rc.k += (cnt - 1) * (size_t)s1, rc.idx[1] += (long)(cnt - 1);
+                    if (code) {
+                        const size_t rb = r0 + (size_t)(j / g->N[0]);
+#ifdef _OPENMP
+#pragma omp critical(hj_ls_term_fail)
+#endif
+                        if (rb < bad_row) bad_row = rb, bad_j = j % g->N[0], bad_code = code;
+                    }
+                    if (inv != inv) nan_seen = 1;
+                    else m = inv > m ? inv : m;
+                }
+            } else {
 #ifdef _OPENMP
 #pragma omp for schedule(guided, chunk)
 #endif
@@ -162,6 +210,7 @@ static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, con
                 }
                 if (inv != inv) nan_seen = 1;
                 else m = inv > m ? inv : m;
+            }
             }
             for (long j = 0; j < n; j++) {
                 if (rc.tmax[j] != rc.tmax[j]) nan_seen = 1;
@@ -965,16 +1014,29 @@ static long first_nonfinite(const double *v, long bad)
 
 
 
+/* LF_MONO: every alpha but one (dimension LF_MONO_DIM) constant along the
+ * row (row_const), as in LF_ROW_CONST's loop: the row's largest CFL sum
+ * is that of the largest |alpha| of that dimension, found per node
+ * instead of the sum (lf_finish). */
+#define LF_MONO(dim, cm) ((dim) == 3 && (cm) == 5)
+#define LF_MONO_DIM(cm) 1
+
 /* A fused RK stage on one row (hj_ls_stage): dst = a y0 + b (u + dt G),
- * u the row of the term's input; max |dst| and sum (dst - dst) (0, or NaN
- * where a value is not finite) accumulate in smax, sbad.  In place (dst
+ * u the row of the term's input; max |dst| accumulates in smax, and sbad
+ * is non-zero once a value of dst is not finite.  In place (dst
  * = y0, the last stage) y0 is read through dst, so that dst stays a
- * restrict pointer, which the row's vector loop needs to be fast. */
+ * restrict pointer, which the row's vector loop needs to be fast.
+ *
+ * Euler's step (a = 0, b = 1, y0 = u: hj_ls_ode's fused first stage)
+ * runs as dst = u + dt G (stage 3 of lf_finish): the same bits where u is
+ * finite (0 u + w is w then, -0 included: w = -0 needs u = -0), and a
+ * non-finite u makes a non-finite dst either way, which sbad reports. */
 typedef struct {
     double a, b, dt;
     const double *y0, *u;
     double smax, sbad;
     int inplace;
+    int euler; /* a = 0, b = 1, y0 = u */
 } lf_stage_row;
 
 /* The end of a row of G (every partial known): per node, the dissipation
@@ -982,18 +1044,23 @@ typedef struct {
  * accumulated in dimension order from 0.0 (the bits of one loop per
  * dimension), G = -(H - dissipation), clipped as the restriction asks
  * (clip 1: G >= 0, -1: G <= 0), the largest CFL sum in *inv; returns 0,
- * or non-zero when an alpha or H may not be finite: a sum of q - q over
- * q = SP + H, which is NaN where an alpha or H is not finite (SP, a sum
+ * or non-zero when an alpha or H may not be finite: some q = SP + H with
+ * q - q not 0, that is NaN where an alpha or H is not finite (SP, a sum
  * of |alpha_d| / dx_d, is then NaN or Inf), and may also be where the sum
- * overflows with every value finite (the caller looks for the node).  With stage set, out receives the stage's combination instead of
+ * overflows with every value finite (the caller looks for the node).
+ * Both finiteness tests are an or of flags, not a sum of q - q: gcc adds
+ * a double sum's vector lanes one after the other at the end of each
+ * range, an or's in a tree (air3D low: 10 % of the run's CPU time, the
+ * same bits).  With stage set, out receives the stage's combination instead of
  * G (the expression of hj_ls_ode's combine; stage 2: in place, y0 read
  * from out).  One vector loop over the row; dim and stage are constants
  * where inlined (lf_finish_dim), so the loop over dimensions unrolls and
  * the plain G path carries no stage.  Bit d of the constant cm: alpha_d
  * is the same along the row (row_const), its |alpha| the scalar ac[d]
  * (no load per node; the same bits). */
-static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int cm, int stage, long n,
-                                                                  long j0, long j1, const double *ac,
+static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int dim, int cm, int stage,
+                                                                  size_t astride, long j0, long j1,
+                                                                  const double *ac,
                                                                   const double *restrict A,
                                                                   const double *restrict DL,
                                                                   const double *restrict DR, size_t ds_stride,
@@ -1005,32 +1072,39 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
     double smax = 0, sbad = 0, sa = 0, sb = 0, sdt = 0;
     const double *restrict y0 = NULL, *restrict u = NULL;
     if (stage) smax = sr->smax, sbad = sr->sbad, sa = sr->a, sb = sr->b, sdt = sr->dt, y0 = sr->y0, u = sr->u;
-    SIMD_CLAUSES(reduction(max : m, smax) reduction(+ : nf, sbad))
+    /* one dimension vd varies along the row (LF_MONO): no CFL sum per node */
+    const int mono = LF_MONO(dim, cm), vd = mono ? LF_MONO_DIM(cm) : 0;
+    long nfb = 0, sbb = 0;
+    SIMD_CLAUSES(reduction(max : m, smax) reduction(| : nfb, sbb))
     for (long j = j0; j < j1; j++) {
         double ds = 0.0, s = 0.0;
         for (int d = 0; d < dim; d++) {
-            const double a = cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * (size_t)n + (size_t)j]);
+            const double a = cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * astride + (size_t)j]);
             const size_t q = (size_t)d * ds_stride + (size_t)j;
             ds += a * 0.5 * (diffs ? DR[q] : DR[q] - DL[q]);
-            s += a * hinv[d];
+            if (!mono) s += a * hinv[d];
         }
-        const double sh = s + H[j];
-        nf += sh - sh;
+        const double am = mono ? fabs(A[(size_t)vd * astride + (size_t)j]) : 0;
+        const double sh = (mono ? am : s) + H[j];
+        nfb |= !(sh - sh == 0);
         double v = -(H[j] - ds);
         v = clip > 0 ? (v > 0 ? v : 0) : clip < 0 ? (v < 0 ? v : 0) : v;
         if (stage) {
-            v = sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
-            sbad += v - v;
+            v = stage == 3 ? u[j] + sdt * v : sa * (stage == 2 ? out[j] : y0[j]) + sb * (u[j] + sdt * v);
+            sbb |= !(v - v == 0);
             /* fabs: one and; -0 and NaN leave smax >= 0 alone either way */
             const double av = fabs(v);
             smax = av > smax ? av : smax;
         }
         out[j] = v;
-        SP[j] = s;
-        m = s > m ? s : m;
+        if (mono) m = am > m ? am : m;
+        else {
+            SP[j] = s;
+            m = s > m ? s : m;
+        }
     }
-    *mp = m, *nfp = nf;
-    if (stage) sr->smax = smax, sr->sbad = sbad;
+    *mp = m, *nfp = nfb ? 1 : nf;
+    if (stage) sr->smax = smax, sr->sbad = sbb ? 1 : sbad;
 }
 
 /* Whole blocks of 8 nodes, then the last 8 nodes again rather than a
@@ -1050,7 +1124,7 @@ static inline __attribute__((always_inline)) void lf_finish_range(int diffs, int
  * maximum): no node of the row can exceed floor, and *inv = 0 leaves
  * the maximum as it is (most rows, once the largest is met). */
 static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, int cm, int stage, long n,
-                                                           const double *restrict A, const double *restrict DL,
+                                                           size_t astride, const double *restrict A, const double *restrict DL,
                                                            const double *restrict DR, size_t ds_stride,
                                                            const double *restrict H, const double *dx,
                                                            const double *inv_dx, int clip, double *restrict out,
@@ -1059,10 +1133,13 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
 {
     /* local copies: no store of the row may change them */
     double hinv[HJ_LS_MAXDIM], ac[HJ_LS_MAXDIM];
-    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d], ac[d] = fabs(A[(size_t)d * (size_t)n]);
+    for (int d = 0; d < dim; d++) hinv[d] = inv_dx[d], ac[d] = fabs(A[(size_t)d * astride]);
     double mp = 0, nf = 0;
+    if (LF_MONO(dim, cm)) /* the constant alphas' finiteness, once */
+        for (int d = 0; d < dim; d++)
+            if (cm >> d & 1) nf += ac[d] - ac[d];
 #define LF_RANGE(j0, j1) \
-    lf_finish_range(diffs, dim, cm, stage, n, (j0), (j1), ac, A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, \
+    lf_finish_range(diffs, dim, cm, stage, astride, (j0), (j1), ac, A, DL, DR, ds_stride, H, hinv, clip, out, SP, sr, &mp, \
                     &nf);
     if (stage == 2) {
         const long n8 = n & ~7L;
@@ -1071,6 +1148,17 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
     } else
         HJ_LS_ROW_BLOCKS8(n, LF_RANGE);
 #undef LF_RANGE
+    if (LF_MONO(dim, cm)) {
+        /* mp: the row's largest |alpha_vd|; s, made of additions and
+         * divisions by dx_d > 0, does not decrease as it grows: its
+         * largest s is the s of mp, the bits of the largest of the nodes'
+         * (a NaN alpha is not in mp, but nf reports it) */
+        double s = 0.0;
+        for (int d = 0; d < dim; d++) s += (cm >> d & 1 ? ac[d] : mp) / dx[d];
+        (void)floor;
+        *inv = s;
+        return nf != 0;
+    }
     /* (far from underflow and overflow, where the bound holds; else every
      * node exactly) */
     if (floor > 1e-290 && floor < 1e290 && mp < floor * (1 - 1e-12)) {
@@ -1085,7 +1173,7 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
     if (SP[j] >= thr) {                                                                              \
         double s = 0.0;                                                                              \
         for (int d = 0; d < dim; d++)                                                               \
-            s += (cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * (size_t)n + (size_t)(j)])) / dx[d];      \
+            s += (cm >> d & 1 ? ac[d] : fabs(A[(size_t)d * astride + (size_t)(j)])) / dx[d];      \
         m = s > m ? s : m;                                                                           \
     }
     long j = 0;
@@ -1107,38 +1195,63 @@ static inline __attribute__((always_inline)) int lf_finish(int diffs, int dim, i
  * any other mask and passes cm = 0. */
 #define LF_ROW_CONST(diffs, dim, cm) ((diffs) && (dim) == 3 && (cm) == 5)
 
+/* lf_finish on the rows *bp .. nb - 1 of a block (row b: A, DL, DR, H at
+ * + b n, dimension d of A at + d astride; out and the stage's y0, u at
+ * + b ostride), each row's floor the running maximum *floor of the exact
+ * bounds of the rows before it (the order of one row per call), *inv
+ * their maximum.  Returns 0 when every row is done; 1 when row *bp may
+ * hold a non-finite value, its bound in *mrow (not yet in *floor, *inv),
+ * the rows after it not done. */
 HJ_LS_TERM_CLONES
-static int lf_finish_dim(int diffs, int dim, int cm, long n, const double *A, const double *DL, const double *DR,
-                         size_t ds_stride, const double *H, const double *dx, const double *hinv, int clip,
-                         double *out, double *SP, lf_stage_row *sr, double floor, double *inv)
+static int lf_finish_dim(int diffs, int dim, int cm, long n, long nb, long *bp, size_t astride, const double *A,
+                         const double *DL, const double *DR, size_t ds_stride, const double *H, const double *dx,
+                         const double *hinv, int clip, double *out, size_t ostride, double *SP, lf_stage_row *sr,
+                         double *floor, double *inv, double *mrow)
 {
-#define LF_FINISH(DIFFS, DIM, CM, STAGE, CLIP) \
-    lf_finish(DIFFS, DIM, CM, STAGE, n, A, DL, DR, ds_stride, H, dx, hinv, CLIP, out, SP, sr, floor, inv)
+#define LF_FINISH(DIFFS, DIM, CM, STAGE, CLIP)                                                                   \
+    for (long b = *bp; b < nb; b++) {                                                                            \
+        const size_t o_ = (size_t)b * (size_t)n, q_ = (size_t)b * ostride;                                       \
+        lf_stage_row r_;                                                                                         \
+        if (STAGE) r_ = *sr, r_.y0 += q_, r_.u += q_;                                                            \
+        double m_;                                                                                               \
+        const int nf_ = lf_finish(DIFFS, DIM, CM, STAGE, n, astride, A + o_, DL + o_, DR + o_, ds_stride, H + o_, \
+                                  dx, hinv, CLIP, out + q_, SP, &r_, *floor, &m_);                               \
+        if (STAGE) sr->smax = r_.smax, sr->sbad = r_.sbad;                                                       \
+        if (nf_) {                                                                                               \
+            *bp = b, *mrow = m_;                                                                                 \
+            return 1;                                                                                            \
+        }                                                                                                        \
+        *floor = m_ > *floor ? m_ : *floor;                                                                      \
+        *inv = m_ > *inv ? m_ : *inv;                                                                            \
+    }                                                                                                            \
+    return 0;
     /* dim and clip constants in 2-D and 3-D (a constant clip is one
      * vector min or max; a variable one, a chain of compares and blends) */
-#define LF_FINISH_CLIPS(DIFFS, DIM, CM, STAGE)                                   \
-    return clip < 0 ? LF_FINISH(DIFFS, DIM, CM, STAGE, -1)                      \
-         : clip > 0 ? LF_FINISH(DIFFS, DIM, CM, STAGE, 1) : LF_FINISH(DIFFS, DIM, CM, STAGE, 0);
-#define LF_FINISH_DIMS(DIFFS, STAGE)                      \
-    switch (dim) {                                        \
-    case 2: LF_FINISH_CLIPS(DIFFS, 2, 0, STAGE)           \
-    case 3: LF_FINISH_CLIPS(DIFFS, 3, 0, STAGE)           \
-    default: return LF_FINISH(DIFFS, dim, 0, STAGE, clip);\
+#define LF_FINISH_CLIPS(DIFFS, DIM, CM, STAGE)              \
+    if (clip < 0) { LF_FINISH(DIFFS, DIM, CM, STAGE, -1) }  \
+    if (clip > 0) { LF_FINISH(DIFFS, DIM, CM, STAGE, 1) }   \
+    LF_FINISH(DIFFS, DIM, CM, STAGE, 0)
+#define LF_FINISH_DIMS(DIFFS, STAGE)                        \
+    switch (dim) {                                          \
+    case 2: { LF_FINISH_CLIPS(DIFFS, 2, 0, STAGE) }         \
+    case 3: { LF_FINISH_CLIPS(DIFFS, 3, 0, STAGE) }         \
+    default: { LF_FINISH(DIFFS, dim, 0, STAGE, clip) }      \
     }
     if (LF_ROW_CONST(diffs, dim, cm)) {
-        if (sr && sr->inplace) LF_FINISH_CLIPS(1, 3, 5, 2)
-        if (sr) LF_FINISH_CLIPS(1, 3, 5, 1)
+        if (sr && sr->inplace) { LF_FINISH_CLIPS(1, 3, 5, 2) }
+        if (sr && sr->euler) { LF_FINISH_CLIPS(1, 3, 5, 3) }
+        if (sr) { LF_FINISH_CLIPS(1, 3, 5, 1) }
         LF_FINISH_CLIPS(1, 3, 5, 0)
     }
     if (sr && sr->inplace) {
-        if (diffs) LF_FINISH_DIMS(1, 2)
+        if (diffs) { LF_FINISH_DIMS(1, 2) }
         LF_FINISH_DIMS(0, 2)
     }
     if (sr) {
-        if (diffs) LF_FINISH_DIMS(1, 1)
+        if (diffs) { LF_FINISH_DIMS(1, 1) }
         LF_FINISH_DIMS(0, 1)
     }
-    if (diffs) LF_FINISH_DIMS(1, 0)
+    if (diffs) { LF_FINISH_DIMS(1, 0) }
     LF_FINISH_DIMS(0, 0)
 #undef LF_FINISH_DIMS
 #undef LF_FINISH_CLIPS
@@ -1180,85 +1293,117 @@ static int lf_both(const hj_ls_lax_friedrichs *c)
     return c->ham_partial_row && c->dissipation != HJ_LS_LLF;
 }
 
-/* The end of a Lax-Friedrichs row once the gradient's mean is in pp and
- * the ranges the partials read in lo, hi (LL, LH: the local ranges, for
- * LLF): H, the partials into A, and lf_finish_dim's G or fused stage
- * (SP: n doubles of scratch).  Returns lf_row's code. */
+/* The end of a Lax-Friedrichs block of nb rows (for_rows_blocks; 1 but
+ * for lf_rows_glf) once the gradient's mean is in pp and the ranges the
+ * partials read in lo, hi (LL, LH: the local ranges, for LLF; nb = 1):
+ * H, the partials into A, and lf_finish_dim's G or fused stage (SP: n
+ * doubles of scratch).  Row b of pp[d], of H and of DL, DR and A's
+ * dimension d is at + b n (A's dimension d at A + d nb n); lo and hi are
+ * the same for every row.  Returns lf_row's code (*bad: b n + j). */
 static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, double t, double *y, double *ydot,
-                                                            row_ctx *rc, const double **pp, const double **lo,
-                                                            const double **hi, double *LL, double *LH, double *A,
-                                                            double *H, int diffs, const double *DL,
-                                                            const double *DR, size_t ds_stride, double *SP,
-                                                            double *inv, long *bad)
+                                                            row_ctx *rc, long nb, const double **pp,
+                                                            const double **lo, const double **hi, double *LL,
+                                                            double *LH, double *A, double *H, int diffs,
+                                                            const double *DL, const double *DR, size_t ds_stride,
+                                                            double *SP, double *inv, long *bad)
 {
     const hj_ls_lax_friedrichs *c = ps->lf;
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     const int dim = g->dim;
-    const hj_ls_row_info row = {n, g->dx[0], rc->x, rc->idx, rc->k};
-    const double *phi = y + rc->k;
+    const size_t bn = (size_t)nb * (size_t)n;
+    const ptrdiff_t s1 = nb > 1 ? g->stride[1] : 0;
     /* row_const: alpha_d read at node 0 only, its row filled where the
      * finish has no loop for the mask */
     const int cm = (int)(c->row_const & ((1u << dim) - 1));
     const int cmloop = LF_ROW_CONST(diffs, dim, cm), cmfill = cmloop ? 0 : cm;
     const int both = lf_both(c);
-    if (both) {
-        double *Ad[HJ_LS_MAXDIM];
-        for (int d = 0; d < dim; d++) Ad[d] = A + (size_t)d * (size_t)n;
-        c->ham_partial_row(t, &row, phi, pp, lo, hi, H, Ad, c->ctx);
-    } else if (c->ham_row) c->ham_row(t, &row, phi, pp, H, c->ctx);
-    else lf_ham_nodes(c, t, &row, phi, pp, H);
-    for (int d = 0; d < dim; d++) {
-        double *Ad = A + (size_t)d * (size_t)n;
-        if (!both) {
-            const double *sl = lo[d], *sh = hi[d];
-            if (c->dissipation == HJ_LS_LLF) /* local range in d only */
-                lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
-            if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
-            else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
-            lo[d] = sl, hi[d] = sh;
+    const int toolbox = c->cfl_rule == HJ_LS_CFL_TOOLBOX;
+    /* the work per dimension after the callback: none for ham_partial_row
+     * with every row_const mask in the finish's loop and the node rule */
+    const int per_dim = !both || cmfill || toolbox;
+    const hj_ls_ham_partial_row_fn hp = c->ham_partial_row;
+    void *const ctx = c->ctx;
+    long idx[HJ_LS_MAXDIM];
+    double x[HJ_LS_MAXDIM];
+    if (nb > 1) memcpy(idx, rc->idx, sizeof(long) * (size_t)dim), memcpy(x, rc->x, sizeof(double) * (size_t)dim);
+    const double *pb[HJ_LS_MAXDIM];
+    double *Ab[HJ_LS_MAXDIM];
+    for (int d = 0; d < dim; d++) pb[d] = pp[d], Ab[d] = A + (size_t)d * bn;
+    hj_ls_row_info row = {n, g->dx[0], nb > 1 ? x : rc->x, nb > 1 ? idx : rc->idx, rc->k};
+    for (long b = 0; b < nb; b++) {
+        const size_t o = (size_t)b * (size_t)n;
+        if (b) { /* hj_ls_coord's expression */
+            idx[1] = rc->idx[1] + b, x[1] = g->min[1] + (double)(idx[1] + g->origin[1]) * g->dx[1];
+            row.k += (size_t)s1;
+            for (int d = 0; d < dim; d++) pb[d] += n, Ab[d] += n;
         }
-        if (cmfill >> d & 1)
-            for (long j = 1; j < n; j++) Ad[j] = Ad[0];
-        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) { /* per-dimension maxima only where used */
-            const double dx = g->dx[d];
-            double dm = rc->dmax[d];
-            SIMD_REDUCE(max : dm)
-            for (long j = 0; j < (cm >> d & 1 ? 1 : n); j++) {
-                const double a = fabs(Ad[j]) / dx;
-                dm = a > dm ? a : dm;
+        const double *phi = y + row.k;
+        if (both) hp(t, &row, phi, pb, lo, hi, H + o, Ab, ctx);
+        else if (c->ham_row) c->ham_row(t, &row, phi, pb, H + o, c->ctx);
+        else lf_ham_nodes(c, t, &row, phi, pb, H + o);
+        if (!per_dim) continue;
+        for (int d = 0; d < dim; d++) {
+            double *Ad = A + (size_t)d * bn + o;
+            if (!both) {
+                const double *sl = lo[d], *sh = hi[d];
+                if (c->dissipation == HJ_LS_LLF) /* local range in d only */
+                    lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
+                if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
+                else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
+                lo[d] = sl, hi[d] = sh;
             }
-            rc->dmax[d] = dm;
+            if (cmfill >> d & 1)
+                for (long j = 1; j < n; j++) Ad[j] = Ad[0];
+            if (toolbox) { /* per-dimension maxima only where used */
+                const double dx = g->dx[d];
+                double dm = rc->dmax[d];
+                SIMD_REDUCE(max : dm)
+                for (long j = 0; j < (cm >> d & 1 ? 1 : n); j++) {
+                    const double a = fabs(Ad[j]) / dx;
+                    dm = a > dm ? a : dm;
+                }
+                rc->dmax[d] = dm;
+            }
         }
     }
-    double m;
     double *out;
     lf_stage_row sr, *srp = NULL;
     if (ps->stage) { /* ydot is NULL */
         const hj_ls_stage *st = ps->stage;
-        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst};
+        sr = (lf_stage_row){st->a, st->b, st->dt, st->y0 + rc->k, y + rc->k, rc->smax, 0, st->y0 == st->dst,
+                            st->a == 0 && st->b == 1 && st->y0 == y};
         srp = &sr, out = st->dst + rc->k;
     } else
         out = ydot + rc->k;
-    const int nonfinite = lf_finish_dim(diffs, dim, cmloop ? cm : 0, n, A, DL, DR, ds_stride, H, g->dx, ps->hinv, ps->clip, out, SP,
-                                        srp, rc->imax, &m);
-    if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
-    if (nonfinite) {
-        /* the first node of the row with a non-finite alpha or H (none:
-         * a sum overflowed, which the CFL bound reports) */
+    double imax = rc->imax, m = 0;
+    int code = HJ_OK;
+    for (long b = 0;; b++) {
+        double mrow;
+        if (!lf_finish_dim(diffs, dim, cmloop ? cm : 0, n, nb, &b, bn, A, DL, DR, ds_stride, H, g->dx, ps->hinv,
+                           ps->clip, out, (size_t)s1, SP, srp, &imax, &m, &mrow))
+            break;
+        /* the first node of row b with a non-finite alpha or H (none: a
+         * sum overflowed, which the CFL bound reports) */
+        const size_t o = (size_t)b * (size_t)n;
         long badj = n;
-        for (int d = 0; d < dim; d++)
-            badj = cmloop && cm >> d & 1 ? (A[(size_t)d * (size_t)n] - A[(size_t)d * (size_t)n] == 0 ? badj : 0)
-                                         : first_nonfinite(A + (size_t)d * (size_t)n, badj);
-        badj = first_nonfinite(H, badj);
-        if (badj < n) {
-            *bad = badj;
-            return HJ_ENONFINITE;
+        for (int d = 0; d < dim; d++) {
+            const double *Ad = A + (size_t)d * bn + o;
+            badj = cmloop && cm >> d & 1 ? (Ad[0] - Ad[0] == 0 ? badj : 0) : first_nonfinite(Ad, badj);
         }
+        badj = first_nonfinite(H + o, badj);
+        if (badj < n) {
+            *bad = b * n + badj;
+            code = HJ_ENONFINITE;
+            break;
+        }
+        imax = mrow > imax ? mrow : imax;
+        m = mrow > m ? mrow : m;
     }
-    rc->imax = m > rc->imax ? m : rc->imax;
+    if (srp) rc->smax = sr.smax, rc->sbad |= sr.sbad != 0;
+    rc->imax = imax;
     *inv = m;
-    return HJ_OK;
+    return code;
 }
 
 /* Both one-sided derivatives along dimension 2 of the row of rc by WENO5
@@ -1372,7 +1517,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         }
     }
     rc->filled = 1;
-    return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, LL, LH, A, H, diffs, DL, DR, ds_stride, ring + 6 * (size_t)n,
+    return lf_row_end(ps, t, y, ydot, rc, 1, pp, lo, hi, LL, LH, A, H, diffs, DL, DR, ds_stride, ring + 6 * (size_t)n,
                       inv, bad);
 }
 
@@ -1380,19 +1525,22 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
  * pass (range_free, or the range computed without a work array: the
  * global range comes in gmin, gmax either way) by a scheme whose
  * mean and D+ - D- of every dimension come in one call (first order,
- * ENO2): no choice per dimension, every buffer a fixed slice of the
- * workspace.  The same calls and expressions as lf_row: the same bits. */
-static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
+ * ENO2), on a block of rc->nrows rows (for_rows_blocks): no choice per
+ * dimension, every buffer a fixed slice of the workspace, one call of the
+ * derivative kernel and of the finish per block.  The same calls and
+ * expressions per row as lf_row: the same bits. */
+static int lf_rows_glf(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const lf_pass *ps = term;
     const hj_ls_lax_friedrichs *c = ps->lf;
     const hj_ls_grid *g = c->grid;
-    const long n = g->N[0];
+    const long n = g->N[0], nb = rc->nrows;
     const int dim = g->dim;
-    const size_t dn = (size_t)dim * (size_t)n;
-    double *P = rc->ws, *DR = P + dn, *A = DR + dn, *GL = A + dn, *GH = GL + dn, *H = GH + dn, *SP = H + n;
+    const size_t dn = (size_t)dim * (size_t)n, bn = (size_t)nb * (size_t)n, dbn = (size_t)dim * bn;
+    /* the global range first: its place does not depend on the block's rows */
+    double *GL = rc->ws, *GH = GL + dn, *P = GH + dn, *DR = P + dbn, *A = DR + dbn, *H = A + dbn, *SP = H + bn;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
-    hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, DR);
+    hj_ls_upwind_rows_mean_block(c->scheme, y + rc->k, g->stride, dim, n, nb, g->dx, ps->hinv, P, DR);
     if (!rc->filled) { /* the global range (NaN: unread), once per evaluation */
         for (int d = 0; d < dim; d++)
             for (long j = 0; j < n; j++) GL[(size_t)d * (size_t)n + (size_t)j] = ps->gmin[d],
@@ -1400,9 +1548,13 @@ static int lf_row_glf(const void *term, double t, double *y, double *ydot, row_c
         rc->filled = 1;
     }
     for (int d = 0; d < dim; d++)
-        pp[d] = P + (size_t)d * (size_t)n, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
-    return lf_row_end(ps, t, y, ydot, rc, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, (size_t)n, SP, inv, bad);
+        pp[d] = P + (size_t)d * bn, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
+    return lf_row_end(ps, t, y, ydot, rc, nb, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, bn, SP, inv, bad);
 }
+
+/* Rows per block of lf_rows_glf: enough that the per-call costs are
+ * shared, few enough that a block's buffers stay in the level-1 cache. */
+enum { LF_GLF_BLOCK = 4 };
 
 /* The evaluation, its output clipped as hj_ls_restrict would (clip 1:
  * G >= 0, -1: G <= 0, 0: not), in the same pass. */
@@ -1478,11 +1630,13 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
         hj_ls_grid_reduce(g, ps.gmax, g->dim, HJ_LS_REDUCE_MAX);
     }
     double m, dm[HJ_LS_MAXDIM];
-    const size_t ws = (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g);
     const int glf = c->dissipation == HJ_LS_GLF && !ps.cache &&
                     (c->scheme == HJ_LS_UPWIND_FIRST || c->scheme == HJ_LS_ENO2);
-    int rc = for_rows_layers(g, ws, glf ? lf_row_glf : lf_row, &ps,
-                             t, y, ydot, &m, dm, stage, faces ? ghost : 0, "Hamiltonian or partial callback", err);
+    const long blk = glf ? LF_GLF_BLOCK : 1;
+    const size_t ws = glf ? ((size_t)(2 * g->dim + 1) + (size_t)(3 * g->dim + 1) * (size_t)blk) * (size_t)n
+                          : (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g);
+    int rc = for_rows_blocks(g, ws, glf ? lf_rows_glf : lf_row, blk, &ps, t, y, ydot, &m, dm, stage,
+                             faces ? ghost : 0, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
     return HJ_OK;

@@ -466,6 +466,46 @@ static void kernel_forms_bitwise(void **state)
     }
 }
 
+/* hj_ls_upwind_rows_mean_block: a block of rows that follow each other
+ * along dimension 1 gives, row by row, the bits of one
+ * hj_ls_upwind_rows_mean call per row, at the block's offsets (row b of
+ * dimension d at d nrows n + b n); 0 and nothing written for the other
+ * schemes. */
+static void rows_mean_block_bitwise(void **state)
+{
+    (void)state;
+    const long n = 13, nrows = 5;
+    const ptrdiff_t s1 = n + 8, s2 = s1 * (nrows + 8);
+    const size_t len = (size_t)s2 * 9;
+    double *v = malloc(sizeof(double) * len);
+    unsigned seed = 7;
+    for (size_t k = 0; k < len; k++) seed = seed * 1103515245u + 12345u, v[k] = (double)(seed >> 8) / 16777216.0 - 0.5;
+    const double *p = v + 4 * s2 + 4 * s1 + 4; /* room for the stencils on every side */
+    const ptrdiff_t st[3] = {1, s1, s2};
+    const double h[3] = {0.3, 0.7, 0.11}, hinv[3] = {1 / 0.3, 1 / 0.7, 1 / 0.11};
+    const size_t bn = (size_t)nrows * (size_t)n;
+    double *mb = malloc(sizeof(double) * 3 * bn), *db = malloc(sizeof(double) * 3 * bn);
+    double m1[3 * 13], d1[3 * 13];
+    for (int dim = 2; dim <= 3; dim++)
+        for (int sc = 0; sc < HJ_LS_NSCHEMES; sc++) {
+            for (size_t k = 0; k < 3 * bn; k++) mb[k] = db[k] = -7;
+            const int done = hj_ls_upwind_rows_mean_block(sc, p, st, dim, n, nrows, h, hinv, mb, db);
+            assert_int_equal(done, sc == HJ_LS_UPWIND_FIRST || sc == HJ_LS_ENO2);
+            if (!done) {
+                for (size_t k = 0; k < 3 * bn; k++) assert_true(mb[k] == -7 && db[k] == -7);
+                continue;
+            }
+            for (long b = 0; b < nrows; b++) {
+                assert_int_equal(hj_ls_upwind_rows_mean(sc, p + b * s1, st, dim, n, h, hinv, m1, d1), 1);
+                for (int d = 0; d < dim; d++) {
+                    assert_memory_equal(mb + (size_t)d * bn + (size_t)b * (size_t)n, m1 + d * n, sizeof(double) * (size_t)n);
+                    assert_memory_equal(db + (size_t)d * bn + (size_t)b * (size_t)n, d1 + d * n, sizeof(double) * (size_t)n);
+                }
+            }
+        }
+    free(mb), free(db), free(v);
+}
+
 /* Centered derivatives of phi = sin(2 pi x) cos(2 pi y) + x y^2 on a 2-D
  * periodic grid: second order for the first derivative, the Hessian and the
  * Laplacian. */
@@ -613,4 +653,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_order
                         cmocka_unit_test(kernel_forms_bitwise),
                         cmocka_unit_test(weno5_next_rows_bitwise), cmocka_unit_test(weno5_transport2_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
+                        cmocka_unit_test(rows_mean_block_bitwise),
                         cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))

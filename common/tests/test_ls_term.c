@@ -635,6 +635,84 @@ static void lax_friedrichs_ham_partial_row(void **state)
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
 }
 
+/* Global Lax-Friedrichs of first order runs its rows in blocks of a
+ * plane: with alpha_1 and alpha_3 constant along each row (row_const) and
+ * alpha_2 varying, the bound taken from the largest alpha_2, and the fused
+ * Euler step (a = 0, b = 1, y0 = y), give the bits of the general paths
+ * (row_const = 0; eval, then the stage's combination), 1 and 2 threads;
+ * a non-finite alpha in a row inside a block is reported at its node. */
+static void ham_blocks_row(double t, const hj_ls_row_info *row, const double *phi, const double *const *p,
+                           const double *const *pmin, const double *const *pmax, double *H, double *const *alpha,
+                           void *ctx)
+{
+    (void)pmin, (void)pmax;
+    ham_mix_row(t, row, phi, p, H, NULL);
+    for (long j = 0; j < row->n; j++) {
+        const double x0 = row->x[0] + (double)j * row->dx0;
+        alpha[0][j] = 0.5 + fabs(row->x[1]) * (1 + t);
+        alpha[1][j] = 0.25 + fabs(x0 * row->x[2]);
+        alpha[2][j] = 1 + fabs(row->x[2]);
+    }
+    if (ctx && row->idx[1] == 6 && row->idx[2] == 5) alpha[1][3] = NAN;
+}
+
+static void lax_friedrichs_row_blocks(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(3, 13, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g), *d0 = hj_ls_alloc(&g),
+           *d1 = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, bump3, NULL);
+    const double dt = 0.01;
+    double b0, b1, s0, s1;
+    hj_ls_lax_friedrichs lf;
+    hj_ls_lax_friedrichs_init(&lf, &g, HJ_LS_UPWIND_FIRST, HJ_LS_GLF, NULL, NULL, NULL);
+    lf.ham_partial_row = ham_blocks_row;
+    lf.range_free = 1;
+    assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f0, &b0, NULL), HJ_OK);
+    for (size_t r = 0; r < g.rows; r++) {
+        long idx[3];
+        const size_t k = hj_ls_row(&g, r, idx);
+        for (long j = 0; j < g.N[0]; j++) d0[k + (size_t)j] = 0.0 * y[k + (size_t)j] + 1.0 * (y[k + (size_t)j] + dt * f0[k + (size_t)j]);
+    }
+    const int threads = hj_test_max_threads();
+    for (int th = 1; th <= threads; th++) {
+#ifdef _OPENMP
+        omp_set_num_threads(th);
+#endif
+        lf.row_const = 1u << 0 | 1u << 2;
+        assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b1, NULL), HJ_OK);
+        assert_memory_equal(&b0, &b1, sizeof b0);
+        hj_ls_stage st = {0, 1, dt, y, d1, 0, 0};
+        int done = 0;
+        assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &s1, &done, NULL), HJ_OK);
+        assert_int_equal(done, 1);
+        assert_memory_equal(&s1, &b0, sizeof b0);
+        for (size_t r = 0; r < g.rows; r++) {
+            long idx[3];
+            const size_t k = hj_ls_row(&g, r, idx);
+            assert_memory_equal(f1 + k, f0 + k, sizeof(double) * (size_t)g.N[0]);
+            assert_memory_equal(d1 + k, d0 + k, sizeof(double) * (size_t)g.N[0]);
+        }
+        lf.row_const = 0;
+        hj_ls_stage st0 = {0.5, 0.5, dt, y, d1, 0, 0}; /* not Euler: the general stage, then Euler's again */
+        assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st0, &s0, &done, NULL), HJ_OK);
+        assert_int_equal(hj_ls_term_stage(&lf.base, 0.3, y, &st, &s0, &done, NULL), HJ_OK);
+        for (size_t r = 0; r < g.rows; r++) {
+            long idx[3];
+            const size_t k = hj_ls_row(&g, r, idx);
+            assert_memory_equal(d1 + k, d0 + k, sizeof(double) * (size_t)g.N[0]);
+        }
+        lf.row_const = 1u << 0 | 1u << 2;
+        lf.ctx = &lf; /* a NaN alpha_2 at node (3, 6, 5): row 6 of its plane, inside a block */
+        hj_error err;
+        assert_int_equal(lf.base.eval(&lf.base, 0.3, y, f1, &b1, &err), HJ_ENONFINITE);
+        assert_non_null(strstr(err.msg, "x = (-0.5, 0, -0.166667)"));
+        lf.ctx = NULL;
+    }
+    hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1), hj_ls_free(d0), hj_ls_free(d1);
+}
+
 /* A NaN from a batched callback names its node as a per-node one does. */
 static void partial_nan_row(double t, const hj_ls_row_info *row, const double *const *pmin, const double *const *pmax,
                             int d, double *alpha, void *ctx)
@@ -1253,6 +1331,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
                         cmocka_unit_test(callback_errors_rows), cmocka_unit_test(lax_friedrichs_ham_partial_row),
+                        cmocka_unit_test(lax_friedrichs_row_blocks),
                         cmocka_unit_test(lax_friedrichs_range_free), cmocka_unit_test(lax_friedrichs_rows_across),
                         cmocka_unit_test(lax_friedrichs_row_const),
                         cmocka_unit_test(scalar_rows_equal_nodes),
