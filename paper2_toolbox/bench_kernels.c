@@ -46,7 +46,8 @@ a core, CPU time much less, so before/after ratios are taken from it;
   executed instructions: a callgrind run with `--dump-instr=yes` of each
   case (`--threads 1 --repeat 1`; convection3d to t = 1/8, 160 steps, as
   the 2-D veryHigh case gives the same count, 194.1, at 320 and at 2520
-  steps) joined with `objdump -d` of this binary; every executed add,
+  steps) joined with `objdump -d` of this binary (`scripts/count-flops`,
+  whose head shows the commands); every executed add,
   subtract, multiply, divide, max, min and square root counts once per
   lane (4 in a ymm register, 2 in an xmm, 1 scalar), a fused multiply-add
   twice; compares, blends and sign masks not at all; the timed run's
@@ -264,8 +265,9 @@ static double peak_gflops(void)
 
 /* ---- the cases ----------------------------------------------------------- */
 
-/* Flops per node-stage, counted from the executed arithmetic (the head
- * comment says how); recount after a change of the kernel or its flags. */
+/* Flops per node-stage, counted from the executed arithmetic by
+ * scripts/count-flops (the head comment says how); recount after a change
+ * of the kernel or of its compiler flags. */
 #define FLOPS_AIR3D_LOW 66.3
 #define FLOPS_AIR3D_MEDIUM 105.2
 #define FLOPS_AIR3D_HIGH 193.7
