@@ -39,19 +39,47 @@ a core, CPU time much less, so before/after ratios are taken from it;
   (velocity rows 16.0, phi 8.2, the stages' y0 5.5 and dst 5.4), plus the
   write-backs of the in-place last stage it does not count (8/3): 38.1
   against the model's 37.3;
-- flops per node-stage: an operation count of the scheme (per dimension,
-  both one-sided derivatives of upwind first order 4, ENO2 16, ENO3 40,
-  WENO5 165; convection computes only the upwind side, half of these, plus
-  2 for the velocity product and its sum into G, and in 3-D 4 more for the
-  CFL sum and maximum, which the 2-D rows take from the steady velocity's
-  cache; Lax-Friedrichs 8 per dimension for the gradient, dissipation and
-  CFL sums plus 20 for air3D's H and partials; 5 for the RK combination),
-  again a model;
+- flops per node-stage: counted, not derived from the scheme's formulas
+  (an operation count of the formulas, 544 for air3D veryHigh, missed what
+  the compiler keeps and removes: common subexpressions, the smoothness
+  sums shared by both sides, the rows' tail lanes).  Counted from the
+  executed instructions: a callgrind run with `--dump-instr=yes` of each
+  case (`--threads 1 --repeat 1`; convection3d to t = 1/8, 160 steps, as
+  the 2-D veryHigh case gives the same count, 194.1, at 320 and at 2520
+  steps) joined with `objdump -d` of this binary (`scripts/count-flops`,
+  whose head shows the commands); every executed add,
+  subtract, multiply, divide, max, min and square root counts once per
+  lane (4 in a ymm register, 2 in an xmm, 1 scalar), a fused multiply-add
+  twice; compares, blends and sign masks not at all; the timed run's
+  functions only (not the setup, the triad or the peak loop).  Valgrind
+  runs the avx2 clones (it has no AVX-512).  The avx512f clones' loops
+  have the same arithmetic instructions per vector, or one fewer or more
+  (objdump of both clones' loops: hj_ls_weno5_row_next_eps 54 multiplies,
+  32 adds, 16 subtracts, 17 divisions, 4 max in the loop of the first rows,
+  57, 30, 23, 2, 4 in the others'; ham_partial_row and
+  hj_ls_weno5_transport2_eps identical), so the counts differ mainly in
+  the row tails (51 nodes: 52 lanes in ymm, 56 in zmm, up to 8 % more in
+  the row loops); conv2_row (convection2d medium) is vectorised
+  differently in its avx512f clone, whose count is not checked.  Counted
+  (old formula count in brackets): air3D low 66.3 (61), medium 105.2 (97), high 193.7
+  (169), veryHigh 428.5 (544: WENO5 rows along x_2 and x_3 257.8, the
+  x_1 rows with the gradient mean 127.4, the Lax-Friedrichs finish 25.5,
+  H's partials 16.6); convection2d medium 42.2 (25), veryHigh 194.1 (174);
+  convection3d veryHigh 197.3 (182).  Recount after a change of the
+  kernel or of its compiler flags;
 - the roofline: min(peak flops, bandwidth x flops / byte), with the
   bandwidth of a STREAM triad (a[i] = b[i] + s c[i], 3 x 32 MB, 24 bytes
-  per element) and the peak of a register-resident multiply-add loop,
-  both measured here with 1 and 2 threads; the achieved fraction is the
-  case's flop rate over its roofline.
+  per element, wall time) and the peak of a register-resident loop of 16
+  independent multiply-add chains of 8 doubles (throughput bound: see
+  madd), each thread's rate over its own CPU time, summed; both measured
+  here with 1 and 2 threads.  Beside it the theoretical peak of one core:
+  2 vector multiplies + 2 vector adds per cycle (Zen 5's four FP pipes;
+  32 flops per cycle with AVX-512) times the clock, measured by a chain of
+  dependent integer adds (the clock in /proc/cpuinfo is a VM's guess).
+  The achieved fraction is the case's flop rate over its roofline: with
+  the best one-thread run's wall time (`frac_roof_1`, `frac_roof_2`) and
+  with its CPU time (`frac_roof_cpu1`, the one to read on a loaded
+  machine).
 
 The reference seconds (`ref_s`) are ToolboxLS 1.1 run by GNU Octave 7.3
 (tuned malloc) on one core of this machine kind, measured side by side
@@ -97,6 +125,15 @@ static double now(void)
 #endif
 }
 
+/* The calling thread's CPU seconds: on a shared machine the time it ran,
+ * not the time it waited for a core. */
+static double thread_cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static void set_threads(int n)
 {
 #ifdef _OPENMP
@@ -123,41 +160,104 @@ static double triad_gbs(double *a, const double *b, const double *c, long n)
     return best;
 }
 
-/* 64 independent chains x = x a + b in registers (enough vectors to hide
- * the latency of the multiply and the add): 2 flops per element and
- * iteration, vectorised as the kernel's clones are. */
+/* The multiply-add peak: 16 independent chains x = x a + b of 8 doubles
+ * each, held in vector registers (GCC's vector types, so that the chains
+ * stay in registers instead of an array in memory, whose store-to-load
+ * latency bounded the loop), 256 flops per iteration.  A chain's step is a
+ * multiply then an add (not contracted to a fused multiply-add under
+ * -std=c11, as in the kernel): about 5 cycles of latency, and at 2
+ * multiplies + 2 adds per cycle 10 chains keep the pipes busy, so 16 make
+ * the loop throughput bound.  The avx2 and default clones split each chain
+ * into 2 or 4 registers and spill: on such machines the figure is low. */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
-static void madd(double *x, long iters)
+typedef double v8d __attribute__((vector_size(64)));
+enum { NCHAIN = 16 };
+__attribute__((target_clones("avx512f", "avx2", "default"))) static double madd(long iters)
 {
-    for (long it = 0; it < iters; it++)
-        for (int k = 0; k < 64; k++) x[k] = x[k] * 0.999999 + 1e-7;
+    v8d x[NCHAIN], a, b;
+    for (int l = 0; l < 8; l++) {
+        a[l] = 0.999999, b[l] = 1e-7;
+        for (int k = 0; k < NCHAIN; k++) x[k][l] = 1 + k + 0.125 * l;
+    }
+    for (long it = 0; it < iters; it++) {
+#pragma GCC unroll 16
+        for (int k = 0; k < NCHAIN; k++) x[k] = x[k] * a + b;
+    }
+    double sum = 0;
+    for (int k = 0; k < NCHAIN; k++)
+        for (int l = 0; l < 8; l++) sum += x[k][l];
+    return sum;
 }
 
+/* Core cycles per second: a chain of dependent integer adds, one cycle
+ * each on any x86-64 core (the empty asm keeps the chain from being folded
+ * and the addend from being an immediate, which some cores eliminate). */
+static double clock_ghz(void)
+{
+    double best = 0;
+    const long n = 50000000;
+    for (int rep = 0; rep < 3; rep++) {
+        long x = 0, y = 1;
+        __asm__ volatile("" : "+r"(y));
+        const double t0 = thread_cpu();
+        for (long i = 0; i < n; i++) {
+            x += y;
+            __asm__ volatile("" : "+r"(x));
+            x += y;
+            __asm__ volatile("" : "+r"(x));
+            x += y;
+            __asm__ volatile("" : "+r"(x));
+            x += y;
+            __asm__ volatile("" : "+r"(x));
+        }
+        const double dt = thread_cpu() - t0;
+        if (x != 4 * n) return NAN;
+        best = fmax(best, 4.0 * (double)n / dt / 1e9);
+    }
+    return best;
+}
+
+/* Flops per cycle of one core if it issues 2 vector multiplies and 2 vector
+ * adds per cycle (Zen 5; Intel cores issue 2 of either, and Zen 4 splits
+ * a 512-bit operation in two: half this),
+ * at the widest vector the kernel's clones use here. */
+static double flops_per_cycle(void)
+{
+    __builtin_cpu_init();
+    return 4.0 * (__builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx2") ? 4 : 2);
+}
+#else
+enum { NCHAIN = 2 };
+static double madd(long iters)
+{
+    double x[8 * NCHAIN], sum = 0;
+    for (int k = 0; k < 8 * NCHAIN; k++) x[k] = 1 + k;
+    for (long it = 0; it < iters; it++)
+        for (int k = 0; k < 8 * NCHAIN; k++) x[k] = x[k] * 0.999999 + 1e-7;
+    for (int k = 0; k < 8 * NCHAIN; k++) sum += x[k];
+    return sum;
+}
+static double clock_ghz(void) { return NAN; }
+static double flops_per_cycle(void) { return NAN; }
+#endif
+
+/* The threads' rates summed, each over its own CPU time (wall time on a
+ * loaded machine would count the waits for a core). */
 static double peak_gflops(void)
 {
     double best = 0;
     const long iters = 5000000;
     for (int rep = 0; rep < 3; rep++) {
-        double sink = 0;
-        const double t0 = now();
+        double sink = 0, gf = 0;
 #ifdef _OPENMP
-#pragma omp parallel reduction(+ : sink)
+#pragma omp parallel reduction(+ : sink, gf)
 #endif
         {
-            double x[64];
-            for (int k = 0; k < 64; k++) x[k] = 1 + k;
-            madd(x, iters);
-            for (int k = 0; k < 64; k++) sink += x[k];
+            const double t0 = thread_cpu();
+            sink += madd(iters);
+            gf += 16.0 * NCHAIN * (double)iters / (thread_cpu() - t0) / 1e9;
         }
-        const double dt = now() - t0;
-        int nth = 1;
-#ifdef _OPENMP
-        nth = omp_get_max_threads();
-#endif
         if (sink != sink) return NAN;
-        const double gf = 128.0 * (double)iters * nth / dt / 1e9;
         best = gf > best ? gf : best;
     }
     return best;
@@ -165,25 +265,34 @@ static double peak_gflops(void)
 
 /* ---- the cases ----------------------------------------------------------- */
 
+/* Flops per node-stage, counted from the executed arithmetic by
+ * scripts/count-flops (the head comment says how); recount after a change
+ * of the kernel or of its compiler flags. */
+#define FLOPS_AIR3D_LOW 66.3
+#define FLOPS_AIR3D_MEDIUM 105.2
+#define FLOPS_AIR3D_HIGH 193.7
+#define FLOPS_AIR3D_VERYHIGH 428.5
+#define FLOPS_CONV2D_MEDIUM 42.2
+#define FLOPS_CONV2D_VERYHIGH 194.1
+#define FLOPS_CONV3D_VERYHIGH 197.3
+
 enum { AIR3D, CONV2D, CONV3D };
 typedef struct {
     int kind, acc;
     double ref_s; /* NAN: none */
+    double flops; /* per node-stage, counted (see the head comment) */
 } bench_case;
 static const bench_case CASES[] = {
-    {AIR3D, HJ_LS_ACC_LOW, 5.47},     {AIR3D, HJ_LS_ACC_MEDIUM, 18.2}, {AIR3D, HJ_LS_ACC_HIGH, NAN},
-    {AIR3D, HJ_LS_ACC_VERYHIGH, 45.1}, {CONV2D, HJ_LS_ACC_MEDIUM, 15.9}, {CONV2D, HJ_LS_ACC_VERYHIGH, 62},
-    {CONV3D, HJ_LS_ACC_VERYHIGH, 2585},
+    {AIR3D, HJ_LS_ACC_LOW, 5.47, FLOPS_AIR3D_LOW},
+    {AIR3D, HJ_LS_ACC_MEDIUM, 18.2, FLOPS_AIR3D_MEDIUM},
+    {AIR3D, HJ_LS_ACC_HIGH, NAN, FLOPS_AIR3D_HIGH},
+    {AIR3D, HJ_LS_ACC_VERYHIGH, 45.1, FLOPS_AIR3D_VERYHIGH},
+    {CONV2D, HJ_LS_ACC_MEDIUM, 15.9, FLOPS_CONV2D_MEDIUM},
+    {CONV2D, HJ_LS_ACC_VERYHIGH, 62, FLOPS_CONV2D_VERYHIGH},
+    {CONV3D, HJ_LS_ACC_VERYHIGH, 2585, FLOPS_CONV3D_VERYHIGH},
 };
 enum { NCASE = (int)(sizeof CASES / sizeof CASES[0]) };
 static const char *const KIND_NAME[3] = {"air3d", "convection2d", "convection3d"};
-
-/* Model flops of both one-sided derivatives along one dimension. */
-static double deriv_flops(int acc)
-{
-    static const double f[4] = {4, 16, 40, 165};
-    return f[acc];
-}
 
 typedef struct {
     hj_ls_grid g;
@@ -274,6 +383,7 @@ int main(int argc, char **argv)
            *cc = malloc(sizeof(double) * (size_t)tn);
     if (!a || !b || !cc) hj_cli_fail(PROG, HJ_EXIT_RUN, "out of memory");
     double bw[2], peak[2];
+    const double ghz = clock_ghz(), theory = ghz * flops_per_cycle();
     for (int th = 0; th < 2; th++) {
         set_threads(th + 1);
 #ifdef _OPENMP
@@ -286,24 +396,29 @@ int main(int argc, char **argv)
     free(a), free(b), free(cc);
     double load[3] = {0, 0, 0};
     getloadavg(load, 3);
-    printf("machine: triad %.1f GB/s (1 thread) %.1f GB/s (2); multiply-add peak %.1f GFLOP/s (1) %.1f (2); "
-           "load %.2f\n", bw[0], bw[1], peak[0], peak[1], load[0]);
+    printf("machine: triad %.1f GB/s (1 thread) %.1f GB/s (2); multiply-add peak %.1f GFLOP/s (1) %.1f (2), "
+           "theoretical %.1f per core (%.2f GHz measured x %.0f flops/cycle); load %.2f\n",
+           bw[0], bw[1], peak[0], peak[1], theory, ghz, flops_per_cycle(), load[0]);
 
     hj_out o;
     p2_fail_if(PROG, p2_open(&o, dir, "kernels_bench.tsv", &err), &err);
     fprintf(o.fp,
             "# bench_kernels: wall seconds (best of repeat) with 1 and 2 threads; node-stage updates per second; model\n"
             "# bytes and flops per node-stage; roofline = min(peak, bw x flops/byte) with the triad bandwidth and\n"
-            "# multiply-add peak measured here (1 thread: %.2f GB/s, %.2f GFLOP/s; 2 threads: %.2f GB/s, %.2f GFLOP/s);\n"
+            "# multiply-add peak measured here (1 thread: %.2f GB/s, %.2f GFLOP/s; 2 threads: %.2f GB/s, %.2f GFLOP/s;\n"
+            "# theoretical %.2f GFLOP/s per core: %.3f GHz measured x %.0f flops/cycle); flops_per_ns counted from the\n"
+            "# executed vector arithmetic (see bench_kernels.c)\n"
             "# frac = achieved flop rate / roofline; ref_s = ToolboxLS under Octave on one core of this machine kind\n"
             "# (convection3d: MATLAB 2004, another machine); ratio = ref_s / s_1thread; cpu_s_1thread = the process's CPU\n"
-            "# seconds of the best one-thread run (less moved by the machine's load than wall time); load average %.2f at start\n"
+            "# seconds of the best one-thread run (less moved by the machine's load than wall time); frac_roof_cpu1 = frac\n"
+            "# with cpu_s_1thread; load average %.2f at start\n"
             "case\tacc\tnodes\tsteps\tstages\ts_1thread\ts_2threads\tspeedup\tmnode_stage_per_s_1\tmnode_stage_per_s_2\t"
-            "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\n",
-            bw[0], peak[0], bw[1], peak[1], load[0]);
+            "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\t"
+            "frac_roof_cpu1\n",
+            bw[0], peak[0], bw[1], peak[1], theory, ghz, flops_per_cycle(), load[0]);
     printf("%-13s %-9s %9s %6s %9s %9s %7s %8s %8s %6s %6s %6s %6s %7s %7s %s\n", "case", "acc", "nodes", "steps",
            "s_1thr", "s_2thr", "speedup", "Mns/s_1", "Mns/s_2", "B/ns", "F/ns", "roof1", "roof2", "ref_s", "ratio",
-           "bitwise cpu_1thr");
+           "bitwise cpu_1thr roof_cpu1");
     for (int ci = 0; ci < ncases; ci++) {
         const bench_case *c = &CASES[cases[ci]];
         setup s;
@@ -335,26 +450,24 @@ int main(int argc, char **argv)
          * cached velocity rows, 8 B per dimension */
         const double fused = (16.0 + 24.0 * (order - 1)) / order;
         const double bytes = c->kind == AIR3D ? (order == 1 ? 16 + 24 : fused) : fused + 8.0 * dim;
-        /* flops: the rotation moves no node along x_3 in 3-D: two dimensions
-         * carry flow; the 2-D rows take the CFL bound from the cache */
-        const double flops = c->kind == AIR3D ? dim * (deriv_flops(c->acc) + 8) + 20 + 5
-                                              : 2 * (deriv_flops(c->acc) / 2 + (dim == 2 ? 2 : 6)) + 5;
-        double rate[2], frac[2];
+        const double flops = c->flops;
+        double rate[2], frac[2], roof[2];
         for (int th = 0; th < 2; th++) {
             rate[th] = ns / secs[th];
-            const double roof = fmin(peak[th] * 1e9, bw[th] * 1e9 * flops / bytes);
-            frac[th] = rate[th] * flops / roof;
+            roof[th] = fmin(peak[th] * 1e9, bw[th] * 1e9 * flops / bytes);
+            frac[th] = rate[th] * flops / roof[th];
         }
+        const double frac_cpu = ns / cpu1 * flops / roof[0];
         const double ratio = c->ref_s / secs[0];
         const char *bits = maxth < 2 ? "-" : same ? "yes" : "NO";
-        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\t%.6g\n",
+        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\t%.6g\t%.4g\n",
                 KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, order, secs[0], secs[1],
                 secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-                bits, cpu1);
-        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s %.3f\n",
+                bits, cpu1, frac_cpu);
+        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s %.3f %.3f\n",
                KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, secs[0], secs[1],
                secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-               bits, cpu1);
+               bits, cpu1, frac_cpu);
         fflush(stdout);
         hj_ls_free(s.y0), hj_ls_free(s.y), hj_ls_free(s.first);
     }
