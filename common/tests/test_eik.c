@@ -20,6 +20,19 @@ static void coords(const hj_eik_grid *g, size_t u, double x[3])
     x[2] = g->dim == 3 ? g->x0[2] + c * g->dx[2] : 0;
 }
 
+/* A wall mask: nonzero where x[0] lies within hw of x_w and x[1] in
+ * [y0, y1] (a gap is two walls), the rest free (n^dim bytes, calloc'd). */
+static unsigned char *wall_mask(const hj_eik_grid *g, double xw, double hw, double y0, double y1)
+{
+    unsigned char *ob = calloc(nodes(g), 1);
+    for (size_t u = 0; ob && u < nodes(g); u++) {
+        double x[3];
+        coords(g, u, x);
+        ob[u] = fabs(x[0] - xw) <= hw && x[1] >= y0 && x[1] <= y1;
+    }
+    return ob;
+}
+
 /* A plane wave held on the line y = 0 (fixed nodes, T = 0) with slowness
  * 2 and dx != dy: every order gives T = 2 y exactly (all differences of a
  * linear function are exact), in 2-D and 3-D. */
@@ -528,12 +541,7 @@ static void relaxation_plateau_converges(void **state)
     hj_eik_grid g = {2, {N + 1, N + 1, 1}, {-1, -1, 0}, {2.0 / N, 2.0 / N, 1}};
     const size_t n = nodes(&g);
     double *T = malloc(n * sizeof *T);
-    unsigned char *ob = calloc(n, 1);
-    for (size_t u = 0; u < n; u++) {
-        double x[3];
-        coords(&g, u, x);
-        ob[u] = fabs(x[0]) < 0.05 + 1e-12 && x[1] < 0.5 + 1e-12;
-    }
+    unsigned char *ob = wall_mask(&g, 0, 0.05 + 1e-12, -INFINITY, 0.5 + 1e-12);
     const hj_eik_source s = {{-0.5, 0.1, 0}, 0};
     hj_eik_options o = hj_eik_default_options();
     o.order = 3;
@@ -592,12 +600,9 @@ static void wall_converges(void **state)
     hj_eik_grid g = {2, {41, 41, 1}, {0, 0, 0}, {1, 1, 1}};
     const size_t n = nodes(&g);
     double *T = malloc(n * sizeof *T);
-    unsigned char *ob = calloc(n, 1);
-    for (size_t u = 0; u < n; u++) {
-        double x[3];
-        coords(&g, u, x);
-        ob[u] = x[0] == 20 && !(x[1] >= 27 && x[1] <= 31);
-    }
+    unsigned char *ob = wall_mask(&g, 20, 0, -INFINITY, 26), *top = wall_mask(&g, 20, 0, 32, INFINITY);
+    for (size_t u = 0; u < n; u++) ob[u] |= top[u];
+    free(top);
     hj_eik_source s = {{5, 20, 0}, 0};
     for (int order = 1; order <= 5; order += 2) {
         hj_eik_options o = hj_eik_default_options();
@@ -633,12 +638,7 @@ static void thin_wall_not_crossed(void **state)
         hj_eik_grid g = {dim, {61, 31, dim == 3 ? 5 : 1}, {0, 0, 0}, {1, 1, 1}};
         const size_t n = nodes(&g);
         double *T = malloc(n * sizeof *T);
-        unsigned char *ob = calloc(n, 1);
-        for (size_t u = 0; u < n; u++) {
-            double x[3];
-            coords(&g, u, x);
-            ob[u] = x[0] == 30 && x[1] <= 24;
-        }
+        unsigned char *ob = wall_mask(&g, 30, 0, -INFINITY, 24);
         hj_eik_source s = {{29, 3, dim == 3 ? 2 : 0}, 0};
         const size_t probe = 31 + 61 * (3 + 31 * (size_t)(dim == 3 ? 2 : 0));
         const double lo = 2 * hypot(1, 21.5) - 1; /* less a node's rounding of the wall's end */
