@@ -33,6 +33,18 @@ static unsigned char *wall_mask(const hj_eik_grid *g, double xw, double hw, doub
     return ob;
 }
 
+/* One source in a uniform medium (slowness 1) around the obstacles ob at
+ * the given order, default options otherwise; fails the test on an error. */
+static void solve_uniform(const hj_eik_grid *g, const unsigned char *ob, const hj_eik_source *s, int order, double *T,
+                          hj_eik_stats *st)
+{
+    hj_eik_options o = hj_eik_default_options();
+    o.order = order;
+    hj_error e;
+    if (hj_eik_solve(g, NULL, 1.0, ob, s, 1, NULL, &o, T, st, &e) != HJ_OK)
+        fail_msg("%d-D order %d: %s", g->dim, order, e.msg);
+}
+
 /* A plane wave held on the line y = 0 (fixed nodes, T = 0) with slowness
  * 2 and dx != dy: every order gives T = 2 y exactly (all differences of a
  * linear function are exact), in 2-D and 3-D. */
@@ -605,12 +617,8 @@ static void wall_converges(void **state)
     free(top);
     hj_eik_source s = {{5, 20, 0}, 0};
     for (int order = 1; order <= 5; order += 2) {
-        hj_eik_options o = hj_eik_default_options();
-        o.order = order;
         hj_eik_stats st;
-        hj_error e;
-        const int rc = hj_eik_solve(&g, NULL, 1.0, ob, &s, 1, NULL, &o, T, &st, &e);
-        if (rc != HJ_OK) fail_msg("order %d: %s", order, e.msg);
+        solve_uniform(&g, ob, &s, order, T, &st);
         if (!(st.iterations < 60)) fail_msg("order %d: %ld iterations", order, st.iterations);
         /* behind the wall, below the gap, around the corner: the grid
          * fixes the corner (and the wall's thickness) only to a node, so
@@ -643,12 +651,8 @@ static void thin_wall_not_crossed(void **state)
         const size_t probe = 31 + 61 * (3 + 31 * (size_t)(dim == 3 ? 2 : 0));
         const double lo = 2 * hypot(1, 21.5) - 1; /* less a node's rounding of the wall's end */
         for (int order = 1; order <= 5; order += 2) {
-            hj_eik_options o = hj_eik_default_options();
-            o.order = order;
             hj_eik_stats st;
-            hj_error e;
-            const int rc = hj_eik_solve(&g, NULL, 1.0, ob, &s, 1, NULL, &o, T, &st, &e);
-            if (rc != HJ_OK) fail_msg("%d-D order %d: %s", dim, order, e.msg);
+            solve_uniform(&g, ob, &s, order, T, &st);
             if (!(T[probe] > lo && T[probe] < lo + 6))
                 fail_msg("%d-D order %d: T(31, 3) = %g, the way round is %g", dim, order, T[probe], lo + 1);
         }
