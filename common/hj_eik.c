@@ -1228,9 +1228,12 @@ static void hide_shadows(eik_work *w)
                 const long ip[3] = {a, b, c}, k = a + w->st[1] * b + w->st[2] * c;
                 const int o = w->lab[k];
                 if (o < 0 || w->state[k] == ST_FIXED) continue;
+                /* the first order phase's owner is a source the node sees;
+                 * none (-1) means it sees no source */
+                if (o == w->own[k]) continue;
                 double x[3];
                 node_x(w, ip, x);
-                if (!visible(w, x, w->src[o].x)) w->lab[k] = -2;
+                if (w->own[k] < 0 || !visible(w, x, w->src[o].x)) w->lab[k] = -2;
             }
 }
 
@@ -1733,6 +1736,10 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                     w.tau[k] = ldexp(fixed[(a - w.G[0]) + n0 * ((b - w.G[1]) + n1 * (c - w.G[2]))], -et);
                 }
                 if (!factored) continue;
+                /* The owner: the source of the earliest straight-line
+                 * time; with obstacles the earliest the node can see (none:
+                 * -1, unfactored).  A ghost node keeps the straight-line
+                 * owner: settle_sources re-derives it from its grid node. */
                 double best = INFINITY;
                 for (int s = 0; s < nsrc; s++) {
                     const double e = w.src[s].t0 + src_T0(&w, s, x);
@@ -1741,7 +1748,17 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                         w.own[k] = s;
                     }
                 }
-                if (shadows && w.state[k] != ST_OBST && w.own[k] >= 0 && !sees(&w, ip, w.own[k])) w.own[k] = -1;
+                if (shadows && w.state[k] != ST_OBST && w.state[k] != ST_GHOST && !sees(&w, ip, w.own[k])) {
+                    w.own[k] = -1;
+                    best = INFINITY;
+                    for (int s = 0; s < nsrc; s++) {
+                        const double e = w.src[s].t0 + src_T0(&w, s, x);
+                        if (e < best && sees(&w, ip, s)) {
+                            best = e;
+                            w.own[k] = s;
+                        }
+                    }
+                }
                 w.T0[k] = src_T0(&w, w.own[k], x);
                 if ((w.state[k] == ST_FIXED || w.state[k] == ST_SRC) && isfinite(w.tau[k]))
                     w.tau[k] = w.T0[k] > 0 ? (w.tau[k] - src_tb(&w, w.own[k])) / w.T0[k] : 1.0;
@@ -2078,7 +2095,7 @@ static int solve_separate(const hj_eik_grid *g, const double *f, double f_const,
         }
         if (c == 0) continue;
         for (size_t u = 0; u < n; u++)
-            if (Tc[u] < T[u]) {
+            if (Tc[u] < T[u] || isnan(T[u])) {
                 T[u] = Tc[u];
                 if (fw) fw[u] = fc[u];
             }

@@ -125,7 +125,8 @@ hj_eik_options hj_eik_default_options(void);
  * progress is called with the iterations counted on across the solves.
  * The input is checked for all the sources before the first solve.  On
  * HJ_ENOCONV from a solve the others still run, T is the minimum of the
- * last iterates and the message names the first solve that failed.  One
+ * last iterates and the message names the first solve that failed; on
+ * another error (out of memory) T holds no result.  One
  * source and no fixed data (or fixed data alone) is the joint solve, to
  * the bit.  The result does not depend on the thread count. */
 int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,

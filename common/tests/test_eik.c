@@ -124,10 +124,12 @@ static int solve_err(const hj_eik_grid *g, const double *f, double fc, const uns
 /* Bad input: HJ_EINVAL and a message naming the problem, before any sweep
  * (progress never called). */
 static int progress_calls;
+static long progress_last; /* the last iteration number reported; -1: out of sequence */
 static void count_progress(long it, double change, void *ctx)
 {
-    (void)it, (void)change, (void)ctx;
+    (void)change, (void)ctx;
     progress_calls++;
+    progress_last = it == progress_last + 1 && progress_last >= 0 ? it : -1;
 }
 
 static void bad_input(void **state)
@@ -661,6 +663,37 @@ static void thin_wall_not_crossed(void **state)
     }
 }
 
+/* The same wall with a second source B = (40, 3) in the open: right of
+ * the wall below y = 15, within 25 of B, B's front arrives first by more
+ * than 6 (A's way round is over 31), so at order 1 T is B's factored
+ * solution, exact in a uniform medium.  The node's owner must be the
+ * nearest source it can see: taking the nearest (A, behind the wall) and
+ * then dropping the factor left an error of 0.19 at (31, 13). */
+static void owner_is_a_visible_source(void **state)
+{
+    (void)state;
+    hj_eik_grid g = {2, {61, 31, 1}, {0, 0, 0}, {1, 1, 1}};
+    const size_t n = nodes(&g);
+    double *T = malloc(n * sizeof *T);
+    unsigned char *ob = wall_mask(&g, 30, 0, -INFINITY, 24);
+    const hj_eik_source s[2] = {{{29, 3, 0}, 0}, {{40, 3, 0}, 0}};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 1;
+    hj_eik_stats st;
+    hj_error e;
+    if (hj_eik_solve(&g, NULL, 1.0, ob, s, 2, NULL, &o, T, &st, &e) != HJ_OK) fail_msg("%s", e.msg);
+    double worst = 0;
+    for (size_t u = 0; u < n; u++) {
+        double x[3];
+        coords(&g, u, x);
+        const double rB = hypot(x[0] - 40, x[1] - 3);
+        if (x[0] >= 31 && x[1] <= 15 && rB < 25 && fabs(T[u] - rB) > worst) worst = fabs(T[u] - rB);
+    }
+    if (!(worst < 1e-9)) fail_msg("largest |T - |x - B|| in B's view: %g", worst);
+    free(T);
+    free(ob);
+}
+
 /* Two sources and an obstacle in 3-D, every block hyperplane of 16 nodes
  * or more swept in parallel: the same bits with 1 and 2 threads, at
  * orders 1, 3 and 5, and at order 5 with one source; and with 2 threads
@@ -1087,10 +1120,12 @@ static void separate_sources_bad_input(void **state)
     /* progress counts on across the solves */
     o.separate_sources = 1;
     progress_calls = 0;
+    progress_last = 0;
     hj_eik_stats st;
     double T[64];
     assert_int_equal(hj_eik_solve(&g, NULL, 1, NULL, s, 3, NULL, &o, T, &st, &e), HJ_OK);
     assert_int_equal(progress_calls, st.iterations);
+    assert_int_equal(progress_last, st.iterations); /* 1, 2, ... on across the solves */
 }
 
 static void threads_bitwise(void **state)
@@ -1155,7 +1190,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(round_off_plateau),
                         cmocka_unit_test(relaxation_plateau_converges),
                         cmocka_unit_test(late_source_overtaken),
-                        cmocka_unit_test(wall_converges), cmocka_unit_test(thin_wall_not_crossed), cmocka_unit_test(varying_speed_converges),
+                        cmocka_unit_test(wall_converges), cmocka_unit_test(thin_wall_not_crossed), cmocka_unit_test(owner_is_a_visible_source), cmocka_unit_test(varying_speed_converges),
                         cmocka_unit_test(varying_speed_order5_count),
                         cmocka_unit_test(varying_speed_bitwise), cmocka_unit_test(noisy_map_converges),
                         cmocka_unit_test(noisy_start_in_bounds), cmocka_unit_test(slowness_scale_free),
