@@ -1749,11 +1749,12 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                     }
                 }
                 if (shadows && w.state[k] != ST_OBST && w.state[k] != ST_GHOST && !sees(&w, ip, w.own[k])) {
+                    const int hidden = w.own[k];
                     w.own[k] = -1;
                     best = INFINITY;
                     for (int s = 0; s < nsrc; s++) {
                         const double e = w.src[s].t0 + src_T0(&w, s, x);
-                        if (e < best && sees(&w, ip, s)) {
+                        if (s != hidden && e < best && sees(&w, ip, s)) {
                             best = e;
                             w.own[k] = s;
                         }
