@@ -162,12 +162,26 @@ build/.deps-%: scripts/ensure-deps
 	@scripts/ensure-deps $*
 	@mkdir -p $(@D) && touch $@
 
-$(BUILD)/obj/%.o: %.c | $(DEPS_OK)
+# Each object keeps the compile command that built it in OBJ.cmd, rewritten
+# only when the command changes, so that an object whose flags changed (an
+# edit of a flag in this Makefile or a rules.mk, CC=...) is rebuilt, and
+# nothing else is.  The .cmd rule runs in the object's context, so it sees
+# the object's target-specific flags.  No shell is started.
+HJ_PIC_FLAGS := -fPIC -fno-semantic-interposition
+hj_differ = $(subst $(1),,$(2))$(subst $(2),,$(1))
+hj_record = $(if $(call hj_differ,$(file <$(1)),$(2)),$(shell mkdir -p $(dir $(1)))$(file >$(1),$(2)))
+.PHONY: FORCE
+$(BUILD)/obj/%.o.cmd: FORCE
+	@$(call hj_record,$@,$(CC) $(CPPFLAGS) $(CFLAGS))
+$(BUILD)/pic/%.o.cmd: FORCE
+	@$(call hj_record,$@,$(CC) $(CPPFLAGS) $(CFLAGS) $(HJ_PIC_FLAGS))
+
+$(BUILD)/obj/%.o: %.c $(BUILD)/obj/%.o.cmd | $(DEPS_OK)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
-$(BUILD)/pic/%.o: %.c | $(DEPS_OK)
+$(BUILD)/pic/%.o: %.c $(BUILD)/pic/%.o.cmd | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -fno-semantic-interposition -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(HJ_PIC_FLAGS) -c $< -o $@
 
 $(LIB): $(COMMON_PIC)
 	@mkdir -p $(@D)
