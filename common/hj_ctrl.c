@@ -6,7 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-double hj_ctrl_value(const hj_ls_grid *g, const double *phi, const double *x)
+/* The multilinear interpolant of phi at x; with finite_only, over the
+ * cell's nodes that are not infinite, their weights renormalised
+ * (INFINITY when every node of positive weight is). */
+static double interpolate(const hj_ls_grid *g, const double *phi, const double *x, int finite_only)
 {
     long i0[HJ_LS_MAXDIM];
     double w[HJ_LS_MAXDIM];
@@ -29,7 +32,7 @@ double hj_ctrl_value(const hj_ls_grid *g, const double *phi, const double *x)
             w[d] = s - (double)k;
         }
     }
-    double v = 0;
+    double v = 0, wsum = 0;
     for (unsigned c = 0; c < (1u << dim); c++) {
         long i[HJ_LS_MAXDIM];
         double wt = 1;
@@ -39,9 +42,29 @@ double hj_ctrl_value(const hj_ls_grid *g, const double *phi, const double *x)
             if (i[d] == g->N[d]) i[d] = 0; /* periodic wrap (clamped dims never get here) */
             wt *= up ? w[d] : 1 - w[d];
         }
-        if (wt != 0) v += wt * phi[hj_ls_index(g, i)];
+        if (wt == 0) continue;
+        const double a = phi[hj_ls_index(g, i)];
+        if (finite_only && isinf(a)) continue; /* a NaN still propagates */
+        v += wt * a, wsum += wt;
     }
+    if (finite_only) return wsum > 0 ? v / wsum : INFINITY;
     return v;
+}
+
+double hj_ctrl_value(const hj_ls_grid *g, const double *phi, const double *x)
+{
+    return interpolate(g, phi, x, 0);
+}
+
+/* The value the gradient differences: the interpolant, or where a node of
+ * the cell is infinite (a time-to-reach beside an obstacle or the reached
+ * set's edge) that of the cell's other nodes, so that a state there keeps
+ * a gradient (the time-optimal path runs along the obstacle); the
+ * interpolant's bits wherever it is finite. */
+static double steering_value(const hj_ls_grid *g, const double *phi, const double *x)
+{
+    const double v = interpolate(g, phi, x, 0);
+    return isfinite(v) ? v : interpolate(g, phi, x, 1);
 }
 
 void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, double *p)
@@ -53,18 +76,19 @@ void hj_ctrl_gradient(const hj_ls_grid *g, const double *phi, const double *x, d
     for (int d = 0; d < g->dim; d++) {
         const double h = g->dx[d];
         y[d] = x[d] + h;
-        const double a = hj_ctrl_value(g, phi, y);
+        const double a = steering_value(g, phi, y);
         y[d] = x[d] - h;
-        const double b = hj_ctrl_value(g, phi, y);
+        const double b = steering_value(g, phi, y);
         y[d] = x[d];
-        /* A time-to-reach is INFINITY where nothing arrives: beside such
-         * nodes the one-sided difference on the finite side, and NaN where
-         * neither side is finite (an infinite p made G^T p = 0 * inf). */
+        /* A time-to-reach is INFINITY where nothing arrives: where a side's
+         * cell has only such nodes the one-sided difference on the finite
+         * side, and NaN where neither side is finite (an infinite p made
+         * G^T p = 0 * inf). */
         if (isfinite(a) && isfinite(b)) {
             p[d] = (a - b) / (2 * h);
             continue;
         }
-        if (!have_c) c = hj_ctrl_value(g, phi, x), have_c = 1;
+        if (!have_c) c = steering_value(g, phi, x), have_c = 1;
         if (isfinite(c) && isfinite(a))
             p[d] = (a - c) / h;
         else if (isfinite(c) && isfinite(b))

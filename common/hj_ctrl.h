@@ -6,12 +6,14 @@
  * wrap, others clamp to the grid's box.  Its gradient at a state x is the
  * central difference of the interpolant with step dx_d in each dimension
  * (the interpolant is only piecewise linear: one cell's width averages
- * its kinks); where the value on one side is not finite (a time-to-reach
- * is INFINITY where nothing arrives) the one-sided difference on the
- * finite side, and NaN where the state's own value is not finite (the
- * interpolant is INFINITY in every cell with a node not reached, so within
- * one cell of the reached set's edge) or neither side's is.  The optimal inputs are the arguments of the players'
- * optima in the Hamiltonian for that gradient (hj_reach_dyn_optimal);
+ * its kinks).  A time-to-reach is INFINITY where nothing arrives (and
+ * inside an obstacle): in a cell with such nodes the gradient differences
+ * the interpolant of the cell's other nodes (hj_ctrl_value stays
+ * INFINITY there), so a time-optimal path along an obstacle keeps its
+ * control; where one side has no finite node it is the one-sided
+ * difference on the finite side, and NaN where neither side has one.
+ * The optimal inputs are the arguments of the players' optima in the
+ * Hamiltonian for that gradient (hj_reach_dyn_optimal);
  * hj_ctrl_optimal gives NaN inputs for a gradient that is not finite.
  *
  * Simulation: classical RK4 with the control (and disturbance) held over

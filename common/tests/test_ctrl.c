@@ -233,6 +233,83 @@ static void infinite_neighbours(void **state)
     hj_ls_free(a);
 }
 
+/* A reach-avoid time-to-reach is INFINITY inside the obstacle, and the
+ * time-optimal path runs along the obstacle's edge.  The gradient was NaN
+ * wherever a node of the state's cell was not finite, so a run steered by
+ * the time-to-reach stopped (HJ_ENONFINITE) at its first corner.  Here the
+ * exact time-to-reach of a unit-speed point to the disc |x| <= 0.2 around
+ * the wall [0.4, 0.6] x [-0.5, 0.5], from behind the wall. */
+static double wall_box(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return fmax(fabs(x[0] - 0.5) - 0.1, fabs(x[1]) - 0.5);
+}
+static double small_disc(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return hypot(x[0], x[1]) - 0.2;
+}
+static int sees(const double *a, const double *b)
+{
+    for (int k = 1; k < 1000; k++) {
+        const double s = k / 1000.0, x = a[0] + (b[0] - a[0]) * s, y = a[1] + (b[1] - a[1]) * s;
+        if (fabs(x - 0.5) < 0.1 && fabs(y) < 0.5) return 0;
+    }
+    return 1;
+}
+static double around_wall(const double *p)
+{
+    const double q[2] = {p[0], fabs(p[1])}, o[2] = {0, 0}, c1[2] = {0.6, 0.5}, c2[2] = {0.4, 0.5};
+    const double last = hypot(0.4, 0.5) - 0.2;
+    if (sees(q, o)) return fmax(hypot(p[0], p[1]) - 0.2, 0);
+    if (sees(q, c2)) return hypot(q[0] - c2[0], q[1] - c2[1]) + last;
+    return hypot(q[0] - c1[0], q[1] - c1[1]) + 0.2 + last;
+}
+static void identity2(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    o[0] = 1, o[1] = 0, o[2] = 0, o[3] = 1;
+}
+
+static void steer_along_obstacle(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, (double[]){-1.5, -1.5}, (double[]){1.5, 1.5}, (long[]){61, 61}, bc, NULL),
+                     HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    assert_non_null(a);
+    for (long j = 0; j < 61; j++)
+        for (long i = 0; i < 61; i++) {
+            double x[2];
+            hj_ls_coord(&g, (long[]){i, j}, x);
+            a[hj_ls_index(&g, (long[]){i, j})] = wall_box(0, x, NULL) <= 0 ? INFINITY : around_wall(x);
+        }
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 2, NULL, NULL);
+    hj_reach_dyn_control_ball(&s, identity2, 2, (double[]){0, 0}, 1);
+    hj_ctrl_sim_opts o;
+    hj_ctrl_sim_defaults(&o);
+    o.dt = 0.01, o.t_max = 3, o.target.fn = small_disc, o.obstacle.fn = wall_box;
+    hj_ctrl_traj tr;
+    hj_error err;
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 2, 2, 0, 300, &err), HJ_OK);
+    const double x0[2] = {1.0, 0.1};
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, x0, &o, &tr, &err), HJ_OK);
+    assert_true(tr.reached);
+    /* The exact time is 1.338; the path's corners cost a few steps. */
+    assert_close(tr.t[tr.n - 1], around_wall(x0), 0, 0.05);
+    assert_true(tr.min_obstacle > -g.dx[0]);
+    /* Inside a block of nodes that are all INFINITY there is still no gradient. */
+    double p[2];
+    hj_ctrl_gradient(&g, a, (double[]){0.5, 0}, p);
+    assert_true(isnan(p[0]) && isnan(p[1]));
+    hj_ctrl_traj_free(&tr);
+    hj_ls_free(a);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("ctrl", NULL, NULL, cmocka_unit_test(interpolation_exact),
                         cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches),
-                        cmocka_unit_test(bad_trajectories_and_options), cmocka_unit_test(infinite_neighbours))
+                        cmocka_unit_test(bad_trajectories_and_options), cmocka_unit_test(infinite_neighbours),
+                        cmocka_unit_test(steer_along_obstacle))

@@ -13,6 +13,7 @@
 #include "hj_ls_shape.h"
 #include "hj_math.h"
 #include "hj_reach.h"
+#include "hj_sys.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -1035,6 +1036,54 @@ static void fused_messages_say_tau(void **state)
     hj_ls_free(phi);
 }
 
+/* A problem whose arrays do not fit in the machine's memory is refused
+ * before any allocation, with what it needs and what there is: malloc
+ * alone said "out of memory" only when one block was larger than memory
+ * and swap, and a solve whose own arrays fit but not with the caller's was
+ * started.  6-D, compact, a grid laid out only (no array on it), with the
+ * solver's own two arrays (RK2) over twice the physical memory. */
+static double ball6_big(double t, const double *x, void *c)
+{
+    (void)t, (void)c;
+    return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 0.5;
+}
+static void f6_big(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)c;
+    for (int i = 0; i < 3; i++) o[i] = x[3 + i], o[3 + i] = 0;
+}
+static void G6_big(double t, const double *x, double *o, void *c)
+{
+    (void)t, (void)x, (void)c;
+    memset(o, 0, 18 * sizeof *o);
+    for (int i = 0; i < 3; i++) o[(3 + i) * 3 + i] = 1;
+}
+
+static void too_large_refused(void **state)
+{
+    (void)state;
+    const double mem = hj_sys_physical_memory();
+    if (!(mem > 0)) skip();
+    long n = 8;
+    while (16 * pow((double)n, 6) <= 2 * mem) n++;
+    hj_ls_grid g;
+    hj_ls_bc bc[6];
+    double lo[6], hi[6];
+    long N[6];
+    for (int d = 0; d < 6; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0}, lo[d] = -1, hi[d] = 1, N[d] = n;
+    assert_int_equal(hj_ls_grid_layout(&g, 6, lo, hi, N, bc, NULL), HJ_OK);
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 6, f6_big, NULL);
+    hj_reach_dyn_control_ball(&s, G6_big, 3, (double[]){0, 0, 0}, 1);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = ball6_big, pb.horizon = 0.5, pb.compact = 1;
+    double phi[1]; /* never reached: the refusal comes first */
+    hj_error err;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_ENOMEM);
+    assert_has(err.msg, "the machine has");
+}
+
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(no_motion), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
@@ -1042,4 +1091,4 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),
              cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node),
              cmocka_unit_test(step_does_not_advance), cmocka_unit_test(progress_callback),
-             cmocka_unit_test(fused_messages_say_tau))
+             cmocka_unit_test(fused_messages_say_tau), cmocka_unit_test(too_large_refused))

@@ -23,7 +23,9 @@
  * Outputs in --out-dir: value.dat and ttr.dat (gnuplot blocks: 1-D to
  * 3-D; for 4-D the slice through the middle of the velocities) and, for
  * 3-D, reach.vtk with both fields.  ttr is inf where the set is not
- * reached by the horizon.  The number of time steps (the horizon over the
+ * reached by the horizon, -1 in reach.vtk (VTK's text reader, C++ stream
+ * extraction, stops at "inf").  Every output name is checked before the
+ * run, so a name that cannot be written fails at once, not after it.  The number of time steps (the horizon over the
  * CFL step, estimated before the run) is checked against --max-steps
  * first: a long horizon, or a tiny period or spacing, is refused with the
  * count instead of running for ever; with --horizon 0 the run stops
@@ -268,9 +270,15 @@ static void write_fields(const char *dir, const hj_ls_grid *g, const double *phi
         snprintf(path, sizeof path, "%s/ttr.dat", dir);
         if (hj_ls_write_dat(path, g, 1, names + 1, f + 1, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
         if (g->dim == 3) {
+            /* The time-to-reach with -1 for "not reached": VTK readers take no inf. */
+            double *t = hj_ls_alloc(g);
+            if (!t) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
+            for (size_t k = 0; k < g->total; k++) t[k] = isinf(ttr[k]) ? -1 : ttr[k];
+            const double *fv[2] = {phi, t};
             snprintf(path, sizeof path, "%s/reach.vtk", dir);
-            if (hj_ls_write_vtk(path, g, "hjreach value and time-to-reach", 2, names, f, &err))
+            if (hj_ls_write_vtk(path, g, "hjreach value and time-to-reach (-1: not reached)", 2, names, fv, &err))
                 hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+            hj_ls_free(t);
         }
         return;
     }
@@ -339,7 +347,7 @@ int main(int argc, char **argv)
         {.name = "--u-max", .type = HJ_OPT_DOUBLE, .value = &umax, .min = 0, .max = 1e6, .metavar = "U",
          .help = "control bound (turn rate, acceleration)"},
         {.name = "--out-dir", .type = HJ_OPT_STRING, .value = &out_dir, .metavar = "DIR",
-         .help = "where to write value.dat, ttr.dat (and reach.vtk in 3-D)"},
+         .help = "where to write value.dat, ttr.dat (and reach.vtk in 3-D; its ttr is -1 where not reached)"},
         {.name = "--progress", .type = HJ_OPT_FLAG, .value = &force_progress,
          .help = "progress on stderr (about once a second, and a final line) even when stderr is not a terminal, "
                  "one line each; without it only a terminal gets it, so that logs and scripts reading stderr see "
@@ -382,8 +390,11 @@ int main(int argc, char **argv)
     }
     hj_error err;
     char probe[1024];
-    snprintf(probe, sizeof probe, "%s/value.dat", out_dir);
-    if (hj_out_check(probe, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    static const char *const outputs[] = {"value.dat", "ttr.dat", "reach.vtk"};
+    for (int k = 0; k < (dim == 3 ? 3 : 2); k++) {
+        snprintf(probe, sizeof probe, "%s/%s", out_dir, outputs[k]);
+        if (hj_out_check(probe, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
+    }
 
     hj_ls_bc bc[4];
     for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};

@@ -32,3 +32,10 @@ BENCHES += bench-reach
 bench-reach: $(RS_BIN)/bench_reach
 	@mkdir -p $(RS_OUT)
 	OMP_WAIT_POLICY=passive $(RS_BIN)/bench_reach --out-dir $(RS_OUT)
+
+# hjreach's outputs as users' tools read them (VTK without inf) and every
+# output name checked before the run; part of make reliability.
+.PHONY: hjreach-check
+hjreach-check: $(RS_BIN)/hjreach
+	$(RS)/hjreach-check.sh $(BUILD)/bin
+reliability-programs: hjreach-check
