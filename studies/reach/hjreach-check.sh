@@ -7,6 +7,10 @@
 # 2. An output name other than value.dat that cannot be written (a
 #    directory named ttr.dat, reach.vtk): refused before the run, one line
 #    on stderr, a non-zero status, and no value.dat written.
+# 3. --boundary: a Dubins car (disc target of radius 0.3, so phi >= -0.3
+#    in exact arithmetic; a box obstacle) over a horizon of 6 on 41^2 x 40:
+#    with the default (away) the value at a face the dynamics leave sinks
+#    below -0.45, with --boundary toward no value is below -0.3.
 # The last line is "hjreach-check: N passed, M failed".
 set -u
 bin=$(cd "${1:-build/bin}" && pwd) || exit 2
@@ -38,6 +42,17 @@ for name in ttr.dat reach.vtk; do
     elif [ -e "$d/value.dat" ]; then bad "$name a directory: value.dat written before the failure"
     else ok; fi
 done
+
+minphi() { awk '!/^#/ && NF >= 4 { if (m == "" || $4 < m) m = $4 } END { print m }' "$1"; }
+for b in away toward; do
+    mkdir -p "$work/bc-$b"
+    OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive "$h" --quiet --system dubins --N 41,41,40 --min -2,-2,0 \
+        --max 2,2,6.283185307179586 --horizon 6 --target-radius 0.3 --obstacle 0.5,-0.5:0.8,0.5 --speed 0.8 \
+        --u-max 1.5 --boundary $b --out-dir "$work/bc-$b" >/dev/null 2>"$work/err" || bad "--boundary $b: $(cat "$work/err")"
+done
+m_away=$(minphi "$work/bc-away/value.dat") m_toward=$(minphi "$work/bc-toward/value.dat")
+awk -v a="$m_away" 'BEGIN { exit !(a < -0.45) }' && ok || bad "--boundary away: min phi $m_away, not below -0.45"
+awk -v t="$m_toward" 'BEGIN { exit !(t >= -0.3 - 1e-9) }' && ok || bad "--boundary toward: min phi $m_toward below -0.3"
 
 echo "hjreach-check: $pass passed, $fail failed"
 [ $fail -eq 0 ]

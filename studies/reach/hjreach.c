@@ -305,9 +305,10 @@ int main(int argc, char **argv)
 {
     static const char *const systems[] = {"double_integrator", "dubins", "planar_di", "air3d", NULL};
     static const char *const kinds[] = {"brt", "brs", NULL};
+    static const char *const boundaries[] = {"away", "toward", NULL};
     static const char *const schemes[] = {"upwind1", "eno2", "eno3", "weno5", NULL};
     static const int scheme_ids[] = {HJ_LS_UPWIND_FIRST, HJ_LS_ENO2, HJ_LS_ENO3A, HJ_LS_WENO5A};
-    int sys = 1, kind = 0, scheme = 1, ncount = 0;
+    int sys = 1, kind = 0, scheme = 1, boundary = 0, ncount = 0;
     long N[4] = {0};
     const char *lo_s = NULL, *hi_s = NULL, *centre_s = NULL, *obstacle_s = NULL, *out_dir = ".";
     double horizon = 1, radius = 0.5, tol = 0, speed = 1, umax = 1, discount = 0;
@@ -342,6 +343,10 @@ int main(int argc, char **argv)
          .help = "reachable tube or set"},
         {.name = "--scheme", .type = HJ_OPT_CHOICE, .value = &scheme, .choices = schemes, .metavar = "S",
          .help = "spatial scheme (RK order 1 for upwind1, 2 for eno2, 3 otherwise)"},
+        {.name = "--boundary", .type = HJ_OPT_CHOICE, .value = &boundary, .choices = boundaries, .metavar = "B",
+         .help = "ghost values at the non-periodic faces: extrapolated linearly away from zero (ToolboxLS's "
+                 "addGhostExtrapolate) or toward it; over a long horizon 'away' lets a negative value at a face the "
+                 "dynamics leave sink below the target's minimum (docs/API.md, Boundaries), 'toward' does not"},
         {.name = "--speed", .type = HJ_OPT_DOUBLE, .value = &speed, .min = 0, .max = 1e6, .metavar = "V",
          .help = "speed (dubins, air3d)"},
         {.name = "--u-max", .type = HJ_OPT_DOUBLE, .value = &umax, .min = 0, .max = 1e6, .metavar = "U",
@@ -397,7 +402,7 @@ int main(int argc, char **argv)
     }
 
     hj_ls_bc bc[4];
-    for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){boundary ? HJ_LS_BC_EXTRAP_TOWARD : HJ_LS_BC_EXTRAP_AWAY, 0, 0};
     if (sys == 1 || sys == 3) bc[2].type = HJ_LS_BC_PERIODIC;
     hj_ls_grid g;
     if (hj_ls_grid_init_period(&g, dim, lo, hi, N, bc, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
