@@ -71,10 +71,14 @@ typedef struct {
                            * the iteration's start); 0 (default): each node
                            * in each of the 2^dim sweeps (locking skips
                            * it where its stencil did not change).  Same
-                           * fixed point; 0.65 to 0.85 times the CPU time
-                           * on the tests of
-                           * paper1_fastsweeping/eik/notes/eik-convergence.md,
-                           * about twice the iterations */
+                           * fixed point, about twice the iterations
+                           * (each a grid's worth of solves), 0.75 to 0.9
+                           * times the instructions on a wall, a maze and
+                           * two sources, but 1.14 on one case
+                           * (paper1_fastsweeping/eik/notes/eik-convergence.md);
+                           * memory: a byte per node more; with one
+                           * source and no obstacle or fixed data the
+                           * orthant pass runs whatever it says */
 } hj_eik_options;
 
 /* An iteration ends with a convergence test.  In the first order start,
