@@ -130,6 +130,22 @@
  * node's last computation, in the higher order phase when the changes
  * were below a tenth of the stopping threshold.
  *
+ * Causal sweeps (opt->causal_sweeps, where the orthant pass does not
+ * apply).  Each free node gets an orientation, along each axis the side
+ * of its earlier neighbour (causal_sides, from the iterate at the start
+ * of the iteration), and of the 2^dim sweeps only the one of its
+ * orientation solves it: every node is solved in a sweep that runs along
+ * its flow on every axis (the relaxation always applies) and once per
+ * iteration.  Locking compares with the node's sweep of the last
+ * iteration, 2^dim sweeps back, and a node whose orientation changed is
+ * solved; the relaxation's du is the upwind neighbour's change in this
+ * iteration (its sweep precedes the node's or is the same).  Where an
+ * axis line crosses a surface on which another axis' orientation flips
+ * (T's minimum along that axis), its nodes lie in two sweeps, and half of
+ * such links run against the order of the sweeps whatever it is: with
+ * one point source the count is higher than the orthant pass's, so the
+ * pass stays there (see paper1_fastsweeping/eik/notes).
+ *
  * Kinks.  WENO5 is replaced by WENO3 within 3 nodes of obstacles and of
  * the lines where two sources' fronts meet, and nodes that their source
  * cannot see in a straight line are not factored, in either phase (mark_low,
@@ -271,6 +287,10 @@ typedef struct {
     int relax;       /* downwind relaxation: 1 with the downwind change
                       * extrapolated, 0 none (an order 3 iteration that
                       * stalled) */
+    unsigned char *sig; /* causal sweeps (NULL: none): bits 0 .. dim-1 the
+                         * orientation of the sweep that solves the node
+                         * (causal_sides), bit 7 set when it changed */
+    int q0;          /* first sweep whose changes dl the relaxation reads */
 } eik_work;
 
 static void work_free(eik_work *w)
@@ -288,6 +308,7 @@ static void work_free(eik_work *w)
     free(w->odist);
     free(w->chg);
     free(w->dl);
+    free(w->sig);
     free(w->src);
 }
 
@@ -618,8 +639,10 @@ static inline int safeguard_ok(double v, double v1, double Tmin, double T0)
  * scheme of `order` in sweep orientation sw.  A higher order term
  * relaxed downwind (see the head of this file) keeps at least half the
  * plain slope: near a source p can cancel most of T0 c / h.
- * qs is the number of the current sweep: the downwind relaxation uses an
- * upwind neighbour's change (dl) only if that sweep made it.
+ * The downwind relaxation uses an upwind neighbour's change (dl) only if
+ * a sweep numbered q0 or later made it: the current sweep, or with causal
+ * sweeps the current iteration's (the neighbour's sweep then precedes the
+ * node's or is the same).
  * A higher order value that fails safeguard_ok is replaced by the first
  * order one and *fell is set.  Else it is clamped to within f h (in T)
  * of the first order update of the same stencil: on smooth data the two
@@ -628,7 +651,7 @@ static inline int safeguard_ok(double v, double v1, double Tmin, double T0)
  * but strongly varying medium); a clamp rather than a switch keeps the
  * update continuous there (a switch made 11 nodes of a smooth 8-bit
  * speed image first order at order 5). */
-static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw, int qs,
+static double local_update(const eik_work *w, long k, const long ip[3], const double *x, int order, int sw, int q0,
                            int *fell)
 {
     const int o = w->own[k];
@@ -714,7 +737,7 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
                 if (inner && fwd) {
                     /* downwind changes extrapolated linearly from the
                      * upwind neighbour's change du in this sweep */
-                    const double du = w->calc[k - st] == qs ? w->dl[k - st] : 0, Ac = T0 * (cm + em) / h + p;
+                    const double du = w->calc[k - st] >= q0 ? w->dl[k - st] : 0, Ac = T0 * (cm + em) / h + p;
                     al[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
                     bl[d] = al[d] * tk - (p * tk + T0 * (hm - em * du) / h);
                 } else if (sl != 1.0) {
@@ -728,7 +751,7 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
             if (T0 / h - p > 0 && (side == 1 || Tr1 < Tk)) {
                 const double A = T0 / h - p;
                 if (inner && !fwd) {
-                    const double du = w->calc[k + st] == qs ? w->dl[k + st] : 0, Ac = T0 * (cp + ep) / h - p;
+                    const double du = w->calc[k + st] >= q0 ? w->dl[k + st] : 0, Ac = T0 * (cp + ep) / h - p;
                     ar[d] = Ac > 0.5 * A ? Ac : 0.5 * A;
                     br[d] = ar[d] * tk + (p * tk + T0 * (hp + ep * du) / h);
                 } else if (sr != 1.0) {
@@ -819,12 +842,22 @@ static inline double visit(eik_work *w, const long ip[3], int sw, int order, int
 {
     const long k = ip[0] * w->st[0] + ip[1] * w->st[1] + ip[2] * w->st[2];
     if (w->state[k] != ST_FREE && !(first && w->state[k] == ST_SRC)) return 0;
-    if (first ? !active_first(w, k, q) : !active(w, k, (order + 1) / 2, q)) return 0;
+    if (!first && w->sig) {
+        /* causal sweeps: only the nodes of this orientation, each active
+         * if its stencil changed since its sweep of the last iteration
+         * (nsw sweeps ago) or its orientation changed */
+        const unsigned char sg = w->sig[k];
+        if ((sg & 0x7f) != sw) return 0;
+        if (!(sg & 0x80) && !active(w, k, (order + 1) / 2, q - (1 << w->dim) + 1)) return 0;
+        w->sig[k] = (unsigned char)sw;
+    } else if (first ? !active_first(w, k, q) : !active(w, k, (order + 1) / 2, q)) {
+        return 0;
+    }
     double x[3];
     node_x(w, ip, x);
     const double old = w->tau[k];
     int fell = 0;
-    double v = local_update(w, k, ip, x, w->fo && w->fo[k] ? 1 : order, sw, q, &fell);
+    double v = local_update(w, k, ip, x, w->fo && w->fo[k] ? 1 : order, sw, w->q0, &fell);
     if (fell) w->fo[k] = 1; /* the node's own flag: the same for any thread count */
     (*nup)++;
     if (first) {
@@ -938,6 +971,53 @@ static void source_cut(const eik_work *w, const src_info *s, long cut[3])
         const double u = floor((s->x[d] - w->x0[d]) / w->h[d]) + 1;
         cut[d] = u < 0 ? 0 : u > (double)w->n[d] ? w->n[d] : (long)u;
     }
+}
+
+/* T of node k for causal_sides: +INFINITY where no front arrives (ghost,
+ * obstacle and unreachable nodes too). */
+static inline double node_T(const eik_work *w, long k)
+{
+    const unsigned char sk = w->state[k];
+    if (sk != ST_FREE && sk != ST_FIXED) return INFINITY;
+    const double t = w->tau[k];
+    return t < INFINITY ? src_tb(w, w->own[k]) + w->T0[k] * t : INFINITY;
+}
+
+/* Causal sweep orientations.  Bit d of sig[k] is set where the node's
+ * earlier neighbour along d is k + st[d], the side the first order update
+ * takes its term from (where both neighbours have the same time, or
+ * neither has one, the bit stays); the sweep of that orientation runs
+ * along the node's flow on every axis.  Bit 7 marks a node whose
+ * orientation changed (it is solved in its new sweep whatever the
+ * locking says).  box[s]: the nodes of orientation s lie in [lo, hi)
+ * (box[s][0], box[s][1]; empty: lo >= hi). */
+static void causal_sides(eik_work *w, long box[8][2][3])
+{
+    const int nsw = 1 << w->dim;
+    for (int s = 0; s < nsw; s++)
+        for (int d = 0; d < 3; d++) {
+            box[s][0][d] = d < w->dim ? w->n[d] : 0;
+            box[s][1][d] = d < w->dim ? 0 : 1;
+        }
+    for (long c = 0; c < w->n[2]; c++)
+        for (long b = 0; b < w->n[1]; b++)
+            for (long a = 0; a < w->n[0]; a++) {
+                const long ip[3] = {a, b, c};
+                const long k = (a + w->G[0]) * w->st[0] + (b + w->G[1]) * w->st[1] + (c + w->G[2]) * w->st[2];
+                if (w->state[k] != ST_FREE) continue;
+                const unsigned char old = w->sig[k];
+                unsigned char sg = old & 0x7f;
+                for (int d = 0; d < w->dim; d++) {
+                    const double Tl = node_T(w, k - w->st[d]), Tr = node_T(w, k + w->st[d]);
+                    if (Tr < Tl) sg = (unsigned char)(sg | 1 << d);
+                    else if (Tl < Tr) sg = (unsigned char)(sg & ~(1 << d));
+                }
+                w->sig[k] = sg != (old & 0x7f) ? (unsigned char)(sg | 0x80) : (unsigned char)(sg | (old & 0x80));
+                for (int d = 0; d < w->dim; d++) {
+                    if (ip[d] < box[sg][0][d]) box[sg][0][d] = ip[d];
+                    if (ip[d] + 1 > box[sg][1][d]) box[sg][1][d] = ip[d] + 1;
+                }
+            }
 }
 
 /* Block edges for the sweeps: the whole grid with one thread or on a grid
@@ -1838,6 +1918,17 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
          * from it, so that every axis line is visited away from the
          * source (source_cut); else the 2^dim full sweeps. */
         const int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
+        /* Else, with opt->causal_sweeps, each iteration solves every node
+         * once, in the sweep of its causal orientation (causal_sides). */
+        const int causal = opt->causal_sweeps && !octants;
+        long cbox[8][2][3];
+        if (causal) {
+            if (!(w.sig = calloc(np, 1))) {
+                work_free(&w);
+                return hj_error_set(err, HJ_ENOMEM, "out of memory: the solver needs %.3g MB more", (double)np / 1e6);
+            }
+            causal_sides(&w, cbox);
+        }
         long cut[3] = {0, 0, 0};
         if (octants) source_cut(&w, &w.src[0], cut);
         long nmax = 0;
@@ -1850,15 +1941,29 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
         int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
         /* the cycle and stall tests' blocks in units of work: a pass
          * visits each node once, an iteration of full sweeps 2^dim times */
-        const int cyc_span = octants ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
-        const int stall_span = octants ? STALL_SPAN << w.dim : STALL_SPAN;
+        const int cyc_span = octants || causal ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
+        const int stall_span = octants || causal ? STALL_SPAN << w.dim : STALL_SPAN;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
             if (w.chg) memset(w.chg, 0, np * sizeof(float));
-            if (octants) {
+            if (causal) {
+                /* each node in the sweep of its orientation (causal_sides),
+                 * within the box of that orientation's nodes */
+                w.q0 = q;
+                for (int s = 0; s < nsw; s++, q++) {
+                    int empty = 0;
+                    for (int d = 0; d < w.dim; d++) empty = empty || cbox[s][0][d] >= cbox[s][1][d];
+                    if (empty) continue;
+                    fill_ghosts(&w, deg, q);
+                    const double c = sweep(&w, s, cbox[s][0], cbox[s][1], opt->order, q, 0, par_min, B, &st->updates);
+                    if (c > change) change = c;
+                }
+                st->sweeps++;
+            } else if (octants) {
                 /* one pass: each orthant swept away from the source, all
                  * with the pass's number q (each node is visited once) */
+                w.q0 = q;
                 for (int s = 0; s < nsw; s++) {
                     long lo[3], hi[3];
                     int empty = 0;
@@ -1878,6 +1983,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
             } else {
                 for (int s = 0; s < nsw; s++, q++) {
                     fill_ghosts(&w, deg, q);
+                    w.q0 = q;
                     const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, B, &st->updates);
                     if (c > change) change = c;
                 }
@@ -1897,6 +2003,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                 conv = 1;
                 break;
             }
+            if (causal) causal_sides(&w, cbox);
             /* A block of stall_span iterations whose largest change is
              * below the rounding level and not below STALL_RATIO times
              * the last block's: round-off, tol cannot be reached; but

@@ -63,6 +63,22 @@ typedef struct {
                            * counting as one more), solve each alone and
                            * take the node-wise minimum (see
                            * hj_eik_solve); 0 (default): one joint solve */
+    int causal_sweeps;    /* 1: where the orthant pass does not apply
+                           * (several sources, obstacles, fixed data), a
+                           * higher order iteration solves each node once,
+                           * in the one of the 2^dim sweeps that runs along
+                           * its upwind sides (taken from the iterate at
+                           * the iteration's start); 0 (default): each node
+                           * in each of the 2^dim sweeps (locking skips
+                           * it where its stencil did not change).  Same
+                           * fixed point, about twice the iterations
+                           * (each a grid's worth of solves), 0.75 to 0.9
+                           * times the instructions on a wall, a maze and
+                           * two sources, but 1.14 on one case
+                           * (paper1_fastsweeping/eik/notes/eik-convergence.md);
+                           * memory: a byte per node more; with one
+                           * source and no obstacle or fixed data the
+                           * orthant pass runs whatever it says */
 } hj_eik_options;
 
 /* An iteration ends with a convergence test.  In the first order start,
@@ -70,7 +86,10 @@ typedef struct {
  * whole grid.  With one point source and neither obstacles nor fixed
  * data, a higher order iteration is one pass instead: the 2^dim orthants
  * around the source, each swept away from it, a grid's worth of work.
- * sweeps counts the work in whole-grid sweeps (a pass counts one).
+ * With causal_sweeps (elsewhere) it is the 2^dim sweeps, each solving
+ * only the nodes of its orientation, also a grid's worth of solves.
+ * sweeps counts the work in whole-grid sweeps (a pass or a causal
+ * iteration counts one).
  * With separate_sources the counts (iterations, fo_iterations, updates,
  * sweeps) are the sums over the solves, change is the largest of their
  * last changes, converged says that every solve converged; unreachable
@@ -89,7 +108,8 @@ typedef struct {
                          * safeguard or kept the iteration from
                          * converging (under-resolved data) */
     long sweeps;        /* whole-grid sweeps done, first order start
-                         * included (an orthant pass counts one) */
+                         * included (an orthant pass or a causal
+                         * iteration counts one) */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);
