@@ -45,6 +45,36 @@ static void solve_uniform(const hj_eik_grid *g, const unsigned char *ob, const h
         fail_msg("%d-D order %d: %s", g->dim, order, e.msg);
 }
 
+/* Solve with one thread into a, with two into b, and require the same
+ * bits; st gets the two-thread solve's statistics. */
+static void solve_one_two_threads(const hj_eik_grid *g, const double *f, const unsigned char *ob,
+                                  const hj_eik_source *s, int ns, const double *fx, const hj_eik_options *o, double *a,
+                                  double *b, hj_eik_stats *st)
+{
+    hj_error e;
+    for (int th = 1; th <= 2; th++) {
+#ifdef _OPENMP
+        omp_set_num_threads(th);
+#endif
+        assert_int_equal(hj_eik_solve(g, f, 0, ob, s, ns, fx, o, th == 1 ? a : b, st, &e), HJ_OK);
+    }
+    assert_memory_equal(a, b, nodes(g) * sizeof *a);
+}
+
+/* The same solve with block edges 1, 3 and 7 (into b) gives a's bits. */
+static void blocks_same_bits(const hj_eik_grid *g, const double *f, const unsigned char *ob, const hj_eik_source *s,
+                             int ns, const double *fx, hj_eik_options o, const double *a, double *b)
+{
+    const long blocks[3] = {1, 3, 7};
+    for (int kb = 0; kb < 3; kb++) {
+        o.block = blocks[kb];
+        hj_eik_stats st;
+        hj_error e;
+        assert_int_equal(hj_eik_solve(g, f, 0, ob, s, ns, fx, &o, b, &st, &e), HJ_OK);
+        assert_memory_equal(a, b, nodes(g) * sizeof *a);
+    }
+}
+
 /* A plane wave held on the line y = 0 (fixed nodes, T = 0) with slowness
  * 2 and dx != dy: every order gives T = 2 y exactly (all differences of a
  * linear function are exact), in 2-D and 3-D. */
@@ -465,20 +495,10 @@ static void orthant_pass_bitwise(void **state)
             o.order = order;
             o.parallel_min = 16;
             hj_eik_stats st;
-            hj_error e;
-            for (int th = 1; th <= 2; th++) {
-                omp_set_num_threads(th);
-                assert_int_equal(hj_eik_solve(&g, f, 0, NULL, &s, 1, NULL, &o, th == 1 ? a : b, &st, &e), HJ_OK);
-            }
-            assert_memory_equal(a, b, n * sizeof *a);
+            solve_one_two_threads(&g, f, NULL, &s, 1, NULL, &o, a, b, &st);
             /* the pass ran: one sweep per higher order iteration */
             assert_int_equal(st.sweeps, (st.fo_iterations << dim) + st.iterations - st.fo_iterations);
-            const long blocks[3] = {1, 3, 7};
-            for (int kb = 0; kb < 3; kb++) {
-                o.block = blocks[kb];
-                assert_int_equal(hj_eik_solve(&g, f, 0, NULL, &s, 1, NULL, &o, b, &st, &e), HJ_OK);
-                assert_memory_equal(a, b, n * sizeof *a);
-            }
+            blocks_same_bits(&g, f, NULL, &s, 1, NULL, o, a, b);
         }
         omp_set_num_threads(1);
         free(a), free(b), free(f);
@@ -572,18 +592,8 @@ static void causal_sweeps_bitwise(void **state)
         o.parallel_min = 16;
         o.causal_sweeps = 1;
         hj_eik_stats st;
-        hj_error e;
-        for (int th = 1; th <= 2; th++) {
-            omp_set_num_threads(th);
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, th == 1 ? a : b, &st, &e), HJ_OK);
-        }
-        assert_memory_equal(a, b, n * sizeof *a);
-        const long blocks[3] = {1, 3, 7};
-        for (int kb = 0; kb < 3; kb++) {
-            o.block = blocks[kb];
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, b, &st, &e), HJ_OK);
-            assert_memory_equal(a, b, n * sizeof *a);
-        }
+        solve_one_two_threads(&g, f, ob, s, 2, NULL, &o, a, b, &st);
+        blocks_same_bits(&g, f, ob, s, 2, NULL, o, a, b);
     }
     omp_set_num_threads(1);
     free(a), free(b), free(f), free(ob);
@@ -1154,27 +1164,15 @@ static void separate_sources_min_bitwise(void **state)
         }
         for (size_t u = 0; u < n; u++) c[u] = isnan(fx[u]) ? c[u] : fx[u];
         o.separate_sources = 1;
-        for (int th = 1; th <= 2; th++) {
-#ifdef _OPENMP
-            omp_set_num_threads(th);
-#endif
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, fx, &o, th == 1 ? a : b, &st, &e), HJ_OK);
-        }
-        assert_memory_equal(a, b, n * sizeof *a);
+        solve_one_two_threads(&g, f, ob, s, 2, fx, &o, a, b, &st);
         assert_memory_equal(a, c, n * sizeof *a);
         assert_int_equal(st.iterations, iter);
         assert_int_equal(st.sweeps, sweeps);
         assert_true(st.updates == updates);
         assert_int_equal(st.unreachable, walled);
         assert_true(st.converged);
-        const long blocks[3] = {1, 3, 7};
-        for (int kb = 0; kb < 3; kb++) {
-            o.block = blocks[kb];
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, fx, &o, b, &st, &e), HJ_OK);
-            assert_memory_equal(a, b, n * sizeof *a);
-        }
+        blocks_same_bits(&g, f, ob, s, 2, fx, o, a, b);
         /* one source: the joint solve, to the bit */
-        o.block = 0;
         assert_int_equal(hj_eik_solve(&g, f, 0, ob, s + 1, 1, NULL, &o, a, &st, &e), HJ_OK);
         o.separate_sources = 0;
         assert_int_equal(hj_eik_solve(&g, f, 0, ob, s + 1, 1, NULL, &o, b, &sk, &e), HJ_OK);
@@ -1251,33 +1249,16 @@ static void threads_bitwise(void **state)
         hj_eik_options o = hj_eik_default_options();
         o.order = order;
         o.parallel_min = 16;
-        for (int th = 1; th <= 2; th++) {
-            omp_set_num_threads(th);
-            hj_eik_stats st;
-            hj_error e;
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, th == 1 ? a : b, &st, &e), HJ_OK);
-        }
-        assert_memory_equal(a, b, n * sizeof *a);
-        const long blocks[3] = {1, 3, 7};
-        for (int kb = 0; kb < 3; kb++) {
-            o.block = blocks[kb];
-            hj_eik_stats st;
-            hj_error e;
-            assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, 2, NULL, &o, b, &st, &e), HJ_OK);
-            assert_memory_equal(a, b, n * sizeof *a);
-        }
+        hj_eik_stats st;
+        solve_one_two_threads(&g, f, ob, s, 2, NULL, &o, a, b, &st);
+        blocks_same_bits(&g, f, ob, s, 2, NULL, o, a, b);
     }
     /* order 5, one source, no obstacle */
     hj_eik_options o = hj_eik_default_options();
     o.order = 5;
     o.parallel_min = 16;
-    for (int th = 1; th <= 2; th++) {
-        omp_set_num_threads(th);
-        hj_eik_stats st;
-        hj_error e;
-        assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 1, NULL, &o, th == 1 ? a : b, &st, &e), HJ_OK);
-    }
-    assert_memory_equal(a, b, n * sizeof *a);
+    hj_eik_stats st;
+    solve_one_two_threads(&g, f, NULL, s, 1, NULL, &o, a, b, &st);
     omp_set_num_threads(1);
     free(a), free(b), free(f), free(ob);
 #else
