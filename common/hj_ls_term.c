@@ -73,14 +73,14 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
-static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
-                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
-                           const char *what, hj_error *err);
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, int lines, const void *term,
+                           double t, double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st,
+                           int layers, const char *what, hj_error *err);
 static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                            double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
                            hj_error *err)
 {
-    return for_rows_blocks(g, ws_doubles, f, 1, term, t, y, ydot, maxinv, dmax, st, layers, what, err);
+    return for_rows_blocks(g, ws_doubles, f, 1, 0, term, t, y, ydot, maxinv, dmax, st, layers, what, err);
 }
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
@@ -114,10 +114,14 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
  * rc->k + b stride[1]; rc->nrows of them), their dimension-0 ghosts
  * filled first; f's *bad_j is then b N[0] + j for node j of the block's
  * row b.  The rows' results are those of blk = 1 (each row computed
- * alone; maxima and the first failing row do not depend on the grouping). */
-static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
-                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
-                           const char *what, hj_error *err)
+ * alone; maxima and the first failing row do not depend on the grouping).
+ *
+ * lines = 1: each thread's workspace starts on a cache line (the
+ * Lax-Friedrichs rows; lf_row's buffers lie whole lines apart); 0: where
+ * malloc puts it (the other terms, whose row buffers lie n apart). */
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, int lines, const void *term,
+                           double t, double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st,
+                           int layers, const char *what, hj_error *err)
 {
     double m = 0, smax = 0;
     int sbad = 0;
@@ -148,8 +152,9 @@ static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, lon
         const long n = g->N[0];
         /* on a cache line: a row evaluator whose buffers start at multiples
          * of 8 doubles reads and writes them a whole line per vector */
+        const size_t bytes = sizeof(double) * (ws_doubles + (size_t)n);
         void *wsp = NULL;
-        rc.ws = posix_memalign(&wsp, 64, sizeof(double) * (ws_doubles + (size_t)n)) ? NULL : wsp;
+        rc.ws = !lines ? malloc(bytes) : posix_memalign(&wsp, 64, bytes) ? NULL : wsp;
         if (!hj_sys_team_all(rc.ws != NULL, &ws_fail)) nomem = 1;
         else {
             rc.tmax = rc.ws + ws_doubles;
@@ -1644,7 +1649,7 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
     const long blk = glf ? LF_GLF_BLOCK : 1;
     const size_t ws = glf ? ((size_t)(2 * g->dim + 1) + (size_t)(3 * g->dim + 1) * (size_t)blk) * (size_t)n
                           : (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * lf_row_stride(n) + lf_plane_doubles(g);
-    int rc = for_rows_blocks(g, ws, glf ? lf_rows_glf : lf_row, blk, &ps, t, y, ydot, &m, dm, stage,
+    int rc = for_rows_blocks(g, ws, glf ? lf_rows_glf : lf_row, blk, 1, &ps, t, y, ydot, &m, dm, stage,
                              faces ? ghost : 0, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);
