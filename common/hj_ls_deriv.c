@@ -395,14 +395,15 @@ int hj_ls_weno5_row_next_eps(int scheme, const double *p, ptrdiff_t s, long n, d
  * first_differences; a row of differences stored and read back at five
  * offsets stalls on loads that straddle stores still in flight): window j
  * (w_j..w_j+4) gives the left derivative of node j and the right one of
- * node j - 1, into L[j] and R[j] (t holds 2 (n + 1) doubles); then node
+ * node j - 1, into L[j] and R[j] (t holds 2 n + 9 doubles); then node
  * i's pair is L[i], R[i + 1].  Half the weights of node by node. */
 static inline __attribute__((always_inline)) void weno5_windows(int mode, int local, int scheme,
                                                                const double *restrict p, double inv, long n,
                                                                double eps, double *restrict t,
                                                                double *restrict dl, double *restrict dr)
 {
-    double *restrict L = t, *restrict R = t + n + 1;
+    /* R on a cache line if t is (n + 1 rounded up to 8 doubles after L) */
+    double *restrict L = t, *restrict R = t + ((n + 8) & ~7L);
     const double e_ = local ? -1.0 : eps; /* local: weno5_next's */
 #define W(m) ((p[(m) - 2] - p[(m) - 3]) * inv)
 #define WINDOWS(PAIR)                                                                                 \

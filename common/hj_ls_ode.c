@@ -3,6 +3,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -197,6 +198,20 @@ static int still_at_end(const hj_ls_grid *g, const hj_ls_term *term, double t, d
     return HJ_OK;
 }
 
+/* A stage array (hj_ls_alloc's zeros) placed slot KB into its block: the
+ * state and the stage arrays, each a large allocation that starts at the
+ * same offset within a page, would otherwise put node k of every array at
+ * the same address modulo 4 KB, and a load of one then waits on the store
+ * to another still in flight (a row's fused stage reads y0 and u and
+ * writes dst at the same k).  *base is what to free. */
+static double *stage_alloc(const hj_ls_grid *g, int slot, double **base)
+{
+    const size_t shift = (size_t)slot * 1024 / sizeof(double);
+    double *b = calloc(g->total + shift, sizeof(double));
+    *base = b;
+    return b ? b + shift : NULL;
+}
+
 static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
 {
     double dt = o->factor_cfl * b;
@@ -232,7 +247,8 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
 
     hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};
     const double start = wall();
-    double *f = hj_ls_alloc(g), *u = order > 1 ? hj_ls_alloc(g) : NULL;
+    double *fbase = NULL, *ubase = NULL; /* what to free: u and f trade places */
+    double *f = stage_alloc(g, 1, &fbase), *u = order > 1 ? stage_alloc(g, 2, &ubase) : NULL;
     /* The state: y, or at order 1 after a kept guess the array the step
      * went to (y and u then trade places; y receives the state at every
      * output and on return). */
@@ -260,7 +276,7 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             if (hold) hold--;
             /* an infinite bound is never guessed: its step needs still_at_end */
             const int try_guess = guess && same >= 2 && !hold && bprev < INFINITY;
-            if (try_guess && !u && !(u = hj_ls_alloc(g))) guess = 0; /* order 1: no room */
+            if (try_guess && !u && !(u = stage_alloc(g, 2, &ubase))) guess = 0; /* order 1: no room */
             if (try_guess && guess) {
                 /* The bound repeated bit for bit over the last steps (air3D's
                  * does not depend on t or y): the first stage is fused too,
@@ -314,7 +330,7 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                         goto done;
                     }
                     /* u is free here (order 1: spare, or allocated now) */
-                    if (!u && !(u = hj_ls_alloc(g))) {
+                    if (!u && !(u = stage_alloc(g, 2, &ubase))) {
                         rc = hj_error_set(err, HJ_ENOMEM, "out of memory for the integrator's stage arrays");
                         goto done;
                     }
@@ -376,8 +392,8 @@ done:
         hj_ls_copy(g, y, ys);
         u = ys;
     }
-    hj_ls_free(f);
-    hj_ls_free(u);
+    free(fbase);
+    free(ubase);
     st.seconds = wall() - start;
     if (stats) *stats = st;
     return rc;

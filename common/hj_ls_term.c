@@ -73,14 +73,14 @@ typedef int (*row_fn)(const void *term, double t, double *y, double *ydot, row_c
  * failure the code of the first failing node in row order (deterministic
  * whatever the number of threads), with a message naming `what` and the
  * node. */
-static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
-                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
-                           const char *what, hj_error *err);
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, int lines, const void *term,
+                           double t, double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st,
+                           int layers, const char *what, hj_error *err);
 static int for_rows_layers(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                            double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers, const char *what,
                            hj_error *err)
 {
-    return for_rows_blocks(g, ws_doubles, f, 1, term, t, y, ydot, maxinv, dmax, st, layers, what, err);
+    return for_rows_blocks(g, ws_doubles, f, 1, 0, term, t, y, ydot, maxinv, dmax, st, layers, what, err);
 }
 static int for_rows(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const void *term, double t, double *y,
                     double *ydot, double *maxinv, double *dmax, const char *what, hj_error *err)
@@ -114,10 +114,14 @@ static int for_rows_run(const hj_ls_grid *g, size_t ws_doubles, row_fn f, const 
  * rc->k + b stride[1]; rc->nrows of them), their dimension-0 ghosts
  * filled first; f's *bad_j is then b N[0] + j for node j of the block's
  * row b.  The rows' results are those of blk = 1 (each row computed
- * alone; maxima and the first failing row do not depend on the grouping). */
-static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, const void *term, double t,
-                           double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st, int layers,
-                           const char *what, hj_error *err)
+ * alone; maxima and the first failing row do not depend on the grouping).
+ *
+ * lines = 1: each thread's workspace starts on a cache line (the
+ * Lax-Friedrichs rows; lf_row's buffers lie whole lines apart); 0: where
+ * malloc puts it (the other terms, whose row buffers lie n apart). */
+static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, long blk, int lines, const void *term,
+                           double t, double *y, double *ydot, double *maxinv, double *dmax, hj_ls_stage *st,
+                           int layers, const char *what, hj_error *err)
 {
     double m = 0, smax = 0;
     int sbad = 0;
@@ -146,7 +150,11 @@ static int for_rows_blocks(const hj_ls_grid *g, size_t ws_doubles, row_fn f, lon
         row_ctx rc;
         rc.smax = 0, rc.sbad = 0, rc.imax = 0;
         const long n = g->N[0];
-        rc.ws = malloc(sizeof(double) * (ws_doubles + (size_t)n));
+        /* on a cache line: a row evaluator whose buffers start at multiples
+         * of 8 doubles reads and writes them a whole line per vector */
+        const size_t bytes = sizeof(double) * (ws_doubles + (size_t)n);
+        void *wsp = NULL;
+        rc.ws = !lines ? malloc(bytes) : posix_memalign(&wsp, 64, bytes) ? NULL : wsp;
         if (!hj_sys_team_all(rc.ws != NULL, &ws_fail)) nomem = 1;
         else {
             rc.tmax = rc.ws + ws_doubles;
@@ -1258,20 +1266,25 @@ static int lf_finish_dim(int diffs, int dim, int cm, long n, long nb, long *bp, 
 #undef LF_FINISH
 }
 
+/* The distance between lf_row's row buffers in its workspace: n rounded
+ * up to whole cache lines (8 doubles), so that with the workspace on a
+ * cache line (for_rows_blocks) every buffer starts on one and the row
+ * kernels' vector loads and stores of them split no line. */
+static size_t lf_row_stride(long n) { return ((size_t)n + 7) & ~(size_t)7; }
+
 /* Both one-sided derivatives along dimension 1 of the row of rc by a
  * scheme of six differences (ENO3, WENO5), the differences in registers
  * from the values along stride[1] (as along dimension 2: no rows of
  * differences stored and read back, no ring to keep).  WENO5 also carries
- * the next row's left derivatives, in one of two buffers at ring + 7 n,
- * ring + 8 n by the parity of idx[1], read by the next row if this thread
- * evaluates it next (rc->cache_r: the row that left them).  The caller
- * keeps ring + 6 n for itself. */
-/* ring: the carried WENO5 rows at ring + 7n and + 8n; w: the row's
- * HJ_LS_ROW_WORK n workspace the ENO kernels may use. */
+ * the next row's left derivatives, in one of two buffers at ring + 7 rs,
+ * ring + 8 rs (rs = lf_row_stride(n)) by the parity of idx[1], read by the
+ * next row if this thread evaluates it next (rc->cache_r: the row that
+ * left them).  The caller keeps ring + 6 rs for itself. */
+/* w: the row's HJ_LS_ROW_WORK rs workspace the ENO kernels may use. */
 static void lf_dim1_ring(int scheme, const hj_ls_grid *g, const double *y, row_ctx *rc, double eps, double *ring,
                          double *w, int mean, double *l, double *r)
 {
-    const size_t n = (size_t)g->N[0];
+    const size_t n = lf_row_stride(g->N[0]);
     /* dim1_ring's test: this thread's previous row is row r - 1 */
     const int cont = rc->cache_r != (size_t)-1 && rc->r == rc->cache_r + 1 && rc->idx[1] != 0;
     if (scheme == HJ_LS_WENO5A || scheme == HJ_LS_WENO5B) {
@@ -1298,10 +1311,12 @@ static int lf_both(const hj_ls_lax_friedrichs *c)
  * partials read in lo, hi (LL, LH: the local ranges, for LLF; nb = 1):
  * H, the partials into A, and lf_finish_dim's G or fused stage (SP: n
  * doubles of scratch).  Row b of pp[d], of H and of DL, DR and A's
- * dimension d is at + b n (A's dimension d at A + d nb n); lo and hi are
- * the same for every row.  Returns lf_row's code (*bad: b n + j). */
+ * dimension d is at + b rs (A's dimension d at A + d nb rs; rs = n when
+ * nb > 1, as lf_finish_dim has it), LL's and LH's dimension d at + d rs;
+ * lo and hi are the same for every row.  Returns lf_row's code (*bad:
+ * b n + j). */
 static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, double t, double *y, double *ydot,
-                                                            row_ctx *rc, long nb, const double **pp,
+                                                            row_ctx *rc, long nb, size_t rs, const double **pp,
                                                             const double **lo, const double **hi, double *LL,
                                                             double *LH, double *A, double *H, int diffs,
                                                             const double *DL, const double *DR, size_t ds_stride,
@@ -1311,7 +1326,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     const int dim = g->dim;
-    const size_t bn = (size_t)nb * (size_t)n;
+    const size_t bn = (size_t)nb * rs;
     const ptrdiff_t s1 = nb > 1 ? g->stride[1] : 0;
     /* row_const: alpha_d read at node 0 only, its row filled where the
      * finish has no loop for the mask */
@@ -1332,11 +1347,11 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
     for (int d = 0; d < dim; d++) pb[d] = pp[d], Ab[d] = A + (size_t)d * bn;
     hj_ls_row_info row = {n, g->dx[0], nb > 1 ? x : rc->x, nb > 1 ? idx : rc->idx, rc->k};
     for (long b = 0; b < nb; b++) {
-        const size_t o = (size_t)b * (size_t)n;
+        const size_t o = (size_t)b * rs;
         if (b) { /* hj_ls_coord's expression */
             idx[1] = rc->idx[1] + b, x[1] = g->min[1] + (double)(idx[1] + g->origin[1]) * g->dx[1];
             row.k += (size_t)s1;
-            for (int d = 0; d < dim; d++) pb[d] += n, Ab[d] += n;
+            for (int d = 0; d < dim; d++) pb[d] += rs, Ab[d] += rs;
         }
         const double *phi = y + row.k;
         if (both) hp(t, &row, phi, pb, lo, hi, H + o, Ab, ctx);
@@ -1348,7 +1363,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
             if (!both) {
                 const double *sl = lo[d], *sh = hi[d];
                 if (c->dissipation == HJ_LS_LLF) /* local range in d only */
-                    lo[d] = LL + (size_t)d * (size_t)n, hi[d] = LH + (size_t)d * (size_t)n;
+                    lo[d] = LL + (size_t)d * rs, hi[d] = LH + (size_t)d * rs;
                 if (c->partial_row) c->partial_row(t, &row, lo, hi, d, Ad, c->ctx);
                 else lf_partial_nodes(c, t, &row, lo, hi, d, Ad);
                 lo[d] = sl, hi[d] = sh;
@@ -1385,7 +1400,7 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
             break;
         /* the first node of row b with a non-finite alpha or H (none: a
          * sum overflowed, which the CFL bound reports) */
-        const size_t o = (size_t)b * (size_t)n;
+        const size_t o = (size_t)b * rs;
         long badj = n;
         for (int d = 0; d < dim; d++) {
             const double *Ad = A + (size_t)d * bn + o;
@@ -1410,7 +1425,8 @@ static inline __attribute__((always_inline)) int lf_row_end(const lf_pass *ps, d
  * (returns 0 for another scheme or grid, writing nothing): the row's
  * windows give its right derivatives and the left ones of its neighbour in
  * the next plane, row r + N[1], which are kept per slot idx[1] in one of
- * two buffers by the parity of idx[2] (2 N[1] n doubles at plane), then
+ * two buffers by the parity of idx[2] (2 N[1] rows lf_row_stride(n)
+ * apart at plane), then
  * read there if this thread's last row of that slot was row r - N[1]
  * (the row each slot last held: N[1] doubles after the buffers, < 0 for
  * none).  One window per node instead of two, the same bits. */
@@ -1418,7 +1434,7 @@ static int lf_dim2_plane(int scheme, const hj_ls_grid *g, const double *y, const
                          int mean, double *l, double *r)
 {
     if (g->dim < 3) return 0;
-    const size_t n = (size_t)g->N[0], n1 = (size_t)g->N[1], j = (size_t)rc->idx[1], h = (size_t)(rc->idx[2] & 1);
+    const size_t n = lf_row_stride(g->N[0]), n1 = (size_t)g->N[1], j = (size_t)rc->idx[1], h = (size_t)(rc->idx[2] & 1);
     double *last = plane + 2 * n1 * n;
     const double *left = plane + ((1 - h) * n1 + j) * n;
     const int cont = rc->idx[2] != 0 && last[j] == (double)(rc->r - n1);
@@ -1432,7 +1448,7 @@ static int lf_dim2_plane(int scheme, const hj_ls_grid *g, const double *y, const
 /* lf_dim2_plane's doubles: none on a grid of fewer than three dimensions. */
 static size_t lf_plane_doubles(const hj_ls_grid *g)
 {
-    return g->dim < 3 ? 0 : (2 * (size_t)g->N[0] + 1) * (size_t)g->N[1];
+    return g->dim < 3 ? 0 : (2 * lf_row_stride(g->N[0]) + 1) * (size_t)g->N[1];
 }
 
 static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
@@ -1442,10 +1458,12 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
     const int dim = g->dim;
-    const size_t dn = (size_t)dim * (size_t)n;
-    double *dl = rc->ws, *dr = dl + dn, *w = dr + dn;
-    double *P = w + (size_t)HJ_LS_ROW_WORK * (size_t)n, *LL = P + dn, *LH = LL + dn, *GL = LH + dn, *GH = GL + dn;
-    double *A = GH + dn, *H = A + dn, *ring = H + n, *plane = ring + 9 * (size_t)n;
+    /* the workspace's rows rs apart (lf_row_stride), the range pass's
+     * cache rows n apart */
+    const size_t rs = lf_row_stride(n), dn = (size_t)dim * (size_t)n, dr_ = (size_t)dim * rs;
+    double *dl = rc->ws, *dr = dl + dr_, *w = dr + dr_;
+    double *P = w + (size_t)HJ_LS_ROW_WORK * rs, *LL = P + dr_, *LH = LL + dr_, *GL = LH + dr_, *GH = GL + dr_;
+    double *A = GH + dr_, *H = A + dr_, *ring = H + rs, *plane = ring + 9 * rs;
     const double *pp[HJ_LS_MAXDIM], *lo[HJ_LS_MAXDIM], *hi[HJ_LS_MAXDIM];
     const int six = c->scheme == HJ_LS_ENO3A || c->scheme == HJ_LS_ENO3B || c->scheme == HJ_LS_WENO5A ||
                     c->scheme == HJ_LS_WENO5B;
@@ -1457,25 +1475,21 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
      * ds_stride: the row's own, or those the range pass kept (per row and
      * dimension, dl then dr) */
     const double *DL = dl, *DR = dr;
-    size_t ds_stride = (size_t)n;
+    size_t ds_stride = rs;
     if (ps->cache) DL = ps->cache + rc->r * 2 * dn, DR = DL + n, ds_stride = 2 * (size_t)n;
-    /* first order and ENO2: every dimension's in one call */
-    const int all = diffs && hj_ls_upwind_rows_mean(c->scheme, y + rc->k, g->stride, dim, n, g->dx, ps->hinv, P, dr);
     if (!rc->filled && dim >= 3) /* no row kept for lf_dim2_plane yet */
-        for (long j = 0; j < g->N[1]; j++) plane[2 * (size_t)g->N[1] * (size_t)n + (size_t)j] = -1;
+        for (long j = 0; j < g->N[1]; j++) plane[2 * (size_t)g->N[1] * rs + (size_t)j] = -1;
+    /* (first order and ENO2 under GLF with no range pass: lf_rows_glf) */
     for (int d = 0; d < dim; d++) {
-        double *l = dl + (size_t)d * (size_t)n, *r = dr + (size_t)d * (size_t)n;
-        double *restrict pd = P + (size_t)d * (size_t)n, *restrict ll = LL + (size_t)d * (size_t)n,
-                         *restrict lh = LH + (size_t)d * (size_t)n;
+        double *l = dl + (size_t)d * rs, *r = dr + (size_t)d * rs;
+        double *restrict pd = P + (size_t)d * rs, *restrict ll = LL + (size_t)d * rs, *restrict lh = LH + (size_t)d * rs;
         if (diffs) { /* the mean and D+ - D- straight from the kernel */
-            if (all)
-                ;
-            else if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, w, 1, pd, r);
+            if (d == 1 && six) lf_dim1_ring(c->scheme, g, y, rc, ps->eps[1], ring, w, 1, pd, r);
             else if (d == 2 && lf_dim2_plane(c->scheme, g, y, rc, ps->eps[2], plane, 1, pd, r))
                 ;
             else hj_ls_upwind_row_mean_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], ps->eps[d], pd, r, w);
             pp[d] = pd;
-            double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
+            double *gl = GL + (size_t)d * rs, *gh = GH + (size_t)d * rs;
             const double a = ps->gmin[d], b = ps->gmax[d];
             if (!rc->filled) /* the global range: the same for every row of this evaluation */
                 for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
@@ -1509,7 +1523,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         pp[d] = pd;
         if (c->dissipation == HJ_LS_LLLF) lo[d] = ll, hi[d] = lh;
         else {
-            double *gl = GL + (size_t)d * (size_t)n, *gh = GH + (size_t)d * (size_t)n;
+            double *gl = GL + (size_t)d * rs, *gh = GH + (size_t)d * rs;
             const double a = ps->gmin[d], b = ps->gmax[d];
             if (!rc->filled) /* the global range: the same for every row of this evaluation */
                 for (long j = 0; j < n; j++) gl[j] = a, gh[j] = b;
@@ -1517,7 +1531,7 @@ static int lf_row(const void *term, double t, double *y, double *ydot, row_ctx *
         }
     }
     rc->filled = 1;
-    return lf_row_end(ps, t, y, ydot, rc, 1, pp, lo, hi, LL, LH, A, H, diffs, DL, DR, ds_stride, ring + 6 * (size_t)n,
+    return lf_row_end(ps, t, y, ydot, rc, 1, rs, pp, lo, hi, LL, LH, A, H, diffs, DL, DR, ds_stride, ring + 6 * rs,
                       inv, bad);
 }
 
@@ -1549,7 +1563,7 @@ static int lf_rows_glf(const void *term, double t, double *y, double *ydot, row_
     }
     for (int d = 0; d < dim; d++)
         pp[d] = P + (size_t)d * bn, lo[d] = GL + (size_t)d * (size_t)n, hi[d] = GH + (size_t)d * (size_t)n;
-    return lf_row_end(ps, t, y, ydot, rc, nb, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, bn, SP, inv, bad);
+    return lf_row_end(ps, t, y, ydot, rc, nb, (size_t)n, pp, lo, hi, NULL, NULL, A, H, 1, DR, DR, bn, SP, inv, bad);
 }
 
 /* Rows per block of lf_rows_glf: enough that the per-call costs are
@@ -1634,8 +1648,8 @@ static int lf_eval_clip(const hj_ls_term *term, double t, double *y, double *ydo
                     (c->scheme == HJ_LS_UPWIND_FIRST || c->scheme == HJ_LS_ENO2);
     const long blk = glf ? LF_GLF_BLOCK : 1;
     const size_t ws = glf ? ((size_t)(2 * g->dim + 1) + (size_t)(3 * g->dim + 1) * (size_t)blk) * (size_t)n
-                          : (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * (size_t)n + lf_plane_doubles(g);
-    int rc = for_rows_blocks(g, ws, glf ? lf_rows_glf : lf_row, blk, &ps, t, y, ydot, &m, dm, stage,
+                          : (size_t)(8 * g->dim + HJ_LS_ROW_WORK + 10) * lf_row_stride(n) + lf_plane_doubles(g);
+    int rc = for_rows_blocks(g, ws, glf ? lf_rows_glf : lf_row, blk, 1, &ps, t, y, ydot, &m, dm, stage,
                              faces ? ghost : 0, "Hamiltonian or partial callback", err);
     if (rc) return rc;
     *bound = bound_by_rule(c->cfl_rule, g, m, dm);

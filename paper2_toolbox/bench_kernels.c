@@ -89,6 +89,10 @@ favourable ratio).  None was measured for air3D high or for 3-D
 convection, whose reference is the toolbox document's 2585 s (MATLAB 6.5
 on a 2004 Pentium 4: a different machine, shown for scale only).
 
+`phi_hash`: a hash (64-bit FNV-1a) of the bytes of the one-thread run's
+final phi at the interior nodes, so that a change meant to keep the bits
+can be checked against the same column of the code before it.
+
 Output: `kernels_bench.tsv` and the same table on stdout.  Timings depend
 on the machine's load (printed); run with OMP_WAIT_POLICY=passive.  `make
 bench` runs this; the tests never do.
@@ -265,6 +269,18 @@ static double peak_gflops(void)
 
 /* ---- the cases ----------------------------------------------------------- */
 
+/* FNV-1a over the bytes of phi at the interior nodes, row by row. */
+static unsigned long long phi_hash(const hj_ls_grid *g, const double *phi)
+{
+    unsigned long long h = 0xcbf29ce484222325ULL;
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        const unsigned char *b = (const unsigned char *)(phi + hj_ls_row(g, r, idx));
+        for (size_t q = 0; q < sizeof(double) * (size_t)g->N[0]; q++) h = (h ^ b[q]) * 0x100000001b3ULL;
+    }
+    return h;
+}
+
 /* Flops per node-stage, counted from the executed arithmetic by
  * scripts/count-flops (the head comment says how); recount after a change
  * of the kernel or of its compiler flags. */
@@ -414,11 +430,11 @@ int main(int argc, char **argv)
             "# with cpu_s_1thread; load average %.2f at start\n"
             "case\tacc\tnodes\tsteps\tstages\ts_1thread\ts_2threads\tspeedup\tmnode_stage_per_s_1\tmnode_stage_per_s_2\t"
             "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\t"
-            "frac_roof_cpu1\n",
+            "frac_roof_cpu1\tphi_hash\n",
             bw[0], peak[0], bw[1], peak[1], theory, ghz, flops_per_cycle(), load[0]);
     printf("%-13s %-9s %9s %6s %9s %9s %7s %8s %8s %6s %6s %6s %6s %7s %7s %s\n", "case", "acc", "nodes", "steps",
            "s_1thr", "s_2thr", "speedup", "Mns/s_1", "Mns/s_2", "B/ns", "F/ns", "roof1", "roof2", "ref_s", "ratio",
-           "bitwise cpu_1thr roof_cpu1");
+           "bitwise cpu_1thr roof_cpu1 phi_hash");
     for (int ci = 0; ci < ncases; ci++) {
         const bench_case *c = &CASES[cases[ci]];
         setup s;
@@ -460,14 +476,15 @@ int main(int argc, char **argv)
         const double frac_cpu = ns / cpu1 * flops / roof[0];
         const double ratio = c->ref_s / secs[0];
         const char *bits = maxth < 2 ? "-" : same ? "yes" : "NO";
-        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\t%.6g\t%.4g\n",
+        const unsigned long long hash = phi_hash(&s.g, s.first);
+        fprintf(o.fp, "%s\t%s\t%zu\t%ld\t%d\t%.6g\t%.6g\t%.4g\t%.6g\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%g\t%.4g\t%s\t%.6g\t%.4g\t%016llx\n",
                 KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, order, secs[0], secs[1],
                 secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-                bits, cpu1, frac_cpu);
-        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s %.3f %.3f\n",
+                bits, cpu1, frac_cpu, hash);
+        printf("%-13s %-9s %9zu %6ld %9.3f %9.3f %7.2f %8.1f %8.1f %6.1f %6.0f %6.3f %6.3f %7.4g %7.3g %s %.3f %.3f %016llx\n",
                KIND_NAME[c->kind], hj_ls_accuracy_name(c->acc), s.g.nodes, st.steps, secs[0], secs[1],
                secs[0] / secs[1], rate[0] / 1e6, rate[1] / 1e6, bytes, flops, frac[0], frac[1], c->ref_s, ratio,
-               bits, cpu1, frac_cpu);
+               bits, cpu1, frac_cpu, hash);
         fflush(stdout);
         hj_ls_free(s.y0), hj_ls_free(s.y), hj_ls_free(s.first);
     }
