@@ -34,6 +34,21 @@ SHELL := /bin/bash
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
+# Each object keeps the command that compiled it in OBJ.cmd, written after
+# a successful compile; an object whose command differs from the record
+# (a flag edited in this Makefile or a rules.mk, CC=...) gets the phony
+# prerequisite FORCE and is rebuilt, and nothing else is.  The comparison
+# is a secondary expansion of the object's prerequisites, so it sees the
+# object's target- and pattern-specific flags; it starts no shell and
+# writes nothing (make -n and make -q stay side-effect free).
+.SECONDEXPANSION:
+.PHONY: FORCE
+hj_differ = $(subst $(1),,$(2))$(subst $(2),,$(1))
+hj_cmd_force = $$(if $$(call hj_differ,$$(file <$$@.cmd),$$($(1))),FORCE)
+hj_cmd_record = printf '%s\n' '$(subst ','\'',$($(1)))' > $@.cmd
+HJ_PIC_FLAGS := -fPIC -fno-semantic-interposition
+HJ_CC_OBJ = $(CC) $(CPPFLAGS) $(CFLAGS)
+HJ_CC_PIC = $(CC) $(CPPFLAGS) $(CFLAGS) $(HJ_PIC_FLAGS)
 
 CC := gcc
 BUILD := build
@@ -162,26 +177,14 @@ build/.deps-%: scripts/ensure-deps
 	@scripts/ensure-deps $*
 	@mkdir -p $(@D) && touch $@
 
-# Each object keeps the compile command that built it in OBJ.cmd, rewritten
-# only when the command changes, so that an object whose flags changed (an
-# edit of a flag in this Makefile or a rules.mk, CC=...) is rebuilt, and
-# nothing else is.  The .cmd rule runs in the object's context, so it sees
-# the object's target-specific flags.  No shell is started.
-HJ_PIC_FLAGS := -fPIC -fno-semantic-interposition
-hj_differ = $(subst $(1),,$(2))$(subst $(2),,$(1))
-hj_record = $(if $(call hj_differ,$(file <$(1)),$(2)),$(shell mkdir -p $(dir $(1)))$(file >$(1),$(2)))
-.PHONY: FORCE
-$(BUILD)/obj/%.o.cmd: FORCE
-	@$(call hj_record,$@,$(CC) $(CPPFLAGS) $(CFLAGS))
-$(BUILD)/pic/%.o.cmd: FORCE
-	@$(call hj_record,$@,$(CC) $(CPPFLAGS) $(CFLAGS) $(HJ_PIC_FLAGS))
-
-$(BUILD)/obj/%.o: %.c $(BUILD)/obj/%.o.cmd | $(DEPS_OK)
+$(BUILD)/obj/%.o: %.c $(call hj_cmd_force,HJ_CC_OBJ) | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
-$(BUILD)/pic/%.o: %.c $(BUILD)/pic/%.o.cmd | $(DEPS_OK)
+	$(HJ_CC_OBJ) -c $< -o $@
+	@$(call hj_cmd_record,HJ_CC_OBJ)
+$(BUILD)/pic/%.o: %.c $(call hj_cmd_force,HJ_CC_PIC) | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(HJ_PIC_FLAGS) -c $< -o $@
+	$(HJ_CC_PIC) -c $< -o $@
+	@$(call hj_cmd_record,HJ_CC_PIC)
 
 $(LIB): $(COMMON_PIC)
 	@mkdir -p $(@D)

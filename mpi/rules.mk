@@ -21,9 +21,11 @@ MPI_PROGS := $(MPI_BIN)/mpi_reach
 
 ifneq ($(MPICC),)
 HAVE_MPI := 1
-$(BUILD)/obj/mpi/%.o: mpi/%.c | $(DEPS_OK)
+HJ_CC_MPI = $(MPICC) $(CPPFLAGS) -Impi -I$(P2) $(CFLAGS) -fopenmp
+$(BUILD)/obj/mpi/%.o: mpi/%.c $(call hj_cmd_force,HJ_CC_MPI) | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(MPICC) $(CPPFLAGS) -Impi -I$(P2) $(CFLAGS) -fopenmp -c $< -o $@
+	$(HJ_CC_MPI) -c $< -o $@
+	@$(call hj_cmd_record,HJ_CC_MPI)
 $(MPI_LIB): $(BUILD)/obj/mpi/hj_mpi.o
 	rm -f $@ && ar rcs $@ $^
 $(MPI_BIN)/mpi_reach: $(BUILD)/obj/mpi/mpi_reach.o $(BUILD)/obj/$(P2)/p2_air3d.o $(BUILD)/obj/$(P2)/p2_reach.o \
