@@ -340,15 +340,17 @@ int main(int argc, char **argv)
          .help = "stop when an iteration changes T by at most X times max |T| (scale-free)"},
         {.name = "--max-iter", .type = HJ_OPT_LONG, .value = &max_iter, .min = 1, .max = 100000000, .metavar = "N",
          .help = "at most N iterations (convergence tests: 2^dim sweeps each; one orthant pass with one point "
-                 "source and no obstacle or fixed nodes)"},
+                 "source and no obstacle or fixed nodes; one grid's worth of solves with --causal-sweeps)"},
         {.name = "--separate-sources", .type = HJ_OPT_FLAG, .value = &opt.separate_sources,
          .help = "with two or more sources (a polyline counts as one), solve each alone and take the minimum: "
                  "the scheme's order also where fronts meet, at the cost of one solve per source (--max-iter "
                  "bounds each)"},
         {.name = "--causal-sweeps", .type = HJ_OPT_FLAG, .value = &opt.causal_sweeps,
          .help = "orders 3 and 5 with obstacles, several sources or fixed nodes: each node solved once per "
-                 "iteration, in the sweep along its upwind sides; the same solution within --tol, about 0.75-0.9 "
-                 "times the work on walls, mazes and two sources, but more on some (docs/API.md)"},
+                 "iteration, in the sweep along its upwind sides: about 0.75-0.9 times the work on walls, mazes "
+                 "and two sources, but more on some, in about 3 times the iterations (--max-iter counts them); "
+                 "the result within a few times --tol of the default's, except where order 5 demotes rough nodes "
+                 "to order 3 (differences up to 1e-3 relative; docs/API.md)"},
         {.name = "--format", .type = HJ_OPT_CHOICE, .value = &format, .metavar = "F", .choices = format_w,
          .help = "output: auto (tsv in 2-D, vtk in 3-D), tsv (x y [z] T), matrix (2-D), vtk"},
         {.name = "--out", .type = HJ_OPT_STRING, .value = &out_path, .metavar = "FILE",
