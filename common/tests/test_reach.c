@@ -1078,10 +1078,22 @@ static void too_large_refused(void **state)
     hj_reach_problem pb;
     hj_reach_problem_init(&pb, &g, &s);
     pb.target.fn = ball6_big, pb.horizon = 0.5, pb.compact = 1;
-    double phi[1]; /* never reached: the refusal comes first */
+    double phi[1], ttr[1]; /* never reached: the refusal comes first */
     hj_error err;
     assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_ENOMEM);
     assert_has(err.msg, "the machine has");
+    /* Its own arrays fit (two values per node, compact, RK2), not with the
+     * caller's value and time-to-reach (two more): n^6 between mem / 32
+     * and mem / 16 (a 6-D grid's n^6 grows by less than 2 per step in n
+     * from n = 9 on). */
+    n = 8;
+    while (32 * pow((double)n, 6) <= 1.1 * mem) n++;
+    if (!(16 * pow((double)n, 6) < 0.9 * mem)) skip();
+    for (int d = 0; d < 6; d++) N[d] = n;
+    assert_int_equal(hj_ls_grid_layout(&g, 6, lo, hi, N, bc, NULL), HJ_OK);
+    assert_true((double)hj_reach_fused_bytes(&pb, 1) < 0.95 * mem);
+    assert_int_equal(hj_reach_solve(&pb, phi, ttr, NULL, &err), HJ_ENOMEM);
+    assert_has(err.msg, "its own arrays and the caller's");
 }
 
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
