@@ -94,8 +94,13 @@ final phi at the interior nodes, so that a change meant to keep the bits
 can be checked against the same column of the code before it.
 
 Output: `kernels_bench.tsv` and the same table on stdout.  Timings depend
-on the machine's load (printed); run with OMP_WAIT_POLICY=passive.  `make
-bench` runs this; the tests never do.
+on the machine's load (printed); run with OMP_WAIT_POLICY=passive, which
+keeps a loaded machine's runs sane but makes each of the many short
+parallel regions of the 201^2 cases pay a thread wake-up: there two
+threads were slower than one (medium 0.69x, veryHigh 0.90x, 27 November
+2026, idle machine), and 1.38x and 1.64x with libgomp's default policy;
+the 3-D case gained 1.95x passive.  `make bench` runs this; the tests
+never do.
 */
 #define _DEFAULT_SOURCE /* getloadavg */
 #include <math.h>
