@@ -45,6 +45,14 @@ static void solve_uniform(const hj_eik_grid *g, const unsigned char *ob, const h
         fail_msg("%d-D order %d: %s", g->dim, order, e.msg);
 }
 
+/* The whole-grid sweeps of a solve whose first order start sweeps 2^dim
+ * times per iteration and whose higher order iterations are one sweep
+ * each (the orthant pass, causal sweeps). */
+static long one_sweep_iterations(const hj_eik_stats *st, int dim)
+{
+    return (st->fo_iterations << dim) + st->iterations - st->fo_iterations;
+}
+
 /* Solve with one thread into a, with two into b, and require the same
  * bits; st gets the two-thread solve's statistics. */
 static void solve_one_two_threads(const hj_eik_grid *g, const double *f, const unsigned char *ob,
@@ -460,7 +468,7 @@ static void orthant_pass_same_solution(void **state)
             assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 1, NULL, &o, a, &sa, &e), HJ_OK);
             assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 2, NULL, &o, b, &sb, &e), HJ_OK);
             /* the pass ran: one sweep per higher order iteration */
-            assert_int_equal(sa.sweeps, (sa.fo_iterations << dim) + sa.iterations - sa.fo_iterations);
+            assert_int_equal(sa.sweeps, one_sweep_iterations(&sa, dim));
             assert_int_equal(sb.sweeps, sb.iterations << dim);
             double dmax = 0, tmax = 0;
             for (size_t u = 0; u < n; u++) {
@@ -497,7 +505,7 @@ static void orthant_pass_bitwise(void **state)
             hj_eik_stats st;
             solve_one_two_threads(&g, f, NULL, &s, 1, NULL, &o, a, b, &st);
             /* the pass ran: one sweep per higher order iteration */
-            assert_int_equal(st.sweeps, (st.fo_iterations << dim) + st.iterations - st.fo_iterations);
+            assert_int_equal(st.sweeps, one_sweep_iterations(&st, dim));
             blocks_same_bits(&g, f, NULL, &s, 1, NULL, o, a, b);
         }
         omp_set_num_threads(1);
@@ -555,7 +563,7 @@ static void causal_sweeps_same_solution(void **state)
             o.causal_sweeps = 1;
             assert_int_equal(hj_eik_solve(&g, f, 0, ob, s, dim == 3 ? 2 : 1, NULL, &o, b, &sb, &e), HJ_OK);
             assert_int_equal(sa.sweeps, sa.iterations << dim);
-            assert_int_equal(sb.sweeps, (sb.fo_iterations << dim) + sb.iterations - sb.fo_iterations);
+            assert_int_equal(sb.sweeps, one_sweep_iterations(&sb, dim));
             double dmax = 0, tmax = 0;
             for (size_t u = 0; u < n; u++)
                 if (isfinite(a[u])) {
