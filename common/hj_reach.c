@@ -8,6 +8,7 @@
 #include <time.h>
 
 #include "hj_ls_measure.h"
+#include "hj_sys.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -520,6 +521,46 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
     return HJ_OK;
 }
 
+static int max_threads(void)
+{
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+size_t hj_reach_general_bytes(const hj_reach_problem *pb, int threads)
+{
+    const hj_ls_grid *g = pb->grid;
+    /* prev, the integrator's time derivative and stage, the kept
+     * derivatives, the row buffers, the sum of terms' array (discount) */
+    return sizeof(double) * ((2 + (pb->order > 1)) * g->total +
+                             (pb->keep_derivs && pb->dissipation != HJ_LS_LLLF ? hj_ls_lax_friedrichs_work_size(g) : 0) +
+                             (pb->per_node ? 0 : (size_t)threads * (size_t)g->dim * (size_t)g->N[0]) +
+                             (pb->discount > 0 ? g->total : 0));
+}
+
+int hj_reach_check_memory(const hj_reach_problem *pb, int with_ttr, hj_error *err)
+{
+    /* malloc refuses only a block beyond memory and swap, and a solve over
+     * memory would page or be killed: what the solve touches, its own
+     * arrays and the caller's value and time-to-reach, against the
+     * machine's memory. */
+    const hj_ls_grid *g = pb->grid;
+    const int fused = hj_reach_fused_applies(pb);
+    const double mem = hj_sys_physical_memory();
+    const double caller = (double)sizeof(double) * (double)(fused && pb->compact ? g->nodes : g->total);
+    const double own = (double)(fused ? hj_reach_fused_bytes(pb, max_threads()) : hj_reach_general_bytes(pb, max_threads()));
+    const double need = own + caller * (with_ttr ? 2 : 1);
+    if (mem > 0 && need > mem)
+        return hj_error_set(err, HJ_ENOMEM,
+                            "reach: the solve needs %.3g GB (%zu nodes: its own arrays and the caller's), the machine "
+                            "has %.3g GB",
+                            need / 1e9, g->nodes, mem / 1e9);
+    return HJ_OK;
+}
+
 static double wall(void)
 {
     struct timespec ts;
@@ -537,6 +578,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
         return hj_error_set(err, HJ_EINVAL,
                             "reach: compact arrays need the fused path (no discount, an undivided grid, general "
                             "and per_node 0)");
+    if ((rc = hj_reach_check_memory(pb, ttr != NULL, err))) return rc;
     const double start = wall();
     double step_seconds = 0;
     const hj_ls_grid *g = pb->grid;
@@ -636,13 +678,7 @@ done:
         stats->converged = pc.converged;
         stats->seconds = wall() - start;
         stats->step_seconds = step_seconds;
-        /* prev, the integrator's time derivative and stage, the kept
-         * derivatives, the row buffers */
-        stats->bytes = sizeof(double) * ((2 + (pb->order > 1)) * g->total +
-                                         (pb->keep_derivs && pb->dissipation != HJ_LS_LLLF
-                                              ? hj_ls_lax_friedrichs_work_size(g)
-                                              : 0) +
-                                         (size_t)hc.nslots * (size_t)g->dim * (size_t)g->N[0]);
+        stats->bytes = hj_reach_general_bytes(pb, hc.nslots);
     }
     return rc;
 }

@@ -274,7 +274,9 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err);
  * step's bound: a finite horizon more than 2^52 steps away, whatever
  * conv_tol), HJ_ENOMEM, HJ_ENONFINITE when the value stops being finite,
  * HJ_EINVAL for a step too short to advance tau (tau + dt == tau), the
- * progress callback's nonzero value when it stops the solve. */
+ * progress callback's nonzero value when it stops the solve.  HJ_ENOMEM
+ * before any allocation when the solve's arrays and the caller's exceed
+ * the machine's memory (hj_reach_check_memory, either path). */
 int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 
 /* The fused path, which hj_reach_solve takes by itself when it applies:
@@ -298,6 +300,22 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
 int hj_reach_fused_applies(const hj_reach_problem *pb);
 int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, hj_reach_stats *stats, hj_error *err);
 size_t hj_reach_fused_bytes(const hj_reach_problem *pb, int threads);
+
+/* The bytes the general path (the kernel's hj_ls_lax_friedrichs and
+ * hj_ls_ode) allocates for pb with `threads` threads: the previous value,
+ * the integrator's time derivative and (RK2/3) stage, on the grid with its
+ * ghost layers; the kept derivatives (keep_derivs); the row buffers
+ * (per_node 0); the sum of terms' array (discount > 0).  stats.bytes of a
+ * general solve. */
+size_t hj_reach_general_bytes(const hj_reach_problem *pb, int threads);
+/* HJ_ENOMEM, with both sizes in the message, when the solve of pb does not
+ * fit in the machine's physical memory: the arrays of the path
+ * hj_reach_solve takes (hj_reach_fused_bytes or hj_reach_general_bytes,
+ * omp_get_max_threads() threads) plus the caller's phi and, when with_ttr,
+ * ttr (interior-sized when compact); HJ_OK otherwise or when the memory is
+ * unknown.  Both paths check this before they allocate or read the target:
+ * malloc alone refuses only a block beyond memory and swap. */
+int hj_reach_check_memory(const hj_reach_problem *pb, int with_ttr, hj_error *err);
 
 /* The measure of {phi < 0} on a grid of dimension 1..3 with at most one
  * periodic dimension, which counts a full period (hj_ls_measure_periodic). */

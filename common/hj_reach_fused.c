@@ -778,17 +778,9 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     /* the state y (the caller's phi when compact), the time derivative f,
      * a Runge-Kutta stage u */
     const size_t narrays = (compact ? 1 : 2) + (pb->order > 1);
-    /* What the solve touches, its own arrays and the caller's value and
-     * time-to-reach, against the machine's memory: malloc refuses only a
-     * block beyond memory and swap, and a solve over memory would page or
-     * be killed. */
-    const double mem = hj_sys_physical_memory(), caller = (double)sizeof(double) * (double)(compact ? g->nodes : g->total);
-    const double need = (double)hj_reach_fused_bytes(pb, max_threads()) + caller * (ttr ? 2 : 1);
-    if (mem > 0 && need > mem)
-        return hj_error_set(err, HJ_ENOMEM,
-                            "reach: the solve needs %.3g GB (%zu nodes: its own arrays and the caller's), the machine "
-                            "has %.3g GB",
-                            need / 1e9, g->nodes, mem / 1e9);
+    /* Its own arrays and the caller's against the machine's memory, before
+     * any allocation (hj_reach_check_memory). */
+    if ((rc = hj_reach_check_memory(pb, ttr != NULL, err))) return rc;
     double *own = malloc(sizeof(double) * g->nodes * narrays);
     if (!own)
         return hj_error_set(err, HJ_ENOMEM, "reach: out of memory for %zu node%s", g->nodes, hj_plural((long)g->nodes));

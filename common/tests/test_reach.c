@@ -1096,6 +1096,60 @@ static void too_large_refused(void **state)
     assert_has(err.msg, "its own arrays and the caller's");
 }
 
+/* The general path (the kernel's term and integrator) holds the whole
+ * solve against the machine's memory as the fused path does: it checked
+ * one array (hj_ls_grid_init) and started a solve whose own arrays, or
+ * its own with the caller's value and time-to-reach, exceed it.  1-D,
+ * a grid laid out only, the node count set from the memory; the target is
+ * NaN, so a solve that is not refused before it reads the target fails
+ * with HJ_ENONFINITE instead (and the caller's one-double arrays are
+ * never written). */
+static double nan_target(double t, const double *x, void *c)
+{
+    (void)t, (void)x, (void)c;
+    return NAN;
+}
+static void general_too_large_refused(void **state)
+{
+    (void)state;
+    const double mem = hj_sys_physical_memory();
+    if (!(mem > 0)) skip();
+    double a = 0;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_reach_dyn_control_box(&s, G1, 1, (double[]){-1}, (double[]){1});
+    const double lo = -2, hi = 2;
+    const hj_ls_bc bc = {HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    /* One array on the grid of half the memory: RK2's three, the kept
+     * derivatives and the row buffer are beyond it on their own. */
+    long n = (long)(mem / 2 / sizeof(double));
+    hj_ls_grid g;
+    assert_int_equal(hj_ls_grid_layout(&g, 1, &lo, &hi, &n, &bc, NULL), HJ_OK);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = nan_target, pb.horizon = 0.5, pb.general = 1;
+    assert_true((double)hj_reach_general_bytes(&pb, 1) > 2 * mem);
+    double phi[1], ttr[1];
+    hj_error err;
+    assert_int_equal(hj_reach_solve(&pb, phi, NULL, NULL, &err), HJ_ENOMEM);
+    assert_has(err.msg, "the machine has");
+    /* Per node, first order, no kept derivatives: its own two arrays (0.8
+     * of the memory) fit, not with the caller's value and time-to-reach
+     * (two more). */
+    n = (long)(0.4 * mem / sizeof(double)) - 2 * HJ_LS_GHOST;
+    assert_int_equal(hj_ls_grid_layout(&g, 1, &lo, &hi, &n, &bc, NULL), HJ_OK);
+    pb.per_node = 1, pb.keep_derivs = 0, pb.order = 1;
+    assert_false(hj_reach_fused_applies(&pb));
+    assert_true((double)hj_reach_general_bytes(&pb, 1) < 0.95 * mem);
+    assert_int_equal(hj_reach_solve(&pb, phi, ttr, NULL, &err), HJ_ENOMEM);
+    assert_has(err.msg, "its own arrays and the caller's");
+    /* The same problem on the fused path is refused by the same check. */
+    pb.per_node = 0, pb.general = 0;
+    assert_true(hj_reach_fused_applies(&pb));
+    assert_int_equal(hj_reach_solve(&pb, phi, ttr, NULL, &err), HJ_ENOMEM);
+    assert_has(err.msg, "its own arrays and the caller's");
+}
+
 HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_force), cmocka_unit_test(partial_bounds_exact),
              cmocka_unit_test(invalid_systems), cmocka_unit_test(no_motion), cmocka_unit_test(tube_and_time_to_reach),
              cmocka_unit_test(convergence_stop), cmocka_unit_test(time_varying_target), cmocka_unit_test(discount),
@@ -1103,4 +1157,5 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(fused_path_same_bits), cmocka_unit_test(measure_compact),
              cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node),
              cmocka_unit_test(step_does_not_advance), cmocka_unit_test(progress_callback),
-             cmocka_unit_test(fused_messages_say_tau), cmocka_unit_test(too_large_refused))
+             cmocka_unit_test(fused_messages_say_tau), cmocka_unit_test(too_large_refused),
+             cmocka_unit_test(general_too_large_refused))
