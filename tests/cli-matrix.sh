@@ -44,6 +44,7 @@ conflicts=(
     'eikonal|--speed-const 1 --source 0,0 --format vtk --out -'
     'hjreach|--horizon 1e12'
     'hjreach|--min -2,-2,0 --max 2,2,1e-300'
+    'hjreach|--min -1e300,-1e300,0 --max 1e300,1e300,6'
     'hjreach|--system double_integrator --N 11,11 --discount 1e4 --horizon 1 --max-steps 100'
     'hjreach|--system dubins --target-centre 10,0'
     'hjreach|--system double_integrator --target-centre 0.05 --target-radius 0.01'

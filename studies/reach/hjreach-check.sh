@@ -11,6 +11,13 @@
 #    in exact arithmetic; a box obstacle) over a horizon of 6 on 41^2 x 40:
 #    with the default (away) the value at a face the dynamics leave sinks
 #    below -0.45, with --boundary toward no value is below -0.3.
+# 4. Boxes outside the range hjreach takes (coordinates beyond +-1e100, a
+#    spacing below 1e-100), empty boxes and other command lines whose
+#    messages name a dimension: refused before the run (exit 2, one line
+#    on stderr naming the option and the dimension counted from 1, as
+#    --N lists them, no file written).  A box of +-1e300 ran and failed
+#    with a non-finite Hamiltonian (exit 1); an empty box or period was
+#    reported with the library's dimension, counted from 0.
 # The last line is "hjreach-check: N passed, M failed".
 set -u
 bin=$(cd "${1:-build/bin}" && pwd) || exit 2
@@ -53,6 +60,36 @@ done
 m_away=$(minphi "$work/bc-away/value.dat") m_toward=$(minphi "$work/bc-toward/value.dat")
 awk -v a="$m_away" 'BEGIN { exit !(a < -0.45) }' && ok || bad "--boundary away: min phi $m_away, not below -0.45"
 awk -v t="$m_toward" 'BEGIN { exit !(t >= -0.3 - 1e-9) }' && ok || bad "--boundary toward: min phi $m_toward below -0.3"
+
+# refused 'TEXT1|TEXT2|..' ARGS...: exit 2, one line on stderr holding every
+# TEXT, nothing written into the (empty) --out-dir.
+nref=0
+refused() {
+    local want=$1 d=$work/refused-$nref t
+    shift
+    nref=$((nref + 1))
+    mkdir -p "$d"
+    OMP_NUM_THREADS=1 "$h" --quiet "$@" --out-dir "$d" >/dev/null 2>"$work/err"
+    local rc=$? why=""
+    if [ $rc -ne 2 ]; then why="exit $rc, expected 2"
+    elif [ "$(wc -l <"$work/err")" -ne 1 ]; then why="$(wc -l <"$work/err") lines on stderr"
+    elif [ -n "$(ls -A "$d")" ]; then why="wrote $(ls -A "$d" | tr '\n' ' ')"
+    else
+        IFS='|' read -ra t <<<"$want"
+        for w in "${t[@]}"; do grep -qF -- "$w" "$work/err" || why="no '$w' in the message"; done
+    fi
+    [ -z "$why" ] && ok || bad "$* : $why: $(head -c 300 "$work/err")"
+}
+refused '--min|dimension 1|1e+100' --min -1e300,-1e300,0 --max 1e300,1e300,6
+refused '--min|dimension 1' --system double_integrator --min -1e200,-1e200 --max 1e200,1e200
+refused '--min|dimension 2' --system air3d --min -6,-1e101,0 --max 20,10,6
+refused '--max|dimension 2' --system planar_di --max 1.6,1e150,1.2,1.2
+refused '--max|--min|dimension 1' --min 2,-2,0 --max 1,2,6
+refused '--max|--min|dimension 3|period' --min -2,-2,1 --max 2,2,1
+refused '--N|spacing|dimension 3|1e-100' --min -2,-2,0 --max 2,2,1e-300
+refused '--N|spacing|dimension 1' --system double_integrator --min 0,-2 --max 1e-300,2
+refused 'limited by dimension 2|coarsen dimension 2' --system double_integrator --N 11,4001 --u-max 1e6
+refused 'spacing 0.1 in dimension 1, 0.2 in dimension 2' --N 41,21,40 --target-centre 0.05,0.05 --target-radius 0.01
 
 echo "hjreach-check: $pass passed, $fail failed"
 [ $fail -eq 0 ]

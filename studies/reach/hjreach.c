@@ -22,7 +22,11 @@
  *
  * Outputs in --out-dir: value.dat and ttr.dat (gnuplot blocks: 1-D to
  * 3-D; for 4-D the slice through the middle of the velocities) and, for
- * 3-D, reach.vtk with both fields.  ttr is inf where the set is not
+ * 3-D, reach.vtk with both fields.  Dimensions are numbered from 1 in
+ * every message, in the order of --N, --min and --max.  The box is held
+ * to coordinates within +-1e100 and spacings of at least 1e-100 before the
+ * run (beyond, the target's distance or the dynamics' bounds overflow and
+ * the run failed once started).  ttr is inf where the set is not
  * reached by the horizon, -1 in reach.vtk (VTK's text reader, C++ stream
  * extraction, stops at "inf").  Every output name is checked before the
  * run, so a name that cannot be written fails at once, not after it.  The number of time steps (the horizon over the
@@ -170,6 +174,54 @@ static double cfl_step(const hj_ls_grid *g, const hj_reach_dyn *s, double factor
     return worst + discount > 0 ? factor_cfl / (worst + discount) : INFINITY;
 }
 
+/* Dimensions are numbered from 1 in every message of hjreach: dimension k
+ * is the k-th number of --N, --min and --max (the state order of the
+ * system's line above).  The library numbers them from 0 (an array
+ * index), so the grid's conditions it would report with a dimension
+ * (bounds in order, a positive period, a spacing it can divide by) are
+ * checked here first, with the option named, and hj_ls_grid_init_period's
+ * own messages, relayed as they are, then name none. */
+
+/* The box the tool takes: every coordinate of --min and --max within
+ * COORD_MAX, every spacing at least SPACING_MIN.  Within it the values
+ * and bounds at the grid's nodes stay finite: the target's distance
+ * ((x - c)^2 below 1e201 for a centre in the box; a centre far outside
+ * it is refused by check_sets), the partial bounds of the catalogue's dynamics
+ * (at most |x| + 2 --speed + --u-max |x|, below 1e107 with speed and
+ * --u-max at most 1e6) over a spacing, summed over 4 dimensions (below
+ * 1e208: the CFL bound), and the measure's cells (below 1e301 in 3-D).
+ * Beyond it the run failed after it started, on a non-finite Hamiltonian
+ * (a target 1e155 away squares to inf). */
+#define COORD_MAX 1e100
+#define SPACING_MIN 1e-100
+
+/* Refuse (exit 2) a box outside that range or empty in a dimension, naming
+ * the option and the dimension (from 1). */
+static void check_box(int dim, const double *lo, const double *hi, const long *N, const hj_ls_bc *bc)
+{
+    for (int side = 0; side < 2; side++)
+        for (int d = 0; d < dim; d++) {
+            const double v = side ? hi[d] : lo[d];
+            if (!(fabs(v) <= COORD_MAX))
+                hj_cli_fail(prog, HJ_EXIT_USAGE,
+                            "%s: %g in dimension %d is out of range: hjreach takes coordinates within +-%g (beyond, "
+                            "the target's distance and the dynamics overflow)",
+                            side ? "--max" : "--min", v, d + 1, COORD_MAX);
+        }
+    for (int d = 0; d < dim; d++) {
+        const int periodic = bc[d].type == HJ_LS_BC_PERIODIC;
+        if (!(hi[d] > lo[d]))
+            hj_cli_fail(prog, HJ_EXIT_USAGE, "--max %g must exceed --min %g in dimension %d%s", hi[d], lo[d], d + 1,
+                        periodic ? " (periodic: --max - --min is the period)" : "");
+        const double dx = (hi[d] - lo[d]) / (double)(periodic ? N[d] : N[d] - 1);
+        if (!(dx >= SPACING_MIN))
+            hj_cli_fail(prog, HJ_EXIT_USAGE,
+                        "--min, --max and --N give a spacing of %g in dimension %d, below %g: widen the box or "
+                        "lower --N there",
+                        dx, d + 1, SPACING_MIN);
+    }
+}
+
 /* Whether the target's ball (over its dimensions) meets the grid's box. */
 static int target_meets_grid(const sets *s, const hj_ls_grid *g)
 {
@@ -196,9 +248,11 @@ static void check_sets(const hj_ls_grid *g, const sets *s, int obstacle, int avo
         in_target += t, free_of_obstacle += o, start += t && o;
         for (int d = 0; d < g->dim && ++idx[d] == g->N[d]; d++) idx[d] = 0;
     }
-    char c[64];
-    if (s->dims == 1) snprintf(c, sizeof c, "%g", s->c[0]);
-    else snprintf(c, sizeof c, "(%g, %g)", s->c[0], s->c[1]);
+    char c[64], sp[96];
+    if (s->dims == 1) snprintf(c, sizeof c, "%g", s->c[0]), snprintf(sp, sizeof sp, "spacing %g", g->dx[0]);
+    else
+        snprintf(c, sizeof c, "(%g, %g)", s->c[0], s->c[1]),
+            snprintf(sp, sizeof sp, "spacing %g in dimension 1, %g in dimension 2", g->dx[0], g->dx[1]);
     if (in_target == 0 && !target_meets_grid(s, g))
         hj_cli_fail(prog, HJ_EXIT_USAGE,
                     "the target (centre %s, radius %g) lies wholly outside the grid: move --target-centre into it "
@@ -206,9 +260,9 @@ static void check_sets(const hj_ls_grid *g, const sets *s, int obstacle, int avo
                     c, s->r);
     if (in_target == 0)
         hj_cli_fail(prog, HJ_EXIT_USAGE,
-                    "the target (centre %s, radius %g) holds no node of the grid (spacing %g): enlarge "
+                    "the target (centre %s, radius %g) holds no node of the grid (%s): enlarge "
                     "--target-radius or refine --N",
-                    c, s->r, g->dx[0]);
+                    c, s->r, sp);
     if (free_of_obstacle == 0)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle covers every node of the grid: nothing is left to reach");
     if (start == 0)
@@ -318,10 +372,13 @@ int main(int argc, char **argv)
         {.name = "--system", .type = HJ_OPT_CHOICE, .value = &sys, .choices = systems, .metavar = "NAME",
          .help = "the system from the catalogue"},
         {.name = "--N", .type = HJ_OPT_LONG_LIST, .value = N, .min = 3, .max = 100000, .count = &ncount, .maxn = 4,
-         .metavar = "N1,N2,..", .help = "nodes in each dimension (per period for a periodic one)",
+         .metavar = "N1,N2,..",
+         .help = "nodes in each dimension (per period for a periodic one); dimensions are numbered from 1 in this "
+                 "order, that of --min and --max, in every message",
          .dflt = "41 (21 in 4-D)"},
         {.name = "--min", .type = HJ_OPT_STRING, .value = &lo_s, .metavar = "A,B,..",
-         .help = "lower corner of the grid", .dflt = "the system's"},
+         .help = "lower corner of the grid (coordinates within +-1e100, spacing at least 1e-100)",
+         .dflt = "the system's"},
         {.name = "--max", .type = HJ_OPT_STRING, .value = &hi_s, .metavar = "A,B,..",
          .help = "upper corner (a periodic dimension: min + period)", .dflt = "the system's"},
         {.name = "--target-centre", .type = HJ_OPT_STRING, .value = &centre_s, .metavar = "X,Y",
@@ -393,6 +450,10 @@ int main(int argc, char **argv)
         for (int k = 0; k < st.dims; k++)
             if (!(st.lo[k] < st.hi[k])) hj_cli_fail(prog, HJ_EXIT_USAGE, "--obstacle: the box is empty");
     }
+    hj_ls_bc bc[4];
+    for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){boundary ? HJ_LS_BC_EXTRAP_TOWARD : HJ_LS_BC_EXTRAP_AWAY, 0, 0};
+    if (sys == 1 || sys == 3) bc[2].type = HJ_LS_BC_PERIODIC;
+    check_box(dim, lo, hi, N, bc);
     hj_error err;
     char probe[1024];
     static const char *const outputs[] = {"value.dat", "ttr.dat", "reach.vtk"};
@@ -401,9 +462,6 @@ int main(int argc, char **argv)
         if (hj_out_check(probe, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
     }
 
-    hj_ls_bc bc[4];
-    for (int d = 0; d < dim; d++) bc[d] = (hj_ls_bc){boundary ? HJ_LS_BC_EXTRAP_TOWARD : HJ_LS_BC_EXTRAP_AWAY, 0, 0};
-    if (sys == 1 || sys == 3) bc[2].type = HJ_LS_BC_PERIODIC;
     hj_ls_grid g;
     if (hj_ls_grid_init_period(&g, dim, lo, hi, N, bc, &err)) hj_cli_fail(prog, HJ_EXIT_USAGE, "%s", err.msg);
     check_sets(&g, &st, obstacle_s != NULL, sys == 3);
