@@ -89,6 +89,18 @@ favourable ratio).  None was measured for air3D high or for 3-D
 convection, whose reference is the toolbox document's 2585 s (MATLAB 6.5
 on a 2004 Pentium 4: a different machine, shown for scale only).
 
+The machine kind's VMs are not all one core (the header line names the
+CPU's vendor, family and model), and the reference seconds were measured
+once, on a VM whose core was not recorded, so `ratio` moves with the core
+as well as with the code.  The same binary and the same bits (phi_hash),
+one thread: on AMD family 26 (Zen 5) air3D veryHigh took 0.865-0.93 s
+(48-52x), on family 25 model 17 (Zen 4) 1.33-1.41 s (32-34x), low 0.118
+against 0.095 s, convection3d 36.5 s against 24.1 s.  On Zen 4 the
+veryHigh case's 428.5 counted flops per node-stage at the measured
+multiply-add peak (52.7 GFLOP/s) take 0.906 s, which is the 50x time
+(0.902 s): the code there runs at 0.67 of that peak, and only fewer
+operations per node would reach 50x on that core.
+
 `phi_hash`: a hash (64-bit FNV-1a) of the bytes of the one-thread run's
 final phi at the interior nodes, so that a change meant to keep the bits
 can be checked against the same column of the code before it.
@@ -179,6 +191,7 @@ static double triad_gbs(double *a, const double *b, const double *c, long n)
  * the loop throughput bound.  The avx2 and default clones split each chain
  * into 2 or 4 registers and spill: on such machines the figure is low. */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#include <cpuid.h>
 typedef double v8d __attribute__((vector_size(64)));
 enum { NCHAIN = 16 };
 __attribute__((target_clones("avx512f", "avx2", "default"))) static double madd(long iters)
@@ -226,14 +239,37 @@ static double clock_ghz(void)
     return best;
 }
 
-/* Flops per cycle of one core if it issues 2 vector multiplies and 2 vector
- * adds per cycle (Zen 5; Intel cores issue 2 of either, and Zen 4 splits
- * a 512-bit operation in two: half this),
- * at the widest vector the kernel's clones use here. */
+/* The CPU's vendor, family and model (CPUID leaf 1, extended family
+ * added): the machine kind's VMs are not all the same core, and the
+ * per-core peak below depends on it. */
+static void cpu_id(char vendor[13], unsigned *family, unsigned *model)
+{
+    unsigned a, b, c, d;
+    memset(vendor, 0, 13);
+    *family = *model = 0;
+    if (!__get_cpuid(0, &a, &b, &c, &d)) return;
+    memcpy(vendor, &b, 4), memcpy(vendor + 4, &d, 4), memcpy(vendor + 8, &c, 4);
+    if (!__get_cpuid(1, &a, &b, &c, &d)) return;
+    const unsigned fam = (a >> 8) & 0xF, ext = (a >> 20) & 0xFF, mod = (a >> 4) & 0xF, emod = (a >> 16) & 0xF;
+    *family = fam == 0xF ? fam + ext : fam;
+    *model = fam == 0xF || fam == 6 ? (emod << 4) + mod : mod;
+}
+
+/* Flops per cycle of one core, multiplies and adds counted apart (the
+ * kernel contracts none), at the widest vector its clones use here: AMD
+ * Zen 5 (family 26) issues 2 vector multiplies and 2 vector adds per cycle
+ * on 512-bit pipes; Zen 2-4 (families 23, 25) the same on 256-bit pipes,
+ * so a 512-bit operation takes two slots (16 flops per cycle with AVX-512
+ * or AVX2); Intel cores issue 2 multiply-or-add vector operations. */
 static double flops_per_cycle(void)
 {
     __builtin_cpu_init();
-    return 4.0 * (__builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx2") ? 4 : 2);
+    const double width = __builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx2") ? 4 : 2;
+    char vendor[13];
+    unsigned family, model;
+    cpu_id(vendor, &family, &model);
+    if (!strcmp(vendor, "AuthenticAMD")) return family >= 26 ? 4 * width : 4 * fmin(width, 4);
+    return 2 * width;
 }
 #else
 enum { NCHAIN = 2 };
@@ -248,6 +284,11 @@ static double madd(long iters)
 }
 static double clock_ghz(void) { return NAN; }
 static double flops_per_cycle(void) { return NAN; }
+static void cpu_id(char vendor[13], unsigned *family, unsigned *model)
+{
+    strcpy(vendor, "unknown");
+    *family = *model = 0;
+}
 #endif
 
 /* The threads' rates summed, each over its own CPU time (wall time on a
@@ -417,9 +458,12 @@ int main(int argc, char **argv)
     free(a), free(b), free(cc);
     double load[3] = {0, 0, 0};
     getloadavg(load, 3);
-    printf("machine: triad %.1f GB/s (1 thread) %.1f GB/s (2); multiply-add peak %.1f GFLOP/s (1) %.1f (2), "
-           "theoretical %.1f per core (%.2f GHz measured x %.0f flops/cycle); load %.2f\n",
-           bw[0], bw[1], peak[0], peak[1], theory, ghz, flops_per_cycle(), load[0]);
+    char vendor[13];
+    unsigned family, model;
+    cpu_id(vendor, &family, &model);
+    printf("machine: %s family %u model %u; triad %.1f GB/s (1 thread) %.1f GB/s (2); multiply-add peak %.1f GFLOP/s "
+           "(1) %.1f (2), theoretical %.1f per core (%.2f GHz measured x %.0f flops/cycle); load %.2f\n",
+           vendor, family, model, bw[0], bw[1], peak[0], peak[1], theory, ghz, flops_per_cycle(), load[0]);
 
     hj_out o;
     p2_fail_if(PROG, p2_open(&o, dir, "kernels_bench.tsv", &err), &err);
@@ -428,7 +472,7 @@ int main(int argc, char **argv)
             "# bytes and flops per node-stage; roofline = min(peak, bw x flops/byte) with the triad bandwidth and\n"
             "# multiply-add peak measured here (1 thread: %.2f GB/s, %.2f GFLOP/s; 2 threads: %.2f GB/s, %.2f GFLOP/s;\n"
             "# theoretical %.2f GFLOP/s per core: %.3f GHz measured x %.0f flops/cycle); flops_per_ns counted from the\n"
-            "# executed vector arithmetic (see bench_kernels.c)\n"
+            "# executed vector arithmetic (see bench_kernels.c); CPU %s family %u model %u\n"
             "# frac = achieved flop rate / roofline; ref_s = ToolboxLS under Octave on one core of this machine kind\n"
             "# (convection3d: MATLAB 2004, another machine); ratio = ref_s / s_1thread; cpu_s_1thread = the process's CPU\n"
             "# seconds of the best one-thread run (less moved by the machine's load than wall time); frac_roof_cpu1 = frac\n"
@@ -436,7 +480,7 @@ int main(int argc, char **argv)
             "case\tacc\tnodes\tsteps\tstages\ts_1thread\ts_2threads\tspeedup\tmnode_stage_per_s_1\tmnode_stage_per_s_2\t"
             "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\t"
             "frac_roof_cpu1\tphi_hash\n",
-            bw[0], peak[0], bw[1], peak[1], theory, ghz, flops_per_cycle(), load[0]);
+            bw[0], peak[0], bw[1], peak[1], theory, ghz, flops_per_cycle(), vendor, family, model, load[0]);
     printf("%-13s %-9s %9s %6s %9s %9s %7s %8s %8s %6s %6s %6s %6s %7s %7s %s\n", "case", "acc", "nodes", "steps",
            "s_1thr", "s_2thr", "speedup", "Mns/s_1", "Mns/s_2", "B/ns", "F/ns", "roof1", "roof2", "ref_s", "ratio",
            "bitwise cpu_1thr roof_cpu1 phi_hash");
