@@ -521,15 +521,6 @@ int hj_reach_problem_check(const hj_reach_problem *pb, hj_error *err)
     return HJ_OK;
 }
 
-static int max_threads(void)
-{
-#ifdef _OPENMP
-    return omp_get_max_threads();
-#else
-    return 1;
-#endif
-}
-
 size_t hj_reach_general_bytes(const hj_reach_problem *pb, int threads)
 {
     const hj_ls_grid *g = pb->grid;
@@ -551,7 +542,8 @@ int hj_reach_check_memory(const hj_reach_problem *pb, int with_ttr, hj_error *er
     const int fused = hj_reach_fused_applies(pb);
     const double mem = hj_sys_physical_memory();
     const double caller = (double)sizeof(double) * (double)(fused && pb->compact ? g->nodes : g->total);
-    const double own = (double)(fused ? hj_reach_fused_bytes(pb, max_threads()) : hj_reach_general_bytes(pb, max_threads()));
+    const int nth = hj_sys_max_threads();
+    const double own = (double)(fused ? hj_reach_fused_bytes(pb, nth) : hj_reach_general_bytes(pb, nth));
     const double need = own + caller * (with_ttr ? 2 : 1);
     if (mem > 0 && need > mem)
         return hj_error_set(err, HJ_ENOMEM,
@@ -621,11 +613,7 @@ int hj_reach_solve(const hj_reach_problem *pb, double *phi, double *ttr, hj_reac
     double *alphas = NULL, *derivs = NULL;
     int have_sum = 0;
     if (!pb->per_node) {
-#ifdef _OPENMP
-        hc.nslots = omp_get_max_threads();
-#else
-        hc.nslots = 1;
-#endif
+        hc.nslots = hj_sys_max_threads();
         hc.slots = calloc((size_t)hc.nslots, sizeof *hc.slots);
         alphas = malloc(sizeof(double) * (size_t)hc.nslots * (size_t)g->dim * (size_t)g->N[0]);
         if (!hc.slots || !alphas) {

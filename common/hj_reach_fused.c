@@ -672,15 +672,6 @@ static double wall(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int max_threads(void)
-{
-#ifdef _OPENMP
-    return omp_get_max_threads();
-#else
-    return 1;
-#endif
-}
-
 /* The error of the first row (in row order) with a non-finite H or alpha. */
 static int report_bad(const hj_ls_grid *g, size_t r, long j, double tau, hj_error *err)
 {
@@ -950,7 +941,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
         stats->converged = converged;
         stats->seconds = wall() - start;
         stats->step_seconds = step_seconds;
-        stats->bytes = hj_reach_fused_bytes(pb, max_threads());
+        stats->bytes = hj_reach_fused_bytes(pb, hj_sys_max_threads());
     }
     return rc;
 }

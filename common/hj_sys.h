@@ -9,6 +9,9 @@
 #define HJ_SYS_H
 
 #include <stddef.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -30,6 +33,18 @@ double hj_sys_peak_rss_mb(void);
  * 4 KB, which on virtual machines is most of the cost of filling
  * gigabytes. */
 void *hj_sys_alloc_large(size_t bytes);
+
+/* The number of threads a parallel region would get here
+ * (omp_get_max_threads; 1 without OpenMP).  Inline so that it is compiled
+ * with the caller's OpenMP flag. */
+static inline int hj_sys_max_threads(void)
+{
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
 
 /* Inside an OpenMP parallel region, before a worksharing loop that every
  * thread of the team must meet or none may (OpenMP's rule): returns 1 on
