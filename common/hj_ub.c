@@ -309,6 +309,19 @@ static int init_cells(hj_ub_solver *sv, hj_band_kind kind, int *idx, int j0, int
     return rc ? rc : init_cells(sv, kind, idx, mid + 1, j1, err);
 }
 
+int hj_ub_problem_check_shape(const hj_ub_problem *pb, int need_data, hj_error *err)
+{
+    if (pb->d < 2 || pb->d > HJ_BAND_DMAX)
+        return hj_error_set(err, HJ_EINVAL, "problem: d = %d, need 2 <= d <= %d", pb->d, HJ_BAND_DMAX);
+    if (pb->n < 3) return hj_error_set(err, HJ_EINVAL, "problem: n = %d nodes per direction, need n >= 3", pb->n);
+    if (pb->ncontrols < 1)
+        return hj_error_set(err, HJ_EINVAL, "problem: ncontrols = %d, need at least one control", pb->ncontrols);
+    if (!(pb->cfl > 0) || pb->cfl > 1) return hj_error_set(err, HJ_EINVAL, "problem: cfl = %g, need 0 < cfl <= 1", pb->cfl);
+    if (need_data && !pb->dyn) return hj_error_set(err, HJ_EINVAL, "problem: no dynamics (dyn is NULL)");
+    if (need_data && !pb->avg0) return hj_error_set(err, HJ_EINVAL, "problem: no initial data (avg0 is NULL)");
+    return HJ_OK;
+}
+
 int hj_ub_problem_check_values(const hj_ub_problem *pb, hj_error *err)
 {
     for (int k = 0; k < pb->d && k < HJ_BAND_DMAX; k++)
@@ -328,16 +341,19 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
 {
     memset(sv, 0, sizeof *sv);
     sv->pb = pb;
-    if (pb->d < 2 || pb->d > HJ_BAND_DMAX || pb->n < 3 || pb->ncontrols < 1 || !pb->dyn || !pb->avg0 || !(pb->cfl > 0) ||
-        pb->cfl > 1)
-        return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, data, 0 < cfl <= 1");
-    int rc = hj_ub_problem_check_values(pb, err);
+    int rc = hj_ub_problem_check_shape(pb, 1, err);
+    if (rc) return rc;
+    rc = hj_ub_problem_check_values(pb, err);
     if (rc) return rc;
     /* the box is converted to cell indices (int) below */
-    for (int k = 0; k < pb->d; k++)
+    for (int k = 0; k < pb->d; k++) {
         if (!isfinite(pb->bbox_lo[k]) || !isfinite(pb->bbox_hi[k]))
             return hj_error_set(err, HJ_EINVAL, "problem: bounding box [%g, %g] of direction %d is not finite",
                                 pb->bbox_lo[k], pb->bbox_hi[k], k + 1);
+        if (pb->bbox_lo[k] > pb->bbox_hi[k])
+            return hj_error_set(err, HJ_EINVAL, "problem: bounding box [%g, %g] of direction %d is empty (bbox_lo > bbox_hi)",
+                                pb->bbox_lo[k], pb->bbox_hi[k], k + 1);
+    }
     const int d = pb->d, n = pb->n;
     for (int k = 0; k < d; k++) {
         if (!(pb->hi[k] > pb->lo[k])) return hj_error_set(err, HJ_EINVAL, "problem: empty domain");
@@ -346,7 +362,7 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
     rc = hj_band_new(&sv->s, kind, d, n, err);
     if (rc) return rc;
     /* scan the cells of the bounding box, widened by two cells */
-    int lo[HJ_BAND_DMAX], hi[HJ_BAND_DMAX], idx[HJ_BAND_DMAX];
+    int lo[HJ_BAND_DMAX] = {0}, hi[HJ_BAND_DMAX] = {0}, idx[HJ_BAND_DMAX];
     long cells = 1;
     for (int k = 0; k < d; k++) {
         /* clamped to [-1, n] as doubles first: a box far beyond the domain
@@ -369,6 +385,27 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
         }
         if ((rc = init_cells(sv, kind, idx, lo[d - 1], hi[d - 1], err))) return rc;
     }
+    /* The cells of the scanned box's faces lie at least 1.5 cells outside
+     * the bounding box, so the data are +1 on each face that is not on the
+     * domain's edge.  A box that does not contain Omega_0 (left at zero,
+     * say) cut the set silently: the cells beyond it were never stored. */
+    for (int k = 0; k < d; k++)
+        for (int side = 0; side < 2; side++) {
+            const int at = side ? hi[k] : lo[k];
+            if (at == 0 || at == n - 1) continue;
+            double flo[HJ_BAND_DMAX], fhi[HJ_BAND_DMAX];
+            for (int j = 0; j < d; j++) {
+                const int a = j == k ? at : lo[j], b = j == k ? at : hi[j];
+                flo[j] = pb->lo[j] + (a - 0.5) * sv->dx[j];
+                fhi[j] = pb->lo[j] + (b + 0.5) * sv->dx[j];
+            }
+            const double v = pb->avg0(flo, fhi, pb->ctx);
+            if (!(v == 1))
+                return hj_error_set(err, HJ_EINVAL,
+                                    "problem: the bounding box [%g, %g] of direction %d does not contain Omega_0: the data "
+                                    "average %g, not 1, over the cells two beyond its %s end",
+                                    pb->bbox_lo[k], pb->bbox_hi[k], k + 1, v, side ? "upper" : "lower");
+        }
     return HJ_OK;
 }
 

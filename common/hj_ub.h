@@ -103,8 +103,18 @@ typedef struct {
  * silently: the NaN snap and dtmax as their defaults, a NaN boundary as
  * NaN values).  hj_ub_init and hj_ub_dense_init call it. */
 int hj_ub_problem_check_values(const hj_ub_problem *pb, hj_error *err);
+/* HJ_EINVAL naming the first of d (2..4), n (>= 3), ncontrols (>= 1),
+ * cfl (0 < cfl <= 1) and, with need_data, dyn and avg0 that is out of
+ * range or missing.  hj_ub_init (need_data 1) and hj_ub_dense_init (0: it
+ * takes a row callback instead of dyn) call it first. */
+int hj_ub_problem_check_shape(const hj_ub_problem *pb, int need_data, hj_error *err);
 
-/* Set up the store (kind) with D^0 and the averages (7b). */
+/* Set up the store (kind) with D^0 and the averages (7b).  HJ_EINVAL for a
+ * problem hj_ub_problem_check_shape or _values refuses, an empty or
+ * non-finite bounding box, and a bounding box that does not contain
+ * Omega_0: avg0 must be 1 over the cells two beyond each of its ends that
+ * lies inside the domain (the cells beyond the box are never looked at,
+ * so the set would be cut there). */
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err);
 void hj_ub_free(hj_ub_solver *sv);
 

@@ -54,10 +54,10 @@ static int thread_id(void)
 int hj_ub_dense_init(hj_ub_dense *ws, const hj_ub_problem *pb, hj_ub_row_fn dyn_row, hj_error *err)
 {
     memset(ws, 0, sizeof *ws);
-    if (pb->d < 2 || pb->d > HJ_BAND_DMAX || pb->n < 3 || pb->ncontrols < 1 || (!pb->dyn && !dyn_row) || !(pb->cfl > 0) ||
-        pb->cfl > 1)
-        return hj_error_set(err, HJ_EINVAL, "problem: need 2 <= d <= 4, n >= 3, controls, dynamics, 0 < cfl <= 1");
-    const int rc = hj_ub_problem_check_values(pb, err);
+    int rc = hj_ub_problem_check_shape(pb, 0, err);
+    if (rc) return rc;
+    if (!pb->dyn && !dyn_row) return hj_error_set(err, HJ_EINVAL, "problem: no dynamics (neither pb->dyn nor dyn_row)");
+    rc = hj_ub_problem_check_values(pb, err);
     if (rc) return rc;
     const int d = pb->d, n = pb->n;
     double total = 1;

@@ -334,7 +334,35 @@ static void huge_bounding_box(void **state)
     }
 }
 
-HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
+/* A bounding box that does not hold Omega_0 cut the set without a word:
+ * one left at zero (a point at the origin, inside the square) stored no
+ * band node, so the run went on with an empty set; an inverted box was
+ * taken as well.  Both are refused, each with a message naming the box;
+ * so are a missing avg0 and an out-of-range cfl, each by name. */
+static void bounding_box_must_hold_the_set(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+    for (int k = 0; k < 5; k++) {
+        hj_ub_problem pb = square_problem(&c, 41);
+        const char *want = "bounding box";
+        switch (k) {
+        case 0: memset(pb.bbox_lo, 0, sizeof pb.bbox_lo), memset(pb.bbox_hi, 0, sizeof pb.bbox_hi); break;
+        case 1: pb.bbox_hi[1] = 0.1; break;                    /* cuts the square's top */
+        case 2: pb.bbox_lo[0] = 0.6, pb.bbox_hi[0] = -0.6; break; /* inverted */
+        case 3: pb.avg0 = NULL, want = "avg0"; break;
+        default: pb.cfl = 1.5, want = "cfl"; break;
+        }
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, want));
+        hj_ub_free(&sv);
+    }
+}
+
+HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box),
+             cmocka_unit_test(bounding_box_must_hold_the_set), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
              cmocka_unit_test(nonfinite_dynamics_and_times))
