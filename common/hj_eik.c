@@ -268,6 +268,8 @@ typedef struct {
                             * high order one was found untrustworthy
                             * there; see safeguard); NULL at order 1 */
     unsigned char *state;
+    unsigned char *ufix;   /* 1: a node of the caller's fixed data (NULL:
+                            * none); settled source nodes are ST_FIXED too */
     int *stamp;            /* last sweep that changed the node (locking) */
     float *chg;            /* order 5: largest change of T per node in the
                             * current iteration (NULL otherwise) */
@@ -295,6 +297,7 @@ typedef struct {
 
 static void work_free(eik_work *w)
 {
+    free(w->ufix);
     free(w->tau);
     free(w->T0);
     free(w->fs);
@@ -682,6 +685,13 @@ static double local_update(const eik_work *w, long k, const long ip[3], const do
             /* a stencil reaching into another source's nodes straddles
              * the kink where the two fronts meet: lower order there */
             if (q != 0 && w->own[k + q * st] != o) v[q + R] = NAN;
+            /* nor across the caller's fixed data into free nodes beyond:
+             * T grows away from a fixed line on both sides (a kink), and
+             * WENO3's weight of a stencil across it (eps3 not scaled with
+             * h) left an error growing as h^-3 */
+            if (w->ufix && (q < -1 || q > 1) && w->state[k + q * st] == ST_FREE)
+                for (int j = q < 0 ? -1 : 1; j != q; j += q < 0 ? -1 : 1)
+                    if (w->ufix[k + j * st]) v[q + R] = NAN;
             ok = ok && isfinite(v[q + R]);
         }
         int ord = R == 3 ? 5 : 3;
@@ -1689,6 +1699,11 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                                           EIK_T_RANGE);
                         break;
                     }
+                    if (!w.ufix && !(w.ufix = calloc(np, 1))) {
+                        rc = hj_error_set(err, HJ_ENOMEM, "out of memory: the fixed data's mask (%.3g MB)", np / 1e6);
+                        break;
+                    }
+                    w.ufix[k] = 1;
                     w.state[k] = ST_FIXED;
                     nfixed++;
                 }
