@@ -221,6 +221,12 @@ static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
     return dt;
 }
 
+double hj_ls_ode_span_small(double t0, double tk)
+{
+    const double a = fabs(t0) > fabs(tk) ? fabs(t0) : fabs(tk);
+    return 100 * DBL_EPSILON * a;
+}
+
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
               const hj_ls_ode_opts *opts, hj_ls_output_fn out, void *out_ctx, hj_ls_ode_stats *stats, hj_error *err)
 {
@@ -267,8 +273,7 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     int hold = 0;  /* steps without guessing left after a miss */
     for (int k = 1; k < ntspan && rc == HJ_OK; k++) {
         const double tk = tspan[k];
-        /* Steps shorter than this are round-off of the previous step. */
-        const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
+        const double small = hj_ls_ode_span_small(tspan[k - 1], tk);
         while (tk - t > small) {
             double b, dt;
             int last = 0, bad, fused, guessed = 0;

@@ -93,6 +93,13 @@ typedef int (*hj_ls_output_fn)(int k, double t, const double *y, void *ctx, hj_e
 
 void hj_ls_ode_defaults(hj_ls_ode_opts *o);
 
+/* What is left of the span from t0 to tk below which it counts as done:
+ * 100 eps times the span's largest |time|, relative as ToolboxLS's demos'
+ * tMax - t > 100 eps tMax, so that a span on any time scale is
+ * integrated (a horizon of 1e-20 s takes its step).  Each span's last step
+ * lands on tk exactly, so the rule only skips spans shorter than it. */
+double hj_ls_ode_span_small(double t0, double tk);
+
 /* Integrate y from tspan[0] through the increasing times tspan[1..ntspan-1]
  * with the TVD RK scheme of the given order (1, 2, 3).  y is updated in
  * place and holds the solution at the last time reached; out (may be NULL)

@@ -805,7 +805,7 @@ int hj_reach_solve_fused(const hj_reach_problem *pb, double *phi, double *ttr, h
     }
     if (nan_target) rc = target_nan_error(pb, compact, T, err);
     const double tk = isinf(pb->horizon) ? DBL_MAX / 4 : T;
-    const double small = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1);
+    const double small = hj_ls_ode_span_small(0, tk);
     const size_t wsz = block_work(g, fs.block_nodes);
     const int set_fn = (tube && pb->target.fn) || (obst && pb->obstacle.fn);
     const double steps_start = wall();

@@ -216,6 +216,32 @@ static void endless_span(void **state)
     hj_ls_free(y);
 }
 
+/* A span on a small time scale is integrated: y' = 1 + y from y = 0 over
+ * [0, 1e-20] is one step of 1e-20 at every order (y = e^dt - 1 within the
+ * step's truncation error, relative dt, or round-off);
+ * the end-of-span rule was 100 eps absolute below |t| = 1, and such a span
+ * took no step.  A span near t = 1e6 of 1e-3 runs too. */
+static void tiny_span_steps(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(4);
+    const_term c = {{const_eval}, &g, 1, 1};
+    double *y = hj_ls_alloc(&g);
+    hj_error err;
+    hj_ls_ode_stats st;
+    const double spans[2][2] = {{0, 1e-20}, {1e6, 1e6 + 1e-3}};
+    for (int k = 0; k < 2; k++)
+        for (int order = 1; order <= 3; order++) {
+            for (long j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
+            assert_int_equal(hj_ls_ode(order, &g, &c.base, spans[k], 2, y, NULL, NULL, NULL, &st, &err), HJ_OK);
+            assert_int_equal(st.steps, 1);
+            assert_true(st.t == spans[k][1]);
+            const double dt = spans[k][1] - spans[k][0];
+            assert_close(y[g.offset], expm1(dt), 0, dt > 1e-15 ? dt : 1e-15);
+        }
+    hj_ls_free(y);
+}
+
 static void error_reports(void **state)
 {
     (void)state;
@@ -475,6 +501,6 @@ static void convection_fused_bitwise(void **state)
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
-                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(error_reports),
+                        cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(tiny_span_steps), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
                         cmocka_unit_test(convection_fused_bitwise))

@@ -952,6 +952,32 @@ static void step_does_not_advance(void **state)
     hj_ls_free(phi);
 }
 
+/* A horizon on a small time scale is integrated: T = 1e-20 takes one step
+ * of 1e-20 on both paths (the end-of-span rule was 100 eps absolute below
+ * |T| = 1, so such a run took no step and reported tau = 0). */
+static void tiny_horizon_steps(void **state)
+{
+    (void)state;
+    double a = 1, r = 0.5;
+    hj_reach_dyn s;
+    hj_reach_dyn_init(&s, 1, f1, &a);
+    hj_ls_grid g = grid1(41);
+    hj_reach_problem pb;
+    hj_reach_problem_init(&pb, &g, &s);
+    pb.target.fn = interval, pb.target.ctx = &r;
+    pb.horizon = 1e-20;
+    double *phi = hj_ls_alloc(&g);
+    for (int general = 0; general <= 1; general++) {
+        hj_error err;
+        hj_reach_stats st;
+        pb.general = general;
+        assert_int_equal(hj_reach_solve(&pb, phi, NULL, &st, &err), HJ_OK);
+        assert_int_equal(st.steps, 1);
+        assert_true(st.tau == 1e-20);
+    }
+    hj_ls_free(phi);
+}
+
 typedef struct {
     long calls, last_steps, stop_at;
     double last_tau, horizon;
@@ -1158,4 +1184,4 @@ HJ_TEST_MAIN_ONE_THREAD("reach", NULL, NULL, cmocka_unit_test(hamiltonian_brute_
              cmocka_unit_test(invalid_problems), cmocka_unit_test(nan_target_names_node),
              cmocka_unit_test(step_does_not_advance), cmocka_unit_test(progress_callback),
              cmocka_unit_test(fused_messages_say_tau), cmocka_unit_test(too_large_refused),
-             cmocka_unit_test(general_too_large_refused))
+             cmocka_unit_test(general_too_large_refused), cmocka_unit_test(tiny_horizon_steps))

@@ -18,6 +18,8 @@
 #    --N lists them, no file written).  A box of +-1e300 ran and failed
 #    with a non-finite Hamiltonian (exit 1); an empty box or period was
 #    reported with the library's dimension, counted from 0.
+# 5. A horizon on a small time scale (1e-30) takes its step: the summary
+#    says 1 step and tau = 1e-30 (it took none and said tau = 0).
 # The last line is "hjreach-check: N passed, M failed".
 set -u
 bin=$(cd "${1:-build/bin}" && pwd) || exit 2
@@ -60,6 +62,10 @@ done
 m_away=$(minphi "$work/bc-away/value.dat") m_toward=$(minphi "$work/bc-toward/value.dat")
 awk -v a="$m_away" 'BEGIN { exit !(a < -0.45) }' && ok || bad "--boundary away: min phi $m_away, not below -0.45"
 awk -v t="$m_toward" 'BEGIN { exit !(t >= -0.3 - 1e-9) }' && ok || bad "--boundary toward: min phi $m_toward below -0.3"
+
+mkdir -p "$work/tiny"
+OMP_NUM_THREADS=1 "$h" --quiet --N 15,15,12 --horizon 1e-30 --out-dir "$work/tiny" >"$work/out" 2>"$work/err"
+grep -q '1 step, tau = 1e-30,' "$work/out" && ok || bad "--horizon 1e-30: $(cat "$work/out" "$work/err")"
 
 # refused 'TEXT1|TEXT2|..' ARGS...: exit 2, one line on stderr holding every
 # TEXT, nothing written into the (empty) --out-dir.
