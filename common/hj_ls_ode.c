@@ -227,8 +227,13 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     hj_ls_ode_opts o;
     if (opts) o = *opts;
     else hj_ls_ode_defaults(&o);
+    if (!g || !term || !tspan || !y)
+        return hj_error_set(err, HJ_EINVAL, "hj_ls_ode: the %s is NULL",
+                            !g ? "grid" : !term ? "term" : !tspan ? "tspan array" : "state y");
     if (order < 1 || order > 3)
         return hj_error_set(err, HJ_EINVAL, "integrator order must be 1, 2 or 3, got %d", order);
+    int rcg = hj_ls_term_check_grid(term, g, err);
+    if (rcg) return rcg;
     if (ntspan < 2) return hj_error_set(err, HJ_EINVAL, "tspan needs a start and at least one output time");
     for (int k = 0; k < ntspan; k++) {
         if (!isfinite(tspan[k])) return hj_error_set(err, HJ_ENONFINITE, "tspan[%d] is not finite", k);

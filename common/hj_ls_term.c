@@ -1979,3 +1979,72 @@ int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err)
         }
     return hj_error_set(err, HJ_EINVAL, "unknown dissipation '%s' (global, local, locallocal)", s);
 }
+
+/* ---- the grid a term was made on -------------------------------------- */
+
+const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
+{
+    if (!term) return NULL;
+    const hj_ls_term_fn f = term->eval;
+    if (f == convection_eval) return ((const hj_ls_convection *)term)->grid;
+    if (f == normal_eval) return ((const hj_ls_normal *)term)->grid;
+    if (f == reinit_eval) return ((const hj_ls_reinit *)term)->grid;
+    if (f == lf_eval) return ((const hj_ls_lax_friedrichs *)term)->grid;
+    if (f == curvature_eval) return ((const hj_ls_curvature_term *)term)->grid;
+    if (f == hessian_eval) return ((const hj_ls_hessian_term *)term)->grid;
+    if (f == discount_eval) return ((const hj_ls_discount *)term)->grid;
+    if (f == forcing_eval) return ((const hj_ls_forcing *)term)->grid;
+    if (f == restrict_eval) return ((const hj_ls_restrict *)term)->grid;
+    if (f == sum_eval) return ((const hj_ls_sum *)term)->grid;
+    if (f == extremum_eval) return ((const hj_ls_extremum *)term)->grid;
+    return NULL;
+}
+
+/* Whether a and b lay out and place their nodes alike: the same
+ * dimension, node counts, first node, spacing, boundary conditions and
+ * (a block of a distributed grid) global origin. */
+static int same_grid(const hj_ls_grid *a, const hj_ls_grid *b)
+{
+    if (a == b) return 1;
+    if (a->dim != b->dim) return 0;
+    for (int d = 0; d < a->dim; d++)
+        if (a->N[d] != b->N[d] || a->min[d] != b->min[d] || a->dx[d] != b->dx[d] || a->bc[d].type != b->bc[d].type ||
+            a->bc[d].lo != b->bc[d].lo || a->bc[d].hi != b->bc[d].hi || a->origin[d] != b->origin[d])
+            return 0;
+    return 1;
+}
+
+static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj_error *err)
+{
+    if (!term || !term->eval) return hj_error_set(err, HJ_EINVAL, "a term is NULL or has no eval function");
+    if (depth > 64) return hj_error_set(err, HJ_EINVAL, "terms nested more than 64 deep (a term that wraps itself?)");
+    const hj_ls_grid *tg = hj_ls_term_grid(term);
+    if (tg && !same_grid(tg, g)) {
+        char a[160] = "", b[160] = "";
+        for (int d = 0; d < tg->dim; d++)
+            snprintf(a + strlen(a), sizeof a - strlen(a), "%s%ld", d ? " x " : "", tg->N[d]);
+        for (int d = 0; d < g->dim; d++)
+            snprintf(b + strlen(b), sizeof b - strlen(b), "%s%ld", d ? " x " : "", g->N[d]);
+        return hj_error_set(err, HJ_EINVAL,
+                            "a term was made on another grid (%d-D, %s nodes) than the one it is evaluated on (%d-D, "
+                            "%s nodes, or a different box, spacing or boundary condition): init the term with this grid",
+                            tg->dim, a, g->dim, b);
+    }
+    const hj_ls_term_fn f = term->eval;
+    if (f == restrict_eval) return check_grid(((const hj_ls_restrict *)term)->inner, g, depth + 1, err);
+    if (f == sum_eval || f == extremum_eval) {
+        const int n = f == sum_eval ? ((const hj_ls_sum *)term)->n : ((const hj_ls_extremum *)term)->n;
+        const hj_ls_term *const *ts = f == sum_eval ? ((const hj_ls_sum *)term)->terms : ((const hj_ls_extremum *)term)->terms;
+        for (int i = 0; i < n; i++) {
+            int rc = check_grid(ts[i], g, depth + 1, err);
+            if (rc) return rc;
+        }
+    }
+    return HJ_OK;
+}
+
+int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err)
+{
+    if (!g) return hj_error_set(err, HJ_EINVAL, "the grid is NULL");
+    return check_grid(term, g, 0, err);
+}

@@ -364,6 +364,18 @@ int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term
                         hj_error *err);
 void hj_ls_extremum_free(hj_ls_extremum *c);
 
+/* The grid a term of this library was made on (the g of its *_init), or
+ * NULL for a term of the caller's own (any other eval function). */
+const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term);
+/* HJ_EINVAL, naming both grids' sizes, when term, or a term it wraps (a
+ * restricted update's inner term, the terms of a sum or an extremum), was
+ * made on a grid whose layout or placement differs from g's (dimension,
+ * node counts, first node, spacing, boundary conditions): its stencils
+ * would index arrays on g with the other grid's strides.  A copy of the
+ * same grid is the same grid.  A NULL term or eval, or a NULL g, is
+ * HJ_EINVAL too.  hj_ls_ode runs this check before any step. */
+int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err);
+
 #ifdef __cplusplus
 }
 #endif
