@@ -253,9 +253,16 @@ static size_t above_offset(const hj_ls_grid *g, int d, size_t q)
     return k;
 }
 
+/* A width outside 1..HJ_LS_GHOST as the nearest of them: the arrays have
+ * HJ_LS_GHOST layers, and a wider fill would write beyond them. */
+static int clamp_width(int width)
+{
+    return width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
+}
+
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 {
-    width = width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
+    width = clamp_width(width);
     /* Lines along d over the full (ghosted) extent of the dimensions below
      * d, so that corners take the ghosts already filled there, and over
      * the interior of the dimensions above d only: the ghosts of those
@@ -310,6 +317,7 @@ static double *face_run(const hj_ls_grid *g, double *a, int d, size_t q)
 
 void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width)
 {
+    width = clamp_width(width);
     /* runs of dimension 1, then of 2, ...: one loop over all of them */
     size_t runs[HJ_LS_MAXDIM] = {0}, total = 0;
     for (int d = 1; d < g->dim; d++) {
@@ -329,7 +337,7 @@ void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width)
 
 void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width)
 {
-    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0], width);
+    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0], clamp_width(width));
 }
 
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op)

@@ -146,7 +146,8 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
 
 /* The same for a stencil that reads width (1..HJ_LS_GHOST) ghost layers:
  * on a distributed grid only those are exchanged with the neighbours (the
- * boundary conditions fill all layers, as hj_ls_fill_ghosts). */
+ * boundary conditions fill all layers, as hj_ls_fill_ghosts).  A width
+ * outside 1..HJ_LS_GHOST is taken as the nearest of them. */
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
 
 /* The face ghosts that a stencil along one axis reads, in two parts, for a
@@ -161,7 +162,9 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
  * stencil that wide reads.  Together they give the values
  * hj_ls_fill_ghosts gives there (the same bits); edge and corner ghosts,
  * and the layers beyond width, are left alone.  Each reads interior nodes
- * only.  Not for a distributed grid (no halo exchange). */
+ * only.  Not for a distributed grid (no halo exchange).  A width outside
+ * 1..HJ_LS_GHOST is taken as the nearest of them, as by
+ * hj_ls_fill_ghosts_width (the arrays have HJ_LS_GHOST layers). */
 void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width);
 void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width);
 

@@ -496,6 +496,40 @@ static void period_grid(void **state)
                      HJ_EINVAL);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces),
+/* A width outside 1..HJ_LS_GHOST is taken as the nearest of them by the
+ * face and row fills, as by hj_ls_fill_ghosts_width: a row's fill of
+ * width 6 wrote three values beyond its ghost layers, into the previous
+ * row's ghosts (and a face fill beyond the array). */
+static void ghost_widths_clamped(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[2] = {0, 0}, mx[2] = {1, 1};
+    long N[2] = {9, 7};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_NEUMANN, 0.5, -2}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), *ref = hj_ls_alloc(&g);
+    assert_non_null(a), assert_non_null(ref);
+    const int widths[4] = {-2, 0, 4, 6};
+    for (int q = 0; q < 4; q++) {
+        const int w = widths[q], wc = w < 1 ? 1 : HJ_LS_GHOST;
+        for (size_t k = 0; k < g.total; k++) a[k] = ref[k] = 7;
+        long idx[HJ_LS_MAXDIM];
+        for (size_t r = 0; r < g.rows; r++) {
+            const size_t k = hj_ls_row(&g, r, idx);
+            for (long j = 0; j < g.N[0]; j++) a[k + (size_t)j] = ref[k + (size_t)j] = sin((double)(k + (size_t)j));
+        }
+        const size_t k2 = hj_ls_row(&g, 2, idx);
+        hj_ls_fill_row_ghosts(&g, a, k2, w);
+        hj_ls_fill_row_ghosts(&g, ref, k2, wc);
+        assert_memory_equal(a, ref, sizeof(double) * g.total);
+        hj_ls_fill_ghost_faces(&g, a, w);
+        hj_ls_fill_ghost_faces(&g, ref, wc);
+        assert_memory_equal(a, ref, sizeof(double) * g.total);
+    }
+    hj_ls_free(a), hj_ls_free(ref);
+}
+
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces), cmocka_unit_test(ghost_widths_clamped),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))
