@@ -10,9 +10,20 @@
 
 #include "hj_sys.h"
 
+/* The pointer arguments of the grid constructors (sizes: N or dx). */
+static int check_pointers(const hj_ls_grid *g, const double *min, const double *max, const void *sizes,
+                          const char *sizes_name, const hj_ls_bc *bc, hj_error *err)
+{
+    const char *which = !g ? "grid" : !min ? "min" : !max ? "max" : !sizes ? sizes_name : !bc ? "boundary condition" : NULL;
+    if (which) return hj_error_set(err, HJ_EINVAL, "grid: the %s array is NULL", which);
+    return HJ_OK;
+}
+
 int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                       hj_error *err)
 {
+    int rc = check_pointers(g, min, max, N, "N", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     g->dim = dim;
@@ -69,6 +80,8 @@ int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max
 int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N,
                            const hj_ls_bc *bc, hj_error *err)
 {
+    int rc = check_pointers(g, min, max, N, "N", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     double mx[HJ_LS_MAXDIM];
@@ -83,7 +96,7 @@ int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const doub
          * first node's image min + period. */
         mx[d] = min[d] + (max[d] - min[d]) * (double)(N[d] - 1) / (double)N[d];
     }
-    const int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
     if (rc) return rc;
     for (int d = 0; d < dim; d++)
         if (bc[d].type == HJ_LS_BC_PERIODIC) g->dx[d] = (max[d] - min[d]) / (double)N[d];
@@ -98,6 +111,8 @@ double hj_ls_grid_period(const hj_ls_grid *g, int d)
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
                        const hj_ls_bc *bc, hj_error *err)
 {
+    int rc = check_pointers(g, min, max, dx, "dx", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     long N[HJ_LS_MAXDIM];
@@ -111,13 +126,13 @@ int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *
         N[d] = (long)n;
         mx[d] = min[d] + (double)(N[d] - 1) * dx[d];
     }
-    int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
     if (rc) return rc;
     for (int d = 0; d < dim; d++) g->dx[d] = dx[d];
     return HJ_OK;
 }
 
-double *hj_ls_alloc(const hj_ls_grid *g) { return calloc(g->total, sizeof(double)); }
+double *hj_ls_alloc(const hj_ls_grid *g) { return g ? calloc(g->total, sizeof(double)) : NULL; }
 
 void hj_ls_free(double *a) { free(a); }
 

@@ -95,8 +95,9 @@ typedef struct hj_ls_dist {
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op);
 
 /* Grid with N[d] >= 2 nodes from min[d] to max[d] > min[d].  Fails with
- * HJ_EINVAL for a bad dimension, bound or boundary condition, and with
- * HJ_ENOMEM when one array would not fit in memory ("grid too large"). */
+ * HJ_EINVAL for a bad dimension, bound or boundary condition (or a NULL
+ * argument, here and in the constructors below), and with HJ_ENOMEM when
+ * one array would not fit in memory ("grid too large"). */
 int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                     hj_error *err);
 
@@ -122,7 +123,8 @@ int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *m
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
                        const hj_ls_bc *bc, hj_error *err);
 
-/* A zeroed array on g (ghosts included), or NULL.  Free with hj_ls_free. */
+/* A zeroed array on g (ghosts included), or NULL (out of memory, or g
+ * NULL).  Free with hj_ls_free. */
 double *hj_ls_alloc(const hj_ls_grid *g);
 void hj_ls_free(double *a);
 

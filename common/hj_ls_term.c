@@ -1899,6 +1899,9 @@ int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *t
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "a sum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!terms) return hj_error_set(err, HJ_EINVAL, "a sum: the term list is NULL");
+    for (int i = 0; i < n; i++)
+        if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "a sum: term %d is NULL or has no eval", i);
     c->base.eval = sum_eval;
     c->grid = g;
     c->n = n;
@@ -1947,6 +1950,9 @@ int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "an extremum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!terms) return hj_error_set(err, HJ_EINVAL, "an extremum: the term list is NULL");
+    for (int i = 0; i < n; i++)
+        if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "an extremum: term %d is NULL or has no eval", i);
     c->base.eval = extremum_eval;
     c->grid = g;
     c->n = n;

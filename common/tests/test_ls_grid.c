@@ -296,6 +296,21 @@ static void errors(void **state)
     /* the smallest normal spacing is a grid */
     const double lo0 = 0, normal = 4 * DBL_MIN;
     assert_int_equal(hj_ls_grid_init(&g, 1, &lo0, &normal, &n5, bc, &err), HJ_OK);
+    /* NULL arguments: an error naming the argument, not a segfault */
+    assert_int_equal(hj_ls_grid_init(NULL, 1, mn, mx, &n5, bc, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL");
+    assert_int_equal(hj_ls_grid_init(&g, 1, NULL, mx, &n5, bc, &err), HJ_EINVAL);
+    assert_has(err.msg, "min");
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, NULL, &n5, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, &n5, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "boundary");
+    assert_int_equal(hj_ls_grid_layout(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_period(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_period(&g, 1, mn, mx, &n5, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_dx(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_dx(NULL, 1, mn, mx, mx, bc, &err), HJ_EINVAL);
+    assert_null(hj_ls_alloc(NULL));
 }
 
 /* Norms of a known field: |x| on [-1, 1]. */
