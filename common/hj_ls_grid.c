@@ -14,7 +14,8 @@
 static int check_pointers(const hj_ls_grid *g, const double *min, const double *max, const void *sizes,
                           const char *sizes_name, const hj_ls_bc *bc, hj_error *err)
 {
-    const char *which = !g ? "grid" : !min ? "min" : !max ? "max" : !sizes ? sizes_name : !bc ? "boundary condition" : NULL;
+    if (!g) return hj_error_set(err, HJ_EINVAL, "grid: the hj_ls_grid to fill is NULL");
+    const char *which = !min ? "min" : !max ? "max" : !sizes ? sizes_name : !bc ? "boundary condition" : NULL;
     if (which) return hj_error_set(err, HJ_EINVAL, "grid: the %s array is NULL", which);
     return HJ_OK;
 }
