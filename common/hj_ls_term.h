@@ -181,7 +181,8 @@ void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const d
 /* ---- general Hamiltonian (5) by Lax-Friedrichs, toolbox (25)-(26):
  * G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2), with alpha_d
  * = partial(t, x, pmin, pmax, d) bounding |dH/dp_d| over the box
- * [pmin, pmax] of gradients:
+ * [pmin, pmax] of gradients (>= 0; a negative value is not an error, its
+ * magnitude is taken):
  *   GLF   the box is the global range of p-, p+ over the grid,
  *   LLF   local range in dimension d, global in the others,
  *   LLLF  local range in every dimension.
