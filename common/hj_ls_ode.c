@@ -151,6 +151,15 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
     return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
 }
 
+/* A callback of the caller's that failed without a message (or with
+ * another code in err than it returned): say which and when. */
+static void callback_failed(int rc, const char *what, double t, hj_error *err)
+{
+    if (!err) return;
+    if (!err->msg[0]) hj_error_set(err, rc, "%s returned %d (%s) at t = %.17g", what, rc, hj_strerror(rc), t);
+    else err->code = rc;
+}
+
 /* An infinite bound is checked with the term's values (moves_at). */
 static int check_bound(double b, double t, hj_error *err)
 {
@@ -383,14 +392,26 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                                   "step %ld", amax, o.blowup_factor, limit / o.blowup_factor, t, st.steps);
                 goto done;
             }
-            if (o.post && (rc = o.post(t, y, o.post_ctx, err))) goto done;
+            if (o.post) {
+                hj_error_clear(err);
+                if ((rc = o.post(t, y, o.post_ctx, err))) {
+                    callback_failed(rc, "the PostTimestep callback", t, err);
+                    goto done;
+                }
+            }
             if (o.single_step) goto done;
         }
         if (ys != y) { /* the state back into the caller's array */
             hj_ls_copy(g, y, ys);
             u = ys, ys = y;
         }
-        if (out && (rc = out(k, t, y, out_ctx, err))) goto done;
+        if (out) {
+            hj_error_clear(err);
+            if ((rc = out(k, t, y, out_ctx, err))) {
+                callback_failed(rc, "the output callback", t, err);
+                goto done;
+            }
+        }
     }
 done:
     if (ys != y) {

@@ -474,6 +474,41 @@ static void convection_fused_bitwise(void **state)
     hj_ls_free(a), hj_ls_free(b);
 }
 
+/* A failing output or PostTimestep callback: its code is returned, with
+ * its own message, or one that says which callback failed and when (an
+ * empty message before). */
+static int failing_output(int k, double t, const double *y, void *ctx, hj_error *err)
+{
+    (void)k, (void)t, (void)y, (void)ctx, (void)err;
+    return HJ_EIO;
+}
+static int failing_post(double t, double *y, void *ctx, hj_error *err)
+{
+    (void)t, (void)y;
+    return ctx ? hj_error_set(err, 42, "my post failed") : 42;
+}
+static void callback_errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(8);
+    const_term c = {{const_eval}, &g, 0.01, 0};
+    double *y = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.2};
+    hj_error err;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, NULL, failing_output, NULL, NULL, &err), HJ_EIO);
+    assert_int_equal(err.code, HJ_EIO);
+    assert_has(err.msg, "the output callback returned 3");
+    assert_has(err.msg, "t = 0.1");
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.post = failing_post;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
+    assert_has(err.msg, "the PostTimestep callback returned 42");
+    o.post_ctx = &o;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
+    assert_string_equal(err.msg, "my post failed");
+    hj_ls_free(y);
+}
+
 /* A term made on one grid and integrated on another: the term's stencils
  * would index the integrator's arrays with the other grid's strides (out
  * of bounds on a larger grid, silently wrong on a smaller one), so it is
@@ -536,4 +571,4 @@ static void term_on_another_grid(void **state)
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
-                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid))
+                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(callback_errors))
