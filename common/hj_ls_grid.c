@@ -387,6 +387,20 @@ void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src)
     }
 }
 
+void hj_ls_pack(const hj_ls_grid *g, double *packed, const double *a)
+{
+    long i[HJ_LS_MAXDIM];
+    const size_t n0 = (size_t)g->N[0];
+    for (size_t r = 0; r < g->rows; r++) memcpy(packed + r * n0, a + hj_ls_row(g, r, i), n0 * sizeof(double));
+}
+
+void hj_ls_unpack(const hj_ls_grid *g, double *a, const double *packed)
+{
+    long i[HJ_LS_MAXDIM];
+    const size_t n0 = (size_t)g->N[0];
+    for (size_t r = 0; r < g->rows; r++) memcpy(a + hj_ls_row(g, r, i), packed + r * n0, n0 * sizeof(double));
+}
+
 void hj_ls_norms_add(const hj_ls_grid *g, const double *a, const double *b, double *max, hj_sum *s1, hj_sum *s2)
 {
     double m = *max;

@@ -177,6 +177,16 @@ void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width);
 typedef double (*hj_ls_field_fn)(const double *x, void *ctx);
 void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx);
 
+/* Arrays without ghost layers (a ToolboxLS or numpy array, a file's
+ * values): g->nodes doubles, dimension 0 fastest, node (i_0, ..., i_{dim-1})
+ * at i_0 + N_0 (i_1 + N_1 (i_2 + ...)).  Such an array is not an array on
+ * the grid (the kernel's functions would read it with the ghosted strides,
+ * out of its bounds): hj_ls_unpack copies one into the interior of an
+ * array from hj_ls_alloc (ghosts left as they are; the terms fill them),
+ * hj_ls_pack copies an array's interior out into one. */
+void hj_ls_pack(const hj_ls_grid *g, double *packed, const double *a);
+void hj_ls_unpack(const hj_ls_grid *g, double *a, const double *packed);
+
 /* Copy the interior nodes of src to dst. */
 void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src);
 

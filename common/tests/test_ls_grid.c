@@ -545,6 +545,32 @@ static void ghost_widths_clamped(void **state)
     hj_ls_free(a), hj_ls_free(ref);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces), cmocka_unit_test(ghost_widths_clamped),
+/* hj_ls_unpack puts an array without ghosts (dimension 0 fastest) into the
+ * interior, node by node, ghosts untouched; hj_ls_pack takes it back. */
+static void pack_unpack(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[3] = {0, 0, 0}, mx[3] = {1, 1, 1};
+    long N[3] = {5, 4, 3};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_DIRICHLET, 1, 2}};
+    assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), packed[60], back[60];
+    for (size_t k = 0; k < g.total; k++) a[k] = -7;
+    for (int q = 0; q < 60; q++) packed[q] = q + 0.5;
+    hj_ls_unpack(&g, a, packed);
+    long i[3];
+    for (i[2] = 0; i[2] < 3; i[2]++)
+        for (i[1] = 0; i[1] < 4; i[1]++)
+            for (i[0] = 0; i[0] < 5; i[0]++)
+                assert_true(a[hj_ls_index(&g, i)] == (double)(i[0] + 5 * (i[1] + 4 * i[2])) + 0.5);
+    long ghost[3] = {-1, 0, 0};
+    assert_true(a[hj_ls_index(&g, ghost)] == -7);
+    hj_ls_pack(&g, back, a);
+    assert_memory_equal(back, packed, sizeof packed);
+    hj_ls_free(a);
+}
+
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces), cmocka_unit_test(ghost_widths_clamped), cmocka_unit_test(pack_unpack),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))
