@@ -714,6 +714,8 @@ static const double *convection_vcache(hj_ls_convection *c, double t)
 }
 
 /* G into ydot (stage NULL) or the fused stage (ydot NULL). */
+static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err);
+
 static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
                            double *bound, hj_error *err)
 {
@@ -739,9 +741,42 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     const row_fn f = g->dim != 2 ? convection_row : cheap ? convection_row2 : weno5 ? convection_row2w : convection_row;
     int rc = for_rows_run(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
                           stage, faces, "convection velocity", err);
+    if (rc == HJ_ENONFINITE && !g->dist) convection_name_bad_velocity(c, t, err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;
+}
+
+/* After a non-finite CFL bound: the first node (rows in order, then
+ * dimensions) whose velocity is not finite, named in err (the row pass
+ * reports only the bound).  Only on that error path, so the velocities
+ * are asked again. */
+static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err)
+{
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    double *v = c->velocity_fn ? malloc((size_t)n * sizeof *v) : NULL;
+    if (c->velocity_fn && !v) return;
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        hj_ls_coord(g, idx, x);
+        for (int d = 0; d < g->dim; d++) {
+            if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, v, c->ctx);
+            for (long j = 0; j < n; j++) {
+                const double vd = c->velocity_fn ? v[j] : c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j]
+                                                                               : c->velocity[d];
+                if (isfinite(vd)) continue;
+                char pos[256];
+                hj_ls_format_node(g, r, j, pos, sizeof pos);
+                hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd, pos, t);
+                free(v);
+                return;
+            }
+        }
+    }
+    free(v);
 }
 
 static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)

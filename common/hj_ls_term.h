@@ -128,8 +128,9 @@ typedef struct {
 /* CFL bound: 1 / max_x sum_d |v_d| / dx_d.  Rows on which v_d vanishes
  * skip the derivative in d; only the upwind side is computed, and WENO
  * differences along dimension 1 are reused from the neighbouring row (same
- * bits as hj_ls_upwind).  A NaN or infinite velocity is reported as a
- * non-finite CFL bound. */
+ * bits as hj_ls_upwind).  A NaN or infinite velocity is HJ_ENONFINITE
+ * naming its component, node and time (found after the pass, on the
+ * error path; a distributed grid reports the non-finite CFL bound). */
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme);
 /* velocity_steady = 1 (default 0) declares that velocity_fn returns the
  * same values at every t: the first evaluation then calls it once per row
