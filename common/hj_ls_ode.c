@@ -151,13 +151,12 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
     return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
 }
 
-/* A callback of the caller's that failed without a message (or with
- * another code in err than it returned): say which and when. */
+/* A callback of the caller's that failed without a message: say which
+ * and when (err as the callback left it otherwise: its code may be the
+ * caller's own, apart from the return value, as hj_reach's stop codes). */
 static void callback_failed(int rc, const char *what, double t, hj_error *err)
 {
-    if (!err) return;
-    if (!err->msg[0]) hj_error_set(err, rc, "%s returned %d (%s) at t = %.17g", what, rc, hj_strerror(rc), t);
-    else err->code = rc;
+    if (err && !err->msg[0]) hj_error_set(err, rc, "%s returned %d (%s) at t = %.17g", what, rc, hj_strerror(rc), t);
 }
 
 /* An infinite bound is checked with the term's values (moves_at). */
