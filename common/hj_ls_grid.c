@@ -10,9 +10,21 @@
 
 #include "hj_sys.h"
 
+/* The pointer arguments of the grid constructors (sizes: N or dx). */
+static int check_pointers(const hj_ls_grid *g, const double *min, const double *max, const void *sizes,
+                          const char *sizes_name, const hj_ls_bc *bc, hj_error *err)
+{
+    if (!g) return hj_error_set(err, HJ_EINVAL, "grid: the hj_ls_grid to fill is NULL");
+    const char *which = !min ? "min" : !max ? "max" : !sizes ? sizes_name : !bc ? "boundary condition" : NULL;
+    if (which) return hj_error_set(err, HJ_EINVAL, "grid: the %s array is NULL", which);
+    return HJ_OK;
+}
+
 int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                       hj_error *err)
 {
+    int rc = check_pointers(g, min, max, N, "N", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     g->dim = dim;
@@ -69,6 +81,8 @@ int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max
 int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N,
                            const hj_ls_bc *bc, hj_error *err)
 {
+    int rc = check_pointers(g, min, max, N, "N", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     double mx[HJ_LS_MAXDIM];
@@ -83,7 +97,7 @@ int hj_ls_grid_init_period(hj_ls_grid *g, int dim, const double *min, const doub
          * first node's image min + period. */
         mx[d] = min[d] + (max[d] - min[d]) * (double)(N[d] - 1) / (double)N[d];
     }
-    const int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
     if (rc) return rc;
     for (int d = 0; d < dim; d++)
         if (bc[d].type == HJ_LS_BC_PERIODIC) g->dx[d] = (max[d] - min[d]) / (double)N[d];
@@ -98,6 +112,8 @@ double hj_ls_grid_period(const hj_ls_grid *g, int d)
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
                        const hj_ls_bc *bc, hj_error *err)
 {
+    int rc = check_pointers(g, min, max, dx, "dx", bc, err);
+    if (rc) return rc;
     if (dim < 1 || dim > HJ_LS_MAXDIM)
         return hj_error_set(err, HJ_EINVAL, "grid dimension must be 1..%d, got %d", HJ_LS_MAXDIM, dim);
     long N[HJ_LS_MAXDIM];
@@ -111,13 +127,13 @@ int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *
         N[d] = (long)n;
         mx[d] = min[d] + (double)(N[d] - 1) * dx[d];
     }
-    int rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
+    rc = hj_ls_grid_init(g, dim, min, mx, N, bc, err);
     if (rc) return rc;
     for (int d = 0; d < dim; d++) g->dx[d] = dx[d];
     return HJ_OK;
 }
 
-double *hj_ls_alloc(const hj_ls_grid *g) { return calloc(g->total, sizeof(double)); }
+double *hj_ls_alloc(const hj_ls_grid *g) { return g ? calloc(g->total, sizeof(double)) : NULL; }
 
 void hj_ls_free(double *a) { free(a); }
 
@@ -253,9 +269,16 @@ static size_t above_offset(const hj_ls_grid *g, int d, size_t q)
     return k;
 }
 
+/* A width outside 1..HJ_LS_GHOST as the nearest of them: the arrays have
+ * HJ_LS_GHOST layers, and a wider fill would write beyond them. */
+static int clamp_width(int width)
+{
+    return width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
+}
+
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width)
 {
-    width = width < 1 ? 1 : width > HJ_LS_GHOST ? HJ_LS_GHOST : width;
+    width = clamp_width(width);
     /* Lines along d over the full (ghosted) extent of the dimensions below
      * d, so that corners take the ghosts already filled there, and over
      * the interior of the dimensions above d only: the ghosts of those
@@ -310,6 +333,7 @@ static double *face_run(const hj_ls_grid *g, double *a, int d, size_t q)
 
 void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width)
 {
+    width = clamp_width(width);
     /* runs of dimension 1, then of 2, ...: one loop over all of them */
     size_t runs[HJ_LS_MAXDIM] = {0}, total = 0;
     for (int d = 1; d < g->dim; d++) {
@@ -329,7 +353,7 @@ void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width)
 
 void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width)
 {
-    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0], width);
+    fill_line(a + k, 1, g->N[0], g->dx[0], &g->bc[0], clamp_width(width));
 }
 
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op)
@@ -361,6 +385,20 @@ void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src)
         const size_t k = hj_ls_row(g, r, i);
         for (long j = 0; j < g->N[0]; j++) dst[k + (size_t)j] = src[k + (size_t)j];
     }
+}
+
+void hj_ls_pack(const hj_ls_grid *g, double *packed, const double *a)
+{
+    long i[HJ_LS_MAXDIM];
+    const size_t n0 = (size_t)g->N[0];
+    for (size_t r = 0; r < g->rows; r++) memcpy(packed + r * n0, a + hj_ls_row(g, r, i), n0 * sizeof(double));
+}
+
+void hj_ls_unpack(const hj_ls_grid *g, double *a, const double *packed)
+{
+    long i[HJ_LS_MAXDIM];
+    const size_t n0 = (size_t)g->N[0];
+    for (size_t r = 0; r < g->rows; r++) memcpy(a + hj_ls_row(g, r, i), packed + r * n0, n0 * sizeof(double));
 }
 
 void hj_ls_norms_add(const hj_ls_grid *g, const double *a, const double *b, double *max, hj_sum *s1, hj_sum *s2)

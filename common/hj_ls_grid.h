@@ -95,8 +95,9 @@ typedef struct hj_ls_dist {
 void hj_ls_grid_reduce(const hj_ls_grid *g, double *v, int n, int op);
 
 /* Grid with N[d] >= 2 nodes from min[d] to max[d] > min[d].  Fails with
- * HJ_EINVAL for a bad dimension, bound or boundary condition, and with
- * HJ_ENOMEM when one array would not fit in memory ("grid too large"). */
+ * HJ_EINVAL for a bad dimension, bound or boundary condition (or a NULL
+ * argument, here and in the constructors below), and with HJ_ENOMEM when
+ * one array would not fit in memory ("grid too large"). */
 int hj_ls_grid_init(hj_ls_grid *g, int dim, const double *min, const double *max, const long *N, const hj_ls_bc *bc,
                     hj_error *err);
 
@@ -122,7 +123,8 @@ int hj_ls_grid_layout(hj_ls_grid *g, int dim, const double *min, const double *m
 int hj_ls_grid_init_dx(hj_ls_grid *g, int dim, const double *min, const double *max, const double *dx,
                        const hj_ls_bc *bc, hj_error *err);
 
-/* A zeroed array on g (ghosts included), or NULL.  Free with hj_ls_free. */
+/* A zeroed array on g (ghosts included), or NULL (out of memory, or g
+ * NULL).  Free with hj_ls_free. */
 double *hj_ls_alloc(const hj_ls_grid *g);
 void hj_ls_free(double *a);
 
@@ -146,7 +148,8 @@ void hj_ls_fill_ghosts(const hj_ls_grid *g, double *a);
 
 /* The same for a stencil that reads width (1..HJ_LS_GHOST) ghost layers:
  * on a distributed grid only those are exchanged with the neighbours (the
- * boundary conditions fill all layers, as hj_ls_fill_ghosts). */
+ * boundary conditions fill all layers, as hj_ls_fill_ghosts).  A width
+ * outside 1..HJ_LS_GHOST is taken as the nearest of them. */
 void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
 
 /* The face ghosts that a stencil along one axis reads, in two parts, for a
@@ -161,7 +164,9 @@ void hj_ls_fill_ghosts_width(const hj_ls_grid *g, double *a, int width);
  * stencil that wide reads.  Together they give the values
  * hj_ls_fill_ghosts gives there (the same bits); edge and corner ghosts,
  * and the layers beyond width, are left alone.  Each reads interior nodes
- * only.  Not for a distributed grid (no halo exchange). */
+ * only.  Not for a distributed grid (no halo exchange).  A width outside
+ * 1..HJ_LS_GHOST is taken as the nearest of them, as by
+ * hj_ls_fill_ghosts_width (the arrays have HJ_LS_GHOST layers). */
 void hj_ls_fill_ghost_faces(const hj_ls_grid *g, double *a, int width);
 void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width);
 
@@ -171,6 +176,16 @@ void hj_ls_fill_row_ghosts(const hj_ls_grid *g, double *a, size_t k, int width);
  * of threads. */
 typedef double (*hj_ls_field_fn)(const double *x, void *ctx);
 void hj_ls_fill(const hj_ls_grid *g, double *a, hj_ls_field_fn f, void *ctx);
+
+/* Arrays without ghost layers (a ToolboxLS or numpy array, a file's
+ * values): g->nodes doubles, dimension 0 fastest, node (i_0, ..., i_{dim-1})
+ * at i_0 + N_0 (i_1 + N_1 (i_2 + ...)).  Such an array is not an array on
+ * the grid (the kernel's functions would read it with the ghosted strides,
+ * out of its bounds): hj_ls_unpack copies one into the interior of an
+ * array from hj_ls_alloc (ghosts left as they are; the terms fill them),
+ * hj_ls_pack copies an array's interior out into one. */
+void hj_ls_pack(const hj_ls_grid *g, double *packed, const double *a);
+void hj_ls_unpack(const hj_ls_grid *g, double *a, const double *packed);
 
 /* Copy the interior nodes of src to dst. */
 void hj_ls_copy(const hj_ls_grid *g, double *dst, const double *src);

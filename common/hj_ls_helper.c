@@ -10,14 +10,27 @@
 
 int hj_ls_post_mask(double t, double *y, void *ctx, hj_error *err)
 {
-    (void)t, (void)err;
     const hj_ls_mask *m = ctx;
+    if (!m || !m->grid || !m->mask || !y)
+        return hj_error_set(err, HJ_EINVAL, "post-step mask: the %s is NULL",
+                            !m ? "hj_ls_mask context" : !m->grid ? "mask's grid" : !m->mask ? "mask array" : "state");
     const hj_ls_grid *g = m->grid;
     long idx[HJ_LS_MAXDIM];
     for (size_t r = 0; r < g->rows; r++) {
         const size_t k = hj_ls_row(g, r, idx);
         double *p = y + k;
         const double *q = m->mask + k;
+        /* a NaN in the mask would pass into the state (the comparison
+         * takes it), and be reported only as a blow-up of the state */
+        int nan = 0;
+        for (long j = 0; j < g->N[0]; j++) nan |= q[j] != q[j];
+        if (nan) {
+            long j = 0;
+            while (q[j] == q[j]) j++;
+            char pos[256];
+            hj_ls_format_node(g, r, j, pos, sizeof pos);
+            return hj_error_set(err, HJ_ENONFINITE, "post-step mask: the mask is NaN at x = (%s), t = %g", pos, t);
+        }
         if (m->keep_max)
             for (long j = 0; j < g->N[0]; j++) p[j] = p[j] > q[j] ? p[j] : q[j];
         else

@@ -16,7 +16,10 @@ extern "C" {
 /* postTimestepMask: pass hj_ls_post_mask as the integrator's PostTimestep
  * with a pointer to this struct; after every step
  *     y = max(y, mask)  (keep_max, the constraint phi >= psi), or
- *     y = min(y, mask)  (phi <= psi). */
+ *     y = min(y, mask)  (phi <= psi).
+ * A NaN in the mask is HJ_ENONFINITE naming the node (the rows before it
+ * are masked already); a NULL context, grid or mask is HJ_EINVAL.  The
+ * mask must be an array on the integrator's grid. */
 typedef struct {
     const hj_ls_grid *grid;
     const double *mask;

@@ -2,18 +2,51 @@
 #include "hj_ls_io.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "hj_io.h"
 
 static const char *axis_name[3] = {"x", "y", "z"};
 
+/* The fields (nfields >= 0, none NULL) and, when names is given (needed:
+ * VTK), one name per field: a non-empty word for VTK (its SCALARS line
+ * reads the name up to a blank), one line for a gnuplot header. */
+static int check_fields(const char *what, const hj_ls_grid *g, int nfields, const char *const *names,
+                        const double *const *fields, int need_names, hj_error *err)
+{
+    if (!g) return hj_error_set(err, HJ_EINVAL, "%s: the grid is NULL", what);
+    if (nfields < 0) return hj_error_set(err, HJ_EINVAL, "%s: %d fields", what, nfields);
+    if (nfields > 0 && !fields) return hj_error_set(err, HJ_EINVAL, "%s: the field list is NULL", what);
+    if (need_names && nfields > 0 && !names) return hj_error_set(err, HJ_EINVAL, "%s: every field needs a name", what);
+    for (int f = 0; f < nfields; f++) {
+        if (!fields[f]) return hj_error_set(err, HJ_EINVAL, "%s: field %d is NULL", what, f);
+        if (!names) continue;
+        const char *nm = names[f];
+        if (!need_names && !nm) continue; /* a gnuplot header names it by its column */
+        if (!nm || !nm[0]) return hj_error_set(err, HJ_EINVAL, "%s: field %d has no name", what, f);
+        for (const char *c = nm; *c; c++)
+            if (*c == '\n' || *c == '\r' || (need_names && (*c == ' ' || *c == '\t'))) {
+                char q[80];
+                return hj_error_set(err, HJ_EINVAL, "%s: field name \"%s\" must be one word without blanks",
+                                    what, hj_error_quote(nm, strlen(nm), q, sizeof q));
+            }
+    }
+    return HJ_OK;
+}
+
 int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *const *names,
                       const double *const *fields, hj_error *err)
 {
+    if (!fp) return hj_error_set(err, HJ_EINVAL, "gnuplot block: the stream is NULL");
+    int rc = check_fields("gnuplot block", g, nfields, names, fields, 0, err);
+    if (rc) return rc;
     if (names) {
         fputc('#', fp);
         for (int d = 0; d < g->dim; d++) fprintf(fp, " %s", d < 3 ? axis_name[d] : "x_d");
-        for (int f = 0; f < nfields; f++) fprintf(fp, " %s", names[f]);
+        for (int f = 0; f < nfields; f++) {
+            if (names[f]) fprintf(fp, " %s", names[f]);
+            else fprintf(fp, " f%d", f + 1);
+        }
         fputc('\n', fp);
     }
     for (size_t r = 0; r < g->rows; r++) {
@@ -36,9 +69,15 @@ int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *co
 int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, int nfields,
                     const char *const *names, const double *const *fields, hj_error *err)
 {
+    if (!path) return hj_error_set(err, HJ_EINVAL, "VTK: the path is NULL");
+    int rc = check_fields(path, g, nfields, names, fields, 1, err);
+    if (rc) return rc;
     if (g->dim > 3) return hj_error_set(err, HJ_EINVAL, "%s: VTK structured points hold 1 to 3 dimensions", path);
+    /* the header's second line, at most 256 characters (VTK's limit) */
+    if (!title || strlen(title) > 255 || strpbrk(title, "\n\r"))
+        return hj_error_set(err, HJ_EINVAL, "%s: the VTK title must be one line of at most 255 characters", path);
     hj_out out;
-    int rc = hj_out_open(&out, path, err);
+    rc = hj_out_open(&out, path, err);
     if (rc) return rc;
     long n[3] = {1, 1, 1};
     double o[3] = {0, 0, 0}, s[3] = {1, 1, 1};
@@ -64,8 +103,11 @@ int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, in
 int hj_ls_write_dat(const char *path, const hj_ls_grid *g, int nfields, const char *const *names,
                     const double *const *fields, hj_error *err)
 {
+    if (!path) return hj_error_set(err, HJ_EINVAL, "data file: the path is NULL");
+    int rc = check_fields(path, g, nfields, names, fields, 0, err);
+    if (rc) return rc;
     hj_out out;
-    int rc = hj_out_open(&out, path, err);
+    rc = hj_out_open(&out, path, err);
     if (rc) return rc;
     rc = hj_ls_write_block(out.fp, g, nfields, names, fields, err);
     if (rc) {

@@ -25,13 +25,19 @@ extern "C" {
 #endif
 
 /* One block of nfields arrays on g to fp (an open stream, e.g. an hj_out's
- * fp); a header line "# x y ... name1 name2" first when names is given.
- * HJ_EIO on a write error. */
+ * fp); a header line "# x y ... name1 name2" first when names is given
+ * (a NULL entry is written f1, f2, ... by its field number).  HJ_EIO on a
+ * write error; HJ_EINVAL for a NULL stream, grid or field, or a name with
+ * a line break. */
 int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *const *names,
                       const double *const *fields, hj_error *err);
 
 /* A legacy ASCII VTK file (STRUCTURED_POINTS, one SCALARS section per
- * field), written atomically (hj_out).  title is the one-line header. */
+ * field), written atomically (hj_out).  title is the one-line header (at
+ * most 255 characters, no line break) and every field needs a name, one
+ * word (no blank: VTK reads the SCALARS name up to one); anything else,
+ * or a NULL path, title, name list or field, is HJ_EINVAL and no file is
+ * written. */
 int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, int nfields,
                     const char *const *names, const double *const *fields, hj_error *err);
 

@@ -133,6 +133,8 @@ static int nan_error(const hj_ls_grid *g, size_t k, hj_error *err)
 
 int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell, hj_sum *s, hj_error *err)
 {
+    if (!g || !phi || !ncell || !s)
+        return hj_error_set(err, HJ_EINVAL, "measure: the %s is NULL", !g ? "grid" : !phi ? "array phi" : !ncell ? "cell count" : "sum");
     if (g->dim < 1 || g->dim > 3) return hj_error_set(err, HJ_EINVAL, "measure: dimension %d (1 to 3 only)", g->dim);
     for (int e = 0; e < g->dim; e++)
         if (ncell[e] < 0 || ncell[e] > g->N[e])
@@ -179,6 +181,7 @@ int hj_ls_measure_add(const hj_ls_grid *g, const double *phi, const long *ncell,
 
 int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *err)
 {
+    if (!g || !m) return hj_error_set(err, HJ_EINVAL, "measure: the %s is NULL", !g ? "grid" : "result pointer");
     long ncell[HJ_LS_MAXDIM] = {0};
     for (int e = 0; e < g->dim && e < HJ_LS_MAXDIM; e++) ncell[e] = g->N[e] - 1;
     hj_sum s;
@@ -193,6 +196,8 @@ int hj_ls_measure(const hj_ls_grid *g, const double *phi, double *m, hj_error *e
 
 int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_dim, double *m, hj_error *err)
 {
+    if (!g || !phi || !m)
+        return hj_error_set(err, HJ_EINVAL, "measure: the %s is NULL", !g ? "grid" : !phi ? "array phi" : "result pointer");
     if (periodic_dim < 0) return hj_ls_measure(g, phi, m, err);
     if (periodic_dim >= g->dim)
         return hj_error_set(err, HJ_EINVAL, "measure: periodic dimension %d of a %d-D grid", periodic_dim, g->dim);
@@ -226,6 +231,7 @@ int hj_ls_measure_periodic(const hj_ls_grid *g, const double *phi, int periodic_
 
 int hj_ls_measure_radius(const hj_ls_grid *g, const double *phi, double *r, hj_error *err)
 {
+    if (!g || !r) return hj_error_set(err, HJ_EINVAL, "radius: the %s is NULL", !g ? "grid" : "result pointer");
     if (g->dim != 2 && g->dim != 3) return hj_error_set(err, HJ_EINVAL, "radius: 2-D or 3-D grids only");
     double m;
     int rc = hj_ls_measure(g, phi, &m, err);

@@ -151,6 +151,14 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
     return hj_error_set(err, HJ_ENONFINITE, "non-finite initial state at x = (%s)", pos);
 }
 
+/* A callback of the caller's that failed without a message: say which
+ * and when (err as the callback left it otherwise: its code may be the
+ * caller's own, apart from the return value, as hj_reach's stop codes). */
+static void callback_failed(int rc, const char *what, double t, hj_error *err)
+{
+    if (err && !err->msg[0]) hj_error_set(err, rc, "%s returned %d (%s) at t = %.17g", what, rc, hj_strerror(rc), t);
+}
+
 /* An infinite bound is checked with the term's values (moves_at). */
 static int check_bound(double b, double t, hj_error *err)
 {
@@ -233,8 +241,13 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     hj_ls_ode_opts o;
     if (opts) o = *opts;
     else hj_ls_ode_defaults(&o);
+    if (!g || !term || !tspan || !y)
+        return hj_error_set(err, HJ_EINVAL, "hj_ls_ode: the %s is NULL",
+                            !g ? "grid" : !term ? "term" : !tspan ? "tspan array" : "state y");
     if (order < 1 || order > 3)
         return hj_error_set(err, HJ_EINVAL, "integrator order must be 1, 2 or 3, got %d", order);
+    int rcg = hj_ls_term_check_grid(term, g, err);
+    if (rcg) return rcg;
     if (ntspan < 2) return hj_error_set(err, HJ_EINVAL, "tspan needs a start and at least one output time");
     for (int k = 0; k < ntspan; k++) {
         if (!isfinite(tspan[k])) return hj_error_set(err, HJ_ENONFINITE, "tspan[%d] is not finite", k);
@@ -383,14 +396,26 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                                   "step %ld", amax, o.blowup_factor, limit / o.blowup_factor, t, st.steps);
                 goto done;
             }
-            if (o.post && (rc = o.post(t, y, o.post_ctx, err))) goto done;
+            if (o.post) {
+                hj_error_clear(err);
+                if ((rc = o.post(t, y, o.post_ctx, err))) {
+                    callback_failed(rc, "the PostTimestep callback", t, err);
+                    goto done;
+                }
+            }
             if (o.single_step) goto done;
         }
         if (ys != y) { /* the state back into the caller's array */
             hj_ls_copy(g, y, ys);
             u = ys, ys = y;
         }
-        if (out && (rc = out(k, t, y, out_ctx, err))) goto done;
+        if (out) {
+            hj_error_clear(err);
+            if ((rc = out(k, t, y, out_ctx, err))) {
+                callback_failed(rc, "the output callback", t, err);
+                goto done;
+            }
+        }
     }
 done:
     if (ys != y) {

@@ -65,7 +65,10 @@
 extern "C" {
 #endif
 
-/* Called after every full step; may change y (e.g. a mask, section 3.7.2). */
+/* Called after every full step; may change y (e.g. a mask, section 3.7.2).
+ * A nonzero return (from this or the output callback below) ends the run
+ * and is hj_ls_ode's return value; the callback's message in err is kept,
+ * and where it set none hj_ls_ode says which callback failed and when. */
 typedef int (*hj_ls_post_fn)(double t, double *y, void *ctx, hj_error *err);
 
 typedef struct {

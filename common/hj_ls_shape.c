@@ -55,9 +55,20 @@ static int first_nonfinite(const double *x, int n, const int *use)
     return -1;
 }
 
+/* NULL arguments of a shape: the grid, the output and its vectors. */
+static int null_args(const char *what, const hj_ls_grid *g, const double *out, const void *a, const char *aname,
+                     const void *b, const char *bname, hj_error *err)
+{
+    const char *which = !g ? "grid" : !out ? "output array" : !a ? aname : !b ? bname : NULL;
+    if (which) return hj_error_set(err, HJ_EINVAL, "%s: the %s is NULL", what, which);
+    return HJ_OK;
+}
+
 int hj_ls_shape_cylinder(const hj_ls_grid *g, const int *ignore, int nignore, const double *center, double radius,
                          double *out, hj_error *err)
 {
+    int rc = null_args("sphere", g, out, center, "centre", nignore > 0 ? (const void *)ignore : out, "ignore list", err);
+    if (rc) return rc;
     if (!isfinite(radius)) return hj_error_set(err, HJ_ENONFINITE, "sphere radius %g is not finite", radius);
     if (!(radius > 0)) return hj_error_set(err, HJ_EINVAL, "sphere radius must be positive");
     shape s = {.dim = g->dim, .c = center, .r = radius};
@@ -84,6 +95,8 @@ int hj_ls_shape_sphere(const hj_ls_grid *g, const double *center, double radius,
 int hj_ls_shape_rectangle_corners(const hj_ls_grid *g, const double *lower, const double *upper, double *out,
                                   hj_error *err)
 {
+    int rc = null_args("rectangle", g, out, lower, "lower corner", upper, "upper corner", err);
+    if (rc) return rc;
     for (int d = 0; d < g->dim; d++)
         if (isnan(lower[d]) || isnan(upper[d]))
             return hj_error_set(err, HJ_ENONFINITE, "rectangle corner is NaN in dimension %d", d);
@@ -98,6 +111,8 @@ int hj_ls_shape_rectangle_corners(const hj_ls_grid *g, const double *lower, cons
 int hj_ls_shape_rectangle_center(const hj_ls_grid *g, const double *center, const double *widths, double *out,
                                  hj_error *err)
 {
+    int rc = null_args("rectangle", g, out, center, "centre", widths, "widths", err);
+    if (rc) return rc;
     double lo[HJ_LS_MAXDIM], hi[HJ_LS_MAXDIM];
     const int bad = first_nonfinite(center, g->dim, NULL);
     if (bad >= 0)
@@ -114,6 +129,8 @@ int hj_ls_shape_rectangle_center(const hj_ls_grid *g, const double *center, cons
 
 int hj_ls_shape_hyperplane(const hj_ls_grid *g, const double *normal, const double *point, double *out, hj_error *err)
 {
+    int rc = null_args("hyperplane", g, out, normal, "normal", point, "point", err);
+    if (rc) return rc;
     int bad = first_nonfinite(normal, g->dim, NULL);
     if (bad >= 0) return hj_error_set(err, HJ_ENONFINITE, "hyperplane normal is not finite in dimension %d", bad);
     bad = first_nonfinite(point, g->dim, NULL);
@@ -172,6 +189,8 @@ static int star_finite(const hj_ls_star *s)
 
 int hj_ls_shape_star(const hj_ls_grid *g, const hj_ls_star *s, double *out, hj_error *err)
 {
+    int rc = null_args("star", g, out, s, "star", s, "star", err);
+    if (rc) return rc;
     if (g->dim != 2) return hj_error_set(err, HJ_EINVAL, "star: 2-D grids only");
     if (!star_finite(s)) return hj_error_set(err, HJ_ENONFINITE, "star: scale, shift and points must be finite");
     hj_ls_fill(g, out, star_grid_at, (void *)s);

@@ -714,6 +714,8 @@ static const double *convection_vcache(hj_ls_convection *c, double t)
 }
 
 /* G into ydot (stage NULL) or the fused stage (ydot NULL). */
+static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err);
+
 static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
                            double *bound, hj_error *err)
 {
@@ -739,9 +741,42 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
     const row_fn f = g->dim != 2 ? convection_row : cheap ? convection_row2 : weno5 ? convection_row2w : convection_row;
     int rc = for_rows_run(g, (size_t)(4 + HJ_LS_ROW_WORK + 6 + 1) * (size_t)g->N[0], f, &ps, t, y, ydot, &m, NULL,
                           stage, faces, "convection velocity", err);
+    if (rc == HJ_ENONFINITE && !g->dist) convection_name_bad_velocity(c, t, err);
     if (rc) return rc;
     *bound = bound_of(m);
     return HJ_OK;
+}
+
+/* After a non-finite CFL bound: the first node (rows in order, then
+ * dimensions) whose velocity is not finite, named in err (the row pass
+ * reports only the bound).  Only on that error path, so the velocities
+ * are asked again. */
+static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err)
+{
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    double *v = c->velocity_fn ? malloc((size_t)n * sizeof *v) : NULL;
+    if (c->velocity_fn && !v) return;
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        hj_ls_coord(g, idx, x);
+        for (int d = 0; d < g->dim; d++) {
+            if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, v, c->ctx);
+            for (long j = 0; j < n; j++) {
+                const double vd = c->velocity_fn ? v[j] : c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j]
+                                                                               : c->velocity[d];
+                if (isfinite(vd)) continue;
+                char pos[256];
+                hj_ls_format_node(g, r, j, pos, sizeof pos);
+                hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd, pos, t);
+                free(v);
+                return;
+            }
+        }
+    }
+    free(v);
 }
 
 static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
@@ -1899,6 +1934,9 @@ int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *t
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "a sum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!terms) return hj_error_set(err, HJ_EINVAL, "a sum: the term list is NULL");
+    for (int i = 0; i < n; i++)
+        if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "a sum: term %d is NULL or has no eval", i);
     c->base.eval = sum_eval;
     c->grid = g;
     c->n = n;
@@ -1947,6 +1985,9 @@ int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "an extremum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!terms) return hj_error_set(err, HJ_EINVAL, "an extremum: the term list is NULL");
+    for (int i = 0; i < n; i++)
+        if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "an extremum: term %d is NULL or has no eval", i);
     c->base.eval = extremum_eval;
     c->grid = g;
     c->n = n;
@@ -1978,4 +2019,73 @@ int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err)
             return HJ_OK;
         }
     return hj_error_set(err, HJ_EINVAL, "unknown dissipation '%s' (global, local, locallocal)", s);
+}
+
+/* ---- the grid a term was made on -------------------------------------- */
+
+const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
+{
+    if (!term) return NULL;
+    const hj_ls_term_fn f = term->eval;
+    if (f == convection_eval) return ((const hj_ls_convection *)term)->grid;
+    if (f == normal_eval) return ((const hj_ls_normal *)term)->grid;
+    if (f == reinit_eval) return ((const hj_ls_reinit *)term)->grid;
+    if (f == lf_eval) return ((const hj_ls_lax_friedrichs *)term)->grid;
+    if (f == curvature_eval) return ((const hj_ls_curvature_term *)term)->grid;
+    if (f == hessian_eval) return ((const hj_ls_hessian_term *)term)->grid;
+    if (f == discount_eval) return ((const hj_ls_discount *)term)->grid;
+    if (f == forcing_eval) return ((const hj_ls_forcing *)term)->grid;
+    if (f == restrict_eval) return ((const hj_ls_restrict *)term)->grid;
+    if (f == sum_eval) return ((const hj_ls_sum *)term)->grid;
+    if (f == extremum_eval) return ((const hj_ls_extremum *)term)->grid;
+    return NULL;
+}
+
+/* Whether a and b lay out and place their nodes alike: the same
+ * dimension, node counts, first node, spacing, boundary conditions and
+ * (a block of a distributed grid) global origin. */
+static int same_grid(const hj_ls_grid *a, const hj_ls_grid *b)
+{
+    if (a == b) return 1;
+    if (a->dim != b->dim) return 0;
+    for (int d = 0; d < a->dim; d++)
+        if (a->N[d] != b->N[d] || a->min[d] != b->min[d] || a->dx[d] != b->dx[d] || a->bc[d].type != b->bc[d].type ||
+            a->bc[d].lo != b->bc[d].lo || a->bc[d].hi != b->bc[d].hi || a->origin[d] != b->origin[d])
+            return 0;
+    return 1;
+}
+
+static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj_error *err)
+{
+    if (!term || !term->eval) return hj_error_set(err, HJ_EINVAL, "a term is NULL or has no eval function");
+    if (depth > 64) return hj_error_set(err, HJ_EINVAL, "terms nested more than 64 deep (a term that wraps itself?)");
+    const hj_ls_grid *tg = hj_ls_term_grid(term);
+    if (tg && !same_grid(tg, g)) {
+        char a[160] = "", b[160] = "";
+        for (int d = 0; d < tg->dim; d++)
+            snprintf(a + strlen(a), sizeof a - strlen(a), "%s%ld", d ? " x " : "", tg->N[d]);
+        for (int d = 0; d < g->dim; d++)
+            snprintf(b + strlen(b), sizeof b - strlen(b), "%s%ld", d ? " x " : "", g->N[d]);
+        return hj_error_set(err, HJ_EINVAL,
+                            "a term was made on another grid (%d-D, %s nodes) than the one it is evaluated on (%d-D, "
+                            "%s nodes, or a different box, spacing or boundary condition): init the term with this grid",
+                            tg->dim, a, g->dim, b);
+    }
+    const hj_ls_term_fn f = term->eval;
+    if (f == restrict_eval) return check_grid(((const hj_ls_restrict *)term)->inner, g, depth + 1, err);
+    if (f == sum_eval || f == extremum_eval) {
+        const int n = f == sum_eval ? ((const hj_ls_sum *)term)->n : ((const hj_ls_extremum *)term)->n;
+        const hj_ls_term *const *ts = f == sum_eval ? ((const hj_ls_sum *)term)->terms : ((const hj_ls_extremum *)term)->terms;
+        for (int i = 0; i < n; i++) {
+            int rc = check_grid(ts[i], g, depth + 1, err);
+            if (rc) return rc;
+        }
+    }
+    return HJ_OK;
+}
+
+int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err)
+{
+    if (!g) return hj_error_set(err, HJ_EINVAL, "the grid is NULL");
+    return check_grid(term, g, 0, err);
 }

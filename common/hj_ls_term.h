@@ -128,8 +128,9 @@ typedef struct {
 /* CFL bound: 1 / max_x sum_d |v_d| / dx_d.  Rows on which v_d vanishes
  * skip the derivative in d; only the upwind side is computed, and WENO
  * differences along dimension 1 are reused from the neighbouring row (same
- * bits as hj_ls_upwind).  A NaN or infinite velocity is reported as a
- * non-finite CFL bound. */
+ * bits as hj_ls_upwind).  A NaN or infinite velocity is HJ_ENONFINITE
+ * naming its component, node and time (found after the pass, on the
+ * error path; a distributed grid reports the non-finite CFL bound). */
 void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme);
 /* velocity_steady = 1 (default 0) declares that velocity_fn returns the
  * same values at every t: the first evaluation then calls it once per row
@@ -181,7 +182,8 @@ void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const d
 /* ---- general Hamiltonian (5) by Lax-Friedrichs, toolbox (25)-(26):
  * G = -(H(x, (p+ + p-)/2) - sum_d alpha_d (p+_d - p-_d) / 2), with alpha_d
  * = partial(t, x, pmin, pmax, d) bounding |dH/dp_d| over the box
- * [pmin, pmax] of gradients:
+ * [pmin, pmax] of gradients (>= 0; a negative value is not an error, its
+ * magnitude is taken):
  *   GLF   the box is the global range of p-, p+ over the grid,
  *   LLF   local range in dimension d, global in the others,
  *   LLLF  local range in every dimension.
@@ -363,6 +365,18 @@ typedef struct {
 int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term *const *terms, int n, int take_max,
                         hj_error *err);
 void hj_ls_extremum_free(hj_ls_extremum *c);
+
+/* The grid a term of this library was made on (the g of its *_init), or
+ * NULL for a term of the caller's own (any other eval function). */
+const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term);
+/* HJ_EINVAL, naming both grids' sizes, when term, or a term it wraps (a
+ * restricted update's inner term, the terms of a sum or an extremum), was
+ * made on a grid whose layout or placement differs from g's (dimension,
+ * node counts, first node, spacing, boundary conditions): its stencils
+ * would index arrays on g with the other grid's strides.  A copy of the
+ * same grid is the same grid.  A NULL term or eval, or a NULL g, is
+ * HJ_EINVAL too.  hj_ls_ode runs this check before any step. */
+int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err);
 
 #ifdef __cplusplus
 }

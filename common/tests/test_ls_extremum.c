@@ -106,5 +106,27 @@ static void bad_count(void **state)
     hj_ls_extremum_free(&e);
 }
 
+/* A NULL entry in the term list of a sum or an extremum: an error at init,
+ * not a segfault at the first evaluation. */
+static void null_terms(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(11, 0, 1);
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    const hj_ls_term *terms[2] = {&c.base, NULL};
+    hj_error err;
+    hj_ls_extremum e;
+    assert_int_equal(hj_ls_extremum_init(&e, &g, terms, 2, 0, &err), HJ_EINVAL);
+    assert_has(err.msg, "term 1");
+    hj_ls_extremum_free(&e);
+    assert_int_equal(hj_ls_extremum_init(&e, &g, NULL, 1, 0, &err), HJ_EINVAL);
+    hj_ls_extremum_free(&e);
+    hj_ls_sum s;
+    assert_int_equal(hj_ls_sum_init(&s, &g, terms, 2, &err), HJ_EINVAL);
+    assert_has(err.msg, "term 1");
+    hj_ls_sum_free(&s);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_extremum", NULL, NULL, cmocka_unit_test(pointwise), cmocka_unit_test(hjb_converges),
-                        cmocka_unit_test(bad_count))
+                        cmocka_unit_test(bad_count), cmocka_unit_test(null_terms))

@@ -296,6 +296,21 @@ static void errors(void **state)
     /* the smallest normal spacing is a grid */
     const double lo0 = 0, normal = 4 * DBL_MIN;
     assert_int_equal(hj_ls_grid_init(&g, 1, &lo0, &normal, &n5, bc, &err), HJ_OK);
+    /* NULL arguments: an error naming the argument, not a segfault */
+    assert_int_equal(hj_ls_grid_init(NULL, 1, mn, mx, &n5, bc, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL");
+    assert_int_equal(hj_ls_grid_init(&g, 1, NULL, mx, &n5, bc, &err), HJ_EINVAL);
+    assert_has(err.msg, "min");
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, NULL, &n5, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init(&g, 1, mn, mx, &n5, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "boundary");
+    assert_int_equal(hj_ls_grid_layout(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_period(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_period(&g, 1, mn, mx, &n5, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_dx(&g, 1, mn, mx, NULL, bc, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_grid_init_dx(NULL, 1, mn, mx, mx, bc, &err), HJ_EINVAL);
+    assert_null(hj_ls_alloc(NULL));
 }
 
 /* Norms of a known field: |x| on [-1, 1]. */
@@ -496,6 +511,66 @@ static void period_grid(void **state)
                      HJ_EINVAL);
 }
 
-HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces),
+/* A width outside 1..HJ_LS_GHOST is taken as the nearest of them by the
+ * face and row fills, as by hj_ls_fill_ghosts_width: a row's fill of
+ * width 6 wrote three values beyond its ghost layers, into the previous
+ * row's ghosts (and a face fill beyond the array). */
+static void ghost_widths_clamped(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[2] = {0, 0}, mx[2] = {1, 1};
+    long N[2] = {9, 7};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_NEUMANN, 0.5, -2}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), *ref = hj_ls_alloc(&g);
+    assert_non_null(a), assert_non_null(ref);
+    const int widths[4] = {-2, 0, 4, 6};
+    for (int q = 0; q < 4; q++) {
+        const int w = widths[q], wc = w < 1 ? 1 : HJ_LS_GHOST;
+        for (size_t k = 0; k < g.total; k++) a[k] = ref[k] = 7;
+        long idx[HJ_LS_MAXDIM];
+        for (size_t r = 0; r < g.rows; r++) {
+            const size_t k = hj_ls_row(&g, r, idx);
+            for (long j = 0; j < g.N[0]; j++) a[k + (size_t)j] = ref[k + (size_t)j] = sin((double)(k + (size_t)j));
+        }
+        const size_t k2 = hj_ls_row(&g, 2, idx);
+        hj_ls_fill_row_ghosts(&g, a, k2, w);
+        hj_ls_fill_row_ghosts(&g, ref, k2, wc);
+        assert_memory_equal(a, ref, sizeof(double) * g.total);
+        hj_ls_fill_ghost_faces(&g, a, w);
+        hj_ls_fill_ghost_faces(&g, ref, wc);
+        assert_memory_equal(a, ref, sizeof(double) * g.total);
+    }
+    hj_ls_free(a), hj_ls_free(ref);
+}
+
+/* hj_ls_unpack puts an array without ghosts (dimension 0 fastest) into the
+ * interior, node by node, ghosts untouched; hj_ls_pack takes it back. */
+static void pack_unpack(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    double mn[3] = {0, 0, 0}, mx[3] = {1, 1, 1};
+    long N[3] = {5, 4, 3};
+    hj_ls_bc bc[3] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_PERIODIC, 0, 0}, {HJ_LS_BC_DIRICHLET, 1, 2}};
+    assert_int_equal(hj_ls_grid_init(&g, 3, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g), packed[60], back[60];
+    for (size_t k = 0; k < g.total; k++) a[k] = -7;
+    for (int q = 0; q < 60; q++) packed[q] = q + 0.5;
+    hj_ls_unpack(&g, a, packed);
+    long i[3];
+    for (i[2] = 0; i[2] < 3; i[2]++)
+        for (i[1] = 0; i[1] < 4; i[1]++)
+            for (i[0] = 0; i[0] < 5; i[0]++)
+                assert_true(a[hj_ls_index(&g, i)] == (double)(i[0] + 5 * (i[1] + 4 * i[2])) + 0.5);
+    long ghost[3] = {-1, 0, 0};
+    assert_true(a[hj_ls_index(&g, ghost)] == -7);
+    hj_ls_pack(&g, back, a);
+    assert_memory_equal(back, packed, sizeof packed);
+    hj_ls_free(a);
+}
+
+HJ_TEST_MAIN("hj_ls_grid", NULL, NULL, cmocka_unit_test(dist_hooks), cmocka_unit_test(ghosts_1d), cmocka_unit_test(ghosts_2d), cmocka_unit_test(ghosts_3d_reference), cmocka_unit_test(ghost_faces), cmocka_unit_test(ghost_widths_clamped), cmocka_unit_test(pack_unpack),
              cmocka_unit_test(coords_and_rows), cmocka_unit_test(errors), cmocka_unit_test(norms), cmocka_unit_test(norms_exact_threads),
              cmocka_unit_test(counts), cmocka_unit_test(layout_64bit), cmocka_unit_test(period_grid))

@@ -130,6 +130,38 @@ static void unsigned_distance_matches_brute_force(void **state)
     hj_ls_free(a);
 }
 
-HJ_TEST_MAIN_ONE_THREAD("hj_ls_helper", NULL, NULL, cmocka_unit_test(mask_constrains),
+/* A NaN in the mask is named with its node, not left to pass into the
+ * state and be reported as a blow-up; a NULL context or mask array is an
+ * error, not a segfault. */
+static void mask_errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 21);
+    double *y = hj_ls_alloc(&g), *psi = hj_ls_alloc(&g);
+    hj_ls_fill(&g, y, circle, NULL);
+    hj_ls_fill(&g, psi, wall, NULL);
+    psi[hj_ls_index(&g, (long[]){5, 7})] = NAN;
+    hj_error err;
+    hj_ls_mask m = {&g, psi, 1};
+    assert_int_equal(hj_ls_post_mask(0.25, y, &m, &err), HJ_ENONFINITE);
+    assert_has(err.msg, "mask is NaN at x = (-0.5, -0.3)");
+    hj_ls_normal nm;
+    hj_ls_normal_init(&nm, &g, HJ_LS_ENO2);
+    nm.speed.value = 1;
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.post = hj_ls_post_mask;
+    o.post_ctx = &m;
+    double span[2] = {0, 0.3};
+    assert_int_equal(hj_ls_ode(2, &g, &nm.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_ENONFINITE);
+    assert_has(err.msg, "mask is NaN");
+    assert_int_equal(hj_ls_post_mask(0, y, NULL, &err), HJ_EINVAL);
+    hj_ls_mask none = {&g, NULL, 1};
+    assert_int_equal(hj_ls_post_mask(0, y, &none, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL");
+    hj_ls_free(y), hj_ls_free(psi);
+}
+
+HJ_TEST_MAIN_ONE_THREAD("hj_ls_helper", NULL, NULL, cmocka_unit_test(mask_constrains), cmocka_unit_test(mask_errors),
                         cmocka_unit_test(signed_distance_iterative),
                         cmocka_unit_test(unsigned_distance_matches_brute_force))

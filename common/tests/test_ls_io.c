@@ -32,6 +32,49 @@ static void dat_file(void **state)
     hj_ls_free(a);
 }
 
+/* A legacy VTK file is line and word oriented: the title is one line and
+ * each SCALARS name one word.  A title with a newline or a name with a
+ * blank wrote a file that VTK readers reject; those, a NULL name list,
+ * field, title or path are refused, and no file is written. */
+static void vtk_file(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const double mn[2] = {0, 0}, mx[2] = {1, 1};
+    const long n[2] = {3, 2};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, n, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    assert_non_null(a);
+    char path[256], text[512];
+    snprintf(path, sizeof path, "%s/f.vtk", hj_test_dir());
+    const char *names[1] = {"phi"}, *blank[1] = {"my phi"}, *empty[1] = {""}, *none[1] = {NULL};
+    const double *f[1] = {a}, *nof[1] = {NULL};
+    hj_error err;
+    assert_int_equal(hj_ls_write_vtk(path, &g, "a\nb", 1, names, f, &err), HJ_EINVAL);
+    assert_has(err.msg, "title");
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, blank, f, &err), HJ_EINVAL);
+    assert_has(err.msg, "my phi");
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, empty, f, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, none, f, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, NULL, f, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, names, nof, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, names, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(path, &g, NULL, 1, names, f, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_vtk(NULL, &g, "t", 1, names, f, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_write_dat(NULL, &g, 1, names, f, &err), HJ_EINVAL);
+    assert_null(fopen(path, "r"));
+    assert_int_equal(hj_ls_write_vtk(path, &g, "t", 1, names, f, &err), HJ_OK);
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
+    fclose(fp);
+    assert_string_equal(text, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\n"
+                              "ORIGIN 0 0 0\nSPACING 0.5 1 1\nPOINT_DATA 6\nSCALARS phi double 1\nLOOKUP_TABLE default\n"
+                              "0\n0\n0\n0\n0\n0\n");
+    hj_ls_free(a);
+}
+
 /* A linear field is reproduced exactly by trilinear interpolation; with a
  * periodic dimension the lattice reaches the period and wraps. */
 static void voxels(void **state)
@@ -76,6 +119,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(dat_file, hj_test_mkdir, hj_test_rmdir),
         cmocka_unit_test_setup_teardown(voxels, hj_test_mkdir, hj_test_rmdir),
+        cmocka_unit_test_setup_teardown(vtk_file, hj_test_mkdir, hj_test_rmdir),
     };
     return cmocka_run_group_tests_name("hj_ls_io", tests, NULL, NULL);
 }

@@ -317,6 +317,23 @@ static void measure_nan(void **state)
     hj_ls_free(phi);
 }
 
+/* NULL arguments of the measures: an error, not a segfault. */
+static void measure_null(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 5, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *phi = hj_ls_alloc(&g), m, r;
+    hj_error err;
+    assert_int_equal(hj_ls_measure(&g, NULL, &m, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL");
+    assert_int_equal(hj_ls_measure(&g, phi, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_measure(NULL, phi, &m, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_measure_periodic(&g, NULL, 1, &m, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_measure_radius(&g, phi, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_measure_radius(&g, NULL, &r, &err), HJ_EINVAL);
+    hj_ls_free(phi);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -327,6 +344,7 @@ int main(void)
         cmocka_unit_test(periodic_and_radius),
         cmocka_unit_test(measure_exact_threads),
         cmocka_unit_test(measure_nan),
+        cmocka_unit_test(measure_null),
     };
     return cmocka_run_group_tests_name("hj_ls_measure", tests, NULL, NULL);
 }

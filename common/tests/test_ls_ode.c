@@ -500,7 +500,101 @@ static void convection_fused_bitwise(void **state)
     hj_ls_free(a), hj_ls_free(b);
 }
 
+/* A failing output or PostTimestep callback: its code is returned, with
+ * its own message, or one that says which callback failed and when (an
+ * empty message before). */
+static int failing_output(int k, double t, const double *y, void *ctx, hj_error *err)
+{
+    (void)k, (void)t, (void)y, (void)ctx, (void)err;
+    return HJ_EIO;
+}
+static int failing_post(double t, double *y, void *ctx, hj_error *err)
+{
+    (void)t, (void)y;
+    return ctx ? hj_error_set(err, 42, "my post failed") : 42;
+}
+static void callback_errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(8);
+    const_term c = {{const_eval}, &g, 0.01, 0};
+    double *y = hj_ls_alloc(&g), span[3] = {0, 0.1, 0.2};
+    hj_error err;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, NULL, failing_output, NULL, NULL, &err), HJ_EIO);
+    assert_int_equal(err.code, HJ_EIO);
+    assert_has(err.msg, "the output callback returned 3");
+    assert_has(err.msg, "t = 0.1");
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    o.post = failing_post;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
+    assert_has(err.msg, "the PostTimestep callback returned 42");
+    o.post_ctx = &o;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
+    assert_string_equal(err.msg, "my post failed");
+    hj_ls_free(y);
+}
+
+/* A term made on one grid and integrated on another: the term's stencils
+ * would index the integrator's arrays with the other grid's strides (out
+ * of bounds on a larger grid, silently wrong on a smaller one), so it is
+ * refused before any step, as is one wrapped in a restriction, a sum or
+ * an extremum; a copy of the same grid is the same grid.  NULL
+ * arguments are refused too. */
+static void term_on_another_grid(void **state)
+{
+    (void)state;
+    hj_ls_grid g = fused_grid(), small, big;
+    double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    long Ns[2] = {21, 21}, Nb[2] = {81, 81};
+    hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&small, 2, mn, mx, Ns, bc, NULL), HJ_OK);
+    assert_int_equal(hj_ls_grid_init(&big, 2, mn, mx, Nb, bc, NULL), HJ_OK);
+    double *y = hj_ls_alloc(&g), span[2] = {0, 0.1};
+    assert_non_null(y);
+    hj_error err;
+    const hj_ls_grid *others[2] = {&small, &big};
+    for (int q = 0; q < 2; q++) {
+        hj_ls_convection c;
+        hj_ls_convection_init(&c, others[q], HJ_LS_ENO2);
+        c.velocity[0] = 1;
+        assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_has(err.msg, "another grid");
+        hj_ls_restrict r;
+        hj_ls_restrict_init(&r, &g, &c.base, 0);
+        assert_int_equal(hj_ls_ode(2, &g, &r.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_has(err.msg, "another grid");
+        hj_ls_curvature_term k;
+        hj_ls_curvature_term_init(&k, &g);
+        const hj_ls_term *terms[2] = {&k.base, &c.base};
+        hj_ls_sum s;
+        assert_int_equal(hj_ls_sum_init(&s, &g, terms, 2, &err), HJ_OK);
+        assert_int_equal(hj_ls_ode(2, &g, &s.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_has(err.msg, "another grid");
+        hj_ls_sum_free(&s);
+        hj_ls_extremum x;
+        assert_int_equal(hj_ls_extremum_init(&x, &g, terms, 2, 0, &err), HJ_OK);
+        assert_int_equal(hj_ls_ode(2, &g, &x.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+        assert_has(err.msg, "another grid");
+        hj_ls_extremum_free(&x);
+        assert_true(y[g.offset] == 0);
+    }
+    /* the same layout in another struct (a copy): accepted */
+    hj_ls_grid copy = g;
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &copy, HJ_LS_ENO2);
+    c.velocity[0] = 1;
+    assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_OK);
+    /* NULL arguments */
+    assert_int_equal(hj_ls_ode(2, NULL, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_ode(2, &g, NULL, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_ode(2, &g, &c.base, NULL, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, NULL, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL");
+    hj_ls_free(y);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(tiny_span_steps), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
-                        cmocka_unit_test(convection_fused_bitwise))
+                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(callback_errors))

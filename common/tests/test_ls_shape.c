@@ -209,6 +209,29 @@ static void nonfinite_parameters(void **state)
     hj_ls_free(a);
 }
 
+/* NULL arguments: an error naming the argument, not a segfault. */
+static void null_arguments(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    const double mn[2] = {-1, -1}, mx[2] = {1, 1}, c[2] = {0, 0}, w[2] = {1, 1};
+    const long N[2] = {5, 5};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    assert_int_equal(hj_ls_grid_init(&g, 2, mn, mx, N, bc, NULL), HJ_OK);
+    double *a = hj_ls_alloc(&g);
+    hj_error err;
+    assert_int_equal(hj_ls_shape_sphere(&g, c, 0.5, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "output array");
+    assert_int_equal(hj_ls_shape_sphere(NULL, c, 0.5, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_sphere(&g, NULL, 0.5, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_cylinder(&g, NULL, 1, c, 0.5, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_rectangle_corners(&g, NULL, w, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_rectangle_center(&g, c, NULL, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_hyperplane(&g, w, NULL, a, &err), HJ_EINVAL);
+    assert_int_equal(hj_ls_shape_star(&g, NULL, a, &err), HJ_EINVAL);
+    hj_ls_free(a);
+}
+
 HJ_TEST_MAIN("hj_ls_shape", NULL, NULL, cmocka_unit_test(shapes_1d), cmocka_unit_test(shapes_2d),
              cmocka_unit_test(shapes_3d), cmocka_unit_test(errors), cmocka_unit_test(star),
-             cmocka_unit_test(nonfinite_parameters))
+             cmocka_unit_test(nonfinite_parameters), cmocka_unit_test(null_arguments))

@@ -1320,6 +1320,43 @@ static void dissipation_names(void **state)
     assert_int_equal(d, 5);
 }
 
+/* A non-finite convection velocity is named with its component and node
+ * (the row pass sees only a non-finite CFL bound; the message had the
+ * time alone): from a callback, an array and a constant, in 2-D and 3-D. */
+static void nan_velocity_row(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t, (void)ctx;
+    for (long j = 0; j < n; j++) v[j] = d == 1 && x[0] + (double)j * dx0 > 0.45 && x[1] > 0.45 ? NAN : 1.0;
+}
+static void convection_names_bad_velocity(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        hj_ls_grid g = hj_test_grid(dim, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+        double *y = hj_ls_alloc(&g), *ydot = hj_ls_alloc(&g), *vx = hj_ls_alloc(&g), b;
+        for (size_t k = 0; k < g.total; k++) y[k] = (double)(k % 7), vx[k] = 0.5;
+        hj_error err;
+        for (int scheme = HJ_LS_UPWIND_FIRST; scheme < HJ_LS_NSCHEMES; scheme++) {
+            hj_ls_convection c;
+            hj_ls_convection_init(&c, &g, scheme);
+            c.velocity_fn = nan_velocity_row;
+            assert_int_equal(c.base.eval(&c.base, 0.5, y, ydot, &b, &err), HJ_ENONFINITE);
+            assert_has(err.msg, dim == 2 ? "v_1 = nan at x = (0.6, 0.6), t = 0.5" : "v_1 = nan at x = (0.6, 0.6, -1)");
+            hj_ls_convection_init(&c, &g, scheme);
+            vx[hj_ls_index(&g, (long[]){2, 3, 1})] = INFINITY;
+            c.velocity_array[0] = vx;
+            c.velocity[1] = 1;
+            assert_int_equal(c.base.eval(&c.base, 0, y, ydot, &b, &err), HJ_ENONFINITE);
+            assert_has(err.msg, dim == 2 ? "v_0 = inf at x = (-0.6, -0.4)" : "v_0 = inf at x = (-0.6, -0.4, -0.8)");
+            vx[hj_ls_index(&g, (long[]){2, 3, 1})] = 0.5;
+            c.velocity[1] = NAN;
+            assert_int_equal(c.base.eval(&c.base, 0, y, ydot, &b, &err), HJ_ENONFINITE);
+            assert_has(err.msg, "v_1 = nan at x = (-1, -1");
+        }
+        hj_ls_free(y), hj_ls_free(ydot), hj_ls_free(vx);
+    }
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_orders),
                         cmocka_unit_test(convection_equals_upwind_sum),
                         cmocka_unit_test(convection_2d_equals_upwind_sum),
@@ -1329,6 +1366,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
                         cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
+                        cmocka_unit_test(convection_names_bad_velocity),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
                         cmocka_unit_test(callback_errors_rows), cmocka_unit_test(lax_friedrichs_ham_partial_row),
                         cmocka_unit_test(lax_friedrichs_row_blocks),
