@@ -958,20 +958,15 @@ static void step_does_not_advance(void **state)
 static void tiny_horizon_steps(void **state)
 {
     (void)state;
-    double a = 1, r = 0.5;
-    hj_reach_dyn s;
-    hj_reach_dyn_init(&s, 1, f1, &a);
-    hj_ls_grid g = grid1(41);
-    hj_reach_problem pb;
-    hj_reach_problem_init(&pb, &g, &s);
-    pb.target.fn = interval, pb.target.ctx = &r;
-    pb.horizon = 1e-20;
-    double *phi = hj_ls_alloc(&g);
+    line1 L;
+    line1_init(&L, 1, 1, 41);
+    L.pb.horizon = 1e-20;
+    double *phi = hj_ls_alloc(&L.g);
     for (int general = 0; general <= 1; general++) {
         hj_error err;
         hj_reach_stats st;
-        pb.general = general;
-        assert_int_equal(hj_reach_solve(&pb, phi, NULL, &st, &err), HJ_OK);
+        L.pb.general = general;
+        assert_int_equal(hj_reach_solve(&L.pb, phi, NULL, &st, &err), HJ_OK);
         assert_int_equal(st.steps, 1);
         assert_true(st.tau == 1e-20);
     }
