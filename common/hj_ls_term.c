@@ -2043,16 +2043,33 @@ const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
 
 /* Whether a and b lay out and place their nodes alike: the same
  * dimension, node counts, first node, spacing, boundary conditions and
- * (a block of a distributed grid) global origin. */
-static int same_grid(const hj_ls_grid *a, const hj_ls_grid *b)
+ * (a block of a distributed grid) global origin.  A condition's lo and hi
+ * count only where they are read (Dirichlet, Neumann): a periodic or
+ * extrapolating condition's are free.  NULL when alike, else what
+ * differs first, into buf. */
+static const char *grid_difference(const hj_ls_grid *a, const hj_ls_grid *b, char *buf, size_t size)
 {
-    if (a == b) return 1;
-    if (a->dim != b->dim) return 0;
-    for (int d = 0; d < a->dim; d++)
-        if (a->N[d] != b->N[d] || a->min[d] != b->min[d] || a->dx[d] != b->dx[d] || a->bc[d].type != b->bc[d].type ||
-            a->bc[d].lo != b->bc[d].lo || a->bc[d].hi != b->bc[d].hi || a->origin[d] != b->origin[d])
-            return 0;
-    return 1;
+    if (a == b) return NULL;
+    if (a->dim != b->dim) {
+        snprintf(buf, size, "the dimension");
+        return buf;
+    }
+    for (int d = 0; d < a->dim; d++) {
+        const int t = a->bc[d].type, values = t == HJ_LS_BC_DIRICHLET || t == HJ_LS_BC_NEUMANN;
+        const char *what = a->N[d] != b->N[d]           ? "node count"
+                           : a->min[d] != b->min[d]     ? "first node"
+                           : a->dx[d] != b->dx[d]       ? "spacing"
+                           : t != b->bc[d].type         ? "boundary condition"
+                           : values && (a->bc[d].lo != b->bc[d].lo || a->bc[d].hi != b->bc[d].hi)
+                               ? "boundary condition"
+                           : a->origin[d] != b->origin[d] ? "block origin"
+                                                          : NULL;
+        if (what) {
+            snprintf(buf, size, "the %s of dimension %d", what, d);
+            return buf;
+        }
+    }
+    return NULL;
 }
 
 static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj_error *err)
@@ -2060,7 +2077,9 @@ static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj
     if (!term || !term->eval) return hj_error_set(err, HJ_EINVAL, "a term is NULL or has no eval function");
     if (depth > 64) return hj_error_set(err, HJ_EINVAL, "terms nested more than 64 deep (a term that wraps itself?)");
     const hj_ls_grid *tg = hj_ls_term_grid(term);
-    if (tg && !same_grid(tg, g)) {
+    char why[64];
+    const char *diff = tg ? grid_difference(tg, g, why, sizeof why) : NULL;
+    if (diff) {
         char a[160] = "", b[160] = "";
         for (int d = 0; d < tg->dim; d++)
             snprintf(a + strlen(a), sizeof a - strlen(a), "%s%ld", d ? " x " : "", tg->N[d]);
@@ -2068,8 +2087,8 @@ static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj
             snprintf(b + strlen(b), sizeof b - strlen(b), "%s%ld", d ? " x " : "", g->N[d]);
         return hj_error_set(err, HJ_EINVAL,
                             "a term was made on another grid (%d-D, %s nodes) than the one it is evaluated on (%d-D, "
-                            "%s nodes, or a different box, spacing or boundary condition): init the term with this grid",
-                            tg->dim, a, g->dim, b);
+                            "%s nodes; %s differs): init the term with this grid",
+                            tg->dim, a, g->dim, b, diff);
     }
     const hj_ls_term_fn f = term->eval;
     if (f == restrict_eval) return check_grid(((const hj_ls_restrict *)term)->inner, g, depth + 1, err);

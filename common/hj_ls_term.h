@@ -372,9 +372,11 @@ const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term);
 /* HJ_EINVAL, naming both grids' sizes, when term, or a term it wraps (a
  * restricted update's inner term, the terms of a sum or an extremum), was
  * made on a grid whose layout or placement differs from g's (dimension,
- * node counts, first node, spacing, boundary conditions): its stencils
- * would index arrays on g with the other grid's strides.  A copy of the
- * same grid is the same grid.  A NULL term or eval, or a NULL g, is
+ * node counts, first node, spacing, boundary conditions; the message
+ * names the first that differs): its stencils would index arrays on g
+ * with the other grid's strides.  A copy of the same grid is the same
+ * grid, and so is one whose periodic or extrapolating conditions carry
+ * other lo and hi values (read for Dirichlet and Neumann only).  A NULL term or eval, or a NULL g, is
  * HJ_EINVAL too.  hj_ls_ode runs this check before any step. */
 int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err);
 

@@ -594,7 +594,44 @@ static void term_on_another_grid(void **state)
     hj_ls_free(y);
 }
 
+/* Grids that place their nodes alike are the same grid, whatever their
+ * boundary conditions' unused values: lo and hi are read only for
+ * Dirichlet and Neumann conditions, so a periodic or extrapolating
+ * condition's lo and hi (left uninitialised by a caller, or set in
+ * another way) do not make another grid.  A different Dirichlet value or
+ * spacing does, and the message names what differs. */
+static void term_grid_unused_bc_values(void **state)
+{
+    (void)state;
+    double mn[2] = {-1, -1}, mx[2] = {1, 1};
+    long N[2] = {21, 21};
+    const int types[3] = {HJ_LS_BC_PERIODIC, HJ_LS_BC_EXTRAP_AWAY, HJ_LS_BC_EXTRAP_TOWARD};
+    hj_error err;
+    for (int q = 0; q < 3; q++) {
+        hj_ls_bc bc0[2] = {{types[q], 0, 0}, {types[q], 0, 0}}, bc1[2] = {{types[q], 7, -3}, {types[q], 0.5, 2}};
+        hj_ls_grid g0, g1;
+        assert_int_equal(hj_ls_grid_init(&g0, 2, mn, mx, N, bc0, NULL), HJ_OK);
+        assert_int_equal(hj_ls_grid_init(&g1, 2, mn, mx, N, bc1, NULL), HJ_OK);
+        hj_ls_convection c;
+        hj_ls_convection_init(&c, &g1, HJ_LS_ENO2);
+        assert_int_equal(hj_ls_term_check_grid(&c.base, &g0, &err), HJ_OK);
+    }
+    hj_ls_bc d0[2] = {{HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 0}};
+    hj_ls_bc d1[2] = {{HJ_LS_BC_DIRICHLET, 0, 0}, {HJ_LS_BC_DIRICHLET, 0, 1}};
+    hj_ls_grid g0, g1, g2;
+    assert_int_equal(hj_ls_grid_init(&g0, 2, mn, mx, N, d0, NULL), HJ_OK);
+    assert_int_equal(hj_ls_grid_init(&g1, 2, mn, mx, N, d1, NULL), HJ_OK);
+    assert_int_equal(hj_ls_grid_init(&g2, 2, mn, (double[]){1, 1.5}, N, d0, NULL), HJ_OK);
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g1, HJ_LS_ENO2);
+    assert_int_equal(hj_ls_term_check_grid(&c.base, &g0, &err), HJ_EINVAL);
+    assert_has(err.msg, "boundary condition of dimension 1");
+    hj_ls_convection_init(&c, &g2, HJ_LS_ENO2);
+    assert_int_equal(hj_ls_term_check_grid(&c.base, &g0, &err), HJ_EINVAL);
+    assert_has(err.msg, "spacing of dimension 1");
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(tiny_span_steps), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
-                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(callback_errors))
+                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(term_grid_unused_bc_values), cmocka_unit_test(callback_errors))
