@@ -8,6 +8,21 @@
 #include "hj_ls_ode.h"
 #include "hj_ls_term.h"
 
+/* The NaNs among q[0..n-1], counted in eight lanes: one flag or count
+ * (a chain of dependent operations, not vectorised with an int flag)
+ * made the mask's pass 2.3 times as slow as the masking alone (201^2
+ * nodes: 26.6 against 11.7 us per call, 15 us of a 175 us ENO2 step). */
+static double nan_count(const double *q, long n)
+{
+    double c[8] = {0, 0, 0, 0, 0, 0, 0, 0}, s = 0;
+    long j = 0;
+    for (; j + 8 <= n; j += 8)
+        for (int u = 0; u < 8; u++) c[u] += q[j + u] != q[j + u] ? 1.0 : 0.0;
+    for (; j < n; j++) s += q[j] != q[j] ? 1.0 : 0.0;
+    for (int u = 0; u < 8; u++) s += c[u];
+    return s;
+}
+
 int hj_ls_post_mask(double t, double *y, void *ctx, hj_error *err)
 {
     const hj_ls_mask *m = ctx;
@@ -22,9 +37,7 @@ int hj_ls_post_mask(double t, double *y, void *ctx, hj_error *err)
         const double *q = m->mask + k;
         /* a NaN in the mask would pass into the state (the comparison
          * takes it), and be reported only as a blow-up of the state */
-        int nan = 0;
-        for (long j = 0; j < g->N[0]; j++) nan |= q[j] != q[j];
-        if (nan) {
+        if (nan_count(q, g->N[0]) > 0) {
             long j = 0;
             while (q[j] == q[j]) j++;
             char pos[256];

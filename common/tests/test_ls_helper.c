@@ -160,6 +160,26 @@ static void mask_errors(void **state)
     assert_int_equal(hj_ls_post_mask(0, y, &none, &err), HJ_EINVAL);
     assert_has(err.msg, "NULL");
     hj_ls_free(y), hj_ls_free(psi);
+    /* every position of a row: the NaNs are counted in groups of eight
+     * and a tail (rows of 5, 8 and 21 nodes, keep_max and keep_min); a
+     * row with a NaN is left as it was */
+    const long ns[3] = {5, 8, 21};
+    for (int q = 0; q < 3; q++)
+        for (long j = 0; j < ns[q]; j++)
+            for (int keep = 0; keep < 2; keep++) {
+                hj_ls_grid h = grid(1, ns[q]);
+                double *a = hj_ls_alloc(&h), *b = hj_ls_alloc(&h);
+                for (long i = 0; i < ns[q]; i++) a[h.offset + (size_t)i] = (double)i, b[h.offset + (size_t)i] = 2.0;
+                b[h.offset + (size_t)j] = NAN;
+                hj_ls_mask mh = {&h, b, keep};
+                assert_int_equal(hj_ls_post_mask(0, a, &mh, &err), HJ_ENONFINITE);
+                for (long i = 0; i < ns[q]; i++) assert_true(a[h.offset + (size_t)i] == (double)i);
+                b[h.offset + (size_t)j] = 2.0;
+                assert_int_equal(hj_ls_post_mask(0, a, &mh, &err), HJ_OK);
+                for (long i = 0; i < ns[q]; i++)
+                    assert_true(a[h.offset + (size_t)i] == (keep ? fmax((double)i, 2.0) : fmin((double)i, 2.0)));
+                hj_ls_free(a), hj_ls_free(b);
+            }
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_helper", NULL, NULL, cmocka_unit_test(mask_constrains), cmocka_unit_test(mask_errors),
