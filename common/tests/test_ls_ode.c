@@ -11,6 +11,7 @@
 #endif
 
 #include "hj_ls_ode.h"
+#include "hj_math.h"
 #include "hj_ls_term.h"
 
 static hj_ls_grid grid1(long n)
@@ -629,6 +630,23 @@ static void term_grid_unused_bc_values(void **state)
     hj_ls_convection_init(&c, &g2, HJ_LS_ENO2);
     assert_int_equal(hj_ls_term_check_grid(&c.base, &g0, &err), HJ_EINVAL);
     assert_has(err.msg, "spacing of dimension 1");
+    /* a periodic grid from hj_ls_grid_init_period and the same nodes from
+     * hj_ls_grid_init on its max: spacings (max - min) / N and
+     * (max' - min) / (N - 1), apart by an ulp for a third of the N */
+    hj_ls_bc per[1] = {{HJ_LS_BC_PERIODIC, 0, 0}};
+    int differ = 0;
+    for (long n = 10; n <= 400; n++) {
+        hj_ls_grid a, b;
+        assert_int_equal(hj_ls_grid_init_period(&a, 1, (double[]){0}, (double[]){2 * HJ_PI}, &n, per, NULL), HJ_OK);
+        assert_int_equal(hj_ls_grid_init(&b, 1, (double[]){0}, a.max, &n, per, NULL), HJ_OK);
+        differ += a.dx[0] != b.dx[0];
+        hj_ls_convection_init(&c, &a, HJ_LS_ENO2);
+        if (hj_ls_term_check_grid(&c.base, &b, &err)) fail_msg("N = %ld: %s", n, err.msg);
+        /* a spacing apart by more than rounding is another grid */
+        b.dx[0] *= 1 + 1e-12;
+        assert_int_equal(hj_ls_term_check_grid(&c.base, &b, &err), HJ_EINVAL);
+    }
+    assert_true(differ > 100);
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
