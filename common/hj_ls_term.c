@@ -713,9 +713,9 @@ static const double *convection_vcache(hj_ls_convection *c, double t)
     return c->velocity_cache = v;
 }
 
-/* G into ydot (stage NULL) or the fused stage (ydot NULL). */
 static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err);
 
+/* G into ydot (stage NULL) or the fused stage (ydot NULL). */
 static int convection_pass(const hj_ls_convection *c, double t, double *y, double *ydot, hj_ls_stage *stage,
                            double *bound, hj_error *err)
 {
