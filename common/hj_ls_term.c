@@ -1934,6 +1934,7 @@ int hj_ls_sum_init(hj_ls_sum *c, const hj_ls_grid *g, const hj_ls_term *const *t
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "a sum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!g) return hj_error_set(err, HJ_EINVAL, "a sum: the grid is NULL");
     if (!terms) return hj_error_set(err, HJ_EINVAL, "a sum: the term list is NULL");
     for (int i = 0; i < n; i++)
         if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "a sum: term %d is NULL or has no eval", i);
@@ -1985,6 +1986,7 @@ int hj_ls_extremum_init(hj_ls_extremum *c, const hj_ls_grid *g, const hj_ls_term
 {
     memset(c, 0, sizeof *c);
     if (n < 1 || n > HJ_LS_SUM_MAX) return hj_error_set(err, HJ_EINVAL, "an extremum needs 1..%d terms", HJ_LS_SUM_MAX);
+    if (!g) return hj_error_set(err, HJ_EINVAL, "an extremum: the grid is NULL");
     if (!terms) return hj_error_set(err, HJ_EINVAL, "an extremum: the term list is NULL");
     for (int i = 0; i < n; i++)
         if (!terms[i] || !terms[i]->eval) return hj_error_set(err, HJ_EINVAL, "an extremum: term %d is NULL or has no eval", i);
@@ -2023,9 +2025,10 @@ int hj_ls_dissipation_parse(const char *s, int *diss, hj_error *err)
 
 /* ---- the grid a term was made on -------------------------------------- */
 
-const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
+/* The grid of a term of this library; *ours = 0 for any other eval. */
+static const hj_ls_grid *term_grid(const hj_ls_term *term, int *ours)
 {
-    if (!term) return NULL;
+    *ours = 1;
     const hj_ls_term_fn f = term->eval;
     if (f == convection_eval) return ((const hj_ls_convection *)term)->grid;
     if (f == normal_eval) return ((const hj_ls_normal *)term)->grid;
@@ -2038,7 +2041,14 @@ const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
     if (f == restrict_eval) return ((const hj_ls_restrict *)term)->grid;
     if (f == sum_eval) return ((const hj_ls_sum *)term)->grid;
     if (f == extremum_eval) return ((const hj_ls_extremum *)term)->grid;
+    *ours = 0;
     return NULL;
+}
+
+const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term)
+{
+    int ours;
+    return term ? term_grid(term, &ours) : NULL;
 }
 
 /* Whether a and b lay out and place their nodes alike: the same
@@ -2089,7 +2099,10 @@ static int check_grid(const hj_ls_term *term, const hj_ls_grid *g, int depth, hj
 {
     if (!term || !term->eval) return hj_error_set(err, HJ_EINVAL, "a term is NULL or has no eval function");
     if (depth > 64) return hj_error_set(err, HJ_EINVAL, "terms nested more than 64 deep (a term that wraps itself?)");
-    const hj_ls_grid *tg = hj_ls_term_grid(term);
+    int ours;
+    const hj_ls_grid *tg = term_grid(term, &ours);
+    /* a void *_init given a NULL grid: its eval would dereference it */
+    if (ours && !tg) return hj_error_set(err, HJ_EINVAL, "a term was initialised with a NULL grid");
     char why[64];
     const char *diff = tg ? grid_difference(tg, g, why, sizeof why) : NULL;
     if (diff) {

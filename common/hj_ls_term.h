@@ -378,8 +378,10 @@ const hj_ls_grid *hj_ls_term_grid(const hj_ls_term *term);
  * grid, and so is one whose periodic or extrapolating conditions carry
  * other lo and hi values (read for Dirichlet and Neumann only) or whose
  * first node and spacing differ by rounding (8 ulps: a periodic grid of
- * hj_ls_grid_init_period and the same nodes by hj_ls_grid_init).  A NULL term or eval, or a NULL g, is
- * HJ_EINVAL too.  hj_ls_ode runs this check before any step. */
+ * hj_ls_grid_init_period and the same nodes by hj_ls_grid_init).  A NULL
+ * term or eval, or a NULL g, is HJ_EINVAL too, and so is a term of this
+ * library whose (void) init was given a NULL grid.  hj_ls_ode runs this
+ * check before any step. */
 int hj_ls_term_check_grid(const hj_ls_term *term, const hj_ls_grid *g, hj_error *err);
 
 #ifdef __cplusplus

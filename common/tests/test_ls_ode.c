@@ -649,7 +649,34 @@ static void term_grid_unused_bc_values(void **state)
     assert_true(differ > 100);
 }
 
+/* A term whose (void) init was given a NULL grid is refused by hj_ls_ode
+ * before any step (its eval dereferenced the grid: a segfault), as is a
+ * sum or an extremum on a NULL grid by its init. */
+static void term_on_null_grid(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid1(8);
+    double *y = hj_ls_alloc(&g), span[2] = {0, 0.1};
+    hj_error err;
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, NULL, HJ_LS_ENO2);
+    c.velocity[0] = 1;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "NULL grid");
+    hj_ls_restrict r;
+    hj_ls_restrict_init(&r, &g, &c.base, 0);
+    assert_int_equal(hj_ls_ode(1, &g, &r.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    hj_ls_convection_init(&c, &g, HJ_LS_ENO2);
+    const hj_ls_term *terms[1] = {&c.base};
+    hj_ls_sum s;
+    assert_int_equal(hj_ls_sum_init(&s, NULL, terms, 1, &err), HJ_EINVAL);
+    assert_has(err.msg, "grid is NULL");
+    hj_ls_extremum x;
+    assert_int_equal(hj_ls_extremum_init(&x, NULL, terms, 1, 0, &err), HJ_EINVAL);
+    hj_ls_free(y);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(tiny_span_steps), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
-                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(term_grid_unused_bc_values), cmocka_unit_test(callback_errors))
+                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(term_grid_unused_bc_values), cmocka_unit_test(term_on_null_grid), cmocka_unit_test(callback_errors))
