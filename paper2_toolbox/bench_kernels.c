@@ -70,8 +70,9 @@ a core, CPU time much less, so before/after ratios are taken from it;
 - the roofline: min(peak flops, bandwidth x flops / byte), with the
   bandwidth of a STREAM triad (a[i] = b[i] + s c[i], 24 bytes per
   element, wall time) over three arrays of the case's grid size
-  (`triad_ws_GBs`, 1 and 2 threads: the level of the memory hierarchy the
-  case's state lives in) and the peak of a register-resident loop of 16
+  (`triad_ws_GBs`, 1 and 2 threads: three arrays as large together as
+  the case's state, stage arrays and cached velocity rows, so the level
+  of the memory hierarchy they live in) and the peak of a register-resident loop of 16
   independent multiply-add chains of 8 doubles (throughput bound: see
   madd), each thread's rate over its own CPU time, summed; both measured
   here with 1 and 2 threads.  Beside it the theoretical peak of one core:
@@ -80,7 +81,7 @@ a core, CPU time much less, so before/after ratios are taken from it;
   dependent integer adds (the clock in /proc/cpuinfo is a VM's guess).
   The triad over 3 x 32 MB (main memory) is printed in the header line.
   Until 27 November 2026 the roofline took that one for every case: the
-  201^2 cases' arrays (323 KB each) live in the last level cache, whose
+  201^2 cases' arrays (343 KB each with the ghost layers) live in the last level cache, whose
   triad runs 4 times as fast here (84-96 against 21.4 GB/s, Zen 4), so
   convection2d medium showed 1.03 of a memory roof it is not under (0.42
   of the cache's); removing its velocity rows' reads (each distinct row
@@ -200,10 +201,11 @@ static double triad_gbs(double *a, const double *b, const double *c, long n, lon
     return best;
 }
 
-/* The triad on three arrays of the case's grid size (the level of the
- * memory hierarchy its state lives in: a 201^2 grid's arrays fit in the
- * last level cache, whose bandwidth is several times the 32 MB triad's),
- * first touched by the threads that use them; NAN without memory. */
+/* The triad on three arrays of n doubles together as large as the case's
+ * working set (the level of the memory hierarchy its state lives in: a
+ * 201^2 grid's arrays fit in the last level cache, whose bandwidth is
+ * several times the 32 MB triad's), first touched by the threads that use
+ * them; NAN without memory. */
 static double triad_ws_gbs(size_t n)
 {
     double *a = malloc(sizeof(double) * n), *b = malloc(sizeof(double) * n), *c = malloc(sizeof(double) * n);
@@ -515,8 +517,9 @@ int main(int argc, char **argv)
             "# frac = achieved flop rate / roofline; ref_s = ToolboxLS under Octave on one core of this machine kind\n"
             "# (convection3d: MATLAB 2004, another machine); ratio = ref_s / s_1thread; cpu_s_1thread = the process's CPU\n"
             "# seconds of the best one-thread run (less moved by the machine's load than wall time); frac_roof_cpu1 = frac\n"
-            "# with cpu_s_1thread; the roofline's bandwidth is triad_ws_GBs, a triad over 3 arrays of the case's grid\n"
-            "# size (1 and 2 threads), the level of the memory hierarchy the state lives in; load average %.2f at start\n"
+            "# with cpu_s_1thread; the roofline's bandwidth is triad_ws_GBs, a triad over 3 arrays as large together as\n"
+            "# the case's working set (1 and 2 threads), the level of the memory hierarchy it lives in; load average %.2f\n"
+            "# at start\n"
             "case\tacc\tnodes\tsteps\tstages\ts_1thread\ts_2threads\tspeedup\tmnode_stage_per_s_1\tmnode_stage_per_s_2\t"
             "bytes_per_ns\tflops_per_ns\tfrac_roof_1\tfrac_roof_2\tref_s\tratio_1thread\tbitwise_same\tcpu_s_1thread\t"
             "frac_roof_cpu1\tphi_hash\ttriad_ws_GBs_1\ttriad_ws_GBs_2\n",
@@ -531,7 +534,11 @@ int main(int argc, char **argv)
         double secs[2] = {1e300, maxth > 1 ? 1e300 : NAN}, cpu1 = 1e300, bws[2] = {NAN, NAN};
         for (int th = 0; th < maxth; th++) {
             set_threads(th + 1);
-            bws[th] = triad_ws_gbs(s.g.total);
+            /* the working set: the state, the stage's input and output
+             * (3 arrays; air3D's order 1 too), and convection's cached
+             * velocity rows (dim arrays) */
+            const size_t arrays = 3 + (c->kind == AIR3D ? 0 : (size_t)s.g.dim);
+            bws[th] = triad_ws_gbs(s.g.total * arrays / 3);
         }
         hj_ls_ode_stats st = {0};
         int same = 1;
