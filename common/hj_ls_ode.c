@@ -231,8 +231,8 @@ static double step_of(double b, double left, const hj_ls_ode_opts *o, int *last)
 
 double hj_ls_ode_span_small(double t0, double tk)
 {
-    const double a = fabs(t0) > fabs(tk) ? fabs(t0) : fabs(tk);
-    return 100 * DBL_EPSILON * a;
+    const double roundoff = 100 * DBL_EPSILON * (fabs(tk) > 1 ? fabs(tk) : 1), part = 1e-6 * (tk - t0);
+    return part < roundoff ? part : roundoff;
 }
 
 int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const double *tspan, int ntspan, double *y,
