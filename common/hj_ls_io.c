@@ -9,8 +9,9 @@
 static const char *axis_name[3] = {"x", "y", "z"};
 
 /* The fields (nfields >= 0, none NULL) and, when names is given (needed:
- * VTK), one name per field: a non-empty word for VTK (its SCALARS line
- * reads the name up to a blank), one line for a gnuplot header. */
+ * VTK), one name per field, a non-empty word: VTK's SCALARS line reads
+ * the name up to a blank, and a gnuplot header's columns are its words
+ * (a blank in a name would shift every later column's label). */
 static int check_fields(const char *what, const hj_ls_grid *g, int nfields, const char *const *names,
                         const double *const *fields, int need_names, hj_error *err)
 {
@@ -25,7 +26,7 @@ static int check_fields(const char *what, const hj_ls_grid *g, int nfields, cons
         if (!need_names && !nm) continue; /* a gnuplot header names it by its column */
         if (!nm || !nm[0]) return hj_error_set(err, HJ_EINVAL, "%s: field %d has no name", what, f);
         for (const char *c = nm; *c; c++)
-            if (*c == '\n' || *c == '\r' || (need_names && (*c == ' ' || *c == '\t'))) {
+            if (*c == '\n' || *c == '\r' || *c == ' ' || *c == '\t') {
                 char q[80];
                 return hj_error_set(err, HJ_EINVAL, "%s: field name \"%s\" must be one word without blanks",
                                     what, hj_error_quote(nm, strlen(nm), q, sizeof q));
@@ -42,7 +43,10 @@ int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *co
     if (rc) return rc;
     if (names) {
         fputc('#', fp);
-        for (int d = 0; d < g->dim; d++) fprintf(fp, " %s", d < 3 ? axis_name[d] : "x_d");
+        for (int d = 0; d < g->dim; d++) {
+            if (d < 3) fprintf(fp, " %s", axis_name[d]);
+            else fprintf(fp, " x%d", d + 1); /* x4, x5, x6: the dimension's number */
+        }
         for (int f = 0; f < nfields; f++) {
             if (names[f]) fprintf(fp, " %s", names[f]);
             else fprintf(fp, " f%d", f + 1);

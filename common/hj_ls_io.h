@@ -26,9 +26,10 @@ extern "C" {
 
 /* One block of nfields arrays on g to fp (an open stream, e.g. an hj_out's
  * fp); a header line "# x y ... name1 name2" first when names is given
- * (a NULL entry is written f1, f2, ... by its field number).  HJ_EIO on a
- * write error; HJ_EINVAL for a NULL stream, grid or field, a negative
- * nfields, or an empty name or one with a line break. */
+ * (dimensions 4 to 6 labelled x4 .. x6; a NULL entry is written f1, f2,
+ * ... by its field number).  HJ_EIO on a write error; HJ_EINVAL for a
+ * NULL stream, grid or field, a negative nfields, or an empty name or one
+ * with a blank or a line break (each name is one header column). */
 int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *const *names,
                       const double *const *fields, hj_error *err);
 

@@ -153,10 +153,17 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
 
 /* A callback of the caller's that failed without a message: say which
  * and when (err as the callback left it otherwise: its code may be the
- * caller's own, apart from the return value, as hj_reach's stop codes). */
+ * caller's own, apart from the return value, as hj_reach's stop codes).
+ * Any nonzero value is a failure of the caller's choosing, so a value in
+ * the library's range is read as its code only in a parenthesis ("1" may
+ * just mean "failed"). */
 static void callback_failed(int rc, const char *what, double t, hj_error *err)
 {
-    if (err && !err->msg[0]) hj_error_set(err, rc, "%s returned %d (%s) at t = %.17g", what, rc, hj_strerror(rc), t);
+    if (!err || err->msg[0]) return;
+    if (rc > HJ_OK && rc <= HJ_EFIT)
+        hj_error_set(err, rc, "%s returned %d at t = %.17g (as a libhj code: %s)", what, rc, t, hj_strerror(rc));
+    else
+        hj_error_set(err, rc, "%s returned %d at t = %.17g", what, rc, t);
 }
 
 /* An infinite bound is checked with the term's values (moves_at). */

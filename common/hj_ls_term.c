@@ -748,34 +748,54 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
 }
 
 /* After a non-finite CFL bound: the first node (rows in order, then
- * dimensions) whose velocity is not finite, named in err (the row pass
- * reports only the bound).  Only on that error path, so the velocities
- * are asked again. */
+ * along the row) with a velocity component that is not finite, named in err (the row pass
+ * reports only the bound); where every velocity is finite, the first node
+ * whose inverse bound sum_d |v_d| / dx_d overflows (a velocity near
+ * DBL_MAX).  Only on that error path, so the velocities are asked again. */
 static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err)
 {
     const hj_ls_grid *g = c->grid;
     const long n = g->N[0];
-    double *v = c->velocity_fn ? malloc((size_t)n * sizeof *v) : NULL;
-    if (c->velocity_fn && !v) return;
-    for (size_t r = 0; r < g->rows; r++) {
-        long idx[HJ_LS_MAXDIM];
-        double x[HJ_LS_MAXDIM];
-        const size_t k = hj_ls_row(g, r, idx);
-        hj_ls_coord(g, idx, x);
-        for (int d = 0; d < g->dim; d++) {
-            if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, v, c->ctx);
+    double *v = malloc((size_t)n * (size_t)g->dim * sizeof *v);
+    if (!v) return;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t r = 0; r < g->rows; r++) {
+            long idx[HJ_LS_MAXDIM];
+            double x[HJ_LS_MAXDIM];
+            const size_t k = hj_ls_row(g, r, idx);
+            hj_ls_coord(g, idx, x);
+            for (int d = 0; d < g->dim; d++) {
+                double *vd = v + (size_t)d * (size_t)n;
+                if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, vd, c->ctx);
+                else
+                    for (long j = 0; j < n; j++)
+                        vd[j] = c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j] : c->velocity[d];
+            }
             for (long j = 0; j < n; j++) {
-                const double vd = c->velocity_fn ? v[j] : c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j]
-                                                                               : c->velocity[d];
-                if (isfinite(vd)) continue;
                 char pos[256];
-                hj_ls_format_node(g, r, j, pos, sizeof pos);
-                hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd, pos, t);
-                free(v);
-                return;
+                double sum = 0;
+                for (int d = 0; d < g->dim; d++) {
+                    const double vd = v[(size_t)d * (size_t)n + (size_t)j];
+                    sum += fabs(vd) / g->dx[d];
+                    if (pass == 0 && !isfinite(vd)) {
+                        hj_ls_format_node(g, r, j, pos, sizeof pos);
+                        hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd,
+                                     pos, t);
+                        free(v);
+                        return;
+                    }
+                }
+                if (pass == 1 && sum == INFINITY) {
+                    hj_ls_format_node(g, r, j, pos, sizeof pos);
+                    hj_error_set(err, HJ_ENONFINITE,
+                                 "convection velocity: sum_d |v_d| / dx_d overflows at x = (%s), t = %g "
+                                 "(velocities near the largest double; rescale time or space)",
+                                 pos, t);
+                    free(v);
+                    return;
+                }
             }
         }
-    }
     free(v);
 }
 

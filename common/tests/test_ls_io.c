@@ -30,6 +30,28 @@ static void dat_file(void **state)
     snprintf(path, sizeof path, "%s/no/such/dir/block.dat", hj_test_dir());
     assert_int_equal(hj_ls_write_dat(path, &g, 1, names, f, NULL), HJ_EIO);
     hj_ls_free(a);
+    /* each name is one header column: a blank would shift the labels */
+    const char *blank[1] = {"my a"};
+    hj_error err;
+    snprintf(path, sizeof path, "%s/blank.dat", hj_test_dir());
+    assert_int_equal(hj_ls_write_dat(path, &g, 1, blank, f, &err), HJ_EINVAL);
+    assert_has(err.msg, "one word without blanks");
+    /* a 4-D grid's fourth coordinate is labelled x4 */
+    hj_ls_grid g4;
+    const double mn4[4] = {0, 0, 0, 0}, mx4[4] = {1, 1, 1, 1};
+    const long n4[4] = {2, 2, 2, 2};
+    const hj_ls_bc bc4[4] = {bc, bc, bc, bc};
+    assert_int_equal(hj_ls_grid_init(&g4, 4, mn4, mx4, n4, bc4, NULL), HJ_OK);
+    double *a4 = hj_ls_alloc(&g4);
+    const double *f4[1] = {a4};
+    snprintf(path, sizeof path, "%s/block4.dat", hj_test_dir());
+    assert_int_equal(hj_ls_write_dat(path, &g4, 1, names, f4, NULL), HJ_OK);
+    fp = fopen(path, "r");
+    assert_non_null(fp);
+    assert_non_null(fgets(text, sizeof text, fp));
+    fclose(fp);
+    assert_string_equal(text, "# x y z x4 a\n");
+    hj_ls_free(a4);
 }
 
 /* A legacy VTK file is line and word oriented: the title is one line and

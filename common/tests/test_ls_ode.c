@@ -536,13 +536,14 @@ static void callback_errors(void **state)
     hj_error err;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, NULL, failing_output, NULL, NULL, &err), HJ_EIO);
     assert_int_equal(err.code, HJ_EIO);
-    assert_has(err.msg, "the output callback returned 3");
-    assert_has(err.msg, "t = 0.1");
+    assert_has(err.msg, "the output callback returned 3 at t = 0.1");
+    assert_has(err.msg, "(as a libhj code: input/output error)");
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
     o.post = failing_post;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
-    assert_has(err.msg, "the PostTimestep callback returned 42");
+    assert_has(err.msg, "the PostTimestep callback returned 42 at t = ");
+    assert_null(strchr(err.msg, '(')); /* 42 is no library code */
     o.post_ctx = &o;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 3, y, &o, NULL, NULL, NULL, &err), 42);
     assert_string_equal(err.msg, "my post failed");

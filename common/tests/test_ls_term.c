@@ -1322,7 +1322,8 @@ static void dissipation_names(void **state)
 
 /* A non-finite convection velocity is named with its component and node
  * (the row pass sees only a non-finite CFL bound; the message had the
- * time alone): from a callback, an array and a constant, in 2-D and 3-D. */
+ * time alone): from a callback, an array and a constant, in 2-D and 3-D;
+ * so is a finite one whose CFL bound overflows. */
 static void nan_velocity_row(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
 {
     (void)t, (void)ctx;
@@ -1352,6 +1353,13 @@ static void convection_names_bad_velocity(void **state)
             c.velocity[1] = NAN;
             assert_int_equal(c.base.eval(&c.base, 0, y, ydot, &b, &err), HJ_ENONFINITE);
             assert_has(err.msg, "v_1 = nan at x = (-1, -1");
+            /* finite, but |v_0| / dx_0 overflows: named as such */
+            c.velocity[1] = 1;
+            vx[hj_ls_index(&g, (long[]){2, 3, 1})] = 1.7e308;
+            assert_int_equal(c.base.eval(&c.base, 0, y, ydot, &b, &err), HJ_ENONFINITE);
+            assert_has(err.msg, dim == 2 ? "dx_d overflows at x = (-0.6, -0.4), t = 0"
+                                         : "dx_d overflows at x = (-0.6, -0.4, -0.8), t = 0");
+            vx[hj_ls_index(&g, (long[]){2, 3, 1})] = 0.5;
         }
         hj_ls_free(y), hj_ls_free(ydot), hj_ls_free(vx);
     }
