@@ -76,6 +76,9 @@ paper's choice for this example), delta and norms as in Example 1.
 
 **Output.** Table 3.2 or 3.3 (L1 errors, orders, iterations for both
 cases; Table 3.3 also L-infinity), convergence figures, contour plots.
+Case (a) of Table 3.3 is exact up to round-off, so the orders fitted to it
+(about 0.5 in L1 and -1.2 in L-infinity) measure how the round-off grows
+with N, not a convergence order.
 */
 #include <math.h>
 #include <string.h>

@@ -27,7 +27,7 @@ literate() {
          !on && /^\/\*/ { on = 1; sub(/^\/\*+ ?/, ""); if ($0 == "") next }
          on && /\*\// { sub(/ *\*\/.*$/, ""); if ($0 != "") print; exit }
          on { sub(/^ \* ?/, ""); if ($0 ~ /^#/) $0 = "##" $0; print }' "$1"
-    printf '\n*Source: `%s`*\n\n' "$1"
+    printf '\n*Source: `%s`*\n\n' "$(realpath -m --relative-to=. "$1")"
 }
 
 # A figure as an <img> with its data inline, so report.html is one file.
@@ -98,16 +98,21 @@ check_table() {
         }' anchor="$(printf '%s' "$name" | tr -c 'A-Za-z0-9' '-')" "$f"
 }
 
+# A row whose fit failed (p = nan: hj_fit_order returned an error, e.g. the
+# robust fit did not converge) says so; its pairwise orders are in the
+# table above it.
 fit_table() {
     local f=$1
     [ -f "$f" ] || return 0
     awk -F'\t' '
         /^#/ || $1 == "case" { next }
+        $3 == "nan" { nofit++ }
         { rows = rows sprintf("<tr><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n",
-                              $1, $2, ($3 == "nan" ? "-" : sprintf("%.2f", $3)),
+                              $1, $2, ($3 == "nan" ? "no fit" : sprintf("%.2f", $3)),
                               ($4 == "nan" || $4 == "" ? "-" : sprintf("%.2f", $4)),
                               ($6 == "nan" ? "-" : sprintf("%.2f", $6)), $7) }
-        END { if (rows != "") printf "\n<table class=\"fit\">\n<tr><th>case</th><th>error</th><th>fitted order p</th><th>std. error</th><th>least-squares p</th><th>points</th></tr>\n%s</table>\n\n", rows }' "$f"
+        END { if (rows != "") printf "\n<table class=\"fit\">\n<tr><th>case</th><th>error</th><th>fitted order p</th><th>std. error</th><th>least-squares p</th><th>points</th></tr>\n%s</table>\n\n", rows
+              if (nofit) printf "<p class=\"tsum\"><i>no fit</i>: the order fit of common/hj_fit.h returned no order for this row (as when the points scatter about a line by more than the Huber scale, so that its robust fit does not converge); the figure shows p = nan for it, and the pairwise orders are in the table above.</p>\n\n" }' "$f"
 }
 
 # The cost of a program's runs in make reproduce (hjtime's files
@@ -137,6 +142,7 @@ md=$tmp/report.md
     cat report/intro.md
     printf '\n## How a cell is judged\n\n'
     "$hjcheck" --rules
+    printf '\nThe match limits are relative, |computed/published - 1|; the close limits of errors, counts, ratios and values are factors taken both ways, computed/published between 1/F and F: a value is *close within 10 %%* (F = 1.1) from -9.1 %% to +10 %%, an error *close within a factor 2* from 0.5 to 2 times.\n'
     printf '\n## Summary of `make check`\n\n```\n'
     cat "$res/check-summary.txt"
     printf '```\n\n'
@@ -164,7 +170,7 @@ md=$tmp/report.md
                       if [ ! -f "$dir/notes/$f" ]; then printf '\n**missing note template: %s/notes/%s**\n\n' "$dir" "$f"
                       elif awk -v dir="$res/$name" -f report/note.awk "$dir/notes/$f" > "$tmp/note.md"; then
                           cat "$tmp/note.md"; printf '\n'
-                      elif [[ $src == bench_* || $name == mpi ]]; then printf '\n*Not measured yet: `make bench` writes the data of `%s` (benchmarks stay out of `make reproduce` and the tests).*\n\n' "$f"
+                      elif [[ $src == bench_* || $name == mpi ]]; then printf '\n*Not in this report: the data of `%s` come from `make bench` (benchmarks stay out of `make reproduce` and the tests); run `make bench`, then `make report-now`, to see them here.*\n\n' "$f"
                       elif [ -n "$quick" ]; then printf '\n*Not run in the quick path: the data of `%s` comes with the published sizes (`make %s`).*\n\n' "$f" "$name"
                       else cat "$tmp/note.md"; printf '\n'; fi ;; # with its **missing: ...** marks
                 *) if [ -f "$res/$name/$f" ]; then

@@ -13,6 +13,7 @@ set cntrparam levels discrete 0
 unset key
 set xrange [-1:1]; set yrange [-1:1]
 set xtics 0.5; set ytics 0.5
+set xlabel "x"; set ylabel "y"
 set multiplot layout 3,3 title "Figure 1: convectionDemo('linear', 'medium'), zero level set of phi"
 do for [k=0:8] {
     set title sprintf("t = %g", k/8.0)

@@ -7,6 +7,7 @@ set terminal pngcairo size 1050,2000 font "Helvetica,10"
 set output out
 f1 = dir.'/convection_1d_constantRev_veryHigh.dat'
 f3 = dir.'/convection_3d_linear_medium.dat'
+set xlabel "x"; set ylabel "phi"
 set multiplot layout 6,3 title "Figure 3: (a) 1-D convectionDemo('constantRev', 'veryHigh'), phi;  (b) 3-D convectionDemo('linear', 'medium'), phi = 0"
 set xrange [-1:1]; set yrange [-0.4:1.6]
 set grid
@@ -17,6 +18,7 @@ do for [k=0:8] {
 }
 unset grid
 set xrange [-1:1]; set yrange [-1:1]; set zrange [-1:1]
+set xlabel "x"; set ylabel "y"; set zlabel "z"
 set view 55, 30
 set xyplane 0
 set xtics 1; set ytics 1; set ztics 1

@@ -26,6 +26,7 @@ set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]
 set xtics 0.5; set ytics 0.5
 unset key
+set xlabel "x"; set ylabel "y"
 set multiplot title "Figure 7: maskDemo('low'): constraint phi >= psi applied by the PostTimestep function"
 do for [k=0:8] {
     set origin (k % 3) / 3.0, 0.74 - (k / 3) * 0.2

@@ -14,6 +14,7 @@ set cntrparam levels discrete 0
 set table $S
 splot for [k=0:8] dir.'/'.dat index k using 1:2:3 with lines
 unset table
+set xlabel "x"; set ylabel "y"
 set multiplot layout 3,3 title ttl
 set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]

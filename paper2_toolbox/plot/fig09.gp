@@ -16,6 +16,7 @@ set table $B
 splot for [k=0:3] dir.'/curvature_star_b.dat' index k using 1:2:3 with lines
 unset table
 array T[4] = [0, 0.25, 0.5, 1]
+set xlabel "x"; set ylabel "y"
 set multiplot layout 2,4 title "Figure 9: motion by mean curvature (curvatureStarDemo); top (a) constant b_0 = 0.02, bottom (b) splitFlow b(x,t)"
 set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]

@@ -16,6 +16,7 @@ unset table
 set table $B
 splot for [k=0:8] dir.'/spin_star_b.dat' index k using 1:2:3 with lines
 unset table
+set xlabel "x"; set ylabel "y"
 set multiplot layout 2,5 title "Figure 11: normal motion (a = 0.2) plus rotation (omega = 0.75 pi); top (a) rigid, bottom (b) speed times |x|^2 (Osher-Fedkiw figure 6.2)"
 set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]

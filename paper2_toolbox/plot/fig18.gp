@@ -13,6 +13,7 @@ set size ratio -1
 unset key
 set xrange [-4:4]; set yrange [-2:3]
 set object 1 rect from -3.5,-0.2 to 3.5,0 fc rgb "#bbbbbb" fs solid 0.6 noborder back
+set xlabel "x"; set ylabel "y"
 set multiplot layout 3,3 title "Figure 18: acoustic capture, W_e = 1.3, W_p = 1.5, R = 0.8, S = 0.5: reachable set boundary"
 do for [k=0:8] {
   set title sprintf("t = %.1f", 0.5 * k)

@@ -35,6 +35,7 @@ set size ratio -1
 set xrange [-1:1]; set yrange [-1:1]
 set xtics 0.5; set ytics 0.5
 set key outside bottom center horizontal
+set xlabel "x_1"; set ylabel "x_2"
 set multiplot layout 2,2 title sprintf("Figure %d (Example 3): deformation of the half plane x_2 <= 0, N = %d, CFL 0.9 for UB-HJB (0.5 for the level set, see the overview), T = 6", fignum, N)
 do for [m=0:1] {
     do for [k=0:1] {
