@@ -91,6 +91,7 @@ int hj_fit_order(const double *h, const double *e, int n, hj_order_fit *fit, hj_
     theta[1] = (n * sxy - sx * sy) / den;
     theta[0] = (sy - theta[1] * sx) / n;
     fit->p_ls = theta[1];
+    fit->n = n;
 
     if (!ceres_initialised) { ceres_init(); ceres_initialised = 1; }
     ceres_problem_t *problem = ceres_create_problem();

@@ -228,12 +228,15 @@ static int write_outputs(const p1_study *st, const settings *s, row rows[][MAX_S
             hj_order_fit f;
             hj_error ferr;
             const char *qn = q ? "Linf" : "L1";
-            if (n >= 2 && hj_fit_order(h, e, n, &f, &ferr) == HJ_OK) {
+            const int frc = n >= 2 ? hj_fit_order(h, e, n, &f, &ferr) : HJ_EFIT;
+            if (frc == HJ_OK) {
                 fprintf(fit.fp, "%s\t%s\t%.4f\t%.4f\t%.6g\t%.4f\t%d\n", cn, qn, f.p, f.p_se, f.C, f.p_ls, f.n);
                 fprintf(gp.fp, "fit_%s_%s_p = %.6f\nfit_%s_%s_se = %.6f\nfit_%s_%s_C = %.10g\n", gn, qn, f.p, gn, qn,
                         isfinite(f.p_se) ? f.p_se : -1.0, gn, qn, f.C);
             } else {
-                fprintf(fit.fp, "%s\t%s\tnan\tnan\tnan\tnan\t%d\n", cn, qn, n);
+                /* no robust fit: the least-squares slope where the points allow one */
+                if (frc == HJ_ENOCONV) fprintf(fit.fp, "%s\t%s\tnan\tnan\tnan\t%.4f\t%d\n", cn, qn, f.p_ls, n);
+                else fprintf(fit.fp, "%s\t%s\tnan\tnan\tnan\tnan\t%d\n", cn, qn, n);
                 fprintf(gp.fp, "fit_%s_%s_p = NaN\nfit_%s_%s_se = -1\nfit_%s_%s_C = NaN\n", gn, qn, gn, qn, gn, qn);
             }
         }

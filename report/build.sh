@@ -112,7 +112,7 @@ fit_table() {
                               ($4 == "nan" || $4 == "" ? "-" : sprintf("%.2f", $4)),
                               ($6 == "nan" ? "-" : sprintf("%.2f", $6)), $7) }
         END { if (rows != "") printf "\n<table class=\"fit\">\n<tr><th>case</th><th>error</th><th>fitted order p</th><th>std. error</th><th>least-squares p</th><th>points</th></tr>\n%s</table>\n\n", rows
-              if (nofit) printf "<p class=\"tsum\"><i>no fit</i>: the order fit of common/hj_fit.h returned no order for this row (as when the points scatter about a line by more than the Huber scale, so that its robust fit does not converge); the figure shows p = nan for it, and the pairwise orders are in the table above.</p>\n\n" }' "$f"
+              if (nofit) printf "<p class=\"tsum\"><i>no fit</i>: the order fit of common/hj_fit.h returned no order for this row (as when the points scatter about a line by more than the Huber scale, so that its robust fit does not converge); the least-squares column gives the plain fit of the same points where one exists, the figure shows p = nan, and the pairwise orders are in the table above.</p>\n\n" }' "$f"
 }
 
 # The cost of a program's runs in make reproduce (hjtime's files

@@ -59,6 +59,22 @@ static void two_points_no_error_bar(void **state)
     assert_true(isnan(f.p_se));
 }
 
+/* Points that scatter about every line by more than the Huber scale
+ * (paper 1's Table 3.5 L1 errors, pairwise orders 4.05, 3.75, 2.35): the
+ * robust fit does not converge, and the least-squares slope is still
+ * given. */
+static void no_robust_fit_keeps_least_squares(void **state)
+{
+    (void)state;
+    double h[4] = {0.075, 0.0375, 0.01875, 0.009375}, e[4] = {5.214e-03, 3.147e-04, 2.343e-05, 4.608e-06};
+    hj_order_fit f;
+    hj_error err;
+    f.p_ls = NAN, f.n = 0;
+    assert_int_equal(hj_fit_order(h, e, 4, &f, &err), HJ_ENOCONV);
+    assert_close(f.p_ls, 3.41797, 1e-5, 0);
+    assert_int_equal(f.n, 4);
+}
+
 static void bad_input(void **state)
 {
     (void)state;
@@ -75,4 +91,4 @@ static void bad_input(void **state)
 
 HJ_TEST_MAIN("hj_fit", NULL, NULL, cmocka_unit_test(pair_order), cmocka_unit_test(exact_power_law),
              cmocka_unit_test(robust_to_one_outlier), cmocka_unit_test(two_points_no_error_bar),
-             cmocka_unit_test(bad_input))
+             cmocka_unit_test(no_robust_fit_keeps_least_squares), cmocka_unit_test(bad_input))

@@ -644,7 +644,7 @@ static int check_table(const char *name, const char *paperdir, const char *table
             if (a) a->used = 1;
             int accepted = a ? a->verdict : HJ_MATCH;
             const char *reason = a ? a->text : roundoff ? "both at round-off level" : "";
-            char why[256] = "";
+            char why[2048] = ""; /* the prefix and the accepted reason whole (reasons run to 900 characters) */
             t.count[v]++;
             if (v == HJ_AMBIGUOUS) {
                 reason = "published cell unreadable in the source";
