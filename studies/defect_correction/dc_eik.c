@@ -16,8 +16,8 @@
  *   Hh(T)_i = sqrt(sum_d (t_d / h)^2), t_d the larger of (h D^- T)_+ and
  *     (-h D^+ T)_+ over the candidate sides (the side of the smaller
  *     neighbour, and any side whose neighbour is earlier than the node),
- *     h D^-/+ the WENO3 (eps 1e-6) or WENO5 (eps 1e-6 (h / 2)^2) one-sided
- *     differences, the entries past the grid's ends the quadratic
+ *     h D^-/+ the WENO3 (eps 1e-6 M^2) or WENO5 (eps 1e-6 (h / 2)^2 M^2)
+ *     one-sided differences, M the first order solution's largest value, the entries past the grid's ends the quadratic
  *     extrapolation of the current in-grid values (hj_eik's
  *     current_ghosts); a stencil that crosses a held node into free
  *     nodes beyond uses the first order difference on that axis.
@@ -358,6 +358,8 @@ int main(int argc, char **argv)
         FILE *fp = fopen(getenv("DC_CHECK"), "rb");
         if (!U || !fp || fread(U, sizeof *U, N3, fp) != (size_t)N3) return 1;
         fclose(fp);
+        const double M = maxT(U); /* the eps scale, as in the solve */
+        if (!getenv("DC_EPS")) eps3 *= M * M, eps5 *= M * M;
         long cnt = 0;
         for (long id = 0; id < N3; id++) {
             if (fix[id]) continue;
@@ -423,6 +425,9 @@ int main(int argc, char **argv)
     double l1, linf, l1a, linfa;
     errors(T, &l1, &linf, &l1a, &linfa);
     fprintf(stderr, "first order: %ld iterations, L1 %.3e Linf %.3e\n", fo_iter, l1, linf);
+    /* as hj_eik: the WENO eps scaled by the square of the first order
+     * solution's largest value (the unknown's scale) */
+    if (!getenv("DC_EPS")) eps3 *= scale * scale, eps5 *= scale * scale;
 
     long outer = 0, neg = 0, inner_total = 0;
     int o_next = 0, conv = 0;
