@@ -20,7 +20,8 @@
  *     one-sided differences, M the first order solution's largest value, the entries past the grid's ends the quadratic
  *     extrapolation of the current in-grid values (hj_eik's
  *     current_ghosts); a stencil that crosses a held node into free
- *     nodes beyond uses the first order difference on that axis.
+ *     nodes beyond uses WENO3 on its inner five entries (WENO5) or the
+ *     first order difference on that axis.
  *
  * Iteration: T^0 is the first order fast sweeping solution (min-update
  * from +inf, 2^3 sweeps per iteration, until no node changes by more
@@ -159,25 +160,35 @@ static void residuals(const double *T, long id, double *Hh, double *H1)
             const long pos = i + q;
             v[q + r] = pos >= 0 && pos < n ? T[id + q * st[d]] : NAN;
         }
-        /* crossing held nodes into free ones beyond */
-        for (int q = 2; q <= r && !cut; q++) {
+        /* crossing held nodes into free ones beyond, within reach q */
+        int cutq[4] = {0, 0, 0, 0};
+        for (int q = 2; q <= r; q++) {
             const long pp = i + q, pm = i - q;
+            cutq[q] = cutq[q - 1];
             if (pp < n && !fix[id + q * st[d]])
                 for (int j = 1; j < q; j++)
-                    if (fix[id + j * st[d]]) cut = 1;
+                    if (fix[id + j * st[d]]) cutq[q] = 1;
             if (pm >= 0 && !fix[id - q * st[d]])
                 for (int j = 1; j < q; j++)
-                    if (fix[id - j * st[d]]) cut = 1;
+                    if (fix[id - j * st[d]]) cutq[q] = 1;
+        }
+        cut = cutq[r];
+        /* as hj_eik: a WENO5 stencil so cut falls back to WENO3 on the
+         * inner five entries if they are not cut themselves */
+        int rr = r;
+        if (cut && r == 3 && !cutq[2]) {
+            memmove(v, v + 1, 5 * sizeof v[0]);
+            rr = 2, cut = 0;
         }
         /* diagnostic only: first order where the stencil reaches the ghosts */
-        if (bfo && (i < r || i > n - 1 - r)) cut = 1;
+        if (bfo && (i < rr || i > n - 1 - rr)) cut = 1;
         double hm, hp;
         if (cut) {
             hm = i > 0 ? Ti - TL : NAN;
             hp = i < n - 1 ? TR - Ti : NAN;
         } else {
-            if (i < r || i > n - 1 - r) current_ghosts(v, r, i, n);
-            if (order == 5) weno5(v, eps5, &hm, &hp);
+            if (i < rr || i > n - 1 - rr) current_ghosts(v, rr, i, n);
+            if (rr == 3) weno5(v, eps5, &hm, &hp);
             else weno3(v, eps3, &hm, &hp);
         }
         /* candidate sides as hj_eik's local_update: the side of the
