@@ -172,6 +172,7 @@ include paper1_fastsweeping/rules.mk
 include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 include studies/reach/rules.mk
+include studies/defect_correction/rules.mk
 include tests/rules.mk
 include mpi/rules.mk
 

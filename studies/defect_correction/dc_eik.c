@@ -33,10 +33,9 @@
  * steps) or to convergence (inner change <= itol max T).  g^k < 0 is set
  * to 0 (counted).  Stop when max |T^{k+1} - T^k| <= tol max T.
  *
- * Not part of the build (an experiment; libhj for the comparison):
- *   make -j2 build/libhj.a && gcc -std=c11 -O2 -march=native -Wall -Wextra
- *   -Werror -Wshadow -Icommon studies/defect_correction/dc_eik.c
- *   build/libhj.a -fopenmp -lm -o dc_eik; run with OMP_NUM_THREADS=1.
+ * Built by `make` (build/bin/studies/defect_correction/dc_eik; libhj for
+ * the comparison), run by hand only, with OMP_NUM_THREADS=1.  (The
+ * measurements of the notes used a build with -O2 -march=native.)
  *
  * Usage: dc_eik N order inner [R] [tol] [itol]
  *   inner: number of inner sweeps per outer step (8 = one full
