@@ -23,7 +23,8 @@ reported to reduce the effect of other processes.
 
 **Output.** `table2.tsv`: published and measured relative costs, and the
 absolute time per call (notes/table2.md presents them).  Run by `make
-bench`, never by the tests.
+reproduce` (about 4 s, so that the report sets Table 2 beside the
+published one) and again by `make bench`; never by the tests.
 */
 #include <math.h>
 #include <stdio.h>
