@@ -748,11 +748,13 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
 }
 
 /* After a non-finite CFL bound: the first node (rows in order, then
- * along the row) with a velocity component that is not finite, named in err (the row pass
- * reports only the bound); where every velocity is finite, the first node
- * whose inverse bound sum_d |v_d| / dx_d overflows (a velocity near
- * DBL_MAX), summed with the row pass's roundings (|v_d| times 1 / dx_d),
- * so that a sum just at the overflow threshold is found as it was there.  Only on that error path, so the velocities are asked again. */
+ * along the row) with a velocity component that is not finite, named in
+ * err (the row pass reports only the bound); where every velocity is
+ * finite, the first node whose inverse bound sum_d |v_d| / dx_d overflows
+ * (a velocity near DBL_MAX), summed with the row pass's roundings (|v_d|
+ * times 1 / dx_d), so that a sum just at the overflow threshold is found
+ * as it was there.  Only on that error path, so the velocities are asked
+ * again. */
 static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err)
 {
     const hj_ls_grid *g = c->grid;
