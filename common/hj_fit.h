@@ -54,10 +54,12 @@ typedef struct {
 double hj_pair_order(double h1, double e1, double h2, double e2);
 
 /* Fit e = C h^p to n >= 2 points with h > 0, e > 0, all finite.  When the
- * robust fit does not converge (HJ_ENOCONV: the points scatter about any
- * line by more than the Huber scale, so that fewer than two lie within
- * it), fit->p_ls and fit->n are still set: the plain least-squares slope
- * of the same points, which the caller may show as such. */
+ * robust fit does not converge (HJ_ENOCONV: its Newton check moves p by
+ * more than HJ_FIT_P_TOL, or cannot be made because fewer than two points
+ * lie within the Huber scale of the line, as when they scatter about any
+ * line by more than it), fit->p_ls and fit->n are still set: the plain
+ * least-squares slope of the same points, which the caller may show as
+ * such; p, p_se and C are not set. */
 int hj_fit_order(const double *h, const double *e, int n, hj_order_fit *fit, hj_error *err);
 
 #ifdef __cplusplus

@@ -748,10 +748,13 @@ static int convection_pass(const hj_ls_convection *c, double t, double *y, doubl
 }
 
 /* After a non-finite CFL bound: the first node (rows in order, then
- * along the row) with a velocity component that is not finite, named in err (the row pass
- * reports only the bound); where every velocity is finite, the first node
- * whose inverse bound sum_d |v_d| / dx_d overflows (a velocity near
- * DBL_MAX).  Only on that error path, so the velocities are asked again. */
+ * along the row) with a velocity component that is not finite, named in
+ * err (the row pass reports only the bound); where every velocity is
+ * finite, the first node whose inverse bound sum_d |v_d| / dx_d overflows
+ * (a velocity near DBL_MAX), summed with the row pass's roundings (|v_d|
+ * times 1 / dx_d), so that a sum just at the overflow threshold is found
+ * as it was there.  Only on that error path, so the velocities are asked
+ * again. */
 static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj_error *err)
 {
     const hj_ls_grid *g = c->grid;
@@ -776,7 +779,7 @@ static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj
                 double sum = 0;
                 for (int d = 0; d < g->dim; d++) {
                     const double vd = v[(size_t)d * (size_t)n + (size_t)j];
-                    sum += fabs(vd) / g->dx[d];
+                    sum += fabs(vd) * (1 / g->dx[d]); /* rounded as the row pass rounds it */
                     if (pass == 0 && !isfinite(vd)) {
                         hj_ls_format_node(g, r, j, pos, sizeof pos);
                         hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd,

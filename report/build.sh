@@ -142,7 +142,7 @@ md=$tmp/report.md
     cat report/intro.md
     printf '\n## How a cell is judged\n\n'
     "$hjcheck" --rules
-    printf '\nThe match limits are relative, |computed/published - 1|; the close limits of errors, counts, ratios and values are factors taken both ways, computed/published between 1/F and F: a value is *close within 10 %%* (F = 1.1) from -9.1 %% to +10 %%, an error *close within a factor 2* from 0.5 to 2 times.\n'
+    printf '\nThe match limits of errors, counts, ratios and values are relative, |computed/published - 1| (those of orders are absolute, of bounds and exact counts as stated), and their close limits are factors taken both ways, computed/published between 1/F and F: a value is *close within 10 %%* (F = 1.1) from -9.1 %% to +10 %%, an error *close within a factor 2* from 0.5 to 2 times.\n'
     printf '\n## Summary of `make check`\n\n```\n'
     cat "$res/check-summary.txt"
     printf '```\n\n'

@@ -166,6 +166,30 @@ static void remove_rel(const char *rel)
 
 /* Blessing writes the table's current verdicts with one reason id; a cell
  * that matches again is dropped; an unknown id needs its text. */
+/* A reason is shown whole in the check's notes, with the prefix of a
+ * ratio past its accepted verdict or of a regression (reasons run to 900
+ * characters). */
+static void long_reason_whole(void **state)
+{
+    (void)state;
+    char reason[1200], text[1400];
+    memset(reason, 'r', 900);
+    strcpy(reason + 900, " END");
+    snprintf(text, sizeof text, "id\ttext\nlong\t%s\n", reason);
+    write_file("paper/reasons.tsv", text);
+    write_file("paper/published/t.tsv", "# key: N\n# kind: cpu_ratio=ratio L1=error\nN\tcpu_ratio\tL1\n80\t8.0\t1e-3\n");
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tcpu_ratio\tclose\tlong\n"
+                                     "t\tN=80\tL1\tclose\tlong\n");
+    write_file("res/p/t.tsv", "N\tcpu_ratio\tL1\n80\t30\t1e-2\n");
+    assert_int_equal(run_check(""), 1); /* L1 differs where close was accepted */
+    const char *c = read_back("res/p/t.check.tsv");
+    snprintf(text, sizeof text, "ratio, not gated (accepted close); %s\t", reason);
+    assert_non_null(strstr(c, text));
+    snprintf(text, sizeof text, "REGRESSION: accepted close; %s\t", reason);
+    assert_non_null(strstr(c, text));
+    remove_rel("paper/accepted.tsv");
+}
+
 static void accept_blesses(void **state)
 {
     (void)state;
@@ -388,4 +412,5 @@ HJ_TEST_MAIN("hjcheck", make_tree, hj_test_rmdir, cmocka_unit_test(all_match), c
              cmocka_unit_test(missing_and_quick), cmocka_unit_test(ratios_not_gated),
              cmocka_unit_test(malformed_published), cmocka_unit_test(accept_blesses),
              cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
-             cmocka_unit_test(reference_merged), cmocka_unit_test(reference_refused))
+             cmocka_unit_test(reference_merged), cmocka_unit_test(reference_refused),
+             cmocka_unit_test(long_reason_whole))

@@ -1329,6 +1329,15 @@ static void nan_velocity_row(double t, const double *x, double dx0, long n, int 
     (void)t, (void)ctx;
     for (long j = 0; j < n; j++) v[j] = d == 1 && x[0] + (double)j * dx0 > 0.45 && x[1] > 0.45 ? NAN : 1.0;
 }
+/* Three finite components whose CFL sum overflows as the row pass rounds
+ * it, fabs(v) * (1 / dx), on 42 nodes over [-1, 1] (dx = 2/41); divided by
+ * dx instead, the sum stays just below DBL_MAX. */
+static void huge_velocity_row(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t, (void)d, (void)dx0, (void)ctx;
+    for (long j = 0; j < n; j++)
+        v[j] = j == 0 && x[0] < -0.99 && x[1] < -0.99 && x[2] < -0.99 ? 2.923078268068806e+306 : 1.0;
+}
 static void convection_names_bad_velocity(void **state)
 {
     (void)state;
@@ -1363,6 +1372,17 @@ static void convection_names_bad_velocity(void **state)
         }
         hj_ls_free(y), hj_ls_free(ydot), hj_ls_free(vx);
     }
+    /* a callback whose three finite components overflow the sum in 3-D */
+    hj_ls_grid g = hj_test_grid(3, 42, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *ydot = hj_ls_alloc(&g), b;
+    for (size_t k = 0; k < g.total; k++) y[k] = (double)(k % 7);
+    hj_error err;
+    hj_ls_convection c;
+    hj_ls_convection_init(&c, &g, HJ_LS_UPWIND_FIRST);
+    c.velocity_fn = huge_velocity_row;
+    assert_int_equal(c.base.eval(&c.base, 0, y, ydot, &b, &err), HJ_ENONFINITE);
+    assert_has(err.msg, "dx_d overflows at x = (-1, -1, -1), t = 0");
+    hj_ls_free(y), hj_ls_free(ydot);
 }
 
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_orders),

@@ -37,7 +37,7 @@
  * the comparison), run by hand only, with OMP_NUM_THREADS=1.  (The
  * measurements of the notes used a build with -O2 -march=native.)
  *
- * Usage: dc_eik N order inner [R] [tol] [itol]
+ * Usage: dc_eik N order [inner] [R] [tol] [itol]
  *   inner: number of inner sweeps per outer step (8 = one full
  *          iteration), or 0: to convergence.
  *   Prints per outer step the change, its ratio to the last and where it
@@ -53,6 +53,7 @@
  *   DC_GSCALE=c multiplies the speed's gradient g by c > 0 (c -> 0:
  *   straight rays).
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -338,35 +339,72 @@ static int run_hj(long NN, double R, double tol)
     return 0;
 }
 
+/* A whole argument as a number (strtol, strtod: no trailing text, a
+ * finite double); 0 when it is not one. */
+static int arg_long(const char *s, long *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtol(s, &end, 10);
+    return end != s && !*end && !errno;
+}
+static int arg_double(const char *s, double *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtod(s, &end);
+    return end != s && !*end && !errno && isfinite(*v);
+}
+
 int main(int argc, char **argv)
 {
     const int hj = argc > 1 && !strcmp(argv[1], "hj");
     const int a0 = hj ? 2 : 1;
-    if (argc < a0 + 2) {
-        fprintf(stderr, "usage: dc_eik N order inner [R] [tol] [itol] | dc_eik hj N order [R] [tol]\n");
+    const int amax = hj ? a0 + 4 : a0 + 6; /* the last optional argument's index + 1 */
+    if (argc < a0 + 2 || argc > amax) {
+        fprintf(stderr, "usage: dc_eik N order [inner] [R] [tol] [itol] | dc_eik hj N order [R] [tol]\n");
         return 2;
     }
-    const long NN = atol(argv[a0]);
-    order = atoi(argv[a0 + 1]);
-    const int inner = hj ? 0 : (argc > a0 + 2 ? atoi(argv[a0 + 2]) : 8);
+    long NN = 0, ord = 0, inner = 8;
+    double R = 0.2, tol = 1e-12, itol = 1e-14;
     const int ai = hj ? a0 + 2 : a0 + 3;
-    const double R = argc > ai ? atof(argv[ai]) : 0.2;
-    const double tol = argc > ai + 1 ? atof(argv[ai + 1]) : 1e-12;
-    const double itol = argc > ai + 2 ? atof(argv[ai + 2]) : 1e-14;
-    if (NN < 4 || NN > 2000 || (order != 3 && order != 5) || inner < 0 || !(R > 0) || !(tol > 0)) {
-        fprintf(stderr, "dc_eik: need 4 <= N <= 2000, order 3 or 5, inner >= 0, R > 0, tol > 0\n");
+    const int ok = arg_long(argv[a0], &NN) && arg_long(argv[a0 + 1], &ord) &&
+                   (hj || argc <= a0 + 2 || arg_long(argv[a0 + 2], &inner)) && (argc <= ai || arg_double(argv[ai], &R)) &&
+                   (argc <= ai + 1 || arg_double(argv[ai + 1], &tol)) &&
+                   (argc <= ai + 2 || arg_double(argv[ai + 2], &itol));
+    if (!ok || NN < 4 || NN > 2000 || (ord != 3 && ord != 5) || inner < 0 || inner > 1000000 || !(R > 0) ||
+        !(tol > 0) || !(itol >= 0)) {
+        fprintf(stderr, "dc_eik: need integers 4 <= N <= 2000, order 3 or 5, 0 <= inner <= 1e6, and numbers R > 0, "
+                        "tol > 0, itol >= 0\n");
         return 2;
     }
-    if (getenv("DC_GSCALE")) /* diagnostic: the speed's gradient times this (straighter rays) */
-        for (int d = 0; d < 3; d++) G[d] *= atof(getenv("DC_GSCALE"));
+    order = (int)ord;
+    const char *gs = getenv("DC_GSCALE"), *es = getenv("DC_EPS");
+    double gscale = 1, epsv = 0;
+    if ((gs && (!arg_double(gs, &gscale) || !(gscale > 0))) || (es && (!arg_double(es, &epsv) || !(epsv > 0)))) {
+        fprintf(stderr, "dc_eik: DC_GSCALE and DC_EPS must be numbers > 0\n");
+        return 2;
+    }
+    if (gs) /* diagnostic: the speed's gradient times this (straighter rays) */
+        for (int d = 0; d < 3; d++) G[d] *= gscale;
     setup(NN, R);
+    long held = 0;
+    for (long id = 0; id < N3; id++) held += fix[id];
+    if (held == 0 || held == N3) {
+        fprintf(stderr, "dc_eik: R = %g holds %s node of the grid (the ball |x - s| <= R must hold some and not all)\n",
+                R, held ? "every" : "no");
+        return 2;
+    }
     bfo = getenv("DC_BFO") != NULL;
-    if (getenv("DC_EPS")) eps3 = eps5 = atof(getenv("DC_EPS")); /* diagnostic: 1e2 gives the linear weights */
+    if (es) eps3 = eps5 = epsv; /* diagnostic: 1e2 gives the linear weights */
     if (hj) return run_hj(NN, R, tol);
     if (getenv("DC_CHECK")) { /* residual Hh - f of a saved solution */
         double *U = malloc(N3 * sizeof *U);
         FILE *fp = fopen(getenv("DC_CHECK"), "rb");
-        if (!U || !fp || fread(U, sizeof *U, N3, fp) != (size_t)N3) return 1;
+        if (!U || !fp || fread(U, sizeof *U, N3, fp) != (size_t)N3) {
+            fprintf(stderr, "dc_eik: DC_CHECK: cannot read %ld doubles from %s\n", N3, getenv("DC_CHECK"));
+            return 1;
+        }
         fclose(fp);
         const double M = maxT(U); /* the eps scale, as in the solve */
         if (!getenv("DC_EPS")) eps3 *= M * M, eps5 *= M * M;
@@ -496,7 +534,7 @@ int main(int argc, char **argv)
     }
     const double c2 = cpu();
     errors(T, &l1, &linf, &l1a, &linfa);
-    printf("dc\tN=%ld\torder=%d\tinner=%d\tR=%g\tnfix=%ld\tconv=%d\tfo_iter=%ld\touter=%ld\tsweeps=%ld\tinner_sweeps=%ld\t"
+    printf("dc\tN=%ld\torder=%d\tinner=%ld\tR=%g\tnfix=%ld\tconv=%d\tfo_iter=%ld\touter=%ld\tsweeps=%ld\tinner_sweeps=%ld\t"
            "neg_g=%ld\tL1=%.4e\tLinf=%.4e\tL1away=%.4e\tLinfaway=%.4e\tcpu=%.2f\tcpu_fo=%.2f\tcpu_resid=%.2f\n",
            NN, order, inner, R, nfix, conv, fo_iter, outer, sweeps, inner_total, neg, l1, linf, l1a, linfa, c2 - c0,
            c1 - c0, resid_cpu);
