@@ -228,6 +228,29 @@ static void quick_only_exceptions(void **state)
     remove_rel("paper/reasons.tsv");
 }
 
+/* Blessing with --quick a cell that now matches where accepted.tsv
+ * accepts it at a worse verdict writes it as a match into
+ * accepted-quick.tsv: dropped, the full run's exception would apply to the
+ * quick run again (a "better than accepted" note in every quick check). */
+static void quick_accept_keeps_match_over_full(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.25e-4\t3.0\t10\n");
+    write_file("paper/reasons.tsv", "id\ttext\nfull\tthe full sizes' reason\n");
+    write_file("paper/accepted.tsv", "table\tkey\tquantity\tverdict\treason\nt\tN=80\tL1\tclose\tfull\n");
+    expect("--quick", 0, "better than accepted close");
+    expect("--quick --accept t --reason qs --reason-text 'the quick sizes match'", 0, "1 cell accepted");
+    assert_non_null(strstr(read_back("paper/accepted-quick.tsv"), "t\tN=80\tL1\tmatch\tqs\n"));
+    assert_int_equal(run_check("--quick"), 0);
+    assert_null(strstr(out_text, "better than accepted"));
+    /* the full run's list is untouched */
+    assert_non_null(strstr(read_back("paper/accepted.tsv"), "t\tN=80\tL1\tclose\tfull\n"));
+    remove_rel("paper/accepted-quick.tsv");
+    remove_rel("paper/accepted.tsv");
+    remove_rel("paper/reasons.tsv");
+}
+
 /* Bad accepted lists, names and headers: one message, exit 2, no crash. */
 static void bad_inputs(void **state)
 {
@@ -411,6 +434,6 @@ static void reference_refused(void **state)
 HJ_TEST_MAIN("hjcheck", make_tree, hj_test_rmdir, cmocka_unit_test(all_match), cmocka_unit_test(regression_fails),
              cmocka_unit_test(missing_and_quick), cmocka_unit_test(ratios_not_gated),
              cmocka_unit_test(malformed_published), cmocka_unit_test(accept_blesses),
-             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
+             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(quick_accept_keeps_match_over_full), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
              cmocka_unit_test(reference_merged), cmocka_unit_test(reference_refused),
              cmocka_unit_test(long_reason_whole))

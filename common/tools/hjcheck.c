@@ -23,7 +23,9 @@
  * compares TABLE and writes its current verdicts into accepted.tsv
  * (accepted-quick.tsv with --quick): every cell that is not a match is
  * accepted at its verdict with reason ID, cells that now match are
- * dropped; other tables' rows are kept.  --reason-text adds ID to
+ * dropped (with --quick, written as a match where accepted.tsv accepts
+ * them at a worse verdict, which would otherwise apply to the quick run
+ * again); other tables' rows are kept.  --reason-text adds ID to
  * reasons.tsv (or must equal its text there).  Cells of
  * kind 'ratio' (CPU-time and memory ratios) are compared and shown but
  * never fail on their value: they measure the machine and its load as much
@@ -895,14 +897,31 @@ static int accept_table(const char *name, const char *paperdir, const char *resd
             if (covered) { dropped++; continue; }
             next.cells[next.n++] = *a;
         }
+        /* With --quick, a cell that now matches but that accepted.tsv
+         * accepts at a worse verdict is written as a match: the quick
+         * check reads accepted.tsv under accepted-quick.tsv, so dropping
+         * the row would put the full run's exception back over it. */
+        accepted_list full = {NULL, 0};
+        reason_list full_reasons = {0};
+        if (!rc && quick) {
+            char fpath[4096];
+            snprintf(fpath, sizeof fpath, "%s/accepted.tsv", paperdir);
+            if (load_reasons(rpath, &full_reasons, &err) || load_accepted(fpath, &full_reasons, &full, &err)) {
+                fprintf(stderr, "%s: %s\n", prog, err.msg);
+                rc = 2;
+            }
+        }
         for (int k = 0; !rc && k < got.n; k++) {
-            if (got.cells[k].verdict == HJ_MATCH || got.cells[k].verdict == HJ_AMBIGUOUS) continue;
+            const accepted_cell *f = quick ? find_accepted(&full, table, got.cells[k].key, got.cells[k].quantity) : NULL;
+            const int over_full = got.cells[k].verdict == HJ_MATCH && f && f->verdict > HJ_MATCH;
+            if ((got.cells[k].verdict == HJ_MATCH && !over_full) || got.cells[k].verdict == HJ_AMBIGUOUS) continue;
             accepted_cell *a = &next.cells[next.n++];
             memset(a, 0, sizeof *a);
             a->table = (char *)table, a->key = got.cells[k].key, a->quantity = got.cells[k].quantity;
             a->reason = (char *)id, a->verdict = got.cells[k].verdict;
             added++;
         }
+        free_accepted(&full), free_reasons(&full_reasons);
         if (!rc && !known && add_reason(rpath, id, text, reasons.n > 0 || probe(rpath, &err) == 1, &err)) {
             fprintf(stderr, "%s: %s\n", prog, err.msg);
             rc = 2;
