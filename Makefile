@@ -256,7 +256,8 @@ memcheck: $(UNIT_TESTS)
 
 # Bless the current verdicts of one table (hjcheck --accept): every cell
 # that is not a match is accepted at its verdict with reason REASON (an id
-# of PAPERDIR/reasons.tsv, or a new one with REASON_TEXT).  QUICK=1 writes
+# of PAPERDIR/reasons.tsv, or a new one with REASON_TEXT); a cell already
+# accepted at that verdict keeps its own reason.  QUICK=1 writes
 # the quick run's own exceptions (accepted-quick.tsv).
 .PHONY: accept
 accept: $(HJCHECK)

@@ -214,6 +214,26 @@ static void accept_blesses(void **state)
     remove_rel("paper/reasons.tsv");
 }
 
+/* Blessing a table again keeps the reason of every cell whose verdict did
+ * not change; the reason given goes to the cells whose verdict did. */
+static void accept_keeps_unchanged_reasons(void **state)
+{
+    (void)state;
+    write_file("paper/published/t.tsv", published);
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t3.75e-4\t1.42\t12\n");
+    write_file("paper/reasons.tsv", "id\ttext\ncoarse\ttoo coarse a grid\nbetter\tnearer now\n");
+    assert_int_equal(run_check("--accept t --reason coarse"), 0);
+    /* L1 now close, its order still differs */
+    write_file("res/p/t.tsv", "N\tL1\tL1_order\titer\n40\t1.0e-3\t-\t10\n80\t1.35e-4\t1.42\t12\n");
+    expect("--accept t --reason better", 0, "1 cell accepted with reason 'better', 1 kept");
+    const char *acc = read_back("paper/accepted.tsv");
+    assert_non_null(strstr(acc, "t\tN=80\tL1\tclose\tbetter\n"));
+    assert_non_null(strstr(acc, "t\tN=80\tL1_order\tdiffers\tcoarse\n"));
+    assert_int_equal(run_check(""), 0);
+    remove_rel("paper/accepted.tsv");
+    remove_rel("paper/reasons.tsv");
+}
+
 /* accepted-quick.tsv excuses the quick run only. */
 static void quick_only_exceptions(void **state)
 {
@@ -434,6 +454,6 @@ static void reference_refused(void **state)
 HJ_TEST_MAIN("hjcheck", make_tree, hj_test_rmdir, cmocka_unit_test(all_match), cmocka_unit_test(regression_fails),
              cmocka_unit_test(missing_and_quick), cmocka_unit_test(ratios_not_gated),
              cmocka_unit_test(malformed_published), cmocka_unit_test(accept_blesses),
-             cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(quick_accept_keeps_match_over_full), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
+             cmocka_unit_test(accept_keeps_unchanged_reasons), cmocka_unit_test(quick_only_exceptions), cmocka_unit_test(quick_accept_keeps_match_over_full), cmocka_unit_test(bad_inputs), cmocka_unit_test(published_is_paper),
              cmocka_unit_test(reference_merged), cmocka_unit_test(reference_refused),
              cmocka_unit_test(long_reason_whole))

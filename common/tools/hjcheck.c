@@ -22,7 +22,8 @@
  *             [--reason-text TEXT] NAME=PAPERDIR
  * compares TABLE and writes its current verdicts into accepted.tsv
  * (accepted-quick.tsv with --quick): every cell that is not a match is
- * accepted at its verdict with reason ID, cells that now match are
+ * accepted at its verdict with reason ID (one this list already accepts
+ * at that verdict keeps its own reason), cells that now match are
  * dropped (with --quick, written as a match where accepted.tsv accepts
  * them at a worse verdict, which would otherwise apply to the quick run
  * again); other tables' rows are kept.  --reason-text adds ID to
@@ -883,7 +884,7 @@ static int accept_table(const char *name, const char *paperdir, const char *resd
         if (check_table(name, paperdir, table, resdir, quick, &gate, &got, &t) < 0) rc = 2;
         free_accepted(&gate), free_reasons(&gate_reasons);
     }
-    int added = 0, dropped = 0;
+    int added = 0, dropped = 0, kept = 0;
     if (!rc) {
         /* Keep other tables' rows; replace or drop this table's computed cells. */
         accepted_list next = {calloc((size_t)acc.n + (size_t)got.n + 1, sizeof(accepted_cell)), 0};
@@ -915,11 +916,17 @@ static int accept_table(const char *name, const char *paperdir, const char *resd
             const accepted_cell *f = quick ? find_accepted(&full, table, got.cells[k].key, got.cells[k].quantity) : NULL;
             const int over_full = got.cells[k].verdict == HJ_MATCH && f && f->verdict > HJ_MATCH;
             if ((got.cells[k].verdict == HJ_MATCH && !over_full) || got.cells[k].verdict == HJ_AMBIGUOUS) continue;
+            /* a cell this list already accepts at the same verdict keeps
+             * its own reason: blessing one change does not rewrite why the
+             * table's other cells were accepted */
+            const accepted_cell *old = find_accepted(&acc, table, got.cells[k].key, got.cells[k].quantity);
+            const int keep = old && old->verdict == got.cells[k].verdict;
             accepted_cell *a = &next.cells[next.n++];
             memset(a, 0, sizeof *a);
             a->table = (char *)table, a->key = got.cells[k].key, a->quantity = got.cells[k].quantity;
-            a->reason = (char *)id, a->verdict = got.cells[k].verdict;
-            added++;
+            a->reason = keep ? old->reason : (char *)id, a->verdict = got.cells[k].verdict;
+            if (keep) kept++;
+            else added++;
         }
         free_accepted(&full), free_reasons(&full_reasons);
         if (!rc && !known && add_reason(rpath, id, text, reasons.n > 0 || probe(rpath, &err) == 1, &err)) {
@@ -933,8 +940,9 @@ static int accept_table(const char *name, const char *paperdir, const char *resd
         free(next.cells); /* its strings belong to acc, got and the arguments */
     }
     if (!rc)
-        printf("%s %s: %d cell%s accepted with reason '%s' (%d earlier row%s of the table replaced) in %s\n", name,
-               table, added, hj_plural(added), id, dropped, hj_plural(dropped), apath);
+        printf("%s %s: %d cell%s accepted with reason '%s', %d kept at their verdict and reason (%d earlier row%s of "
+               "the table replaced) in %s\n",
+               name, table, added, hj_plural(added), id, kept, dropped, hj_plural(dropped), apath);
     free(got.cells);
     free_accepted(&acc), free_reasons(&reasons);
     return rc;
