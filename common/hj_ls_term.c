@@ -761,45 +761,46 @@ static void convection_name_bad_velocity(const hj_ls_convection *c, double t, hj
     const long n = g->N[0];
     double *v = malloc((size_t)n * (size_t)g->dim * sizeof *v);
     if (!v) return;
-    for (int pass = 0; pass < 2; pass++)
-        for (size_t r = 0; r < g->rows; r++) {
-            long idx[HJ_LS_MAXDIM];
-            double x[HJ_LS_MAXDIM];
-            const size_t k = hj_ls_row(g, r, idx);
-            hj_ls_coord(g, idx, x);
+    size_t over_r = 0; /* the first node whose sum overflows, if over_j >= 0 */
+    long over_j = -1;
+    for (size_t r = 0; r < g->rows; r++) {
+        long idx[HJ_LS_MAXDIM];
+        double x[HJ_LS_MAXDIM];
+        const size_t k = hj_ls_row(g, r, idx);
+        hj_ls_coord(g, idx, x);
+        for (int d = 0; d < g->dim; d++) {
+            double *vd = v + (size_t)d * (size_t)n;
+            if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, vd, c->ctx);
+            else
+                for (long j = 0; j < n; j++)
+                    vd[j] = c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j] : c->velocity[d];
+        }
+        for (long j = 0; j < n; j++) {
+            double sum = 0;
             for (int d = 0; d < g->dim; d++) {
-                double *vd = v + (size_t)d * (size_t)n;
-                if (c->velocity_fn) c->velocity_fn(t, x, g->dx[0], n, d, vd, c->ctx);
-                else
-                    for (long j = 0; j < n; j++)
-                        vd[j] = c->velocity_array[d] ? c->velocity_array[d][k + (size_t)j] : c->velocity[d];
-            }
-            for (long j = 0; j < n; j++) {
-                char pos[256];
-                double sum = 0;
-                for (int d = 0; d < g->dim; d++) {
-                    const double vd = v[(size_t)d * (size_t)n + (size_t)j];
-                    sum += fabs(vd) * (1 / g->dx[d]); /* rounded as the row pass rounds it */
-                    if (pass == 0 && !isfinite(vd)) {
-                        hj_ls_format_node(g, r, j, pos, sizeof pos);
-                        hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd,
-                                     pos, t);
-                        free(v);
-                        return;
-                    }
-                }
-                if (pass == 1 && sum == INFINITY) {
+                const double vd = v[(size_t)d * (size_t)n + (size_t)j];
+                sum += fabs(vd) * (1 / g->dx[d]); /* rounded as the row pass rounds it */
+                if (!isfinite(vd)) {
+                    char pos[256];
                     hj_ls_format_node(g, r, j, pos, sizeof pos);
-                    hj_error_set(err, HJ_ENONFINITE,
-                                 "convection velocity: sum_d |v_d| / dx_d overflows at x = (%s), t = %g "
-                                 "(velocities near the largest double; rescale time or space)",
-                                 pos, t);
+                    hj_error_set(err, HJ_ENONFINITE, "convection velocity: v_%d = %g at x = (%s), t = %g", d, vd, pos,
+                                 t);
                     free(v);
                     return;
                 }
             }
+            if (over_j < 0 && sum == INFINITY) over_r = r, over_j = j;
         }
+    }
     free(v);
+    if (over_j >= 0) {
+        char pos[256];
+        hj_ls_format_node(g, over_r, over_j, pos, sizeof pos);
+        hj_error_set(err, HJ_ENONFINITE,
+                     "convection velocity: sum_d |v_d| / dx_d overflows at x = (%s), t = %g "
+                     "(velocities near the largest double; rescale time or space)",
+                     pos, t);
+    }
 }
 
 static int convection_eval(const hj_ls_term *term, double t, double *y, double *ydot, double *bound, hj_error *err)
