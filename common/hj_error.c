@@ -4,7 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *hj_strerror(int code)
+/* The library's codes and their names; NULL for any other value. */
+static const char *code_name(int code)
 {
     switch (code) {
     case HJ_OK: return "success";
@@ -15,9 +16,17 @@ const char *hj_strerror(int code)
     case HJ_ENONFINITE: return "non-finite value";
     case HJ_ENOCONV: return "no convergence";
     case HJ_EFIT: return "fit failed";
-    default: return "unknown error";
+    default: return NULL;
     }
 }
+
+const char *hj_strerror(int code)
+{
+    const char *s = code_name(code);
+    return s ? s : "unknown error";
+}
+
+int hj_error_known(int code) { return code_name(code) != NULL; }
 
 int hj_error_set(hj_error *err, int code, const char *fmt, ...)
 {

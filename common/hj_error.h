@@ -33,6 +33,11 @@ typedef struct {
 /* Human readable name of an error code. */
 const char *hj_strerror(int code);
 
+/* 1 if code is one of the codes above (HJ_OK included), 0 otherwise: a
+ * caller's callback may return any int, and only the library's codes have
+ * a name. */
+int hj_error_known(int code);
+
 /* Record code and a printf-style message in err (which may be NULL) and
  * return code, so that `return hj_error_set(err, HJ_EINVAL, "...")` works. */
 int hj_error_set(hj_error *err, int code, const char *fmt, ...)

@@ -160,7 +160,7 @@ static int check_initial(const hj_ls_grid *g, const double *y, hj_error *err)
 static void callback_failed(int rc, const char *what, double t, hj_error *err)
 {
     if (!err || err->msg[0]) return;
-    if (rc > HJ_OK && rc <= HJ_EFIT)
+    if (rc != HJ_OK && hj_error_known(rc))
         hj_error_set(err, rc, "%s returned %d at t = %.17g (as a libhj code: %s)", what, rc, t, hj_strerror(rc));
     else
         hj_error_set(err, rc, "%s returned %d at t = %.17g", what, rc, t);
