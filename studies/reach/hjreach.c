@@ -39,8 +39,8 @@
  * refused before the run: the answer would be a set of measure 0 (or the
  * whole grid) that says nothing.  So are a periodic angle whose period is
  * not 2 pi (or a multiple) and, before any pass over the nodes, a grid
- * whose solve does not fit in memory (hj_reach_check_memory).  Progress on stderr, at most about once a
- * second and a final line, by default only when stderr is a terminal
+ * whose solve does not fit in memory (hj_reach_check_memory).  Progress
+ * on stderr, at most about once a second and a final line, by default only when stderr is a terminal
  * (--progress: always, one line each; --quiet: never); one line of
  * results on stdout: the steps, the final tau and the measure of the set
  * (dimensions 1 to 3).
@@ -401,7 +401,8 @@ int main(int argc, char **argv)
          .help = "lower corner of the grid (coordinates within +-1e100, spacing at least 1e-100)",
          .dflt = "the system's"},
         {.name = "--max", .type = HJ_OPT_STRING, .value = &hi_s, .metavar = "A,B,..",
-         .help = "upper corner (a periodic dimension, an angle: min + its period, 2 pi or a multiple)", .dflt = "the system's"},
+         .help = "upper corner (a periodic dimension, an angle: min + its period, 2 pi or a multiple)",
+         .dflt = "the system's"},
         {.name = "--target-centre", .type = HJ_OPT_STRING, .value = &centre_s, .metavar = "X,Y",
          .help = "centre of the target ball over the first two dimensions (the first only for double_integrator: |x - c| <= r)", .dflt = "0"},
         {.name = "--target-radius", .type = HJ_OPT_DOUBLE, .value = &radius, .min = 1e-12, .max = 1e12,
