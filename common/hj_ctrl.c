@@ -168,6 +168,17 @@ static double set_value(const hj_reach_set *s, double t, const double *x)
     return s->fn ? s->fn(t, x, s->ctx) : INFINITY;
 }
 
+/* The first non-periodic dimension in which x lies outside the grid's box
+ * [min, min + (N - 1) dx] (where the interpolant is clamped), or -1. */
+static int outside_box(const hj_ls_grid *g, const double *x)
+{
+    for (int d = 0; d < g->dim; d++)
+        if (g->bc[d].type != HJ_LS_BC_PERIODIC &&
+            !(x[d] >= g->min[d] && x[d] <= g->min[d] + (double)(g->N[d] - 1) * g->dx[d]))
+            return d;
+    return -1;
+}
+
 int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *phi, const double *x0,
                      const hj_ctrl_sim_opts *o, hj_ctrl_traj *tr, hj_error *err)
 {
@@ -190,11 +201,18 @@ int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
     if ((o->target.array && !o->target.fn) || (o->obstacle.array && !o->obstacle.fn))
         return hj_error_set(err, HJ_EINVAL, "simulate: give the target and obstacle as functions of (t, x)");
     const int nx = s->nx, nu = s->u.n;
+    const int out0 = all_finite(x0, nx) ? outside_box(g, x0) : -1; /* a NaN state: HJ_ENONFINITE below */
+    if (out0 >= 0)
+        return hj_error_set(err, HJ_EINVAL,
+                            "simulate: the initial state is outside the grid (coordinate %d = %g, the grid spans "
+                            "[%g, %g] there): the value is not known there (hj_ctrl_value clamps to the box)",
+                            out0, x0[out0], g->min[out0], g->min[out0] + (double)(g->N[out0] - 1) * g->dx[out0]);
     double x[HJ_LS_MAXDIM], u[HJ_REACH_MAXIN] = {0}, d[HJ_REACH_MAXIN] = {0};
     memcpy(x, x0, (size_t)nx * sizeof *x);
     tr->n = 0;
     tr->reached = tr->collided = 0;
     tr->min_obstacle = INFINITY;
+    tr->t_left = INFINITY;
     double t = 0;
     for (long k = 0;; k++) {
         const double ob = set_value(&o->obstacle, t, x);
@@ -207,6 +225,7 @@ int hj_ctrl_simulate(const hj_reach_dyn *s, const hj_ls_grid *g, const double *p
         for (int j = 0; j < nu; j++) tr->u[(size_t)k * (size_t)nu + (size_t)j] = 0;
         for (int j = 0; j < nx; j++)
             if (!isfinite(x[j])) return hj_error_set(err, HJ_ENONFINITE, "simulate: the state is not finite at t = %g", t);
+        if (tr->t_left == INFINITY && outside_box(g, x) >= 0) tr->t_left = t;
         if (set_value(&o->target, t, x) <= 0) {
             tr->reached = 1;
             break;

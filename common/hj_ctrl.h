@@ -21,7 +21,10 @@
  * the step (a sampled-data feedback, as a controller would run it); the
  * value at the state is recorded at every step.  The run stops when the
  * target (if given) holds a state (target <= 0), or at t_max.  Touching
- * the obstacle (obstacle <= 0 at a step's end) is recorded, not stopped.
+ * the obstacle (obstacle <= 0 at a step's end) is recorded, not stopped;
+ * so is leaving the grid's box (t_left).  An initial state outside the
+ * box (a non-periodic dimension) is refused: the value is not known
+ * there (before, the run went on from the clamped edge's values).
  */
 #ifndef HJ_CTRL_H
 #define HJ_CTRL_H
@@ -69,6 +72,10 @@ typedef struct {
     int reached;   /* the target held the last point */
     int collided;  /* the obstacle held some point */
     double min_obstacle; /* the least obstacle value met (INFINITY: none) */
+    double t_left; /* the first time a point lay outside the grid's box in
+                    * a non-periodic dimension (INFINITY: never); from there
+                    * on the value and control come from the box's edge
+                    * (the interpolant is clamped), not from the problem */
 } hj_ctrl_traj;
 
 /* Arrays for cap steps; HJ_ENOMEM.  Free with hj_ctrl_traj_free. */
@@ -78,7 +85,8 @@ void hj_ctrl_traj_free(hj_ctrl_traj *tr);
 void hj_ctrl_sim_defaults(hj_ctrl_sim_opts *o);
 
 /* Simulate from x0 at t = 0 under the optimal control of phi; tr must have
- * room for ceil(t_max / dt) steps (HJ_EINVAL otherwise).  The target and
+ * room for ceil(t_max / dt) steps (HJ_EINVAL otherwise); x0 must lie in
+ * the grid's box (HJ_EINVAL otherwise, naming the coordinate).  The target and
  * obstacle are given as functions (fn): a trajectory leaves the nodes, so
  * an array alone is refused.  HJ_ENONFINITE if the state leaves the
  * finite numbers, or if the value has no finite gradient at a state (no

@@ -171,6 +171,44 @@ static void bad_trajectories_and_options(void **state)
     hj_ls_free(a);
 }
 
+/* The value is known on the grid's box only (the interpolant is clamped
+ * to it).  An initial state outside the box is refused, naming the
+ * coordinate (before, x0 = 3 on [-2, 2] ran from the edge's values and
+ * recorded the value at 2 as its own); a run that leaves the box says
+ * when (t_left), one that stays in it has t_left = INFINITY. */
+static void simulate_outside_grid(void **state)
+{
+    (void)state;
+    hj_ls_grid g;
+    hj_reach_dyn s;
+    double *a = setup_1d(&g, &s);
+    hj_ctrl_sim_opts o;
+    hj_ctrl_sim_defaults(&o);
+    o.dt = 0.01, o.t_max = 2;
+    o.target.fn = target_fn;
+    hj_ctrl_traj tr;
+    hj_error err;
+    assert_int_equal(hj_ctrl_traj_alloc(&tr, 1, 1, 0, 200, &err), HJ_OK);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){3}, &o, &tr, &err), HJ_EINVAL);
+    assert_non_null(strstr(err.msg, "outside the grid (coordinate 0 = 3, the grid spans [-2, 2]"));
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){-2.001}, &o, &tr, &err), HJ_EINVAL);
+    /* On the box's edge: taken; reaching from 1.2 stays inside. */
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){2}, &o, &tr, &err), HJ_OK);
+    assert_true(tr.reached);
+    assert_true(tr.t_left == INFINITY);
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){1.2}, &o, &tr, &err), HJ_OK);
+    assert_true(tr.t_left == INFINITY);
+    /* Avoiding from 0.6 at speed 1: past x = 2 after 1.4, first seen at the
+     * step ending there (the run goes on to t_max, as before). */
+    hj_reach_dyn_goal(&s, HJ_REACH_AVOID);
+    o.target.fn = NULL;
+    assert_int_equal(hj_ctrl_simulate(&s, &g, a, (double[]){0.6}, &o, &tr, &err), HJ_OK);
+    assert_true(tr.t_left >= 1.4 - 1e-9 && tr.t_left <= 1.41 + 1e-9);
+    assert_close(tr.t[tr.n - 1], 2, 1e-12, 0);
+    hj_ctrl_traj_free(&tr);
+    hj_ls_free(a);
+}
+
 /* A time-to-reach is INFINITY where the target is not reached within the
  * horizon.  Next to such a node the central difference was infinite, G^T p
  * then took 0 * inf = NaN and the control came out arbitrary (u = +1 where
@@ -311,5 +349,6 @@ static void steer_along_obstacle(void **state)
 
 HJ_TEST_MAIN_ONE_THREAD("ctrl", NULL, NULL, cmocka_unit_test(interpolation_exact),
                         cmocka_unit_test(interpolation_periodic), cmocka_unit_test(simulate_reaches),
+                        cmocka_unit_test(simulate_outside_grid),
                         cmocka_unit_test(bad_trajectories_and_options), cmocka_unit_test(infinite_neighbours),
                         cmocka_unit_test(steer_along_obstacle))

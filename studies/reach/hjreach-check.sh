@@ -20,6 +20,13 @@
 #    reported with the library's dimension, counted from 0.
 # 5. A horizon on a small time scale (1e-30) takes its step: the summary
 #    says 1 step and tau = 1e-30 (it took none and said tau = 0).
+# 6. A periodic dimension (an angle of dubins or air3d) whose period is
+#    not 2 pi or a multiple of it within a relative 1e-5: refused (exit 2);
+#    6.2832 and 4 pi run.  Before, [0, pi) ran and gave a wrong set.
+# 7. A 4-D grid whose arrays fit one by one but whose solve does not (one
+#    array about 0.6 of the machine's memory): refused at once, exit 2.
+#    Before, every node was visited (the target and obstacle checks, the
+#    CFL estimate) before the solver refused it: 183 s at 200^4, exit 1.
 # The last line is "hjreach-check: N passed, M failed".
 set -u
 bin=$(cd "${1:-build/bin}" && pwd) || exit 2
@@ -75,7 +82,7 @@ refused() {
     shift
     nref=$((nref + 1))
     mkdir -p "$d"
-    OMP_NUM_THREADS=1 "$h" --quiet "$@" --out-dir "$d" >/dev/null 2>"$work/err"
+    OMP_NUM_THREADS=1 timeout 120 "$h" --quiet "$@" --out-dir "$d" >/dev/null 2>"$work/err"
     local rc=$? why=""
     if [ $rc -ne 2 ]; then why="exit $rc, expected 2"
     elif [ "$(wc -l <"$work/err")" -ne 1 ]; then why="$(wc -l <"$work/err") lines on stderr"
@@ -96,6 +103,26 @@ refused '--N|spacing|dimension 3|1e-100' --min -2,-2,0 --max 2,2,1e-300
 refused '--N|spacing|dimension 1' --system double_integrator --min 0,-2 --max 1e-300,2
 refused 'limited by dimension 2|coarsen dimension 2' --system double_integrator --N 11,4001 --u-max 1e6
 refused 'spacing 0.1 in dimension 1, 0.2 in dimension 2' --N 41,21,40 --target-centre 0.05,0.05 --target-radius 0.01
+
+# A periodic dimension (the catalogue's angles) on a period other than 2 pi
+# or a multiple: refused (a Dubins car on [0, pi) ran, measure 8.49 where
+# [-pi, pi) gives 16.27); 6.2832 and 4 pi pass.
+refused 'dimension 3|period|2 pi' --system dubins --N 41,41,40 --min -2,-2,0 --max 2,2,3.14159
+refused 'dimension 3|period|2 pi' --system air3d --max 20,10,6.28
+for hi in 6.2832 12.566370614359172; do
+    mkdir -p "$work/period-$hi"
+    OMP_NUM_THREADS=1 "$h" --quiet --system dubins --N 15,15,12 --max 2,2,$hi --horizon 0.1 \
+        --out-dir "$work/period-$hi" >/dev/null 2>"$work/err" && ok || bad "period $hi refused: $(cat "$work/err")"
+done
+# A grid whose arrays fit one by one but whose solve does not: refused at
+# once (exit 2, within refused's timeout), not after the checks that visit
+# every node (minutes at 200^4).  One array on the grid about 0.6 of the
+# machine's memory, so the caller's value and time-to-reach alone exceed it.
+mem_kb=$(awk '/^MemTotal:/ {print $2}' /proc/meminfo 2>/dev/null)
+if [ -n "$mem_kb" ]; then
+    n4=$(awk -v m="$mem_kb" 'BEGIN { printf "%d", exp(log(0.6 * m * 1024 / 8) / 4) - 6 }')
+    refused 'GB|coarsen --N' --system planar_di --N $n4,$n4,$n4,$n4 --horizon 1
+fi
 
 echo "hjreach-check: $pass passed, $fail failed"
 [ $fail -eq 0 ]
