@@ -20,7 +20,9 @@
  * Per level: passes (stats.iterations, fo_iterations), grid sweeps,
  * local solves per node, the last change, the start's distance to the
  * level's result (max |start - T| / max T), the L1 (mean over the nodes)
- * and Linf errors against the closed form, CPU seconds (clock()).  The
+ * and Linf errors against the closed form, CPU seconds (clock(); the
+ * interpolation included) and those to the end of the solver's first order
+ * start (from the progress callback).  The
  * total work is the sum over the levels of their sweeps (and local
  * solves) weighted by their node counts, in fine-grid sweeps.  With both
  * runs: the largest difference of the two fine results / max T.
