@@ -173,6 +173,7 @@ include paper2_toolbox/rules.mk
 include paper3_ultrabee/rules.mk
 include studies/reach/rules.mk
 include studies/defect_correction/rules.mk
+include studies/nested_eik/rules.mk
 include tests/rules.mk
 include mpi/rules.mk
 

@@ -1737,6 +1737,12 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                 }
                 w.fs[k] = ldexp(fv, -ef);
                 w.state[k] = ST_FREE;
+                if (opt->start && isfinite(opt->start[u]) && !(fabs(ldexp(opt->start[u], -et)) <= EIK_T_RANGE)) {
+                    rc = hj_error_set(err, HJ_EINVAL, "start value %g at node (%ld, %ld, %ld) is out of range in the "
+                                      "solver's units (times divided by 2^%d: |T| <= %g)", opt->start[u], a, b, c, et,
+                                      EIK_T_RANGE);
+                    break;
+                }
                 if (fixed && !isnan(fixed[u])) {
                     if (!isfinite(fixed[u])) {
                         rc = hj_error_set(err, HJ_EINVAL, "fixed value %g at node (%ld, %ld, %ld): must be finite or NaN",
@@ -1978,6 +1984,20 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                                 (double)np * (2 * sizeof(float) + 1) / 1e6);
         }
         mark_rough(&w);
+        /* The caller's start (opt->start): the free nodes take it in
+         * place of the first order solution, refactored by this solve's
+         * own T0 and owner; everything set up from the first order
+         * solution (states, eps, scale, locking, the rough and WENO3
+         * marks) stays as it is without it. */
+        if (opt->start)
+            for (long c = 0; c < n2; c++)
+                for (long b = 0; b < n1; b++)
+                    for (long a = 0; a < n0; a++) {
+                        const long u = a + n0 * (b + n1 * c);
+                        const long k = (a + w.G[0]) * w.st[0] + (b + w.G[1]) * w.st[1] + (c + w.G[2]) * w.st[2];
+                        if (w.state[k] != ST_FREE || !isfinite(opt->start[u]) || !(w.T0[k] > 0)) continue;
+                        w.tau[k] = (ldexp(opt->start[u], -et) - src_tb(&w, w.own[k])) / w.T0[k];
+                    }
         /* One point source, no obstacle, no fixed data: the higher order
          * iterations sweep the 2^dim orthants around the source, each away
          * from it, so that every axis line is visited away from the
@@ -2217,6 +2237,7 @@ static int solve_separate(const hj_eik_grid *g, const double *f, double f_const,
 {
     hj_eik_options o = *opt;
     o.separate_sources = 0;
+    o.start = NULL; /* a start of the minimum is none of the single solves' */
     sep_progress pctx = {opt, 0};
     if (opt->progress) {
         o.progress = sep_progress_cb;

@@ -92,6 +92,29 @@ typedef struct {
                            * memory: a byte per node more; with one
                            * source and no obstacle or fixed data the
                            * orthant pass runs whatever it says */
+    const double *start;  /* NULL (default): the higher order phase
+                           * (orders 3 and 5) starts from the first order
+                           * solution.  Else one value per node, in T's
+                           * units and layout: that phase starts from it,
+                           * e.g. a coarser grid's solution interpolated
+                           * (nested iteration).  The solver still makes
+                           * its first order start and takes from it
+                           * everything but the iterate (which nodes are
+                           * reached, the stopping rule's scale and
+                           * locking threshold, the WENO eps, the nodes
+                           * kept at WENO3 or first order); the start
+                           * replaces the free nodes' values where it is
+                           * finite, not the source neighbourhood's
+                           * nodes that the solver holds, nor fixed
+                           * data or obstacles.  With factoring the
+                           * solver divides it by its own factor T0 =
+                           * f(s) |x - s|: interpolate T / |x - s| (smooth
+                           * near the source), not T (a cone there), and
+                           * multiply back.  Ignored at order 1 and by
+                           * separate_sources' single solves.  The
+                           * fixed point is the same, so the result
+                           * differs from the plain solve's within the
+                           * stopping rule's reach. */
 } hj_eik_options;
 
 /* An iteration ends with a convergence test.  In the first order start,
