@@ -53,13 +53,14 @@
  *   DC_GSCALE=c multiplies the speed's gradient g by c > 0 (c -> 0:
  *   straight rays).
  */
-#include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "hj_cli.h"
 #include "hj_eik.h"
 
 static const double V0 = 2.0, S[3] = {0.1234, -0.0567, 0.0311};
@@ -339,21 +340,12 @@ static int run_hj(long NN, double R, double tol)
     return 0;
 }
 
-/* A whole argument as a number (strtol, strtod: no trailing text, a
+/* A whole argument as a number (hj_cli's parsers: the whole string, a
  * finite double); 0 when it is not one. */
-static int arg_long(const char *s, long *v)
-{
-    char *end;
-    errno = 0;
-    *v = strtol(s, &end, 10);
-    return end != s && !*end && !errno;
-}
+static int arg_long(const char *s, long *v) { return hj_parse_long(s, "", LONG_MIN, LONG_MAX, v, NULL) == HJ_OK; }
 static int arg_double(const char *s, double *v)
 {
-    char *end;
-    errno = 0;
-    *v = strtod(s, &end);
-    return end != s && !*end && !errno && isfinite(*v);
+    return hj_parse_double(s, "", -HUGE_VAL, HUGE_VAL, v, NULL) == HJ_OK;
 }
 
 int main(int argc, char **argv)

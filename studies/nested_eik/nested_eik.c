@@ -30,13 +30,14 @@
  * Built by `make` (build/bin/studies/nested_eik/nested_eik), run by hand
  * only, with OMP_NUM_THREADS=1.  nested_eik --help for the arguments.
  */
-#include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "hj_cli.h"
 #include "hj_eik.h"
 
 static const double V0 = 2.0, S[3] = {0.1234, -0.0567, 0.0311}, G[3] = {0.5, -0.3, 0.2};
@@ -237,19 +238,10 @@ static void print_row(const char *what, long N, const result *r)
            r->fo_iterations, r->sweeps, r->solves, r->change, r->start_dist, r->l1, r->linf, r->cpu, r->fo_cpu);
 }
 
-static int arg_long(const char *s, long *v)
-{
-    char *end;
-    errno = 0;
-    *v = strtol(s, &end, 10);
-    return end != s && !*end && !errno;
-}
+static int arg_long(const char *s, long *v) { return hj_parse_long(s, "", LONG_MIN, LONG_MAX, v, NULL) == HJ_OK; }
 static int arg_double(const char *s, double *v)
 {
-    char *end;
-    errno = 0;
-    *v = strtod(s, &end);
-    return end != s && !*end && !errno && isfinite(*v);
+    return hj_parse_double(s, "", -HUGE_VAL, HUGE_VAL, v, NULL) == HJ_OK;
 }
 
 static void usage(FILE *fp)
