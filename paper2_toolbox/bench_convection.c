@@ -37,8 +37,8 @@ whether the states agree bitwise across thread counts, the error after the
 full turn (maximum of |phi - phi_0| on nodes within 2 dx of the initial
 sphere, and the relative change of the enclosed volume, counted in grid
 cells), the machine's load and the peak resident memory (getrusage).  Run
-by `make reproduce` on one thread (about 80 s; 41^3 in the quick run of
-`make test`), so that the report sets Table 1 beside the published one,
+by `make reproduce` on one thread (about 80 s; 41^3 in `make reproduce
+QUICK=1`), so that the report sets Table 1 beside the published one,
 and again by `make bench` with 1 and 2 threads; never timed by the tests.
 */
 #define _DEFAULT_SOURCE /* getloadavg */
