@@ -55,6 +55,18 @@ int hj_ls_post_mask(double t, double *y, void *ctx, hj_error *err)
 int hj_ls_signed_distance(const hj_ls_grid *g, double *data, double t_max, double error_max, int scheme, int order,
                           long *steps, int *converged, hj_error *err)
 {
+    if (steps) *steps = 0;
+    if (converged) *converged = 0;
+    if (!g || !data)
+        return hj_error_set(err, HJ_EINVAL, "signed distance: the %s is NULL", !g ? "grid" : "data");
+    /* <= 0 picks a default; NaN and infinity are refused rather than taken
+     * for it (NaN) or passed to the integrator as its end time (inf) */
+    if (!isfinite(t_max))
+        return hj_error_set(err, HJ_EINVAL, "signed distance: t_max must be finite (<= 0: the domain's diagonal), got %g",
+                            t_max);
+    if (!isfinite(error_max))
+        return hj_error_set(err, HJ_EINVAL,
+                            "signed distance: error_max must be finite (<= 0: the default 1e-3), got %g", error_max);
     double h = 0, diag = 0;
     for (int d = 0; d < g->dim; d++) {
         h = g->dx[d] > h ? g->dx[d] : h;
@@ -152,8 +164,11 @@ static void kd_nearest(const kdtree *t, long lo, long hi, int depth, const doubl
     }
 }
 
-static int check_points(const hj_ls_grid *g, const double *points, long npoints, hj_error *err)
+static int check_points(const hj_ls_grid *g, const double *points, long npoints, const double *out, hj_error *err)
 {
+    if (!out) return hj_error_set(err, HJ_EINVAL, "unsigned distance: the output array is NULL");
+    if (!g) return hj_error_set(err, HJ_EINVAL, "unsigned distance: the grid is NULL");
+    if (!points) return hj_error_set(err, HJ_EINVAL, "unsigned distance: the points are NULL");
     if (npoints < 1) return hj_error_set(err, HJ_EINVAL, "unsigned distance needs at least one point");
     for (long i = 0; i < npoints * g->dim; i++)
         if (!isfinite(points[i])) return hj_error_set(err, HJ_ENONFINITE, "point %ld is not finite", i / g->dim);
@@ -191,7 +206,7 @@ static double nearest_by_all(const double *x, void *vctx)
 
 int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoints, double *out, hj_error *err)
 {
-    int rc = check_points(g, points, npoints, err);
+    int rc = check_points(g, points, npoints, out, err);
     if (rc) return rc;
     kdtree t = {g->dim, points, malloc(sizeof(long) * (size_t)npoints)};
     if (!t.perm) return hj_error_set(err, HJ_ENOMEM, "out of memory for the point tree");
@@ -205,7 +220,7 @@ int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoi
 
 int hj_ls_unsigned_distance_brute(const hj_ls_grid *g, const double *points, long npoints, double *out, hj_error *err)
 {
-    int rc = check_points(g, points, npoints, err);
+    int rc = check_points(g, points, npoints, out, err);
     if (rc) return rc;
     nearest_ctx c = {NULL, points, npoints, g->dim};
     hj_ls_fill(g, out, nearest_by_all, &c);

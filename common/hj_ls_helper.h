@@ -34,7 +34,8 @@ int hj_ls_post_mask(double t, double *y, void *ctx, hj_error *err);
  * the average absolute update of a step drops below error_max * max dx
  * (<= 0: the toolbox's default 1e-3).  *steps (may be NULL) receives the
  * number of steps and *converged (may be NULL) whether the update rule
- * stopped the iteration. */
+ * stopped the iteration.  A NULL grid or data, or a NaN or infinite t_max
+ * or error_max, is HJ_EINVAL before any step. */
 int hj_ls_signed_distance(const hj_ls_grid *g, double *data, double t_max, double error_max, int scheme, int order,
                           long *steps, int *converged, hj_error *err);
 
@@ -42,7 +43,8 @@ int hj_ls_signed_distance(const hj_ls_grid *g, double *data, double t_max, doubl
  * nearest of npoints points (row-major, g->dim coordinates each), by a k-d
  * tree: O(P log P) to build and about O(log P) per node, instead of the
  * toolbox's brute force O(P) per node.  Exact (the tree is searched with
- * exact pruning).  npoints >= 1. */
+ * exact pruning).  npoints >= 1; a NULL grid, point list or out is
+ * HJ_EINVAL. */
 int hj_ls_unsigned_distance(const hj_ls_grid *g, const double *points, long npoints, double *out, hj_error *err);
 
 /* The brute force method, for testing. */

@@ -182,6 +182,41 @@ static void mask_errors(void **state)
             }
 }
 
+/* The distance helpers' bad arguments are errors with a message, not a
+ * segfault or a silent default: a NULL grid, array or point list
+ * (HJ_EINVAL naming it), and a NaN or infinite t_max or error_max of
+ * hj_ls_signed_distance (NaN took the default, an infinite t_max came
+ * back as "tspan[1] is not finite", an argument the caller never gave). */
+static void distance_errors(void **state)
+{
+    (void)state;
+    hj_ls_grid g = grid(2, 21);
+    double *y = hj_ls_alloc(&g), *d = hj_ls_alloc(&g), p[2] = {0, 0};
+    hj_ls_fill(&g, y, squashed, NULL);
+    hj_error err;
+    long steps = -1;
+    int conv = -1;
+    assert_int_equal(hj_ls_signed_distance(NULL, y, 0, 0, HJ_LS_ENO2, 2, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "grid is NULL");
+    assert_int_equal(hj_ls_signed_distance(&g, NULL, 0, 0, HJ_LS_ENO2, 2, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "data is NULL");
+    const double bad[3] = {NAN, INFINITY, -INFINITY};
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(hj_ls_signed_distance(&g, y, bad[i], 0, HJ_LS_ENO2, 2, &steps, &conv, &err), HJ_EINVAL);
+        assert_has(err.msg, "t_max");
+        assert_true(steps == 0 && conv == 0);
+        assert_int_equal(hj_ls_signed_distance(&g, y, 0, bad[i], HJ_LS_ENO2, 2, &steps, &conv, &err), HJ_EINVAL);
+        assert_has(err.msg, "error_max");
+    }
+    assert_int_equal(hj_ls_unsigned_distance(&g, NULL, 1, d, &err), HJ_EINVAL);
+    assert_has(err.msg, "points are NULL");
+    assert_int_equal(hj_ls_unsigned_distance(NULL, p, 1, d, &err), HJ_EINVAL);
+    assert_has(err.msg, "grid is NULL");
+    assert_int_equal(hj_ls_unsigned_distance_brute(&g, p, 1, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "output array is NULL");
+    hj_ls_free(y), hj_ls_free(d);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_helper", NULL, NULL, cmocka_unit_test(mask_constrains), cmocka_unit_test(mask_errors),
                         cmocka_unit_test(signed_distance_iterative),
-                        cmocka_unit_test(unsigned_distance_matches_brute_force))
+                        cmocka_unit_test(unsigned_distance_matches_brute_force), cmocka_unit_test(distance_errors))
