@@ -80,6 +80,22 @@ int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, in
     /* the header's second line, at most 256 characters (VTK's limit) */
     if (!title || strlen(title) > 255 || strpbrk(title, "\n\r"))
         return hj_error_set(err, HJ_EINVAL, "%s: the VTK title must be one line of at most 255 characters", path);
+    /* "nan" and "inf" in an ASCII legacy file are not numbers to VTK's
+     * reader (ParaView stops reading there): name the value, write nothing */
+    for (int f = 0; f < nfields; f++)
+        for (size_t r = 0; r < g->rows; r++) {
+            long i[HJ_LS_MAXDIM] = {0};
+            const double *row = fields[f] + hj_ls_row(g, r, i);
+            for (long a = 0; a < g->N[0]; a++)
+                if (!isfinite(row[a])) {
+                    char pos[256];
+                    hj_ls_format_node(g, r, a, pos, sizeof pos);
+                    return hj_error_set(err, HJ_ENONFINITE,
+                                        "%s: field %s is %g at x = (%s); VTK readers take only finite values in "
+                                        "ASCII (replace it, e.g. by a sentinel value)",
+                                        path, names[f], row[a], pos);
+                }
+        }
     hj_out out;
     rc = hj_out_open(&out, path, err);
     if (rc) return rc;

@@ -38,7 +38,9 @@ int hj_ls_write_block(FILE *fp, const hj_ls_grid *g, int nfields, const char *co
  * most 255 characters, no line break) and every field needs a name, one
  * word (no blank: VTK reads the SCALARS name up to one); anything else,
  * or a NULL path, title, name list or field, is HJ_EINVAL and no file is
- * written. */
+ * written.  A NaN or infinite value is HJ_ENONFINITE naming the field and
+ * the node, and no file is written: VTK's reader takes "nan" and "inf" in
+ * an ASCII file for malformed data (ParaView stops reading there). */
 int hj_ls_write_vtk(const char *path, const hj_ls_grid *g, const char *title, int nfields,
                     const char *const *names, const double *const *fields, hj_error *err);
 

@@ -94,6 +94,23 @@ static void vtk_file(void **state)
     assert_string_equal(text, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\n"
                               "ORIGIN 0 0 0\nSPACING 0.5 1 1\nPOINT_DATA 6\nSCALARS phi double 1\nLOOKUP_TABLE default\n"
                               "0\n0\n0\n0\n0\n0\n");
+    /* a NaN or infinite value: "nan" and "inf" in an ASCII legacy file
+     * are not numbers to VTK's reader (ParaView stops at them), so the
+     * field and node are named and no file is written (before: HJ_OK and
+     * a file ParaView could not read) */
+    assert_int_equal(remove(path), 0);
+    const double bad[3] = {NAN, INFINITY, -INFINITY};
+    for (int q = 0; q < 3; q++) {
+        a[hj_ls_index(&g, (long[]){1, 1})] = bad[q];
+        const char *two[2] = {"phi", "psi"};
+        double *zero = hj_ls_alloc(&g);
+        const double *f2[2] = {zero, a};
+        assert_int_equal(hj_ls_write_vtk(path, &g, "t", 2, two, f2, &err), HJ_ENONFINITE);
+        assert_has(err.msg, "field psi");
+        assert_has(err.msg, "x = (0.5, 1)");
+        assert_null(fopen(path, "r"));
+        hj_ls_free(zero);
+    }
     hj_ls_free(a);
 }
 
