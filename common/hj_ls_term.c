@@ -916,6 +916,7 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     for (long j = 0; j < n; j++) {
         const size_t k = rc->k + (size_t)j;
         double a;
+        if (c->initial && !isfinite(c->initial[k])) { *bad = j; return HJ_ENONFINITE; }
         if (c->initial && c->subcell_fix) a = sign0(c->initial[k]);
         else if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
         else {
@@ -985,7 +986,18 @@ static int reinit_eval(const hj_ls_term *term, double t, double *y, double *ydot
     double h = 0;
     for (int d = 0; d < c->grid->dim; d++) h = c->grid->dx[d] > h ? c->grid->dx[d] : h;
     godunov_term gt = {c->grid, c->scheme, NULL, c->initial, h * h, c->cfl_rule, c->subcell_fix, {0}};
-    return godunov_eval(c->grid, &gt, c->weno_eps, t, y, ydot, bound, "reinitialization", err);
+    const int rc = godunov_eval(c->grid, &gt, c->weno_eps, t, y, ydot, bound, "reinitialization", err);
+    /* the rows report a NaN or infinite phi_0 (the only value they check
+     * here) as a callback's; say what it is */
+    const char *at = rc == HJ_ENONFINITE && err ? strstr(err->msg, " returned a non-finite value at x = (") : NULL;
+    if (at) {
+        char pos[256];
+        const char *p0 = strchr(at, '('), *p1 = strchr(p0, ')');
+        snprintf(pos, sizeof pos, "%.*s", p1 ? (int)(p1 - p0 - 1) : 0, p0 + 1);
+        return hj_error_set(err, HJ_ENONFINITE, "reinitialization: the initial data phi_0 is not finite at x = (%s)",
+                            pos);
+    }
+    return rc;
 }
 
 void hj_ls_reinit_init(hj_ls_reinit *c, const hj_ls_grid *g, int scheme, const double *initial)

@@ -397,6 +397,34 @@ static void callback_errors(void **state)
     hj_ls_free(y), hj_ls_free(f);
 }
 
+/* A NaN or infinite value of the reinitialization's initial data phi_0 is
+ * named with its node, with and without the subcell fix, at the first
+ * evaluation; before, S(phi_0) carried it into the state and hj_ls_ode
+ * reported a blow-up after a step (or, with the fix, sign(NaN) = 0 kept
+ * the node still).  Finite data give the same bits as before. */
+static void reinit_names_bad_initial(void **state)
+{
+    (void)state;
+    hj_ls_grid g = hj_test_grid(2, 11, -1, 1, HJ_LS_BC_EXTRAP_AWAY);
+    double *y = hj_ls_alloc(&g), *f = hj_ls_alloc(&g), *phi0 = hj_ls_alloc(&g), b;
+    for (size_t k = 0; k < g.total; k++) phi0[k] = 0.1 * (double)(k % 7) - 0.3, y[k] = phi0[k];
+    hj_error err;
+    const double bad[2] = {NAN, INFINITY};
+    for (int fix = 0; fix < 2; fix++)
+        for (int q = 0; q < 2; q++) {
+            hj_ls_reinit ri;
+            hj_ls_reinit_init(&ri, &g, HJ_LS_ENO2, phi0);
+            ri.subcell_fix = fix;
+            phi0[hj_ls_index(&g, (long[]){3, 6})] = bad[q];
+            assert_int_equal(ri.base.eval(&ri.base, 0, y, f, &b, &err), HJ_ENONFINITE);
+            assert_has(err.msg, "initial data");
+            assert_has(err.msg, "x = (-0.4, 0.2)");
+            phi0[hj_ls_index(&g, (long[]){3, 6})] = 0.25;
+            assert_int_equal(ri.base.eval(&ri.base, 0, y, f, &b, &err), HJ_OK);
+        }
+    hj_ls_free(y), hj_ls_free(f), hj_ls_free(phi0);
+}
+
 /* A position-dependent nonconvex Hamiltonian in 3-D and partials that use
  * the gradient box, per node and per row with the same expressions: both
  * forms must give the same bits for every dissipation and CFL rule, with
@@ -1393,7 +1421,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_term", NULL, NULL, cmocka_unit_test(convection_or
                         cmocka_unit_test(convection_fused_stage), cmocka_unit_test(convection_2d_fused_stage),
                         cmocka_unit_test(convection_steady_cache),
                         cmocka_unit_test(lax_friedrichs_linear_is_upwind),
-                        cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors),
+                        cmocka_unit_test(normal_and_lf_expanding_circle), cmocka_unit_test(callback_errors), cmocka_unit_test(reinit_names_bad_initial),
                         cmocka_unit_test(convection_names_bad_velocity),
                         cmocka_unit_test(lax_friedrichs_rows_equal_nodes), cmocka_unit_test(lax_friedrichs_matches_definition),
                         cmocka_unit_test(callback_errors_rows), cmocka_unit_test(lax_friedrichs_ham_partial_row),
