@@ -7,6 +7,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "hj_sys.h"
+
 void hj_ls_ode_defaults(hj_ls_ode_opts *o)
 {
     o->factor_cfl = 0.5;
@@ -267,6 +269,15 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
     if (!(o.blowup_factor >= 0))
         return hj_error_set(err, HJ_EINVAL, "the blow-up factor must be >= 0 (0: no bound), got %g", o.blowup_factor);
+    /* calloc refuses only a block beyond memory and swap: stage arrays
+     * that fit one by one but not with the state would page, or the
+     * first step's writes be killed; refuse before reading y */
+    const double mem = hj_sys_physical_memory(), need = 3.0 * (double)sizeof(double) * (double)g->total;
+    if (mem > 0 && need > mem)
+        return hj_error_set(err, HJ_ENOMEM,
+                            "hj_ls_ode: the integration needs %.3g GB (the state and two arrays of %zu doubles), the "
+                            "machine has %.3g GB",
+                            need / 1e9, g->total, mem / 1e9);
     int rc0 = check_initial(g, y, err);
     if (rc0) return rc0;
     const double limit = o.blowup_factor > 0 ? o.blowup_factor * blowup_scale(g, y) : INFINITY;

@@ -29,7 +29,9 @@
  * they keep that stability exactly up to dt = bound and lose it beyond.
  *
  * Memory: the state y plus two arrays (one stage, one time derivative),
- * whatever the order.
+ * whatever the order; when the three exceed the machine's physical memory
+ * the call fails with HJ_ENOMEM (both sizes in the message) before it
+ * reads y or allocates (the terms' own work arrays are not counted).
  *
  * Stages after the first are fused into the term's pass where the term
  * has that form (hj_ls_term_stage: convection, and Lax-Friedrichs alone

@@ -13,6 +13,7 @@
 #include "hj_ls_ode.h"
 #include "hj_math.h"
 #include "hj_ls_term.h"
+#include "hj_sys.h"
 
 static hj_ls_grid grid1(long n)
 {
@@ -690,7 +691,35 @@ static void term_on_null_grid(void **state)
     hj_ls_free(y);
 }
 
+/* A grid whose one array fits in memory but whose integration does not
+ * (the state and the two stage arrays: 3 arrays of 0.45 of the machine's
+ * memory) is refused with HJ_ENOMEM before the state is read or an array
+ * allocated: before, the stage arrays' calloc succeeded (overcommit) and
+ * the first step's writes would page or be killed by the kernel's OOM
+ * killer.  The state passed here is a small dummy, never read. */
+static void integration_beyond_memory(void **state)
+{
+    (void)state;
+    const double mem = hj_sys_physical_memory();
+    if (!(mem > 0)) skip();
+    const long n0 = 1 << 15, n1 = (long)(0.45 * mem / 8.0 / (double)n0);
+    const double lo[2] = {0, 0}, hi[2] = {1, 1};
+    const hj_ls_bc bc[2] = {{HJ_LS_BC_EXTRAP_AWAY, 0, 0}, {HJ_LS_BC_EXTRAP_AWAY, 0, 0}};
+    hj_ls_grid g;
+    hj_error err;
+    assert_int_equal(hj_ls_grid_init(&g, 2, lo, hi, (long[]){n0, n1}, bc, &err), HJ_OK);
+    hj_ls_normal nm;
+    hj_ls_normal_init(&nm, &g, HJ_LS_UPWIND_FIRST);
+    nm.speed.value = 1;
+    double dummy[1] = {0};
+    const double span[2] = {0, 1};
+    for (int order = 1; order <= 3; order++) {
+        assert_int_equal(hj_ls_ode(order, &g, &nm.base, span, 2, dummy, NULL, NULL, NULL, NULL, &err), HJ_ENOMEM);
+        assert_has(err.msg, "GB");
+    }
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_ode", NULL, NULL, cmocka_unit_test(integrator_orders),
                         cmocka_unit_test(outputs_and_options), cmocka_unit_test(no_motion), cmocka_unit_test(endless_span), cmocka_unit_test(tiny_span_steps), cmocka_unit_test(error_reports),
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(fused_stages_bitwise),
-                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(term_grid_unused_bc_values), cmocka_unit_test(term_on_null_grid), cmocka_unit_test(callback_errors))
+                        cmocka_unit_test(convection_fused_bitwise), cmocka_unit_test(term_on_another_grid), cmocka_unit_test(term_grid_unused_bc_values), cmocka_unit_test(term_on_null_grid), cmocka_unit_test(callback_errors), cmocka_unit_test(integration_beyond_memory))
