@@ -272,7 +272,8 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     /* calloc refuses only a block beyond memory and swap: stage arrays
      * that fit one by one but not with the state would page, or the
      * first step's writes be killed; refuse before reading y */
-    const double mem = hj_sys_physical_memory(), need = 3.0 * (double)sizeof(double) * (double)g->total;
+    const double need = 3.0 * (double)sizeof(double) * (double)g->total;
+    const double mem = need > 1e8 ? hj_sys_physical_memory() : 0; /* no system call per call on small grids */
     if (mem > 0 && need > mem)
         return hj_error_set(err, HJ_ENOMEM,
                             "hj_ls_ode: the integration needs %.3g GB (the state and two arrays of %zu doubles), the "
