@@ -983,6 +983,11 @@ static int reinit_eval(const hj_ls_term *term, double t, double *y, double *ydot
 {
     const hj_ls_reinit *c = (const hj_ls_reinit *)term;
     if (!c->initial) return hj_error_set(err, HJ_EINVAL, "reinitialization needs the initial data");
+    /* S(phi_0) must stay that of the data the run started from */
+    if (c->initial == y)
+        return hj_error_set(err, HJ_EINVAL,
+                            "reinitialization: the initial data is the array being integrated; give a copy of phi_0 "
+                            "(hj_ls_copy into an array of its own)");
     double h = 0;
     for (int d = 0; d < c->grid->dim; d++) h = c->grid->dx[d] > h ? c->grid->dx[d] : h;
     godunov_term gt = {c->grid, c->scheme, NULL, c->initial, h * h, c->cfl_rule, c->subcell_fix, {0}};

@@ -159,7 +159,9 @@ void hj_ls_normal_init(hj_ls_normal *c, const hj_ls_grid *g, int scheme);
 /* ---- reinitialization (4): G = -S(phi_0)(|grad phi| - 1) with the
  * smeared sign S = phi_0 / sqrt(phi_0^2 + max dx^2) of the initial data
  * (Osher & Fedkiw (7.5)) and Godunov upwinding as for normal motion with
- * speed S.  initial is an array on the grid.
+ * speed S.  initial is an array on the grid, a copy of the data the run
+ * starts from: the array being integrated itself is HJ_EINVAL (S would
+ * follow the iterate; ToolboxLS's schemeData.initial is a copy).
  *
  * subcell_fix = 1 applies the subcell fix of Russo & Smereka (2000) as
  * ToolboxLS 1.1's termReinit does by default (subcell_fix_order 1): S is
