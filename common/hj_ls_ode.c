@@ -260,7 +260,9 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     if (ntspan < 2) return hj_error_set(err, HJ_EINVAL, "tspan needs a start and at least one output time");
     for (int k = 0; k < ntspan; k++) {
         if (!isfinite(tspan[k])) return hj_error_set(err, HJ_ENONFINITE, "tspan[%d] is not finite", k);
-        if (k && !(tspan[k] > tspan[k - 1])) return hj_error_set(err, HJ_EINVAL, "tspan must increase");
+        if (k && !(tspan[k] > tspan[k - 1]))
+            return hj_error_set(err, HJ_EINVAL, "tspan must increase: tspan[%d] = %.17g <= tspan[%d] = %.17g", k,
+                                tspan[k], k - 1, tspan[k - 1]);
     }
     /* (0, 1]: each scheme is a convex combination of Euler steps, stable up
      * to the term's bound (hj_ls_ode.h). */

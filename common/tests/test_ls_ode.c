@@ -266,6 +266,11 @@ static void error_reports(void **state)
     hj_error err;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
     assert_non_null(strstr(err.msg, "zero CFL bound"));
+    /* times out of order: the message says which and their values (it
+     * said only "tspan must increase") */
+    const double back[3] = {0, 1, 0.5};
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, back, 3, y, NULL, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "tspan[2] = 0.5 <= tspan[1] = 1");
     c.bound = NAN;
     assert_int_equal(hj_ls_ode(2, &g, &c.base, span, 2, y, NULL, NULL, NULL, NULL, &err), HJ_ENONFINITE);
     assert_non_null(strstr(err.msg, "non-finite CFL bound"));
