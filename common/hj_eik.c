@@ -2326,3 +2326,25 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const, const un
     if (nsrc + nfix < 2) return solve_joint(g, f, f_const, obstacle, src, nsrc, fixed, opt, T, st, NULL, 0, err);
     return solve_separate(g, f, f_const, obstacle, src, nsrc, fixed, n, nfix, opt, T, st, err);
 }
+
+/* v0 + g . y, summed in the order of the dimensions */
+static double linear_speed(int dim, double v0, const double *g, const double *y)
+{
+    double v = v0;
+    for (int d = 0; d < dim; d++) v += g[d] * y[d];
+    return v;
+}
+
+double hj_eik_linear_time(int dim, double v0, const double *g, const double *s, const double *x)
+{
+    if (dim < 1 || dim > 3 || !g || !s || !x) return NAN;
+    double r2 = 0, g2 = 0;
+    for (int d = 0; d < dim; d++) {
+        r2 += (x[d] - s[d]) * (x[d] - s[d]);
+        g2 += g[d] * g[d];
+    }
+    const double vs = linear_speed(dim, v0, g, s), vx = linear_speed(dim, v0, g, x);
+    if (!(vs > 0 && vx > 0)) return NAN;
+    if (g2 == 0) return sqrt(r2) / v0;
+    return acosh(1 + g2 * r2 / (2 * vs * vx)) / sqrt(g2);
+}

@@ -64,15 +64,10 @@ static const double g2[3] = {0.5, 1, 0}, g3[3] = {0.5, 0.5, 0.5};
 /* Speed and exact travel time of the linear problem at x. */
 static void linear_at(int dim, const double x[3], double *v, double *t)
 {
-    const double *gv = dim == 2 ? g2 : g3;
-    double gn2 = 0, r2 = 0;
+    const double *gv = dim == 2 ? g2 : g3, origin[3] = {0, 0, 0};
     *v = 2;
-    for (int d = 0; d < dim; d++) {
-        *v += gv[d] * x[d];
-        gn2 += gv[d] * gv[d];
-        r2 += x[d] * x[d];
-    }
-    *t = acosh(1 + gn2 * r2 / (2 * 2.0 * *v)) / sqrt(gn2);
+    for (int d = 0; d < dim; d++) *v += gv[d] * x[d];
+    *t = hj_eik_linear_time(dim, 2, gv, origin, x);
 }
 
 /* One solve of a problem (0 distance, 1 linear): CPU seconds, errors. */

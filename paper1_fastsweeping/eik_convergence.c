@@ -74,13 +74,12 @@ static double vel(const double *x, int dim)
 
 static double exact_from(int cs, const double *x, const double *s, int dim)
 {
-    double r2 = 0, g2 = 0;
-    for (int d = 0; d < dim; d++) {
-        r2 += (x[d] - s[d]) * (x[d] - s[d]);
-        g2 += G[d] * G[d];
+    if (cs == CONST) {
+        double r2 = 0;
+        for (int d = 0; d < dim; d++) r2 += (x[d] - s[d]) * (x[d] - s[d]);
+        return sqrt(r2);
     }
-    if (cs == CONST) return sqrt(r2);
-    return acosh(1 + g2 * r2 / (2 * vel(s, dim) * vel(x, dim))) / sqrt(g2);
+    return hj_eik_linear_time(dim, V0, G, s, x);
 }
 
 static double exact(int cs, const double *x, int dim)

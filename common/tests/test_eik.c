@@ -305,15 +305,7 @@ static double lin_v(const double *x, int dim)
     for (int d = 0; d < dim; d++) v += G[d] * x[d];
     return v;
 }
-static double lin_time(const double *x, const double *s, int dim)
-{
-    double g2 = 0, r2 = 0;
-    for (int d = 0; d < dim; d++) {
-        g2 += G[d] * G[d];
-        r2 += (x[d] - s[d]) * (x[d] - s[d]);
-    }
-    return acosh(1 + g2 * r2 / (2 * lin_v(s, dim) * lin_v(x, dim))) / sqrt(g2);
-}
+static double lin_time(const double *x, const double *s, int dim) { return hj_eik_linear_time(dim, V0, G, s, x); }
 
 /* Max error of the point source in the linear velocity on [-1, 1]^dim
  * with N intervals (source off the nodes). */
@@ -1502,6 +1494,39 @@ static void threads_bitwise(void **state)
 #endif
 }
 
+/* The closed form of the linear velocity: zero at the source, symmetric
+ * in source and point, r / v0 without a gradient, |grad T| v = 1 (central
+ * differences of step 1e-5, error O(1e-10)), NaN where v <= 0. */
+static void linear_time_closed_form(void **state)
+{
+    (void)state;
+    const double s[3] = {0.1234, -0.0567, 0.0311}, zero[3] = {0, 0, 0};
+    const double pts[3][3] = {{0.9, -0.8, 0.7}, {-0.95, 0.9, -0.6}, {0.2, 0.15, -0.9}};
+    for (int dim = 1; dim <= 3; dim++) {
+        assert_true(hj_eik_linear_time(dim, V0, G, s, s) == 0);
+        for (int i = 0; i < 3; i++) {
+            const double *x = pts[i], t = hj_eik_linear_time(dim, V0, G, s, x);
+            assert_true(t > 0);
+            assert_true(fabs(t - hj_eik_linear_time(dim, V0, G, x, s)) <= 1e-15 * t);
+            double r2 = 0, grad2 = 0;
+            for (int d = 0; d < dim; d++) r2 += (x[d] - s[d]) * (x[d] - s[d]);
+            assert_true(hj_eik_linear_time(dim, V0, zero, s, x) == sqrt(r2) / V0);
+            for (int d = 0; d < dim; d++) {
+                double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+                xp[d] += 1e-5, xm[d] -= 1e-5;
+                const double p = (hj_eik_linear_time(dim, V0, G, s, xp) - hj_eik_linear_time(dim, V0, G, s, xm)) / 2e-5;
+                grad2 += p * p;
+            }
+            if (fabs(sqrt(grad2) * lin_v(x, dim) - 1) > 1e-8)
+                fail_msg("dim %d point %d: |grad T| v = %.12g", dim, i, sqrt(grad2) * lin_v(x, dim));
+        }
+    }
+    const double far[3] = {-10, 0, 0};
+    assert_true(isnan(hj_eik_linear_time(3, V0, G, s, far))); /* v = 2 - 5 */
+    assert_true(isnan(hj_eik_linear_time(0, V0, G, s, s)));
+    assert_true(isnan(hj_eik_linear_time(4, V0, G, s, s)));
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), cmocka_unit_test(fixed_line_inside_is_exact), cmocka_unit_test(obstacle_not_crossed),
                         cmocka_unit_test(bad_input), cmocka_unit_test(noconv_keeps_iterate),
                         cmocka_unit_test(noconv_in_first_order_start),
@@ -1519,4 +1544,4 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(causal_sweeps_same_solution),
                         cmocka_unit_test(causal_sweeps_bitwise), cmocka_unit_test(separate_sources_order),
                         cmocka_unit_test(separate_sources_min_bitwise), cmocka_unit_test(separate_sources_bad_input),
-                        cmocka_unit_test(start_from_coarse))
+                        cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form))
