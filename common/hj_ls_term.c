@@ -837,23 +837,6 @@ static long first_nonfinite(const double *v, long bad)
 
 /* ---- normal motion and reinitialization ------------------------------ */
 
-/* Godunov |grad phi| for speed a at one node from the left and right
- * derivatives of every dimension (stride n in dl, dr); the upwind
- * components go to p. */
-static inline double godunov(int dim, const double *dl, const double *dr, long n, double a, double *p)
-{
-    double s = 0;
-    for (int d = 0; d < dim; d++) {
-        const double l = dl[d * n], r = dr[d * n];
-        double pl, pr;
-        if (a >= 0) pl = l > 0 ? l : 0, pr = r < 0 ? r : 0;
-        else pl = l < 0 ? l : 0, pr = r > 0 ? r : 0;
-        p[d] = pl * pl >= pr * pr ? pl : pr;
-        s += p[d] * p[d];
-    }
-    return sqrt(s);
-}
-
 /* Speed a (normal) or S(phi_0) (reinit) times Godunov |grad phi|. */
 typedef struct {
     const hj_ls_grid *grid;
@@ -1001,10 +984,11 @@ static inline double fold_max_nan(double *restrict v, long len)
 }
 
 /* One row of normal motion or reinitialization, in passes over the row:
- * the speed a, the Godunov upwind component p_d per dimension (the side
- * chosen by selects) and |p| (the squares summed in dimension order, as
- * godunov()), ydot, the subcell fix, the CFL accumulation.  Per node the
- * same operations in the same order as node by node, so the same bits.
+ * the speed a, the Godunov upwind component p_d per dimension (for a >= 0
+ * the larger in magnitude of max(D-, 0) and min(D+, 0), the roles swapped
+ * for a < 0, by selects) and |p| (the squares summed in dimension order),
+ * ydot, the subcell fix, the CFL accumulation.  Per node the same
+ * operations in the same order as node by node, so the same bits.
  * The CFL maxima: per node of the row in rc->tmax (HJ_LS_CFL_NODE; a NaN
  * sum is skipped, as by the node loop's s > m) or the row's by halves
  * (HJ_LS_CFL_TOOLBOX; NaN sticks), merged at the end: a maximum does not
