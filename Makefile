@@ -137,6 +137,11 @@ $(BUILD)/pic/common/hj_ls_%.o: CFLAGS += -fopenmp -O3
 # the AVX-512 clone is unchanged).  No value changes: no FP exception is
 # ever inspected.
 $(BUILD)/pic/common/hj_ls_term.o: CFLAGS += -fno-trapping-math
+# sqrt in a row loop vectorises only without errno (gcc otherwise keeps a
+# call under a branch per node for a negative argument).  Every sqrt in
+# hj_ls_term.c takes a sum of squares, never negative: errno is never set
+# either way, and sqrt's value is the same (correctly rounded).
+$(BUILD)/pic/common/hj_ls_term.o: CFLAGS += -fno-math-errno
 # The upwind row kernels (WENO5's windows are one long dependency chain
 # per node): instructions also scheduled before register allocation
 # (-fsched-pressure: without adding spills) and the short loops unrolled

@@ -823,24 +823,19 @@ void hj_ls_convection_free(hj_ls_convection *c)
     c->velocity_cache = NULL;
 }
 
-/* ---- normal motion and reinitialization ------------------------------ */
-
-/* Godunov |grad phi| for speed a at one node from the left and right
- * derivatives of every dimension (stride n in dl, dr); the upwind
- * components go to p. */
-static inline double godunov(int dim, const double *dl, const double *dr, long n, double a, double *p)
+/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or
+ * bad.  The common case, all finite, is one vector pass. */
+static long first_nonfinite(const double *v, long bad)
 {
-    double s = 0;
-    for (int d = 0; d < dim; d++) {
-        const double l = dl[d * n], r = dr[d * n];
-        double pl, pr;
-        if (a >= 0) pl = l > 0 ? l : 0, pr = r < 0 ? r : 0;
-        else pl = l < 0 ? l : 0, pr = r > 0 ? r : 0;
-        p[d] = pl * pl >= pr * pr ? pl : pr;
-        s += p[d] * p[d];
-    }
-    return sqrt(s);
+    int any = 0;
+    for (long j = 0; j < bad; j++) any |= !(v[j] - v[j] == 0);
+    if (any)
+        for (long j = 0; j < bad; j++)
+            if (!(v[j] - v[j] == 0)) return j;
+    return bad;
 }
+
+/* ---- normal motion and reinitialization ------------------------------ */
 
 /* Speed a (normal) or S(phi_0) (reinit) times Godunov |grad phi|. */
 typedef struct {
@@ -897,6 +892,110 @@ static int subcell_update(const hj_ls_grid *g, const double *phi0, size_t k, con
     return 1;
 }
 
+/* The speed row of a Godunov row: a[j] = the normal speed (normal motion)
+ * or S(phi_0) (reinitialization) at node j for j < nb; returns nb, n or
+ * the first node whose speed or phi_0 is not finite (the callback is
+ * called node by node up to that one, as before). */
+static long godunov_speed(const godunov_term *c, double t, const double *y, const row_ctx *rc, double *restrict a)
+{
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    if (c->initial) {
+        const double *restrict i0 = c->initial + rc->k;
+        const long nb = first_nonfinite(i0, n);
+        if (c->subcell_fix)
+            for (long j = 0; j < nb; j++) a[j] = sign0(i0[j]);
+        else {
+            const double s2 = c->smear2;
+            for (long j = 0; j < nb; j++) a[j] = i0[j] / sqrt(i0[j] * i0[j] + s2);
+        }
+        return nb;
+    }
+    if (scalar_row(c->speed, t, g, rc, y, a)) return first_nonfinite(a, n);
+    const hj_ls_scalar *s = c->speed;
+    if (s->fn) {
+        double x[HJ_LS_MAXDIM];
+        memcpy(x, rc->x, sizeof(double) * (size_t)g->dim);
+        for (long j = 0; j < n; j++) {
+            x[0] = g->min[0] + (double)j * g->dx[0];
+            a[j] = s->fn(t, x, y[rc->k + (size_t)j], s->ctx);
+            if (!isfinite(a[j])) return j;
+        }
+        return n;
+    }
+    if (s->array) memcpy(a, s->array + rc->k, sizeof(double) * (size_t)n);
+    else
+        for (long j = 0; j < n; j++) a[j] = s->value;
+    return first_nonfinite(a, n);
+}
+
+/* The subcell fix on nodes j < nb of a row: a vector pass marks the nodes
+ * near the interface of phi_0 (sign0 of phi_0 zero, or different at a
+ * neighbour along some dimension: subcell_update's test), and only those
+ * take subcell_update's G (a few nodes near the front). */
+static void godunov_subcell(const godunov_term *c, const double *y, double *ydot, const row_ctx *rc, long nb,
+                            double *restrict sg, double *restrict near)
+{
+    const hj_ls_grid *g = c->grid;
+    const long n = g->N[0];
+    const double *restrict p0 = c->initial + rc->k;
+    for (long j = 0; j < n; j++) sg[j] = sign0(p0[j]);
+    for (long j = 0; j < nb; j++) near[j] = sg[j] == 0;
+    for (long j = 1; j < nb; j++) near[j] = sg[j - 1] != sg[j] ? 1 : near[j];
+    for (long j = 0; j < nb && j < n - 1; j++) near[j] = sg[j + 1] != sg[j] ? 1 : near[j];
+    for (int d = 1; d < g->dim; d++) {
+        const ptrdiff_t st = g->stride[d];
+        if (rc->idx[d] > 0) {
+            const double *restrict q = p0 - st;
+            for (long j = 0; j < nb; j++) near[j] = sign0(q[j]) != sg[j] ? 1 : near[j];
+        }
+        if (rc->idx[d] < g->N[d] - 1) {
+            const double *restrict q = p0 + st;
+            for (long j = 0; j < nb; j++) near[j] = sign0(q[j]) != sg[j] ? 1 : near[j];
+        }
+    }
+    long idx[HJ_LS_MAXDIM];
+    memcpy(idx, rc->idx, sizeof(long) * (size_t)g->dim);
+    const double h = sqrt(c->smear2);
+    for (long j = 0; j < nb; j++) {
+        if (near[j] == 0) continue;
+        const size_t k = rc->k + (size_t)j;
+        idx[0] = j;
+        double G;
+        if (subcell_update(g, c->initial, k, idx, y[k], h, &G)) ydot[k] = G;
+    }
+}
+
+/* v > m, or v NaN (which then sticks): the toolbox rule's running maximum */
+static inline double max_nan(double v, double m) { return v > m || v != v ? v : m; }
+
+/* max_nan over v[0..len-1] (len > 0), folding the upper half onto the
+ * lower (overwrites v): vector passes, and the result of the node loop
+ * (the largest value, or NaN if one is NaN: the order does not matter). */
+static inline double fold_max_nan(double *restrict v, long len)
+{
+    while (len > 1) {
+        const long half = len / 2;
+        for (long j = 0; j < half; j++) v[j] = max_nan(v[j + half], v[j]);
+        if (len & 1) v[0] = max_nan(v[len - 1], v[0]);
+        len = half;
+    }
+    return v[0];
+}
+
+/* One row of normal motion or reinitialization, in passes over the row:
+ * the speed a, the Godunov upwind component p_d per dimension (for a >= 0
+ * the larger in magnitude of max(D-, 0) and min(D+, 0), the roles swapped
+ * for a < 0, by selects) and |p| (the squares summed in dimension order),
+ * ydot, the subcell fix, the CFL accumulation.  Per node the same
+ * operations in the same order as node by node, so the same bits.
+ * The CFL maxima: per node of the row in rc->tmax (HJ_LS_CFL_NODE; a NaN
+ * sum is skipped, as by the node loop's s > m) or the row's by halves
+ * (HJ_LS_CFL_TOOLBOX; NaN sticks), merged at the end: a maximum does not
+ * depend on the order.  A row with a non-finite speed or phi_0 at node
+ * nb is computed up to nb (ydot and the toolbox maxima of the nodes
+ * before it, as node by node) and reports nb. */
+HJ_LS_TERM_CLONES
 static int godunov_row(const void *term, double t, double *y, double *ydot, row_ctx *rc, double *inv, long *bad)
 {
     const godunov_term *c = term;
@@ -904,49 +1003,61 @@ static int godunov_row(const void *term, double t, double *y, double *ydot, row_
     const long n = g->N[0];
     const int dim = g->dim;
     double *dl = rc->ws, *dr = dl + (size_t)dim * (size_t)n, *w = dr + (size_t)dim * (size_t)n;
-    double *arow = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
+    double *restrict a = w + (size_t)HJ_LS_ROW_WORK * (size_t)n;
     for (int d = 0; d < dim; d++)
         hj_ls_upwind_row_eps(c->scheme, y + rc->k, g->stride[d], n, g->dx[d], c->eps[d], dl + d * n, dr + d * n, w);
-    const int batched = !c->initial && scalar_row(c->speed, t, g, rc, y, arow);
-    double m = 0, x[HJ_LS_MAXDIM];
-    long idx[HJ_LS_MAXDIM];
-    memcpy(x, rc->x, sizeof(double) * (size_t)dim);
-    memcpy(idx, rc->idx, sizeof(long) * (size_t)dim);
-    const double h = sqrt(c->smear2);
-    for (long j = 0; j < n; j++) {
-        const size_t k = rc->k + (size_t)j;
-        double a;
-        if (c->initial && !isfinite(c->initial[k])) { *bad = j; return HJ_ENONFINITE; }
-        if (c->initial && c->subcell_fix) a = sign0(c->initial[k]);
-        else if (c->initial) a = c->initial[k] / sqrt(c->initial[k] * c->initial[k] + c->smear2);
-        else {
-            x[0] = g->min[0] + (double)j * g->dx[0];
-            a = batched ? arow[j] : scalar_at(c->speed, t, x, y[k], k);
-            if (!isfinite(a)) { *bad = j; return HJ_ENONFINITE; }
+    const long nb = godunov_speed(c, t, y, rc, a);
+    /* w is free again: |p| and the CFL rows */
+    double *restrict mag = w, *restrict tmp = w + n, *restrict tmp2 = w + 2 * n;
+    for (long j = 0; j < nb; j++) mag[j] = 0;
+    for (int d = 0; d < dim; d++) {
+        double *restrict pd = dl + d * n; /* the left derivative, then p_d */
+        const double *restrict rd = dr + d * n;
+        for (long j = 0; j < nb; j++) {
+            const double l = pd[j], r = rd[j];
+            const int up = a[j] >= 0;
+            const double pl = up ? (l > 0 ? l : 0) : (l < 0 ? l : 0);
+            const double pr = up ? (r < 0 ? r : 0) : (r > 0 ? r : 0);
+            const double p = pl * pl >= pr * pr ? pl : pr;
+            pd[j] = p;
+            mag[j] += p * p;
         }
-        double p[HJ_LS_MAXDIM];
-        const double mag = godunov(dim, dl + j, dr + j, n, a, p);
-        ydot[k] = c->initial ? -a * (mag - 1) : -a * mag;
-        if (c->subcell_fix) {
-            idx[0] = j;
-            double G;
-            if (subcell_update(g, c->initial, k, idx, y[k], h, &G)) ydot[k] = G;
-        }
-        if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) {
-            /* the toolbox's effective velocity v_d = a p_d / max(|p|, eps) */
-            const double mg = mag > DBL_EPSILON ? mag : DBL_EPSILON;
-            for (int d = 0; d < dim; d++) {
-                const double v = fabs(a * p[d] / mg) / g->dx[d];
-                rc->dmax[d] = v > rc->dmax[d] || v != v ? v : rc->dmax[d];
-            }
-            continue;
-        }
-        double s = 0;
-        for (int d = 0; d < dim; d++) s += (mag > 0 ? fabs(p[d]) / mag : 1.0) / g->dx[d];
-        s *= fabs(a);
-        m = s > m ? s : m;
     }
-    *inv = m;
+    for (long j = 0; j < nb; j++) mag[j] = sqrt(mag[j]);
+    double *restrict yd = ydot + rc->k;
+    if (c->initial)
+        for (long j = 0; j < nb; j++) yd[j] = -a[j] * (mag[j] - 1);
+    else
+        for (long j = 0; j < nb; j++) yd[j] = -a[j] * mag[j];
+    if (c->subcell_fix) godunov_subcell(c, y, ydot, rc, nb, tmp, tmp2);
+    if (c->cfl_rule == HJ_LS_CFL_TOOLBOX) {
+        /* the toolbox's effective velocity v_d = a p_d / max(|p|, eps) */
+        double *restrict mg = tmp;
+        for (long j = 0; j < nb; j++) mg[j] = mag[j] > DBL_EPSILON ? mag[j] : DBL_EPSILON;
+        for (int d = 0; d < dim; d++) {
+            const double *restrict pd = dl + d * n;
+            const double dx = g->dx[d];
+            for (long j = 0; j < nb; j++) tmp2[j] = fabs(a[j] * pd[j] / mg[j]) / dx;
+            if (nb > 0) rc->dmax[d] = max_nan(fold_max_nan(tmp2, nb), rc->dmax[d]);
+        }
+    } else if (nb == n) {
+        double *restrict s = tmp, *restrict tm = rc->tmax;
+        for (long j = 0; j < n; j++) s[j] = 0;
+        for (int d = 0; d < dim; d++) {
+            const double *restrict pd = dl + d * n;
+            const double dx = g->dx[d];
+            for (long j = 0; j < n; j++) s[j] += (mag[j] > 0 ? fabs(pd[j]) / mag[j] : 1.0) / dx;
+        }
+        for (long j = 0; j < n; j++) {
+            const double v = s[j] * fabs(a[j]);
+            tm[j] = v > tm[j] ? v : tm[j];
+        }
+    }
+    *inv = 0;
+    if (nb < n) {
+        *bad = nb;
+        return HJ_ENONFINITE;
+    }
     return HJ_OK;
 }
 
@@ -1084,17 +1195,6 @@ static void lf_partial_nodes(const hj_ls_lax_friedrichs *c, double t, const hj_l
     }
 }
 
-/* The first j < bad with a non-finite v[j] (v - v is NaN exactly then), or
- * bad.  The common case, all finite, is one vector pass. */
-static long first_nonfinite(const double *v, long bad)
-{
-    int any = 0;
-    for (long j = 0; j < bad; j++) any |= !(v[j] - v[j] == 0);
-    if (any)
-        for (long j = 0; j < bad; j++)
-            if (!(v[j] - v[j] == 0)) return j;
-    return bad;
-}
 
 
 
