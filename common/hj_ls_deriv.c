@@ -179,12 +179,13 @@ static inline __attribute__((always_inline)) void weno5_pair(double w0, double w
  * mirrored right stencil gives C + Phi(dd_{i+2}, .., dd_{i-1}) with the
  * same C_i.  Jiang & Peng's indicators IS0 = 13 (a - b)^2 + 3 (a - 3b)^2,
  * IS1 = 13 (b - c)^2 + 3 (b + c)^2, IS2 = 13 (c - d)^2 + 3 (3c - d)^2
- * are exactly 12 S1, 12 S2, 12 S3 of (3.32)-(3.34); here they are kept
- * on O&F's scale (13/12 and 1/4: the same operation count), so the
- * epsilon (3.38) or the caller's one is the toolbox's, bit for bit, and
- * the weights are the same function (alpha_k scaled by 10, which cancels).
- * So this is O&F's WENO5 to round-off (the largest differences are listed
- * in the commit that introduced it).  In the scaled form below, with
+ * are exactly 12 S1, 12 S2, 12 S3 of (3.32)-(3.34); here 4 S_k is formed
+ * (13/3 t^2 + u^2: one multiply fewer) and scaled by 1/4 with the power
+ * of two that normalises epsilon (exact), so the epsilon (3.38) or the
+ * caller's one is the toolbox's, bit for bit, and the weights are the
+ * same function (alpha_k scaled by 10, which cancels).  So this is O&F's
+ * WENO5 to round-off.  The differences of the indicators also give
+ * T1 = (a - b) - (b - c), T2 = (b - c) + (d - c).  In the scaled form, with
  * alpha = (1, 6, 3) / q_k and s their sum,
  *   Phi = (4 alpha0 T1 + (alpha2 - alpha0 - alpha1) T2) / (12 s),
  *   T1 = a - 2b + c, T2 = b - 2c + d,  phi_x^- = (K - N / s) / 12,
@@ -200,31 +201,24 @@ static inline __attribute__((always_inline)) void weno5_pair(double w0, double w
  * derivative has the same bits whichever way its window was read, as in
  * weno5_pair. */
 
-/* O&F's S1 of the second differences a (farther from the node) and b:
- * 13/12 (a - b)^2 + 1/4 (a - 3b)^2. */
-static inline __attribute__((always_inline)) double jp_end(double a, double b)
-{
-    const double t = a - b, u = a - 3 * b;
-    return 13.0 / 12 * t * t + 0.25 * u * u;
-}
-
-/* S2 of b, c: 13/12 (b - c)^2 + 1/4 (b + c)^2. */
-static inline __attribute__((always_inline)) double jp_mid(double b, double c)
-{
-    const double t = b - c, u = b + c;
-    return 13.0 / 12 * t * t + 0.25 * u * u;
-}
+/* 4 S of (3.32)-(3.34) from t, the difference of the two second
+ * differences, and u (S1: t = a - b, u = a - 3b; S2: t = b - c, u = b + c;
+ * S3: t = d - c, u = d - 3c): 13/3 t^2 + u^2, scaled back by the caller's
+ * power of two (exact). */
+static inline __attribute__((always_inline)) double jp_s4(double t, double u) { return 13.0 / 3 * t * t + u * u; }
 
 static inline __attribute__((always_inline)) void weno5a_pair(double w0, double w1, double w2, double w3, double w4,
                                                              double m, double epsg, double *L, double *R)
 {
     const double a = w1 - w0, b = w2 - w1, c = w3 - w2, d = w4 - w3;
     const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, epsg, el);
-    const double k = pow2_inv(eps), e = eps * k;
-    double q1 = jp_end(a, b) * k + e, q2 = jp_mid(b, c) * k + e, q3 = jp_end(d, c) * k + e;
+    const double k = pow2_inv(eps), e = eps * k, k4 = 0.25 * k;
+    /* the t's also give T1 = (a - b) - (b - c) and T2 = (b - c) + (d - c) */
+    const double s1 = a - b, s2 = b - c, s3 = d - c;
+    double q1 = jp_s4(s1, a - 3 * b) * k4 + e, q2 = jp_s4(s2, b + c) * k4 + e, q3 = jp_s4(s3, d - 3 * c) * k4 + e;
     q1 *= q1, q2 *= q2, q3 *= q3;
     const double p12 = q1 * q2, p13 = q1 * q3, p23 = q2 * q3, a6 = 6 * p13;
-    const double t1 = (a + c) - 2 * b, t2 = (b + d) - 2 * c; /* T1, T2 of the left one */
+    const double t1 = s1 - s2, t2 = s2 + s3; /* T1, T2 of the left one */
     /* left: alpha = p23, 6 p13, 3 p12; right: p12, 6 p13, 3 p23 with T1, T2 swapped */
     const double xl = p23 + a6, al2 = 3 * p12, xr = p12 + a6, ar2 = 3 * p23;
     const double nl = p23 * (4 * t1) + (al2 - xl) * t2, nr = p12 * (4 * t2) + (ar2 - xr) * t1;
