@@ -164,18 +164,67 @@ static inline __attribute__((always_inline)) void weno5_pair(double w0, double w
     *R = blend3(0.1 * p12, 0.6 * p13, 0.3 * p23, r1, r2, r3);
 }
 
-/* WENO5A's candidates of a window (the ENO3 divided difference table,
- * O&F (3.18)-(3.24), scaled so that no dx appears), and both values.  The
- * left node's table: m3..p1 = w0..w4; the right node's: m2..p2 = w0..w4,
- * whose e2 and f3 are the left's shifted by one. */
+/* WENO5A in Jiang & Peng's form (SIAM J. Sci. Comput. 21 (2000), 2126,
+ * (2.8)-(2.10)).  Node i's left derivative from v1..v5 = D1_{i-5/2}..
+ * D1_{i+3/2} and its right one from D1_{i+5/2}..D1_{i-3/2} are
+ *   phi_x^-/+ = C_i -/+ Phi(a, b, c, d),  C_i = (-v2 + 7 v3 + 7 v4 - v5)/12,
+ * with a..d the second differences of phi / dx on the upwind side: for
+ * the left one a = v2 - v1, b = v3 - v2, c = v4 - v3, d = v5 - v4; for
+ * the right one the same of the node's right window read backwards
+ * (a = dd_{i+2}, .., d = dd_{i-1}, dd_j = D1_{j+1/2} - D1_{j-1/2}).
+ *   Phi = 1/3 w0 (a - 2b + c) + 1/6 (w2 - 1/2)(b - 2c + d).
+ * Checked symbolically (sympy, expanding both sides): w0 c1 + w1 c2 + w2 c3
+ * with O&F's candidates (3.25)-(3.27) (which are WENO5A's ENO3 ones,
+ * polynomially equal) and w1 = 1 - w0 - w2 is C - Phi identically; the
+ * mirrored right stencil gives C + Phi(dd_{i+2}, .., dd_{i-1}) with the
+ * same C_i.  Jiang & Peng's indicators IS0 = 13 (a - b)^2 + 3 (a - 3b)^2,
+ * IS1 = 13 (b - c)^2 + 3 (b + c)^2, IS2 = 13 (c - d)^2 + 3 (3c - d)^2
+ * are exactly 12 S1, 12 S2, 12 S3 of (3.32)-(3.34); here 4 S_k is formed
+ * (13/3 t^2 + u^2: one multiply fewer) and scaled by 1/4 with the power
+ * of two that normalises epsilon (exact), so the epsilon (3.38) or the
+ * caller's one is the toolbox's, bit for bit, and the weights are the
+ * same function (alpha_k scaled by 10, which cancels).  So this is O&F's
+ * WENO5 to round-off.  The differences of the indicators also give
+ * T1 = (a - b) - (b - c), T2 = (b - c) + (d - c).  In the scaled form, with
+ * alpha = (1, 6, 3) / q_k and s their sum,
+ *   Phi = (4 alpha0 T1 + (alpha2 - alpha0 - alpha1) T2) / (12 s),
+ *   T1 = a - 2b + c, T2 = b - 2c + d,  phi_x^- = (K - N / s) / 12,
+ * K = 12 C_i, N = 12 s Phi.  WENO5B keeps O&F's direct candidates with
+ * weno5_pair: the other round-off path, as the toolbox has both.
+ *
+ * A window w0..w4 gives the left derivative of the node right of its
+ * centre (a..d = w1 - w0, .., w4 - w3) and the right one of the node
+ * left of it (a..d read backwards): the indicators are shared (S1 of one
+ * is S3 of the other), so are T1, T2 (the right one's T1 is the left's
+ * T2) and 6 p13.  Each expression is odd or even under the mirror
+ * w0..w4 -> w4..w0 bit for bit (negation is exact; sums commute), so a
+ * derivative has the same bits whichever way its window was read, as in
+ * weno5_pair. */
+
+/* 4 S of (3.32)-(3.34) from t, the difference of the two second
+ * differences, and u (S1: t = a - b, u = a - 3b; S2: t = b - c, u = b + c;
+ * S3: t = d - c, u = d - 3c): 13/3 t^2 + u^2, scaled back by the caller's
+ * power of two (exact). */
+static inline __attribute__((always_inline)) double jp_s4(double t, double u) { return 13.0 / 3 * t * t + u * u; }
+
 static inline __attribute__((always_inline)) void weno5a_pair(double w0, double w1, double w2, double w3, double w4,
                                                              double m, double epsg, double *L, double *R)
 {
-    const double e0 = 0.5 * (w1 - w0), e1 = 0.5 * (w2 - w1), e2 = 0.5 * (w3 - w2), e3 = 0.5 * (w4 - w3);
-    const double f0 = e1 - e0, f1 = e2 - e1, f2 = e3 - e2;
-    const double l1 = w2 + e1 + f0 * (2.0 / 3), l2 = w2 + e1 + f1 * (2.0 / 3), l3 = w2 + e2 - f2 * (1.0 / 3);
-    const double r1 = w2 - e2 + f2 * (2.0 / 3), r2 = w2 - e2 + f1 * (2.0 / 3), r3 = w2 - e1 - f0 * (1.0 / 3);
-    weno5_pair(w0, w1, w2, w3, w4, m, epsg, l1, l2, l3, r1, r2, r3, L, R);
+    const double a = w1 - w0, b = w2 - w1, c = w3 - w2, d = w4 - w3;
+    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, epsg, el);
+    const double k = pow2_inv(eps), e = eps * k, k4 = 0.25 * k;
+    /* the t's also give T1 = (a - b) - (b - c) and T2 = (b - c) + (d - c) */
+    const double s1 = a - b, s2 = b - c, s3 = d - c;
+    double q1 = jp_s4(s1, a - 3 * b) * k4 + e, q2 = jp_s4(s2, b + c) * k4 + e, q3 = jp_s4(s3, d - 3 * c) * k4 + e;
+    q1 *= q1, q2 *= q2, q3 *= q3;
+    const double p12 = q1 * q2, p13 = q1 * q3, p23 = q2 * q3, a6 = 6 * p13;
+    const double t1 = s1 - s2, t2 = s2 + s3; /* T1, T2 of the left one */
+    /* left: alpha = p23, 6 p13, 3 p12; right: p12, 6 p13, 3 p23 with T1, T2 swapped */
+    const double xl = p23 + a6, al2 = 3 * p12, xr = p12 + a6, ar2 = 3 * p23;
+    const double nl = p23 * (4 * t1) + (al2 - xl) * t2, nr = p12 * (4 * t2) + (ar2 - xr) * t1;
+    const double kl = 7 * (w2 + w3) - (w1 + w4), kr = 7 * (w1 + w2) - (w0 + w3);
+    *L = (kl - nl / (xl + al2)) * (1.0 / 12);
+    *R = (kr + nr / (xr + ar2)) * (1.0 / 12);
 }
 
 /* WENO3 from v1, v2, v3 (v1 farthest upwind): candidates -v1/2 + 3 v2/2
@@ -192,7 +241,7 @@ static inline __attribute__((always_inline)) double weno3(double v1, double v2, 
 #define PHI2(v2, v3, v4) (-(v2) / 6 + 5 * (v3) / 6 + (v4) / 3)
 #define PHI3(v3, v4, v5) ((v3) / 3 + 5 * (v4) / 6 - (v5) / 6)
 
-/* WENO5B: weno5a_pair with the direct candidates (3.25)-(3.27). */
+/* WENO5B: weno5_pair's weights on the direct candidates (3.25)-(3.27). */
 static inline __attribute__((always_inline)) void weno5b_pair(double w0, double w1, double w2, double w3, double w4,
                                                              double m, double epsg, double *L, double *R)
 {

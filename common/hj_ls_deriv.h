@@ -14,10 +14,12 @@
  *   ENO3B   the same scheme in direct form: the three candidates by
  *           O&F (3.25)-(3.27) from v1..v5, the stencil picked by the same
  *           comparisons written in undivided differences of the v's
- *   WENO5A  fifth order WENO: the three ENO3 candidates (from the table)
- *           blended with the weights of O&F (3.28)-(3.37) and the epsilon of
- *           (3.38), eps = 1e-6 max v_k^2 + 1e-99                   (order 5)
- *   WENO5B  the same with the candidates by (3.25)-(3.27)
+ *   WENO5A  fifth order WENO: the weights of O&F (3.28)-(3.37) and the
+ *           epsilon of (3.38), eps = 1e-6 max v_k^2 + 1e-99, the blend of
+ *           the three ENO3 candidates computed in Jiang and Peng's form
+ *           (a central part plus a correction in second differences;
+ *           algebraically the same blend, hj_ls_deriv.c)          (order 5)
+ *   WENO5B  the same weights on the candidates by (3.25)-(3.27)
  *   WENO3   third order WENO (section 4 "future feature"): candidates
  *           -v1/2 + 3 v2/2 and (v2 + v3)/2, ideal weights 1/3, 2/3,
  *           smoothness (v2 - v1)^2, (v3 - v2)^2, eps = 1e-6     (order 3)

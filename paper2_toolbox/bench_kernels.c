@@ -45,7 +45,7 @@ a core, CPU time much less, so before/after ratios are taken from it;
   sums shared by both sides, the rows' tail lanes).  Counted from the
   executed instructions: a callgrind run with `--dump-instr=yes` of each
   case (`--threads 1 --repeat 1`; convection3d to t = 1/8, 160 steps, as
-  the 2-D veryHigh case gives the same count, 194.1, at 320 and at 2520
+  the 2-D veryHigh case gave the same count, 194.1 then, at 320 and at 2520
   steps) joined with `objdump -d` of this binary (`scripts/count-flops`,
   whose head shows the commands); every executed add,
   subtract, multiply, divide, max, min and square root counts once per
@@ -62,11 +62,14 @@ a core, CPU time much less, so before/after ratios are taken from it;
   the row loops); conv2_row (convection2d medium) is vectorised
   differently in its avx512f clone, whose count is not checked.  Counted
   (old formula count in brackets): air3D low 66.3 (61), medium 105.2 (97), high 193.7
-  (169), veryHigh 428.5 (544: WENO5 rows along x_2 and x_3 257.8, the
-  x_1 rows with the gradient mean 127.4, the Lax-Friedrichs finish 25.5,
-  H's partials 16.6); convection2d medium 42.2 (25), veryHigh 194.1 (174);
-  convection3d veryHigh 197.3 (182).  Recount after a change of the
-  kernel or of its compiler flags;
+  (169), veryHigh 351.8 (544: WENO5 rows along x_2 and x_3 211.2, the
+  x_1 rows with the gradient mean 104.1, the Lax-Friedrichs finish 18.8,
+  H's partials 16.6); convection2d medium 42.2 (25), veryHigh 154.9 (174);
+  convection3d veryHigh 197.3 (182).  WENO5A's blend in Jiang and Peng's
+  form (hj_ls_deriv.c, 28 November 2026) took air3D veryHigh from 421.8
+  (WENO5 rows 257.8 and 127.4) and convection2d veryHigh from 194.1; the
+  convection3d figure is from before it and was not recounted.  Recount
+  after a change of the kernel or of its compiler flags;
 - the roofline: min(peak flops, bandwidth x flops / byte), with the
   bandwidth of a STREAM triad (a[i] = b[i] + s c[i], 24 bytes per
   element, wall time) over three arrays of the case's grid size
@@ -109,7 +112,11 @@ against 0.095 s, convection3d 36.5 s against 24.1 s.  On Zen 4 the
 veryHigh case's 428.5 counted flops per node-stage at the measured
 multiply-add peak (52.7 GFLOP/s) take 0.906 s, which is the 50x time
 (0.902 s): the code there runs at 0.67 of that peak, and only fewer
-operations per node would reach 50x on that core.
+operations per node would reach 50x on that core.  Jiang and Peng's form
+of WENO5A (351.8 flops) took its one-thread CPU time there from 1.328-1.370 s
+to 1.246-1.269 s, convection2d veryHigh from 1.512-1.530 to 1.399-1.411 s
+(six runs each, alternated, on a shared machine) and convection3d from
+33.27-34.18 to 32.15-32.49 s (two runs each).
 
 `phi_hash`: a hash (64-bit FNV-1a) of the bytes of the one-thread run's
 final phi at the interior nodes, so that a change meant to keep the bits
@@ -374,9 +381,9 @@ static unsigned long long phi_hash(const hj_ls_grid *g, const double *phi)
 #define FLOPS_AIR3D_LOW 66.3
 #define FLOPS_AIR3D_MEDIUM 105.2
 #define FLOPS_AIR3D_HIGH 193.7
-#define FLOPS_AIR3D_VERYHIGH 428.5
+#define FLOPS_AIR3D_VERYHIGH 351.8
 #define FLOPS_CONV2D_MEDIUM 42.2
-#define FLOPS_CONV2D_VERYHIGH 194.1
+#define FLOPS_CONV2D_VERYHIGH 154.9
 #define FLOPS_CONV3D_VERYHIGH 197.3
 
 enum { AIR3D, CONV2D, CONV3D };
