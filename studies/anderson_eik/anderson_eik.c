@@ -37,17 +37,13 @@
 
 #include "hj_cli.h"
 #include "hj_eik.h"
+#include "../eik_study.h"
 
-static const double V0 = 2.0, S[3] = {0.1234, -0.0567, 0.0311}, G[3] = {0.5, -0.3, 0.2};
+static const double V0 = EIK_STUDY_V0, S[3] = EIK_STUDY_S, G[3] = EIK_STUDY_G;
 static int dim = 3;
 static int verbose = 0;
 
-static double vel(const double *x)
-{
-    double v = V0;
-    for (int d = 0; d < dim; d++) v += G[d] * x[d];
-    return v;
-}
+static double vel(const double *x) { return eik_study_vel(dim, V0, G, x); }
 static double exact(const double *x) { return hj_eik_linear_time(dim, V0, G, S, x); }
 
 typedef struct {
@@ -106,11 +102,6 @@ static void print_row(const char *what, long N, const result *r)
            r->fo_iterations, r->sweeps, r->solves, r->change, r->l1, r->linf, r->cpu);
 }
 
-static int arg_long(const char *s, long *v) { return hj_parse_long(s, "", LONG_MIN, LONG_MAX, v, NULL) == HJ_OK; }
-static int arg_double(const char *s, double *v)
-{
-    return hj_parse_double(s, "", -HUGE_VAL, HUGE_VAL, v, NULL) == HJ_OK;
-}
 
 static void usage(FILE *fp)
 {
@@ -137,17 +128,17 @@ int main(int argc, char **argv)
             return 0;
         } else if (!strcmp(a, "--verbose")) verbose = 1;
         else if (!strcmp(a, "--dim") && more) {
-            if (!arg_long(argv[++i], &dm) || (dm != 2 && dm != 3)) goto bad;
+            if (!eik_study_long(argv[++i], &dm) || (dm != 2 && dm != 3)) goto bad;
         } else if (!strcmp(a, "--order") && more) {
-            if (!arg_long(argv[++i], &ord) || (ord != 1 && ord != 3 && ord != 5)) goto bad;
+            if (!eik_study_long(argv[++i], &ord) || (ord != 1 && ord != 3 && ord != 5)) goto bad;
         } else if (!strcmp(a, "--tol") && more) {
-            if (!arg_double(argv[++i], &tol) || !(tol > 0)) goto bad;
+            if (!eik_study_double(argv[++i], &tol) || !(tol > 0)) goto bad;
         } else if (!strcmp(a, "--start") && more) {
-            if (!arg_double(argv[++i], &start) || !(start > 0)) goto bad;
+            if (!eik_study_double(argv[++i], &start) || !(start > 0)) goto bad;
         } else if (!strcmp(a, "--m") && more) {
-            if (!arg_long(argv[++i], &m) || m < 1 || m > 8) goto bad;
+            if (!eik_study_long(argv[++i], &m) || m < 1 || m > 8) goto bad;
         } else if (!strcmp(a, "--rounds") && more) {
-            if (!arg_long(argv[++i], &rounds) || rounds < 1 || rounds > 100) goto bad;
+            if (!eik_study_long(argv[++i], &rounds) || rounds < 1 || rounds > 100) goto bad;
         } else if (!strcmp(a, "--run") && more) {
             const char *v = argv[++i];
             run_plain = run_aa = 1;
@@ -155,7 +146,7 @@ int main(int argc, char **argv)
             else if (!strcmp(v, "aa")) run_plain = 0;
             else if (strcmp(v, "both")) goto bad;
         } else if (a[0] != '-' && N == 0) {
-            if (!arg_long(a, &N) || N < 6 || N > 4000) goto bad;
+            if (!eik_study_long(a, &N) || N < 6 || N > 4000) goto bad;
         } else goto bad;
     }
     if (N == 0) goto bad;

@@ -62,16 +62,17 @@
 
 #include "hj_cli.h"
 #include "hj_eik.h"
+#include "../eik_study.h"
 
-static const double V0 = 2.0, S[3] = {0.1234, -0.0567, 0.0311};
-static double G[3] = {0.5, -0.3, 0.2};
+static const double V0 = EIK_STUDY_V0, S[3] = EIK_STUDY_S;
+static double G[3] = EIK_STUDY_G; /* scaled by --gscale */
 
 static long n, N3;
 static double h;
 static double *f;           /* slowness */
 static unsigned char *fix;  /* held nodes */
 
-static double vel(const double *x) { return V0 + G[0] * x[0] + G[1] * x[1] + G[2] * x[2]; }
+static double vel(const double *x) { return eik_study_vel(3, V0, G, x); }
 static double exact(const double *x) { return hj_eik_linear_time(3, V0, G, S, x); }
 static void coords(long id, double *x)
 {
@@ -336,11 +337,6 @@ static int run_hj(long NN, double R, double tol)
 
 /* A whole argument as a number (hj_cli's parsers: the whole string, a
  * finite double); 0 when it is not one. */
-static int arg_long(const char *s, long *v) { return hj_parse_long(s, "", LONG_MIN, LONG_MAX, v, NULL) == HJ_OK; }
-static int arg_double(const char *s, double *v)
-{
-    return hj_parse_double(s, "", -HUGE_VAL, HUGE_VAL, v, NULL) == HJ_OK;
-}
 
 int main(int argc, char **argv)
 {
@@ -354,10 +350,10 @@ int main(int argc, char **argv)
     long NN = 0, ord = 0, inner = 8;
     double R = 0.2, tol = 1e-12, itol = 1e-14;
     const int ai = hj ? a0 + 2 : a0 + 3;
-    const int ok = arg_long(argv[a0], &NN) && arg_long(argv[a0 + 1], &ord) &&
-                   (hj || argc <= a0 + 2 || arg_long(argv[a0 + 2], &inner)) && (argc <= ai || arg_double(argv[ai], &R)) &&
-                   (argc <= ai + 1 || arg_double(argv[ai + 1], &tol)) &&
-                   (argc <= ai + 2 || arg_double(argv[ai + 2], &itol));
+    const int ok = eik_study_long(argv[a0], &NN) && eik_study_long(argv[a0 + 1], &ord) &&
+                   (hj || argc <= a0 + 2 || eik_study_long(argv[a0 + 2], &inner)) && (argc <= ai || eik_study_double(argv[ai], &R)) &&
+                   (argc <= ai + 1 || eik_study_double(argv[ai + 1], &tol)) &&
+                   (argc <= ai + 2 || eik_study_double(argv[ai + 2], &itol));
     if (!ok || NN < 4 || NN > 2000 || (ord != 3 && ord != 5) || inner < 0 || inner > 1000000 || !(R > 0) ||
         !(tol > 0) || !(itol >= 0)) {
         fprintf(stderr, "dc_eik: need integers 4 <= N <= 2000, order 3 or 5, 0 <= inner <= 1e6, and numbers R > 0, "
@@ -367,7 +363,7 @@ int main(int argc, char **argv)
     order = (int)ord;
     const char *gs = getenv("DC_GSCALE"), *es = getenv("DC_EPS");
     double gscale = 1, epsv = 0;
-    if ((gs && (!arg_double(gs, &gscale) || !(gscale > 0))) || (es && (!arg_double(es, &epsv) || !(epsv > 0)))) {
+    if ((gs && (!eik_study_double(gs, &gscale) || !(gscale > 0))) || (es && (!eik_study_double(es, &epsv) || !(epsv > 0)))) {
         fprintf(stderr, "dc_eik: DC_GSCALE and DC_EPS must be numbers > 0\n");
         return 2;
     }

@@ -39,16 +39,12 @@
 
 #include "hj_cli.h"
 #include "hj_eik.h"
+#include "../eik_study.h"
 
-static const double V0 = 2.0, S[3] = {0.1234, -0.0567, 0.0311}, G[3] = {0.5, -0.3, 0.2};
+static const double V0 = EIK_STUDY_V0, S[3] = EIK_STUDY_S, G[3] = EIK_STUDY_G;
 static int dim = 3;
 
-static double vel(const double *x)
-{
-    double v = V0;
-    for (int d = 0; d < dim; d++) v += G[d] * x[d];
-    return v;
-}
+static double vel(const double *x) { return eik_study_vel(dim, V0, G, x); }
 static double dist(const double *x)
 {
     double r2 = 0;
@@ -232,11 +228,6 @@ static void print_row(const char *what, long N, const result *r)
            r->fo_iterations, r->sweeps, r->solves, r->change, r->start_dist, r->l1, r->linf, r->cpu, r->fo_cpu);
 }
 
-static int arg_long(const char *s, long *v) { return hj_parse_long(s, "", LONG_MIN, LONG_MAX, v, NULL) == HJ_OK; }
-static int arg_double(const char *s, double *v)
-{
-    return hj_parse_double(s, "", -HUGE_VAL, HUGE_VAL, v, NULL) == HJ_OK;
-}
 
 static void usage(FILE *fp)
 {
@@ -265,13 +256,13 @@ int main(int argc, char **argv)
             return 0;
         } else if (!strcmp(a, "--verbose")) verbose = 1;
         else if (!strcmp(a, "--dim") && more) {
-            if (!arg_long(argv[++i], &dm) || (dm != 2 && dm != 3)) goto bad;
+            if (!eik_study_long(argv[++i], &dm) || (dm != 2 && dm != 3)) goto bad;
         } else if (!strcmp(a, "--order") && more) {
-            if (!arg_long(argv[++i], &ord) || (ord != 3 && ord != 5)) goto bad;
+            if (!eik_study_long(argv[++i], &ord) || (ord != 3 && ord != 5)) goto bad;
         } else if (!strcmp(a, "--tol") && more) {
-            if (!arg_double(argv[++i], &tol) || !(tol > 0)) goto bad;
+            if (!eik_study_double(argv[++i], &tol) || !(tol > 0)) goto bad;
         } else if (!strcmp(a, "--n0") && more) {
-            if (!arg_long(argv[++i], &N0) || N0 < 6) goto bad;
+            if (!eik_study_long(argv[++i], &N0) || N0 < 6) goto bad;
         } else if (!strcmp(a, "--interp") && more) {
             const char *v = argv[++i];
             if (!strcmp(v, "tau")) interp_T = 0;
@@ -286,7 +277,7 @@ int main(int argc, char **argv)
             else if (!strcmp(v, "plain-first")) plain_first = 1;
             else if (strcmp(v, "both")) goto bad;
         } else if (a[0] != '-' && N == 0) {
-            if (!arg_long(a, &N) || N < 6 || N > 4000) goto bad;
+            if (!eik_study_long(a, &N) || N < 6 || N > 4000) goto bad;
         } else goto bad;
     }
     if (N == 0) goto bad;
