@@ -139,7 +139,11 @@ void hj_ls_convection_init(hj_ls_convection *c, const hj_ls_grid *g, int scheme)
  * read instead (the same bits, no callback per stage).  When the cache
  * would exceed velocity_cache_max bytes or cannot be allocated, the term
  * calls velocity_fn per stage as without the flag.  The cache belongs to
- * the term: hj_ls_convection_free releases it (harmless without one). */
+ * the term: hj_ls_convection_free releases it (harmless without one).
+ * It pays where the callback costs more than reading dim doubles per node
+ * each stage: a closed form as cheap as a rotation on a grid whose cache
+ * outgrows the last level cache runs faster without it (convectionDemo's
+ * on 101^3, 24 MB: 4-13 % less CPU time). */
 void hj_ls_convection_free(hj_ls_convection *c);
 
 /* ---- normal motion (3): G = -a |grad phi|, Godunov upwinding

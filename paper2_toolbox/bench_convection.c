@@ -19,11 +19,13 @@ the nine output times 0, 1/8, ..., 1 of the demo (each ends a CFL step):
 | high | TVD RK3 | upwindFirstENO3a |
 | veryHigh | TVD RK3 | upwindFirstWENO5a |
 
-The velocity is a callback; it does not depend on t, so the term calls it
-once per row and dimension and keeps the rows (`velocity_steady`, dim x
-nodes doubles, 24 MB here), instead of once per stage.  Rows
-on which a velocity component vanishes skip that derivative (here all of
-x_3).  Every level is run with each requested number of OpenMP threads and
+The velocity is a callback, called per row, dimension and stage.  It does
+not depend on t, so the term could keep its rows (`velocity_steady`, dim x
+nodes doubles, 24 MB here), but reading them from memory each stage cost
+more than the rotation's few operations per node: 4-13 % more CPU time at
+each level (one thread, alternated runs, 28 November 2026; the same
+bits).  Rows on which a velocity component vanishes skip that derivative
+(here all of x_3).  Every level is run with each requested number of OpenMP threads and
 the final states are compared bit for bit.
 
 **Parameters.** N = 101 nodes per dimension (dx = 0.02, the grid of the
@@ -114,7 +116,7 @@ int main(int argc, char **argv)
         p2_flow flow = {1, 0, 3}; /* convectionDemo's 'linear' */
         c.velocity_fn = p2_flow_velocity;
         c.ctx = &flow;
-        c.velocity_steady = 1; /* the rotation does not depend on t */
+        c.velocity_steady = 0; /* cheaper than a cache that streams from memory (above) */
         hj_ls_ode_stats st;
         same[li] = 1;
         for (int q = 0; q < nthr; q++) {

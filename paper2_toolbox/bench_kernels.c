@@ -27,9 +27,14 @@ a core, CPU time much less, so before/after ratios are taken from it;
   with and writes the stage (`hj_ls_term_stage`): the first stage, whose
   two are the same array, 16 bytes, the others 24 (the first stage is
   fused too once the bound repeats, as the steady velocity's does: from
-  the third step on).  Convection adds the steady velocity's cache
+  the third step on).  Convection in 2-D adds the steady velocity's cache
   (`velocity_steady`): one row of v_d per dimension, 8 bytes each per
-  node-stage (in 3-D the row of v_3, zero, is read for its flow test).
+  node-stage.  In 3-D the rotation's callback is called per row and stage
+  instead (no bytes: its rows stay in cache): the 101^3 cache (24 MB, with
+  v_3's zero rows read for their flow test) streams from memory and cost
+  more than the callback, 4-13 % more CPU time at each level of Table 1
+  (bench_convection, 1 thread, alternated runs on a shared machine, 28
+  November 2026); both give the same bits.
   air3D (`range_free` in `p2_air3d.c`: no pass for the gradient range; the
   restriction clips in the term's pass): the stages as above; order 1 is
   the term's pass (16) and the combination (24).  Checked with
@@ -65,10 +70,11 @@ a core, CPU time much less, so before/after ratios are taken from it;
   (169), veryHigh 351.8 (544: WENO5 rows along x_2 and x_3 211.2, the
   x_1 rows with the gradient mean 104.1, the Lax-Friedrichs finish 18.8,
   H's partials 16.6); convection2d medium 42.2 (25), veryHigh 154.9 (174);
-  convection3d veryHigh 197.3 (182).  WENO5A's blend in Jiang and Peng's
-  form (hj_ls_deriv.c, 28 November 2026) took air3D veryHigh from 421.8
-  (WENO5 rows 257.8 and 127.4) and convection2d veryHigh from 194.1; the
-  convection3d figure is from before it and was not recounted.  Recount
+  convection3d veryHigh 161.5 (182; WENO5 137.3, the rows' sums and
+  stage 16.1, the rotation's callback 3.0).  WENO5A's blend in Jiang and
+  Peng's form (hj_ls_deriv.c, 28 November 2026) took air3D veryHigh from
+  421.8 (WENO5 rows 257.8 and 127.4), convection2d veryHigh from 194.1 and
+  convection3d from 197.3 (counted with the cached velocity).  Recount
   after a change of the kernel or of its compiler flags;
 - the roofline: min(peak flops, bandwidth x flops / byte), with the
   bandwidth of a STREAM triad (a[i] = b[i] + s c[i], 24 bytes per
@@ -384,7 +390,7 @@ static unsigned long long phi_hash(const hj_ls_grid *g, const double *phi)
 #define FLOPS_AIR3D_VERYHIGH 351.8
 #define FLOPS_CONV2D_MEDIUM 42.2
 #define FLOPS_CONV2D_VERYHIGH 154.9
-#define FLOPS_CONV3D_VERYHIGH 197.3
+#define FLOPS_CONV3D_VERYHIGH 161.5
 
 enum { AIR3D, CONV2D, CONV3D };
 typedef struct {
@@ -434,6 +440,11 @@ static int make_setup(const bench_case *c, setup *s, hj_error *err)
     return hj_ls_shape_sphere(&s->g, center, 0.35, s->y0, err);
 }
 
+/* Whether convection keeps the steady velocity's rows (velocity_steady):
+ * in 2-D (201^2: 0.65 MB, in cache), not in 3-D (see the comment at the
+ * top: reading 24 MB per stage cost more than the rotation's callback). */
+static int cache_velocity(const hj_ls_grid *g) { return g->dim == 2; }
+
 static int run_case(const bench_case *c, setup *s, hj_ls_ode_stats *st, hj_error *err)
 {
     memcpy(s->y, s->y0, sizeof(double) * s->g.total);
@@ -448,7 +459,7 @@ static int run_case(const bench_case *c, setup *s, hj_ls_ode_stats *st, hj_error
     hj_ls_convection_init(&term, &s->g, hj_ls_accuracy_scheme(c->acc));
     term.velocity_fn = p2_flow_velocity;
     term.ctx = &flow;
-    term.velocity_steady = 1; /* the rotation does not depend on t */
+    term.velocity_steady = cache_velocity(&s->g); /* the rotation does not depend on t */
     hj_ls_ode_opts opts;
     hj_ls_ode_defaults(&opts);
     opts.max_step = 1.0 / (P2_NT - 1);
@@ -543,8 +554,8 @@ int main(int argc, char **argv)
             set_threads(th + 1);
             /* the working set: the state, the stage's input and output
              * (3 arrays; air3D's order 1 too), and convection's cached
-             * velocity rows (dim arrays) */
-            const size_t arrays = 3 + (c->kind == AIR3D ? 0 : (size_t)s.g.dim);
+             * velocity rows (dim arrays, 2-D) */
+            const size_t arrays = 3 + (c->kind == AIR3D || !cache_velocity(&s.g) ? 0 : (size_t)s.g.dim);
             bws[th] = triad_ws_gbs(s.g.total * arrays / 3);
         }
         hj_ls_ode_stats st = {0};
@@ -570,9 +581,10 @@ int main(int argc, char **argv)
         const double stages = (double)st.steps * order, ns = stages * (double)s.g.nodes;
         /* bytes: fused stages (16 B the first, 24 B later; air3D's order 1
          * unfused: the term's pass and the combination), and convection's
-         * cached velocity rows, 8 B per dimension */
+         * cached velocity rows, 8 B per dimension (2-D) */
         const double fused = (16.0 + 24.0 * (order - 1)) / order;
-        const double bytes = c->kind == AIR3D ? (order == 1 ? 16 + 24 : fused) : fused + 8.0 * dim;
+        const double bytes = c->kind == AIR3D ? (order == 1 ? 16 + 24 : fused)
+                                              : fused + (cache_velocity(&s.g) ? 8.0 * dim : 0);
         const double flops = c->flops;
         double rate[2], frac[2], roof[2];
         for (int th = 0; th < 2; th++) {

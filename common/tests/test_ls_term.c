@@ -1438,10 +1438,21 @@ static void convection_2d_fused_stage(void **state)
     hj_ls_free(y), hj_ls_free(y0), hj_ls_free(f), hj_ls_free(dst), hj_ls_free(ref);
 }
 
+/* A rotation in the x_0-x_1 plane: v_2 vanishes everywhere and v_0 on
+ * the row x_1 = 0 (a node of the 11-node grids below). */
+static void rot3(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    (void)t;
+    if (ctx) ++*(long *)ctx;
+    for (long j = 0; j < n; j++) v[j] = d == 0 ? -x[1] : d == 1 ? x[0] + (double)j * dx0 : 0;
+}
+
 /* velocity_steady: the callback runs once per row and dimension in the
  * first evaluation and never after, with the bits of the callback per
- * evaluation; over velocity_cache_max the term falls back to the callback
- * per evaluation (same bits); free releases the cache. */
+ * evaluation (G and the bound; also where the cache's flags skip a row
+ * without flow: the rotation); over velocity_cache_max the term falls
+ * back to the callback per evaluation (same bits); free releases the
+ * cache. */
 static void convection_steady_cache(void **state)
 {
     (void)state;
@@ -1449,28 +1460,30 @@ static void convection_steady_cache(void **state)
     double *y = hj_ls_alloc(&g), *f0 = hj_ls_alloc(&g), *f1 = hj_ls_alloc(&g);
     hj_ls_fill(&g, y, blob, NULL);
     const long per_eval = (long)g.rows * g.dim;
-    for (int capped = 0; capped < 2; capped++) {
+    const hj_ls_velocity_fn vels[2] = {swirl3, rot3};
+    for (int capped = 0; capped < 4; capped++) {
         long calls = 0;
         hj_ls_convection c, plain;
         hj_ls_convection_init(&plain, &g, HJ_LS_WENO5A);
-        plain.velocity_fn = swirl3;
+        plain.velocity_fn = vels[capped / 2];
         hj_ls_convection_init(&c, &g, HJ_LS_WENO5A);
-        c.velocity_fn = swirl3;
+        c.velocity_fn = vels[capped / 2];
         c.ctx = &calls;
         c.velocity_steady = 1;
-        if (capped) c.velocity_cache_max = sizeof(double) * g.rows * (size_t)g.dim * (size_t)g.N[0] - 1;
+        if (capped % 2) c.velocity_cache_max = sizeof(double) * g.rows * (size_t)g.dim * (size_t)g.N[0] - 1;
         double b0, b1;
         assert_int_equal(plain.base.eval(&plain.base, 0.5, y, f0, &b0, NULL), HJ_OK);
         for (int e = 1; e <= 3; e++) {
             memset(f1, 0, sizeof(double) * g.total);
             assert_int_equal(c.base.eval(&c.base, 0.1 * e, y, f1, &b1, NULL), HJ_OK);
-            assert_int_equal(calls, capped ? e * per_eval : per_eval);
+            assert_int_equal(calls, capped % 2 ? e * per_eval : per_eval);
             assert_memory_equal(&b0, &b1, sizeof b0);
             assert_interior_equal(&g, f0, f1);
         }
-        assert_true(capped ? c.velocity_cache == NULL : c.velocity_cache != NULL);
+        assert_true(capped % 2 ? c.velocity_cache == NULL : c.velocity_cache != NULL);
         hj_ls_convection_free(&c);
         assert_null(c.velocity_cache);
+        hj_ls_convection_free(&plain);
         hj_ls_convection_free(&c); /* harmless twice */
     }
     hj_ls_free(y), hj_ls_free(f0), hj_ls_free(f1);
@@ -1558,8 +1571,13 @@ static void convection_names_bad_velocity(void **state)
             hj_ls_convection c;
             hj_ls_convection_init(&c, &g, scheme);
             c.velocity_fn = nan_velocity_row;
-            assert_int_equal(c.base.eval(&c.base, 0.5, y, ydot, &b, &err), HJ_ENONFINITE);
-            assert_has(err.msg, dim == 2 ? "v_1 = nan at x = (0.6, 0.6), t = 0.5" : "v_1 = nan at x = (0.6, 0.6, -1)");
+            for (int steady = 0; steady < 2; steady++) { /* per evaluation or cached */
+                c.velocity_steady = steady;
+                assert_int_equal(c.base.eval(&c.base, 0.5, y, ydot, &b, &err), HJ_ENONFINITE);
+                assert_has(err.msg,
+                           dim == 2 ? "v_1 = nan at x = (0.6, 0.6), t = 0.5" : "v_1 = nan at x = (0.6, 0.6, -1)");
+            }
+            hj_ls_convection_free(&c);
             hj_ls_convection_init(&c, &g, scheme);
             vx[hj_ls_index(&g, (long[]){2, 3, 1})] = INFINITY;
             c.velocity_array[0] = vx;
