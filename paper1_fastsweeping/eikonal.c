@@ -368,6 +368,11 @@ int main(int argc, char **argv)
                   "written, with a warning); 4 converged, but some nodes are walled off from every source (written\n"
                   "as inf, -1 in VTK; their count on stderr).  Progress on stderr when it is a terminal.\n"};
     hj_cli_parse_or_exit(&spec, argc, argv);
+    int pgm_given = 0, raw_type_given = 0;
+    for (int k = 0; k < spec.nopts; k++) {
+        if (!strcmp(opts[k].name, "--pgm-range")) pgm_given = opts[k].seen;
+        if (!strcmp(opts[k].name, "--raw-type")) raw_type_given = opts[k].seen;
+    }
     opt.order = order_v[order_i];
     opt.max_iter = max_iter;
 
@@ -400,6 +405,13 @@ int main(int argc, char **argv)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--N is for a constant medium; a map's grid is its own nodes (see --domain)");
     if (raw_s && !map_file && !obst_file)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--raw describes a --speed, --slowness or --obstacle file: none is given");
+    /* an option that would be ignored is refused: the user meant something by it */
+    if (raw_type_given && !raw_s)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--raw-type is the value type of --raw files: give --raw NX,NY[,NZ] too");
+    if (pgm_given && !map_file)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a --speed or --slowness PGM: none is given");
+    if (pgm_given && raw_s)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a PGM, but --raw reads the map as a raw volume");
     if (nsrc_s == 0 && !sources_file && !poly_file)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "give a source: --source X,Y, --sources FILE or --polyline FILE");
     if (format == 3 && !strcmp(out_path, "-"))
@@ -412,6 +424,13 @@ int main(int argc, char **argv)
     hj_vol map = {0}, mask = {0};
     const int raw_bytes = raw_type ? 8 : 4;
     if (map_file) {
+        if (pgm_given) { /* a text grid's values are taken as they are */
+            int is_pgm = 0;
+            if (hj_vol_is_pgm(map_file, &is_pgm, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+            if (!is_pgm)
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a PGM, but %s is not one (a text "
+                            "grid's values are used as they are)", map_file);
+        }
         read_map(&map, map_file, raw_s ? raw : NULL, raw_bytes, pgm);
         if (hj_vol_check_nonzero(&map, map_file, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
         g.dim = map.dim;
@@ -431,7 +450,7 @@ int main(int argc, char **argv)
             const double len = dom[2 * d + 1] - dom[2 * d];
             const double cells = d == 0 ? (double)nx : round(len / h);
             if (cells > 100000)
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %.0f cells along dimension %d: at most 100000", cells, d + 1);
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %.0f cells along %c: at most 100000", cells, "xyz"[d]);
             g.n[d] = (long)(cells < 1 ? 1 : cells) + 1;
             g.x0[d] = dom[2 * d];
             g.dx[d] = len / (double)(g.n[d] - 1);
@@ -443,6 +462,11 @@ int main(int argc, char **argv)
     }
     if (g.dim == 2) g.n[2] = 1, g.x0[2] = 0, g.dx[2] = 1;
     if ((format == 2) && g.dim == 3) hj_cli_fail(prog, HJ_EXIT_USAGE, "--format matrix is for 2-D grids; use vtk or tsv");
+    /* the solver's own check numbers dimensions from 0; the tool names the axis */
+    for (int d = 0; d < g.dim; d++)
+        if (g.n[d] < (opt.order == 1 ? 2 : opt.order))
+            hj_cli_fail(prog, HJ_EXIT_RUN, "the grid has %ld nodes along %c; order %d needs at least %d: give --order 1%s",
+                        g.n[d], "xyz"[d], opt.order, opt.order, map_file ? "" : " or a larger --domain along it");
     const long total = g.n[0] * g.n[1] * g.n[2];
     const double have = hj_sys_physical_memory(), need = 48.0 * (double)total;
     if (have > 0 && need > 0.8 * have)
@@ -464,6 +488,9 @@ int main(int argc, char **argv)
         if (mask.v && mask.v[k] != 0) obst[k] = 1;
         if (f && speed_file) {
             if (f[k] == 0) obst[k] = 1;
+            else if (!obst[k] && !isfinite(1 / f[k])) /* a speed so small that 1 / speed overflows */
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at node (%ld, %ld, %ld) is too small (1 / speed overflows)",
+                            speed_file, f[k], k % g.n[0], k / g.n[0] % g.n[1], k / (g.n[0] * g.n[1]));
             else f[k] = 1 / f[k];
         } else if (f && f[k] == 0 && !obst[k]) {
             hj_cli_fail(prog, HJ_EXIT_RUN,
@@ -473,11 +500,6 @@ int main(int argc, char **argv)
         }
         nobst += obst[k];
     }
-    if (f && speed_file) /* a speed so small that 1 / speed overflows */
-        for (long k = 0; k < total; k++)
-            if (!obst[k] && !isfinite(f[k]))
-                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at node (%ld, %ld, %ld) is too small (1 / speed overflows)",
-                            speed_file, 1 / f[k], k % g.n[0], k / g.n[0] % g.n[1], k / (g.n[0] * g.n[1]));
     hj_vol_free(&mask);
     if (obst && nobst == total) hj_cli_fail(prog, HJ_EXIT_RUN, "every node is an obstacle: nothing can be reached");
 
@@ -521,8 +543,8 @@ int main(int argc, char **argv)
         const double *q = pts + 4 * s;
         for (int d = 0; d < dim; d++)
             if (!inside(q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d], g.dx[d]))
-                hj_cli_fail(prog, status_src, "source %ld is outside the domain: coordinate %d is %g, not in [%g, %g]",
-                            s + 1, d + 1, q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d]);
+                hj_cli_fail(prog, status_src, "source %ld is outside the domain: its %c coordinate is %g, not in [%g, %g]",
+                            s + 1, "xyz"[d], q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d]);
         for (long t = 0; t < s; t++) {
             const double *r = pts + 4 * t;
             int same = 1;

@@ -227,7 +227,7 @@ static void eikonal_bad_files(void **state)
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --sources %s", path);
     expect_failure(cmd, 1, "src.txt:2: 'x' is not a finite number");
     write_text(path, sizeof path, "src.txt", "0.5 0.5\n2 0.5\n");
-    expect_failure(cmd, 1, "source 2 is outside the domain: coordinate 1 is 2");
+    expect_failure(cmd, 1, "source 2 is outside the domain: its x coordinate is 2");
     write_text(path, sizeof path, "line.txt", "0 0.5\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --polyline %s", path);
     expect_failure(cmd, 1, "line.txt:1: a polyline vertex needs 3 numbers, this line has 2");
@@ -245,6 +245,26 @@ static void eikonal_bad_files(void **state)
     char longsrc[400] = P1 "eikonal --speed-const 1 --N 10 --source 0,0,";
     for (size_t k = strlen(longsrc); k < 330; k++) longsrc[k] = '0';
     expect_failure(longsrc, 2, "--source wants X,Y or X,Y,T0");
+    /* options that would be ignored are refused, not dropped */
+    expect_failure(P1 "eikonal --speed-const 1 --raw-type float64 --source 0,0", 2,
+                   "--raw-type is the value type of --raw files: give --raw NX,NY[,NZ] too");
+    expect_failure(P1 "eikonal --speed-const 1 --pgm-range 0,2 --source 0,0", 2,
+                   "--pgm-range maps the pixels of a --speed or --slowness PGM: none is given");
+    write_text(path, sizeof path, "two.txt", "1 1 1\n1 2 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --pgm-range 0,2 --source 0,0", path);
+    expect_failure(cmd, 2, "two.txt is not one (a text grid's values are used as they are)");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --raw 3,3 --pgm-range 0,2 --source 0,0", path);
+    expect_failure(cmd, 2, "--pgm-range maps the pixels of a PGM, but --raw reads the map as a raw volume");
+    /* a speed whose inverse overflows is named by its own value, not by 1 / inf */
+    write_text(path, sizeof path, "tiny.txt", "1 1 1\n1 1e-320 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0", path);
+    expect_failure(cmd, 1, "tiny.txt: speed 9.99989e-321 at node (1, 1, 0) is too small (1 / speed overflows)");
+    /* too few nodes for the order: the axis by name (the library numbers from 0) */
+    write_text(path, sizeof path, "flat.txt", "1 1 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0", path);
+    expect_failure(cmd, 1, "the grid has 2 nodes along y; order 3 needs at least 3: give --order 1");
+    expect_failure(P1 "eikonal --speed-const 1 --N 100 --domain 0,1,0,0.01 --order 5 --source 0,0", 1,
+                   "the grid has 2 nodes along y; order 5 needs at least 5: give --order 1 or a larger --domain along it");
 }
 
 /* The output (x y T per line) of eikonal with the medium given by
