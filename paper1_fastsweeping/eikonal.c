@@ -657,6 +657,14 @@ int main(int argc, char **argv)
         if (fp == stdout) hj_cli_flush_stdout(prog);
     }
     free(T);
+    /* on a terminal, with the progress: what was written where */
+    if (strcmp(out_path, "-")) {
+        char dims[96];
+        if (dim == 3) snprintf(dims, sizeof dims, "%ld x %ld x %ld", g.n[0], g.n[1], g.n[2]);
+        else snprintf(dims, sizeof dims, "%ld x %ld", g.n[0], g.n[1]);
+        hj_progress("%s: wrote T on %s nodes (%s) to %s\n", prog, dims, fmt == 3 ? "VTK" : fmt == 2 ? "matrix" : "TSV",
+                    out_path);
+    }
     /* the loss of order is stated, not an error: the result is still the
      * upwind (first order) solution there */
     if (st.first_order > 0)

@@ -267,6 +267,28 @@ static void eikonal_bad_files(void **state)
                    "the grid has 2 nodes along y; order 5 needs at least 5: give --order 1 or a larger --domain along it");
 }
 
+/* A run that succeeds says, on a terminal, what it wrote and where (with
+ * its progress); off a terminal stderr stays empty.  The terminal is
+ * script(1)'s pseudo-terminal (util-linux); without it that half is
+ * skipped. */
+static void eikonal_says_what_it_wrote(void **state)
+{
+    (void)state;
+    char cmd[1024], path[256];
+    snprintf(path, sizeof path, "%s/said.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --N 20 --domain 0,2,0,1 --source 0.5,0.5 --out %s", path);
+    assert_int_equal(run(cmd), 0);
+    assert_int_equal(lines(err_text), 0);
+    if (run("command -v script >/dev/null") != 0) return;
+    snprintf(cmd, sizeof cmd,
+             "script -qec '" P1 "eikonal --speed-const 1 --N 20 --domain 0,2,0,1 --source 0.5,0.5 --out %s' /dev/null "
+             "| tr '\\r' '\\n'", path);
+    assert_int_equal(hj_test_shell(cmd, 1, err_text, sizeof err_text), 0);
+    char want[512];
+    snprintf(want, sizeof want, "eikonal: wrote T on 21 x 11 nodes (TSV) to %s", path);
+    if (!strstr(err_text, want)) fail_msg("on a terminal: no '%s' in\n%s", want, err_text);
+}
+
 /* The output (x y T per line) of eikonal with the medium given by
  * `medium` on [-1, 1]^2, from a source at the origin: N intervals for a
  * constant medium, the map's nodes for a map. */
@@ -513,6 +535,7 @@ int main(void)
         cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance), cmocka_unit_test(speed_means_speed),
         cmocka_unit_test(pixel_units_and_no_convergence), cmocka_unit_test(no_convergence_says_why), cmocka_unit_test(eikonal_features),
         cmocka_unit_test(exclusion_distance_measures_more),
+        cmocka_unit_test(eikonal_says_what_it_wrote),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
 #endif
