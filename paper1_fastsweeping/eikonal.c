@@ -468,7 +468,18 @@ int main(int argc, char **argv)
             hj_cli_fail(prog, HJ_EXIT_RUN, "the grid has %ld nodes along %c; order %d needs at least %d: give --order 1%s",
                         g.n[d], "xyz"[d], opt.order, opt.order, map_file ? "" : " or a larger --domain along it");
     const long total = g.n[0] * g.n[1] * g.n[2];
-    const double have = hj_sys_physical_memory(), need = 48.0 * (double)total;
+    /* The peak: the solver's work arrays, 56 bytes per node of the grid
+     * padded by 3 ghost layers on each side (hj_eik.c: tau, T0, f, owner,
+     * label, stamps, flags, the obstacle distance, the high order
+     * arrays), T (8 bytes a node), the map (8) and the mask (1), and with
+     * --separate-sources the running minimum and its flags (10).  Measured
+     * peaks: 60 bytes a node for a constant medium at 2001^2, 72-82 for a
+     * PGM map with a mask, 88 at 81^3 with --separate-sources (the old
+     * figure, 48, let grids through that needed up to twice that). */
+    double padded = 1;
+    for (int d = 0; d < g.dim; d++) padded *= (double)(g.n[d] + 6);
+    const double per_node = 8 + (map_file ? 8 : 0) + (map_file || obst_file ? 1 : 0) + (opt.separate_sources ? 10 : 0);
+    const double have = hj_sys_physical_memory(), need = 56.0 * padded + per_node * (double)total;
     if (have > 0 && need > 0.8 * have)
         hj_cli_fail(prog, HJ_EXIT_RUN, "a grid of %ld nodes needs about %.3g GB, more than this machine has", total, need / 1e9);
 

@@ -1,7 +1,9 @@
 /* Command-line behaviour of the paper 1 programs: bad input gives one clear
  * message and a non-zero exit, and never a half-written result file. */
 #include "hj_test.h"
+#include "hj_sys.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -525,6 +527,17 @@ static void out_of_memory(void **state)
 {
     (void)state;
     expect_failure("ulimit -v 150000; exec " P1 "example1 --sizes 3000 --out-dir /tmp", 1, "out of memory");
+    /* eikonal refuses, before it allocates, a grid whose solve needs more
+     * than 0.8 of the machine's memory: a constant medium needs about 64
+     * bytes a node (56 in the solver, 8 for T); a grid of 0.8 / 60 of the
+     * memory in nodes is refused (the old estimate, 48 bytes, let it
+     * start; the ulimit turns that into a quick "out of memory") */
+    const double have = hj_sys_physical_memory();
+    const double nodes = 0.8 * have / 60, N = floor(sqrt(nodes)) - 1;
+    if (have <= 0 || N > 100000) return;
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "ulimit -v 2000000; exec " P1 "eikonal --speed-const 1 --N %.0f --source 0.5,0.5", N);
+    expect_failure(cmd, 1, "more than this machine has");
 }
 #endif
 
