@@ -465,8 +465,9 @@ int main(int argc, char **argv)
     /* the solver's own check numbers dimensions from 0; the tool names the axis */
     for (int d = 0; d < g.dim; d++)
         if (g.n[d] < (opt.order == 1 ? 2 : opt.order))
-            hj_cli_fail(prog, HJ_EXIT_RUN, "the grid has %ld nodes along %c; order %d needs at least %d: give --order 1%s",
-                        g.n[d], "xyz"[d], opt.order, opt.order, map_file ? "" : " or a larger --domain along it");
+            hj_cli_fail(prog, HJ_EXIT_RUN, "the grid has %ld nodes along %c; order %d needs at least %d: give --order %d%s",
+                        g.n[d], "xyz"[d], opt.order, opt.order, g.n[d] >= 3 ? 3 : 1,
+                        map_file ? "" : " or a larger --domain along it");
     const long total = g.n[0] * g.n[1] * g.n[2];
     /* The peak: the solver's work arrays, 56 bytes per node of the grid
      * padded by 3 ghost layers on each side (hj_eik.c: tau, T0, f, owner,
@@ -581,6 +582,17 @@ int main(int argc, char **argv)
             for (int d = 0; d < dim; d++)
                 if (!inside(p[s * (dim + 1) + d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d], g.dx[d]))
                     hj_cli_fail(prog, HJ_EXIT_RUN, "%s: vertex %ld is outside the domain", poly_file, s + 1);
+        /* a segment of length 0 between two times would keep the first
+         * (the second depended on the order of the lines): refused, as
+         * two point sources at one point with different times are */
+        for (long s = 1; s < nv; s++) {
+            const double *q = p + s * (dim + 1), *r = q - (dim + 1);
+            int same = 1;
+            for (int d = 0; d < dim; d++) same &= fabs(q[d] - r[d]) <= 1e-9 * g.dx[d];
+            if (same && q[dim] != r[dim])
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: vertices %ld and %ld are at the same point with different times %g and %g",
+                            poly_file, s, s + 1, r[dim], q[dim]);
+        }
         fixed = malloc(sizeof *fixed * (size_t)total);
         if (!fixed) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
         for (long k = 0; k < total; k++) fixed[k] = NAN;

@@ -267,6 +267,14 @@ static void eikonal_bad_files(void **state)
     expect_failure(cmd, 1, "the grid has 2 nodes along y; order 3 needs at least 3: give --order 1");
     expect_failure(P1 "eikonal --speed-const 1 --N 100 --domain 0,1,0,0.01 --order 5 --source 0,0", 1,
                    "the grid has 2 nodes along y; order 5 needs at least 5: give --order 1 or a larger --domain along it");
+    write_text(path, sizeof path, "cube.txt", "1 1 1 1\n1 1 1 1\n1 1 1 1\n\n1 1 1 1\n1 1 1 1\n1 1 1 1\n\n"
+                                              "1 1 1 1\n1 1 1 1\n1 1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0,0 --order 5 --out %s/c.vtk", path, dir);
+    expect_failure(cmd, 1, "the grid has 4 nodes along x; order 5 needs at least 5: give --order 3");
+    /* a polyline's two vertices at one point with different times */
+    write_text(path, sizeof path, "line.txt", "0.2 0.5 0\n0.5 0.5 0.3\n0.5 0.5 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --N 10 --polyline %s", path);
+    expect_failure(cmd, 1, "line.txt: vertices 2 and 3 are at the same point with different times 0.3 and 1");
 }
 
 /* A run that succeeds says, on a terminal, what it wrote and where (with
