@@ -252,7 +252,10 @@ static long fix_polyline(const hj_eik_grid *g, const double *pts, long npts, con
  * row first; a header of comments first. */
 static void write_text(FILE *fp, const hj_eik_grid *g, const double *T, int matrix, const char *title)
 {
-    fprintf(fp, "# %s\n# grid %ld x %ld x %ld nodes, dx %g %g %g\n", title, g->n[0], g->n[1], g->n[2], g->dx[0],
+    /* the coordinates and spacings to T's 12 digits: a reference computed
+     * from the file's x and y (10 digits before) differed from the exact
+     * one by up to 5e-10 at x = 1.5135135135 */
+    fprintf(fp, "# %s\n# grid %ld x %ld x %ld nodes, dx %.12g %.12g %.12g\n", title, g->n[0], g->n[1], g->n[2], g->dx[0],
             g->dx[1], g->dx[2]);
     if (matrix) {
         for (long j = 0; j < g->n[1]; j++)
@@ -263,8 +266,8 @@ static void write_text(FILE *fp, const hj_eik_grid *g, const double *T, int matr
     for (long k = 0; k < g->n[2]; k++)
         for (long j = 0; j < g->n[1]; j++) {
             for (long i = 0; i < g->n[0]; i++) {
-                fprintf(fp, "%.10g\t%.10g\t", g->x0[0] + (double)i * g->dx[0], g->x0[1] + (double)j * g->dx[1]);
-                if (g->dim == 3) fprintf(fp, "%.10g\t", g->x0[2] + (double)k * g->dx[2]);
+                fprintf(fp, "%.12g\t%.12g\t", g->x0[0] + (double)i * g->dx[0], g->x0[1] + (double)j * g->dx[1]);
+                if (g->dim == 3) fprintf(fp, "%.12g\t", g->x0[2] + (double)k * g->dx[2]);
                 fprintf(fp, "%.12g\n", T[i + g->n[0] * (j + g->n[1] * k)]);
             }
             fputc('\n', fp);
