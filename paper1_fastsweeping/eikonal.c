@@ -50,6 +50,7 @@ Examples (from a fresh clone, see README.md):
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "hj_cli.h"
 #include "hj_eik.h"
@@ -159,10 +160,26 @@ static double *read_points(const char *path, const char *what, int lo, int hi, l
     return pts;
 }
 
+/* A map is read by its size (raw) or twice (its first bytes tell the
+ * format, then its values): a pipe or a device (--speed /dev/stdin, a
+ * shell's <(...)) lost the bytes of the first read, and the message then
+ * spoke of a malformed file.  A directory is left to the reader, which
+ * names it. */
+static void need_regular(const char *path)
+{
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode))
+        hj_cli_fail(prog, HJ_EXIT_RUN,
+                    "%s is a pipe or a device, not a regular file: a map is read by its size or twice (its format, then "
+                    "its values); write it to a file first",
+                    path);
+}
+
 /* A map file: raw when dims are given, else told by content. */
 static void read_map(hj_vol *v, const char *path, const long *raw, int raw_bytes, const double *pgm)
 {
     hj_error err;
+    need_regular(path);
     const int rc = raw ? hj_vol_read_raw(v, path, raw, raw_bytes, &err) : hj_vol_read(v, path, pgm[0], pgm[1], &err);
     /* the library names its raw reader; a user of the tool needs the option */
     const char *bin = rc && !raw ? strstr(err.msg, " (binary data:") : NULL;
@@ -429,6 +446,7 @@ int main(int argc, char **argv)
     if (map_file) {
         if (pgm_given) { /* a text grid's values are taken as they are */
             int is_pgm = 0;
+            need_regular(map_file);
             if (hj_vol_is_pgm(map_file, &is_pgm, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
             if (!is_pgm)
                 hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a PGM, but %s is not one (a text "

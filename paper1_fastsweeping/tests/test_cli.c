@@ -271,6 +271,11 @@ static void eikonal_bad_files(void **state)
                                               "1 1 1 1\n1 1 1 1\n1 1 1 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0,0 --order 5 --out %s/c.vtk", path, dir);
     expect_failure(cmd, 1, "the grid has 4 nodes along x; order 5 needs at least 5: give --order 3");
+    /* a map on a pipe: refused by name, not read as a malformed file */
+    expect_failure("cat examples/data/speed.pgm | " P1 "eikonal --speed /dev/stdin --pgm-range 0,2 --source 1,1", 1,
+                   "/dev/stdin is a pipe or a device, not a regular file");
+    expect_failure("cat examples/data/wall.txt | " P1 "eikonal --speed-const 1 --obstacle /dev/stdin --source 1,1", 1,
+                   "/dev/stdin is a pipe or a device, not a regular file");
     /* a polyline's two vertices at one point with different times */
     write_text(path, sizeof path, "line.txt", "0.2 0.5 0\n0.5 0.5 0.3\n0.5 0.5 1\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --N 10 --polyline %s", path);
