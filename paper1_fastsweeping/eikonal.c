@@ -50,6 +50,7 @@ Examples (from a fresh clone, see README.md):
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "hj_cli.h"
 #include "hj_eik.h"
@@ -159,10 +160,26 @@ static double *read_points(const char *path, const char *what, int lo, int hi, l
     return pts;
 }
 
+/* A map is read by its size (raw) or twice (its first bytes tell the
+ * format, then its values): a pipe or a device (--speed /dev/stdin, a
+ * shell's <(...)) lost the bytes of the first read, and the message then
+ * spoke of a malformed file.  A directory is left to the reader, which
+ * names it. */
+static void need_regular(const char *path)
+{
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode))
+        hj_cli_fail(prog, HJ_EXIT_RUN,
+                    "%s is a pipe or a device, not a regular file: a map is read by its size or twice (its format, then "
+                    "its values); write it to a file first",
+                    path);
+}
+
 /* A map file: raw when dims are given, else told by content. */
 static void read_map(hj_vol *v, const char *path, const long *raw, int raw_bytes, const double *pgm)
 {
     hj_error err;
+    need_regular(path);
     const int rc = raw ? hj_vol_read_raw(v, path, raw, raw_bytes, &err) : hj_vol_read(v, path, pgm[0], pgm[1], &err);
     /* the library names its raw reader; a user of the tool needs the option */
     const char *bin = rc && !raw ? strstr(err.msg, " (binary data:") : NULL;
@@ -252,7 +269,10 @@ static long fix_polyline(const hj_eik_grid *g, const double *pts, long npts, con
  * row first; a header of comments first. */
 static void write_text(FILE *fp, const hj_eik_grid *g, const double *T, int matrix, const char *title)
 {
-    fprintf(fp, "# %s\n# grid %ld x %ld x %ld nodes, dx %g %g %g\n", title, g->n[0], g->n[1], g->n[2], g->dx[0],
+    /* the coordinates and spacings to T's 12 digits: a reference computed
+     * from the file's x and y (10 digits before) differed from the exact
+     * one by up to 5e-10 at x = 1.5135135135 */
+    fprintf(fp, "# %s\n# grid %ld x %ld x %ld nodes, dx %.12g %.12g %.12g\n", title, g->n[0], g->n[1], g->n[2], g->dx[0],
             g->dx[1], g->dx[2]);
     if (matrix) {
         for (long j = 0; j < g->n[1]; j++)
@@ -263,8 +283,8 @@ static void write_text(FILE *fp, const hj_eik_grid *g, const double *T, int matr
     for (long k = 0; k < g->n[2]; k++)
         for (long j = 0; j < g->n[1]; j++) {
             for (long i = 0; i < g->n[0]; i++) {
-                fprintf(fp, "%.10g\t%.10g\t", g->x0[0] + (double)i * g->dx[0], g->x0[1] + (double)j * g->dx[1]);
-                if (g->dim == 3) fprintf(fp, "%.10g\t", g->x0[2] + (double)k * g->dx[2]);
+                fprintf(fp, "%.12g\t%.12g\t", g->x0[0] + (double)i * g->dx[0], g->x0[1] + (double)j * g->dx[1]);
+                if (g->dim == 3) fprintf(fp, "%.12g\t", g->x0[2] + (double)k * g->dx[2]);
                 fprintf(fp, "%.12g\n", T[i + g->n[0] * (j + g->n[1] * k)]);
             }
             fputc('\n', fp);
@@ -368,6 +388,11 @@ int main(int argc, char **argv)
                   "written, with a warning); 4 converged, but some nodes are walled off from every source (written\n"
                   "as inf, -1 in VTK; their count on stderr).  Progress on stderr when it is a terminal.\n"};
     hj_cli_parse_or_exit(&spec, argc, argv);
+    int pgm_given = 0, raw_type_given = 0;
+    for (int k = 0; k < spec.nopts; k++) {
+        if (!strcmp(opts[k].name, "--pgm-range")) pgm_given = opts[k].seen;
+        if (!strcmp(opts[k].name, "--raw-type")) raw_type_given = opts[k].seen;
+    }
     opt.order = order_v[order_i];
     opt.max_iter = max_iter;
 
@@ -400,6 +425,13 @@ int main(int argc, char **argv)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--N is for a constant medium; a map's grid is its own nodes (see --domain)");
     if (raw_s && !map_file && !obst_file)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "--raw describes a --speed, --slowness or --obstacle file: none is given");
+    /* an option that would be ignored is refused: the user meant something by it */
+    if (raw_type_given && !raw_s)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--raw-type is the value type of --raw files: give --raw NX,NY[,NZ] too");
+    if (pgm_given && !map_file)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a --speed or --slowness PGM: none is given");
+    if (pgm_given && raw_s)
+        hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a PGM, but --raw reads the map as a raw volume");
     if (nsrc_s == 0 && !sources_file && !poly_file)
         hj_cli_fail(prog, HJ_EXIT_USAGE, "give a source: --source X,Y, --sources FILE or --polyline FILE");
     if (format == 3 && !strcmp(out_path, "-"))
@@ -412,6 +444,14 @@ int main(int argc, char **argv)
     hj_vol map = {0}, mask = {0};
     const int raw_bytes = raw_type ? 8 : 4;
     if (map_file) {
+        if (pgm_given) { /* a text grid's values are taken as they are */
+            int is_pgm = 0;
+            need_regular(map_file);
+            if (hj_vol_is_pgm(map_file, &is_pgm, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
+            if (!is_pgm)
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "--pgm-range maps the pixels of a PGM, but %s is not one (a text "
+                            "grid's values are used as they are)", map_file);
+        }
         read_map(&map, map_file, raw_s ? raw : NULL, raw_bytes, pgm);
         if (hj_vol_check_nonzero(&map, map_file, &err)) hj_cli_fail(prog, HJ_EXIT_RUN, "%s", err.msg);
         g.dim = map.dim;
@@ -431,7 +471,7 @@ int main(int argc, char **argv)
             const double len = dom[2 * d + 1] - dom[2 * d];
             const double cells = d == 0 ? (double)nx : round(len / h);
             if (cells > 100000)
-                hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %.0f cells along dimension %d: at most 100000", cells, d + 1);
+                hj_cli_fail(prog, HJ_EXIT_USAGE, "the grid would have %.0f cells along %c: at most 100000", cells, "xyz"[d]);
             g.n[d] = (long)(cells < 1 ? 1 : cells) + 1;
             g.x0[d] = dom[2 * d];
             g.dx[d] = len / (double)(g.n[d] - 1);
@@ -443,8 +483,25 @@ int main(int argc, char **argv)
     }
     if (g.dim == 2) g.n[2] = 1, g.x0[2] = 0, g.dx[2] = 1;
     if ((format == 2) && g.dim == 3) hj_cli_fail(prog, HJ_EXIT_USAGE, "--format matrix is for 2-D grids; use vtk or tsv");
+    /* the solver's own check numbers dimensions from 0; the tool names the axis */
+    for (int d = 0; d < g.dim; d++)
+        if (g.n[d] < (opt.order == 1 ? 2 : opt.order))
+            hj_cli_fail(prog, HJ_EXIT_RUN, "the grid has %ld nodes along %c; order %d needs at least %d: give --order %d%s",
+                        g.n[d], "xyz"[d], opt.order, opt.order, g.n[d] >= 3 ? 3 : 1,
+                        map_file ? "" : " or a larger --domain along it");
     const long total = g.n[0] * g.n[1] * g.n[2];
-    const double have = hj_sys_physical_memory(), need = 48.0 * (double)total;
+    /* The peak: the solver's work arrays, 56 bytes per node of the grid
+     * padded by 3 ghost layers on each side (hj_eik.c: tau, T0, f, owner,
+     * label, stamps, flags, the obstacle distance, the high order
+     * arrays), T (8 bytes a node), the map (8) and the mask (1), and with
+     * --separate-sources the running minimum and its flags (10).  Measured
+     * peaks: 60 bytes a node for a constant medium at 2001^2, 72-82 for a
+     * PGM map with a mask, 88 at 81^3 with --separate-sources (the old
+     * figure, 48, let grids through that needed up to twice that). */
+    double padded = 1;
+    for (int d = 0; d < g.dim; d++) padded *= (double)(g.n[d] + 6);
+    const double per_node = 8 + (map_file ? 8 : 0) + (map_file || obst_file ? 1 : 0) + (opt.separate_sources ? 10 : 0);
+    const double have = hj_sys_physical_memory(), need = 56.0 * padded + per_node * (double)total;
     if (have > 0 && need > 0.8 * have)
         hj_cli_fail(prog, HJ_EXIT_RUN, "a grid of %ld nodes needs about %.3g GB, more than this machine has", total, need / 1e9);
 
@@ -464,6 +521,9 @@ int main(int argc, char **argv)
         if (mask.v && mask.v[k] != 0) obst[k] = 1;
         if (f && speed_file) {
             if (f[k] == 0) obst[k] = 1;
+            else if (!obst[k] && !isfinite(1 / f[k])) /* a speed so small that 1 / speed overflows */
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at node (%ld, %ld, %ld) is too small (1 / speed overflows)",
+                            speed_file, f[k], k % g.n[0], k / g.n[0] % g.n[1], k / (g.n[0] * g.n[1]));
             else f[k] = 1 / f[k];
         } else if (f && f[k] == 0 && !obst[k]) {
             hj_cli_fail(prog, HJ_EXIT_RUN,
@@ -473,11 +533,6 @@ int main(int argc, char **argv)
         }
         nobst += obst[k];
     }
-    if (f && speed_file) /* a speed so small that 1 / speed overflows */
-        for (long k = 0; k < total; k++)
-            if (!obst[k] && !isfinite(f[k]))
-                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: speed %g at node (%ld, %ld, %ld) is too small (1 / speed overflows)",
-                            speed_file, 1 / f[k], k % g.n[0], k / g.n[0] % g.n[1], k / (g.n[0] * g.n[1]));
     hj_vol_free(&mask);
     if (obst && nobst == total) hj_cli_fail(prog, HJ_EXIT_RUN, "every node is an obstacle: nothing can be reached");
 
@@ -521,8 +576,8 @@ int main(int argc, char **argv)
         const double *q = pts + 4 * s;
         for (int d = 0; d < dim; d++)
             if (!inside(q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d], g.dx[d]))
-                hj_cli_fail(prog, status_src, "source %ld is outside the domain: coordinate %d is %g, not in [%g, %g]",
-                            s + 1, d + 1, q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d]);
+                hj_cli_fail(prog, status_src, "source %ld is outside the domain: its %c coordinate is %g, not in [%g, %g]",
+                            s + 1, "xyz"[d], q[d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d]);
         for (long t = 0; t < s; t++) {
             const double *r = pts + 4 * t;
             int same = 1;
@@ -548,6 +603,17 @@ int main(int argc, char **argv)
             for (int d = 0; d < dim; d++)
                 if (!inside(p[s * (dim + 1) + d], g.x0[d], g.x0[d] + (double)(g.n[d] - 1) * g.dx[d], g.dx[d]))
                     hj_cli_fail(prog, HJ_EXIT_RUN, "%s: vertex %ld is outside the domain", poly_file, s + 1);
+        /* a segment of length 0 between two times would keep the first
+         * (the second depended on the order of the lines): refused, as
+         * two point sources at one point with different times are */
+        for (long s = 1; s < nv; s++) {
+            const double *q = p + s * (dim + 1), *r = q - (dim + 1);
+            int same = 1;
+            for (int d = 0; d < dim; d++) same &= fabs(q[d] - r[d]) <= 1e-9 * g.dx[d];
+            if (same && q[dim] != r[dim])
+                hj_cli_fail(prog, HJ_EXIT_RUN, "%s: vertices %ld and %ld are at the same point with different times %g and %g",
+                            poly_file, s, s + 1, r[dim], q[dim]);
+        }
         fixed = malloc(sizeof *fixed * (size_t)total);
         if (!fixed) hj_cli_fail(prog, HJ_EXIT_RUN, "out of memory");
         for (long k = 0; k < total; k++) fixed[k] = NAN;
@@ -635,6 +701,14 @@ int main(int argc, char **argv)
         if (fp == stdout) hj_cli_flush_stdout(prog);
     }
     free(T);
+    /* on a terminal, with the progress: what was written where */
+    if (strcmp(out_path, "-")) {
+        char dims[96];
+        if (dim == 3) snprintf(dims, sizeof dims, "%ld x %ld x %ld", g.n[0], g.n[1], g.n[2]);
+        else snprintf(dims, sizeof dims, "%ld x %ld", g.n[0], g.n[1]);
+        hj_progress("%s: wrote T on %s nodes (%s) to %s\n", prog, dims, fmt == 3 ? "VTK" : fmt == 2 ? "matrix" : "TSV",
+                    out_path);
+    }
     /* the loss of order is stated, not an error: the result is still the
      * upwind (first order) solution there */
     if (st.first_order > 0)

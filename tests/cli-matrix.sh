@@ -42,6 +42,8 @@ conflicts=(
     'eikonal|--speed s.txt --raw 4 --source 0,0'
     'eikonal|--speed s.txt --N 10 --source 0,0'
     'eikonal|--speed-const 1 --source 0,0 --format vtk --out -'
+    'eikonal|--speed-const 1 --raw-type float64 --source 0,0'
+    'eikonal|--speed-const 1 --pgm-range 0,2 --source 0,0'
     'hjreach|--horizon 1e12'
     'hjreach|--min -2,-2,0 --max 2,2,1e-300'
     'hjreach|--min -1e300,-1e300,0 --max 1e300,1e300,6'

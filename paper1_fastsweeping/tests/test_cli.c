@@ -1,7 +1,9 @@
 /* Command-line behaviour of the paper 1 programs: bad input gives one clear
  * message and a non-zero exit, and never a half-written result file. */
 #include "hj_test.h"
+#include "hj_sys.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -227,7 +229,7 @@ static void eikonal_bad_files(void **state)
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --sources %s", path);
     expect_failure(cmd, 1, "src.txt:2: 'x' is not a finite number");
     write_text(path, sizeof path, "src.txt", "0.5 0.5\n2 0.5\n");
-    expect_failure(cmd, 1, "source 2 is outside the domain: coordinate 1 is 2");
+    expect_failure(cmd, 1, "source 2 is outside the domain: its x coordinate is 2");
     write_text(path, sizeof path, "line.txt", "0 0.5\n");
     snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --polyline %s", path);
     expect_failure(cmd, 1, "line.txt:1: a polyline vertex needs 3 numbers, this line has 2");
@@ -245,6 +247,61 @@ static void eikonal_bad_files(void **state)
     char longsrc[400] = P1 "eikonal --speed-const 1 --N 10 --source 0,0,";
     for (size_t k = strlen(longsrc); k < 330; k++) longsrc[k] = '0';
     expect_failure(longsrc, 2, "--source wants X,Y or X,Y,T0");
+    /* options that would be ignored are refused, not dropped */
+    expect_failure(P1 "eikonal --speed-const 1 --raw-type float64 --source 0,0", 2,
+                   "--raw-type is the value type of --raw files: give --raw NX,NY[,NZ] too");
+    expect_failure(P1 "eikonal --speed-const 1 --pgm-range 0,2 --source 0,0", 2,
+                   "--pgm-range maps the pixels of a --speed or --slowness PGM: none is given");
+    write_text(path, sizeof path, "two.txt", "1 1 1\n1 2 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --pgm-range 0,2 --source 0,0", path);
+    expect_failure(cmd, 2, "two.txt is not one (a text grid's values are used as they are)");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --raw 3,3 --pgm-range 0,2 --source 0,0", path);
+    expect_failure(cmd, 2, "--pgm-range maps the pixels of a PGM, but --raw reads the map as a raw volume");
+    /* a speed whose inverse overflows is named by its own value, not by 1 / inf */
+    write_text(path, sizeof path, "tiny.txt", "1 1 1\n1 1e-320 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0", path);
+    expect_failure(cmd, 1, "tiny.txt: speed 9.99989e-321 at node (1, 1, 0) is too small (1 / speed overflows)");
+    /* too few nodes for the order: the axis by name (the library numbers from 0) */
+    write_text(path, sizeof path, "flat.txt", "1 1 1\n1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0", path);
+    expect_failure(cmd, 1, "the grid has 2 nodes along y; order 3 needs at least 3: give --order 1");
+    expect_failure(P1 "eikonal --speed-const 1 --N 100 --domain 0,1,0,0.01 --order 5 --source 0,0", 1,
+                   "the grid has 2 nodes along y; order 5 needs at least 5: give --order 1 or a larger --domain along it");
+    write_text(path, sizeof path, "cube.txt", "1 1 1 1\n1 1 1 1\n1 1 1 1\n\n1 1 1 1\n1 1 1 1\n1 1 1 1\n\n"
+                                              "1 1 1 1\n1 1 1 1\n1 1 1 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed %s --source 0,0,0 --order 5 --out %s/c.vtk", path, dir);
+    expect_failure(cmd, 1, "the grid has 4 nodes along x; order 5 needs at least 5: give --order 3");
+    /* a map on a pipe: refused by name, not read as a malformed file */
+    expect_failure("cat examples/data/speed.pgm | " P1 "eikonal --speed /dev/stdin --pgm-range 0,2 --source 1,1", 1,
+                   "/dev/stdin is a pipe or a device, not a regular file");
+    expect_failure("cat examples/data/wall.txt | " P1 "eikonal --speed-const 1 --obstacle /dev/stdin --source 1,1", 1,
+                   "/dev/stdin is a pipe or a device, not a regular file");
+    /* a polyline's two vertices at one point with different times */
+    write_text(path, sizeof path, "line.txt", "0.2 0.5 0\n0.5 0.5 0.3\n0.5 0.5 1\n");
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --N 10 --polyline %s", path);
+    expect_failure(cmd, 1, "line.txt: vertices 2 and 3 are at the same point with different times 0.3 and 1");
+}
+
+/* A run that succeeds says, on a terminal, what it wrote and where (with
+ * its progress); off a terminal stderr stays empty.  The terminal is
+ * script(1)'s pseudo-terminal (util-linux); without it that half is
+ * skipped. */
+static void eikonal_says_what_it_wrote(void **state)
+{
+    (void)state;
+    char cmd[1024], path[256];
+    snprintf(path, sizeof path, "%s/said.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --N 20 --domain 0,2,0,1 --source 0.5,0.5 --out %s", path);
+    assert_int_equal(run(cmd), 0);
+    assert_int_equal(lines(err_text), 0);
+    if (run("command -v script >/dev/null") != 0) return;
+    snprintf(cmd, sizeof cmd,
+             "script -qec '" P1 "eikonal --speed-const 1 --N 20 --domain 0,2,0,1 --source 0.5,0.5 --out %s' /dev/null "
+             "| tr '\\r' '\\n'", path);
+    assert_int_equal(hj_test_shell(cmd, 1, err_text, sizeof err_text), 0);
+    char want[512];
+    snprintf(want, sizeof want, "eikonal: wrote T on 21 x 11 nodes (TSV) to %s", path);
+    if (!strstr(err_text, want)) fail_msg("on a terminal: no '%s' in\n%s", want, err_text);
 }
 
 /* The output (x y T per line) of eikonal with the medium given by
@@ -382,6 +439,37 @@ static void eikonal_distance(void **state)
     assert_true(distance_error(80) < 1e-9);
 }
 
+/* The file's own coordinates are as precise as its T: the distance from
+ * an off-node source recomputed from the x and y columns agrees with T
+ * within the 12 digits of T, x and y (half a unit in the 12th digit of
+ * each: 1e-11 at most here; 8.6e-12 measured) on a grid whose spacings
+ * 2/37 and 1/19 do not print short (with 10-digit coordinates the
+ * difference was 4.9e-10), and the
+ * header's spacings are the grid's to 12 digits. */
+static void eikonal_coordinates_precise(void **state)
+{
+    (void)state;
+    char cmd[512], path[256], line[256];
+    snprintf(path, sizeof path, "%s/dist.tsv", dir);
+    snprintf(cmd, sizeof cmd, P1 "eikonal --speed-const 1 --domain 0,2,0,1 --N 37 --source 0.713,0.291 --out %s", path);
+    assert_int_equal(run(cmd), 0);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    double x, y, t, emax = 0, dx = 0, dy = 0;
+    int n = 0;
+    while (fgets(line, sizeof line, f)) {
+        if (sscanf(line, "# grid %*d x %*d x %*d nodes, dx %lf %lf", &dx, &dy) == 2) continue;
+        if (sscanf(line, "%lf %lf %lf", &x, &y, &t) == 3) {
+            n++;
+            emax = fmax(emax, fabs(t - hypot(x - 0.713, y - 0.291)));
+        }
+    }
+    fclose(f);
+    assert_int_equal(n, 38 * 20);
+    if (!(emax < 2e-11)) fail_msg("max |T - |x - s|| from the file's columns %g", emax);
+    if (!(fabs(dx - 2.0 / 37) < 1e-13 && fabs(dy - 1.0 / 19) < 1e-13)) fail_msg("header spacings %.17g %.17g", dx, dy);
+}
+
 /* T at the node nearest (x, y[, z]) in a TSV output of eikonal (x y [z] T
  * per line), NAN when no line matches. */
 static double tsv_value(const char *path, int dim, double x, double y, double z)
@@ -483,6 +571,17 @@ static void out_of_memory(void **state)
 {
     (void)state;
     expect_failure("ulimit -v 150000; exec " P1 "example1 --sizes 3000 --out-dir /tmp", 1, "out of memory");
+    /* eikonal refuses, before it allocates, a grid whose solve needs more
+     * than 0.8 of the machine's memory: a constant medium needs about 64
+     * bytes a node (56 in the solver, 8 for T); a grid of 0.8 / 60 of the
+     * memory in nodes is refused (the old estimate, 48 bytes, let it
+     * start; the ulimit turns that into a quick "out of memory") */
+    const double have = hj_sys_physical_memory();
+    const double nodes = 0.8 * have / 60, N = floor(sqrt(nodes)) - 1;
+    if (have <= 0 || N > 100000) return;
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "ulimit -v 2000000; exec " P1 "eikonal --speed-const 1 --N %.0f --source 0.5,0.5", N);
+    expect_failure(cmd, 1, "more than this machine has");
 }
 #endif
 
@@ -493,6 +592,8 @@ int main(void)
         cmocka_unit_test(results_complete), cmocka_unit_test(eikonal_bad_files), cmocka_unit_test(eikonal_distance), cmocka_unit_test(speed_means_speed),
         cmocka_unit_test(pixel_units_and_no_convergence), cmocka_unit_test(no_convergence_says_why), cmocka_unit_test(eikonal_features),
         cmocka_unit_test(exclusion_distance_measures_more),
+        cmocka_unit_test(eikonal_says_what_it_wrote),
+        cmocka_unit_test(eikonal_coordinates_precise),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
 #endif
