@@ -229,6 +229,33 @@ enum { CYCLE_SPAN = 4 };
  * order at tol = 1e-12, L1 2.3e-6 instead of 3e-12), and it ends the
  * iteration: tol is below what round-off lets it reach. */
 #define ROUND_LEVEL 16
+/* ORTHANT_STALL: the orthant pass sweeps every axis line away from the
+ * source, so first arrivals that come back toward the source along an
+ * axis move one node per pass in it: head waves, in a slow layer above
+ * a fast one (speed 1 above y = 99.5, 2 below, on [0, 299] x [0, 199],
+ * source (50.3, 150.6), order 3: 137, 546 and 670 passes at 1, 3 and 5
+ * nodes per unit, and the stall and cycle tests below then demoted
+ * nearly every node to the first order update: a mean error 1.77e-2 at 5
+ * nodes per unit against 1.31e-2 at order 1).  When a block of
+ * STALL_SPAN << dim passes has a largest change not below ORTHANT_RATIO
+ * times the block before's (on blocks of their own, which the WENO5
+ * demotions do not restart), the iteration goes on with the 2^dim full
+ * sweeps, which carry arrivals in every direction, and the other tests
+ * start afresh: 85 and 86 iterations then at 1 and 5 nodes per unit
+ * (order 3; order 5 95 and 129), the result of full sweeps from the
+ * start within 1.5e-4 of max T at spacing 1 (the two stop at other
+ * points near the kinks where head and direct waves meet; 3.7e-5 at
+ * 0.75, 7.6e-9 at 1/3).  It needs two whole blocks, 64 passes in
+ * 2-D and 128 in 3-D: the convergence study's passes (at most 36) never
+ * get there, nor do the varying-speed maps of the tests (same bits).
+ * Tried: STALL_RATIO (0.9) instead let order 5 go on (221 and 291
+ * passes at spacings 1 and 0.75, the demotions' drops passing the
+ * test); the WENO5 cycle test's blocks (CYCLE_SPAN << dim, CYCLE_RATIO)
+ * fired on a smooth varying slowness in 3-D at order 5 (40 x 36 x 30),
+ * where the demotion had converged with less work (173 grid sweeps
+ * against 256). */
+#define ORTHANT_RATIO 0.1
+
 /* Rounds of demote_first, the last one demoting every node. */
 enum { FALL_ROUNDS = 4 };
 #define STALL_RATIO 0.9
@@ -2002,7 +2029,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
          * iterations sweep the 2^dim orthants around the source, each away
          * from it, so that every axis line is visited away from the
          * source (source_cut); else the 2^dim full sweeps. */
-        const int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
+        int octants = nsrc == 1 && nobst == 0 && nfixed == 0;
         /* Else, with opt->causal_sweeps, each iteration solves every node
          * once, in the sweep of its causal orientation (causal_sides). */
         const int causal = opt->causal_sweeps && !octants;
@@ -2026,8 +2053,10 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
         int demoted = 0, fell = 0, nblk = 0, ncyc = 0;
         /* the cycle and stall tests' blocks in units of work: a pass
          * visits each node once, an iteration of full sweeps 2^dim times */
-        const int cyc_span = octants || causal ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
-        const int stall_span = octants || causal ? STALL_SPAN << w.dim : STALL_SPAN;
+        int cyc_span = octants || causal ? CYCLE_SPAN << w.dim : CYCLE_SPAN;
+        int stall_span = octants || causal ? STALL_SPAN << w.dim : STALL_SPAN;
+        double orth[2] = {0, 0}; /* the orthant passes' own stall blocks, like blk */
+        int north = 0;
         /* max_iter bounds the total, the first order start included */
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
@@ -2089,6 +2118,25 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                 break;
             }
             if (causal) causal_sides(&w, cbox);
+            /* Orthant passes that stall (ORTHANT_STALL; the stall test
+             * below on blocks of their own, which the other tests do not
+             * restart): the full sweeps from here on, the tests afresh. */
+            if (octants) {
+                if (change > orth[1]) orth[1] = change;
+                if (++north == stall_span) {
+                    if (orth[0] > 0 && orth[1] >= ORTHANT_RATIO * orth[0] && orth[1] > round_level * scale) {
+                        octants = 0;
+                        cyc_span = CYCLE_SPAN, stall_span = STALL_SPAN;
+                        rnd[0] = rnd[1] = blk[0] = blk[1] = cyc[0] = cyc[1] = 0;
+                        nrnd = nblk = ncyc = 0;
+                        st->orthant_stalled = st->iterations;
+                        continue;
+                    }
+                    orth[0] = orth[1];
+                    orth[1] = 0;
+                    north = 0;
+                }
+            }
             /* A block of stall_span iterations whose largest change is
              * below the rounding level and not below STALL_RATIO times
              * the last block's: round-off, tol cannot be reached; but

@@ -146,6 +146,10 @@ typedef struct {
     long sweeps;        /* whole-grid sweeps done, first order start
                          * included (an orthant pass or a causal
                          * iteration counts one) */
+    long orthant_stalled; /* the iteration after which the orthant
+                           * passes stalled and full sweeps took over
+                           * (arrivals coming back toward the source
+                           * along an axis, as head waves do); 0: never */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);

@@ -678,8 +678,10 @@ int main(int argc, char **argv)
     /* the solves: one, or with --separate-sources one per source and
      * one for the polyline (the counts below are their sums) */
     const long nsolves = opt.separate_sources ? npts + (fixed_any != 0) : 1;
-    char sep[64] = "";
+    char sep[96] = "";
     if (nsolves > 1) snprintf(sep, sizeof sep, ", %ld separate solves (sums)", nsolves);
+    else if (st.orthant_stalled > 0) /* arrivals came back toward the source (hj_eik.h) */
+        snprintf(sep, sizeof sep, ", full sweeps after iteration %ld (the orthant passes stalled)", st.orthant_stalled);
     snprintf(title, sizeof title,
              "eikonal: T, order %d%s, %ld iteration%s (%ld grid sweep%s)%s%s, change %.3g of max |T|", opt.order, fell,
              st.iterations, hj_plural(st.iterations), st.sweeps, hj_plural(st.sweeps), sep,

@@ -656,6 +656,42 @@ static void orthant_pass_bitwise(void **state)
 #endif
 }
 
+/* Head waves: a source in a slow layer (speed 1 above y = 99.5) over a
+ * fast one (speed 2), on [0, 299] x [0, 199] with spacing 0.75.  Their
+ * arrivals come back toward the source along y, one node per orthant
+ * pass (169 iterations before the stall test switched to full sweeps);
+ * now the passes stall, full sweeps take over, and the result is that of
+ * full sweeps from the start (a far corner node made an obstacle turns
+ * them on), within 1e-4 of max T (3.7e-5 measured; the two iterations
+ * stop at different points near the kinks where head and direct waves
+ * meet). */
+static void head_waves_switch_to_full_sweeps(void **state)
+{
+    (void)state;
+    const double h = 0.75;
+    hj_eik_grid g = {2, {400, 266, 1}, {0, 0, 0}, {h, h, 1}};
+    const size_t n = nodes(&g);
+    double *f = malloc(n * sizeof *f), *T = malloc(n * sizeof *T), *R = malloc(n * sizeof *R);
+    unsigned char *ob = calloc(n, 1);
+    for (size_t u = 0; u < n; u++) f[u] = (double)(u / (size_t)g.n[0]) * h > 99.5 ? 1 : 0.5;
+    const hj_eik_source s = {{50.3, 150.6, 0}, 0};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 3;
+    hj_eik_stats st, sr;
+    hj_error e;
+    assert_int_equal(hj_eik_solve(&g, f, 0, NULL, &s, 1, NULL, &o, T, &st, &e), HJ_OK);
+    assert_true(st.converged);
+    if (!(st.orthant_stalled > 0 && st.iterations <= 120))
+        fail_msg("%ld iterations, full sweeps after %ld", st.iterations, st.orthant_stalled);
+    ob[n - 1] = 1;
+    assert_int_equal(hj_eik_solve(&g, f, 0, ob, &s, 1, NULL, &o, R, &sr, &e), HJ_OK);
+    assert_int_equal(sr.orthant_stalled, 0);
+    double d = 0, m = 0;
+    for (size_t u = 0; u + 1 < n; u++) d = fmax(d, fabs(T[u] - R[u])), m = fmax(m, T[u]);
+    if (!(d <= 1e-4 * m)) fail_msg("max difference from full sweeps %.3g of max T %.3g", d, m);
+    free(f), free(T), free(R), free(ob);
+}
+
 /* The threads_bitwise case: 3-D 20 x 18 x 16 nodes, a varying slowness,
  * a wall and two sources (f, ob: n values each, caller frees). */
 static void wall_two_sources(hj_eik_grid *g, double **f, unsigned char **ob, hj_eik_source s[2])
@@ -1532,7 +1568,7 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(noconv_in_first_order_start),
                         cmocka_unit_test(orders_on_small_case), cmocka_unit_test(iterations_flat_in_n),
                         cmocka_unit_test(work_level), cmocka_unit_test(orthant_pass_same_solution),
-                        cmocka_unit_test(orthant_pass_bitwise),
+                        cmocka_unit_test(orthant_pass_bitwise), cmocka_unit_test(head_waves_switch_to_full_sweeps),
                         cmocka_unit_test(round_off_plateau),
                         cmocka_unit_test(relaxation_plateau_converges),
                         cmocka_unit_test(late_source_overtaken),
