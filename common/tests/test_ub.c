@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hj_ub.h"
 #include "hj_ub_dense.h"
@@ -318,20 +319,47 @@ static void bad_parameters(void **state)
 
 /* A bounding box far beyond the domain (finite) is clamped to the grid
  * before the conversion to int, which overflowed (undefined behaviour:
- * caught by the sanitizer build): the box over the whole domain and a box
- * wholly outside it both start. */
+ * caught by the sanitizer build): the box over the whole domain starts,
+ * and so does a box wholly outside it around a set outside it too.  A box
+ * wholly outside the domain around a set inside it started an empty band
+ * and the run went on with the set lost; it is refused, by name. */
 static void huge_bounding_box(void **state)
 {
     (void)state;
-    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < 3; k++) {
+        box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+        if (k == 2) c.lo[0] = 1.5e10, c.hi[0] = 1.6e10; /* the set outside the domain too */
         hj_ub_problem pb = square_problem(&c, 41);
         for (int d = 0; d < 2; d++) pb.bbox_lo[d] = k ? 1e10 : -1e10, pb.bbox_hi[d] = k ? 2e10 : 1e10;
         hj_ub_solver sv;
         hj_error err = {0};
-        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), k == 1 ? HJ_EINVAL : HJ_OK);
+        if (k == 1) assert_non_null(strstr(err.msg, "lies outside the domain"));
+        else assert_int_equal(hj_band_count(sv.s), k ? 0 : 120);
         hj_ub_free(&sv);
     }
+}
+
+/* The scan of hj_ub_init inserted each cell of D^0 by hj_band_insert,
+ * which searches a list line of SSD or CRS from its head: a face of the
+ * set lying along a line (m band cells on one list) cost O(m^2), 1.6 s at
+ * n = 1e5 on a face of 2e4 cells, several minutes here (faces of 3e5
+ * cells).  The scan goes in lexicographic order, so the cells are
+ * appended (O(1) each): well under a second here (about 20 s under
+ * valgrind).  The alarm stops the test where it would hang. */
+static void init_linear_in_the_band(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.6, -0.6}, .hi = {0.6, 0.6}, .vel = {1, 0.5, 0}, .kind = 0};
+    hj_ub_problem pb = square_problem(&c, 1000000);
+    hj_ub_solver sv;
+    hj_error err = {0};
+    alarm(120);
+    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+    alarm(0);
+    /* the square's 4 faces, each 3 cells by 3e5 */
+    assert_true(hj_band_count(sv.s) > 3500000 && hj_band_count(sv.s) < 3700000);
+    hj_ub_free(&sv);
 }
 
 /* A bounding box that does not hold Omega_0 cut the set without a word:
@@ -362,6 +390,7 @@ static void bounding_box_must_hold_the_set(void **state)
 }
 
 HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box),
+             cmocka_unit_test(init_linear_in_the_band),
              cmocka_unit_test(bounding_box_must_hold_the_set), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
