@@ -553,7 +553,7 @@ static int expand_band(hj_ub_solver *sv, hj_error *err)
                         rc = hj_error_set(err, HJ_EINVAL, "band invariant violated: a value in ]-1,1[ next to an unstored node");
                         break;
                     }
-                    if ((rc = hj_band_insert(sv->s, j, sv->v0[i], err))) break;
+                    if ((rc = hj_band_insert_near(sv->s, j, sv->v0[i], err))) break;
                 }
             }
         }
@@ -749,7 +749,7 @@ static int reduce_band(hj_ub_solver *sv, size_t m, hj_error *err)
     for (size_t i = 0; i < ngone; i++) {
         int idx[HJ_BAND_DMAX];
         unlin(d, n, gone[i], idx);
-        hj_band_remove(sv->s, idx);
+        hj_band_remove_near(sv->s, idx); /* in order: from the last removal */
     }
     free(pp);
     free(gone);
