@@ -393,8 +393,8 @@ double *hj_band_find(hj_band *s, const int *idx)
 void hj_band_find_run(hj_band *s, const int *idx, int m, double **out)
 {
     const int last = s->d - 1;
-    int j[HJ_BAND_DMAX], k0 = 0;
-    memcpy(j, idx, sizeof j);
+    int j[HJ_BAND_DMAX] = {0}, k0 = 0;
+    memcpy(j, idx, (size_t)s->d * sizeof *j); /* idx holds d indices (sizeof j read past a shorter array) */
     while (k0 < m && idx[last] + k0 < 0) out[k0++] = NULL; /* below the grid */
     if (k0 < m && idx[last] + k0 < s->n && s->kind != HJ_BAND_FS && s->kind != HJ_BAND_FLS && s->kind != HJ_BAND_SSDA) {
         j[last] = idx[last] + k0;

@@ -291,6 +291,27 @@ static void near_equals_head_search(void **state)
     }
 }
 
-HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(random_sequence_all_kinds), cmocka_unit_test(near_equals_head_search),
+/* hj_band_find_run copied HJ_BAND_DMAX indices from idx, which holds d:
+ * an array of two indices for a 2-D store was read past its end (the
+ * sanitizer build reports the overflow). */
+static void find_run_reads_d_indices(void **state)
+{
+    (void)state;
+    for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+        hj_band *s;
+        assert_int_equal(hj_band_new(&s, kind, 2, 8, NULL), HJ_OK);
+        const int at[2] = {3, 4};
+        assert_int_equal(hj_band_insert(s, at, -0.5, NULL), HJ_OK);
+        double *p[3];
+        const int *from = (const int[2]){3, 3}; /* exactly d = 2 ints */
+        hj_band_find_run(s, from, 3, p);
+        assert_non_null(p[1]);
+        assert_true(*p[1] == -0.5);
+        if (kind != HJ_BAND_FS) assert_null(p[0]), assert_null(p[2]);
+        hj_band_free(s);
+    }
+}
+
+HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(find_run_reads_d_indices), cmocka_unit_test(random_sequence_all_kinds), cmocka_unit_test(near_equals_head_search),
              cmocka_unit_test(find_run_equals_find), cmocka_unit_test(full_storage_holds_every_node),
              cmocka_unit_test(out_of_memory_and_bad_args), cmocka_unit_test(append_equals_insert))
