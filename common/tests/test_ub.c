@@ -191,7 +191,19 @@ static void errors_recover_unstored_lines(void **state)
     pb.bbox_hi[1] = 2;
     hj_ub_solver sv;
     assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, NULL), HJ_OK);
-    assert_true(hj_band_count(sv.s) < 41 * 4);
+    /* the lines inside the set (x < 0.13 less a cell and a half) store no
+     * node; the +1 cells on the grid's edge do (they border the boundary
+     * value) */
+    int lines_empty = 0;
+    for (int i = 0; i < 41; i++) {
+        if (-2 + (i + 1.5) * sv.dx[0] >= 0.13) break;
+        double *p[41];
+        hj_band_find_run(sv.s, (int[]){i, 0}, 41, p);
+        int none = 1;
+        for (int j = 0; j < 41; j++) none &= p[j] == NULL;
+        lines_empty += none;
+    }
+    assert_int_equal(lines_empty, 20);
     double l1, haus;
     assert_int_equal(hj_ub_errors(&sv, inside_left, NULL, &l1, &haus, NULL), HJ_OK);
     assert_true(l1 == 0);
@@ -387,6 +399,36 @@ static void step_linear_in_the_band(void **state)
     hj_ub_free(&sv);
 }
 
+/* boundary = -1: outside the domain is inside the set, which flows in
+ * through the edges the flow enters by.  The +1 cells on the domain's
+ * edge differ from their outside neighbour, so they belong to D^0, but
+ * the scan of the bounding box never saw them: every store but FS
+ * stopped at the first step ("band invariant violated").  Now every store
+ * gives FS's values, bit for bit (a constant flow: the same steps). */
+static void boundary_inside_the_set(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.3}, .hi = {0.2, 0.4}, .vel = {1, 0.5, 0}, .kind = 0};
+    const int n = 41;
+    double *ref = malloc((size_t)n * n * sizeof *ref), *v = malloc((size_t)n * n * sizeof *v);
+    for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+        hj_ub_problem pb = square_problem(&c, n);
+        pb.boundary = -1;
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, (hj_band_kind)kind, &err), HJ_OK);
+        assert_int_equal(hj_ub_run(&sv, 0.7, &err), HJ_OK);
+        assert_int_equal(hj_ub_values(&sv, kind ? v : ref, &err), HJ_OK);
+        if (kind) assert_memory_equal(v, ref, (size_t)n * n * sizeof *v);
+        hj_ub_free(&sv);
+    }
+    /* the strips that came in: x < -2 + 0.7 and y < -2 + 0.35 */
+    assert_true(ref[0] == -1 && ref[(size_t)5 * n + 20] == -1 && ref[(size_t)20 * n + 2] == -1);
+    assert_true(ref[(size_t)20 * n + 40] == 1 && ref[(size_t)40 * n + 40] == 1);
+    free(ref);
+    free(v);
+}
+
 /* A bounding box that does not hold Omega_0 cut the set without a word:
  * one left at zero (a point at the origin, inside the square) stored no
  * band node, so the run went on with an empty set; an inverted box was
@@ -416,6 +458,7 @@ static void bounding_box_must_hold_the_set(void **state)
 
 HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box),
              cmocka_unit_test(init_linear_in_the_band), cmocka_unit_test(step_linear_in_the_band),
+             cmocka_unit_test(boundary_inside_the_set),
              cmocka_unit_test(bounding_box_must_hold_the_set), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),
