@@ -393,8 +393,8 @@ double *hj_band_find(hj_band *s, const int *idx)
 void hj_band_find_run(hj_band *s, const int *idx, int m, double **out)
 {
     const int last = s->d - 1;
-    int j[HJ_BAND_DMAX], k0 = 0;
-    memcpy(j, idx, sizeof j);
+    int j[HJ_BAND_DMAX] = {0}, k0 = 0;
+    memcpy(j, idx, (size_t)s->d * sizeof *j); /* idx holds d indices (sizeof j read past a shorter array) */
     while (k0 < m && idx[last] + k0 < 0) out[k0++] = NULL; /* below the grid */
     if (k0 < m && idx[last] + k0 < s->n && s->kind != HJ_BAND_FS && s->kind != HJ_BAND_FLS && s->kind != HJ_BAND_SSDA) {
         j[last] = idx[last] + k0;
@@ -418,7 +418,16 @@ void hj_band_find_run(hj_band *s, const int *idx, int m, double **out)
     }
 }
 
-int hj_band_insert(hj_band *s, const int *idx, double v, hj_error *err)
+static int band_insert(hj_band *s, const int *idx, double v, int near, hj_error *err);
+static void band_remove(hj_band *s, const int *idx, int near);
+
+int hj_band_insert(hj_band *s, const int *idx, double v, hj_error *err) { return band_insert(s, idx, v, 0, err); }
+int hj_band_insert_near(hj_band *s, const int *idx, double v, hj_error *err) { return band_insert(s, idx, v, 1, err); }
+void hj_band_remove(hj_band *s, const int *idx) { band_remove(s, idx, 0); }
+void hj_band_remove_near(hj_band *s, const int *idx) { band_remove(s, idx, 1); }
+
+/* near: the list kinds search from the list's last position (bidir) */
+static int band_insert(hj_band *s, const int *idx, double v, int near, hj_error *err)
 {
     if (s->kind == HJ_BAND_FS || s->kind == HJ_BAND_FLS) {
         int64_t k = compress(s, idx, 0, s->d);
@@ -449,7 +458,7 @@ int hj_band_insert(hj_band *s, const int *idx, double v, hj_error *err)
     if (!l) return hj_error_set(err, HJ_ENOMEM, "out of memory (%s lines)", hj_band_kind_name(s->kind));
     const int32_t n0 = l->n;
     double *slot;
-    if (list_insert(l, compress(s, idx, s->split, s->d), v, bidir(s), &slot))
+    if (list_insert(l, compress(s, idx, s->split, s->d), v, near || bidir(s), &slot))
         return hj_error_set(err, HJ_ENOMEM, "out of memory (%s list cells)", hj_band_kind_name(s->kind));
     s->count += (size_t)(l->n - n0);
     return HJ_OK;
@@ -474,7 +483,7 @@ int hj_band_append(hj_band *s, const int *idx, double v, hj_error *err)
     return HJ_OK;
 }
 
-void hj_band_remove(hj_band *s, const int *idx)
+static void band_remove(hj_band *s, const int *idx, int near)
 {
     if (s->kind == HJ_BAND_FS) return;
     if (s->kind == HJ_BAND_FLS) {
@@ -488,7 +497,7 @@ void hj_band_remove(hj_band *s, const int *idx)
     }
     band_list *l = list_of(s, idx, 0, NULL);
     if (!l || l->n == 0) return;
-    if (list_remove(l, compress(s, idx, s->split, s->d), bidir(s))) s->count--;
+    if (list_remove(l, compress(s, idx, s->split, s->d), near || bidir(s))) s->count--;
     if (s->kind == HJ_BAND_SSDC && l->n == 0) {
         int found;
         size_t at = line_search(s, compress(s, idx, 0, s->split), &found);

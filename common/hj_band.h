@@ -102,6 +102,17 @@ int hj_band_append(hj_band *s, const int *idx, double v, hj_error *err);
 /* Remove node idx if stored (FS: nothing happens). */
 void hj_band_remove(hj_band *s, const int *idx);
 
+/* hj_band_insert and hj_band_remove with the search of hj_band_find_run:
+ * the list kinds (CRS, SSD, SSDC as LS) walk from the cell last found,
+ * inserted or next to a removed one, instead of from the list's head.
+ * The store afterwards is the same, cell for cell and link for link (a
+ * sorted list has one place for a key; the search's start changes only
+ * the walk).  For the scheme's inserts and removals next to the nodes it
+ * has just looked up (hj_ub.c): from the head, a line of m band nodes
+ * cost O(m) per insert, O(m^2) per step for a face along a line. */
+int hj_band_insert_near(hj_band *s, const int *idx, double v, hj_error *err);
+void hj_band_remove_near(hj_band *s, const int *idx);
+
 /* Number of stored nodes, and bytes currently allocated by the store. */
 size_t hj_band_count(const hj_band *s);
 size_t hj_band_bytes(const hj_band *s);

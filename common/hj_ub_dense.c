@@ -4,6 +4,8 @@
 #include "hj_ub_dense.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -160,6 +162,16 @@ static double row_absmax(long len, const double *restrict f)
     return m;
 }
 
+/* 1 when f[0..m-1] are all finite (f * 0 is 0 for a finite f, NaN else). */
+HJ_UB_CLONES
+static int row_finite(size_t m, const double *restrict f)
+{
+    double z = 0;
+#pragma omp simd reduction(+ : z)
+    for (size_t j = 0; j < m; j++) z += f[j] * 0.0;
+    return z == 0;
+}
+
 /* max over nodes, controls and directions of |f_k| / dx_k at time t */
 static double max_rate(hj_ub_dense *ws, double t)
 {
@@ -167,7 +179,8 @@ static double max_rate(hj_ub_dense *ws, double t)
     const int d = pb->d, n = pb->n;
     const size_t rows = ws->total / (size_t)n;
     double rate = 0;
-#pragma omp parallel for num_threads(ws->nthreads) schedule(static) reduction(max : rate)
+    size_t bad = SIZE_MAX; /* the first row with a non-finite f */
+#pragma omp parallel for num_threads(ws->nthreads) schedule(static) reduction(max : rate) reduction(min : bad)
     for (size_t r = 0; r < rows; r++) {
         double x[HJ_BAND_DMAX] = {0}, *f = ws->buf + (size_t)thread_id() * ws->bufper;
         row_coords(ws, r, 0, 0, x);
@@ -178,18 +191,38 @@ static double max_rate(hj_ub_dense *ws, double t)
                 const double q = row_absmax(n, f + (size_t)k * (size_t)n) / ws->dx[k];
                 rate = q > rate ? q : rate;
             }
+            if (!row_finite((size_t)d * (size_t)n, f) && r < bad) bad = r;
         }
     }
-    return rate;
+    ws->bad = 0;
+    if (bad == SIZE_MAX) return rate;
+    /* the row again, alone, to name the first node */
+    double x[HJ_BAND_DMAX] = {0}, *f = ws->buf;
+    row_coords(ws, bad, 0, 0, x);
+    for (int a = 0; a < pb->ncontrols && !ws->bad; a++) {
+        row_dyn(ws, t, x, ws->xlast + 1, n, a, f);
+        for (long j = 0; j < n && !ws->bad; j++)
+            for (int k = 0; k < d && !ws->bad; k++)
+                if (!isfinite(f[(size_t)k * (size_t)n + (size_t)j])) {
+                    ws->bad = 1, ws->bad_a = a, ws->bad_k = k, ws->bad_f = f[(size_t)k * (size_t)n + (size_t)j], ws->bad_t = t;
+                    memcpy(ws->bad_x, x, sizeof x);
+                    ws->bad_x[d - 1] = ws->xlast[1 + j];
+                }
+    }
+    return NAN;
 }
+
 
 double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax)
 {
     const hj_ub_problem *pb = ws->pb;
+    if (isnan(tmax)) return NAN; /* hj_ub_step refuses it; was a CFL step */
     if (!ws->autonomous || !ws->rate_known) {
         ws->rate = max_rate(ws, t);
         ws->rate_known = 1;
+        ws->rate_t = t;
     }
+    if (ws->bad) return NAN;
     const double rate = ws->rate, left = tmax - t;
     const double dt = rate * left <= pb->cfl ? left : pb->cfl / rate;
     return pb->dtmax > 0 && dt > pb->dtmax ? pb->dtmax : dt;
@@ -537,7 +570,20 @@ static void sweep_planes(hj_ub_dense *ws, const double *src, int a0, int a1, dou
 int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *err)
 {
     const hj_ub_problem *pb = ws->pb;
-    if (!(dt > 0)) return hj_error_set(err, HJ_EINVAL, "UB step: dt must be > 0");
+    if (ws->bad) {
+        char xs[128];
+        int at = 0;
+        for (int k = 0; k < pb->d && at < (int)sizeof xs; k++)
+            at += snprintf(xs + at, sizeof xs - (size_t)at, "%s%g", k ? ", " : "", ws->bad_x[k]);
+        return hj_error_set(err, HJ_ENONFINITE, "dynamics: f_%d = %g at x = (%s), control %d, t = %g (must be finite)",
+                            ws->bad_k, ws->bad_f, xs, ws->bad_a, ws->bad_t);
+    }
+    if (!(dt > 0)) return hj_error_set(err, HJ_EINVAL, "UB step: dt must be > 0, got %g", dt);
+    /* the scheme's limit, where the rate at this t is known */
+    if (ws->rate_known && (ws->autonomous || ws->rate_t == t) && dt * ws->rate > 1 + 1e-12)
+        return hj_error_set(err, HJ_EINVAL,
+                            "UB step: dt = %g is above the scheme's limit 1 / max |f_k| / dx_k = %g (Courant number %g > 1)",
+                            dt, 1 / ws->rate, dt * ws->rate);
     const int d = pb->d, na = pb->ncontrols;
     const double snap = pb->snap > 0 ? pb->snap : 1e-12;
     ws->v = v;

@@ -71,6 +71,12 @@ typedef struct {
     int autonomous;          /* set by the caller: 1 when f does not depend on t */
     int rate_known;          /* the CFL rate max |f_k| / dx_k is ws->rate (autonomous f) */
     double rate;
+    double rate_t;           /* the time at which ws->rate was computed */
+    /* Set by hj_ub_dense_dt when the dynamics gave a NaN or infinite f
+     * there (the first such node in row order: its centre, control,
+     * component and value); dt is then NaN and hj_ub_dense_step refuses. */
+    int bad, bad_a, bad_k;
+    double bad_f, bad_t, bad_x[HJ_BAND_DMAX];
 } hj_ub_dense;
 
 /* Set up the workspace for problem pb (pb->avg0, uniform, reached, bbox and
@@ -83,11 +89,20 @@ void hj_ub_dense_free(hj_ub_dense *ws);
 /* The time step at time t towards tmax: CFL pb->cfl over every node and
  * control, truncated to land on tmax, capped by pb->dtmax (hj_ub_step's).
  * The rate max |f_k| / dx_k costs one evaluation of the dynamics over the
- * grid; with ws->autonomous set (f independent of t) it is computed once. */
+ * grid; with ws->autonomous set (f independent of t) it is computed once.
+ * tmax <= t gives tmax - t (<= 0: no step to take), a NaN tmax NaN.  A NaN or infinite f at
+ * some node gives NaN, with the node in ws->bad_* (before, a NaN f was
+ * skipped by the maximum and the step filled V with NaN without an error;
+ * an infinite one gave dt = 0). */
 double hj_ub_dense_dt(hj_ub_dense *ws, double t, double tmax);
 
 /* V^{n+1} from V^n = v at time t, in place, with the step dt (from
- * hj_ub_dense_dt; dt > 0). */
+ * hj_ub_dense_dt; dt > 0).  HJ_EINVAL for dt <= 0 or NaN, and for a dt
+ * above the scheme's limit, dt max |f_k| / dx_k > 1, when that rate is
+ * known (computed by hj_ub_dense_dt at this t, or once for autonomous f):
+ * the fluxes stay within [-1, 1] there, so the result looked plausible.
+ * HJ_ENONFINITE naming the node, control and time when the last
+ * hj_ub_dense_dt met a NaN or infinite f.  V itself is not checked. */
 int hj_ub_dense_step(hj_ub_dense *ws, double *v, double t, double dt, hj_error *err);
 
 #ifdef __cplusplus

@@ -224,6 +224,94 @@ static void append_equals_insert(void **state)
     }
 }
 
-HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(random_sequence_all_kinds),
+/* hj_band_insert_near and hj_band_remove_near (the search from the
+ * list's last position, as hj_band_find_run's) leave the same store as
+ * hj_band_insert and hj_band_remove (the search from the head): after
+ * the same random inserts, overwrites and removes, interleaved with
+ * lookups that move the last position, every kind holds the same nodes
+ * and values, walks them in the same order, and allocates the same bytes. */
+typedef struct {
+    int64_t *k;
+    double *v;
+    size_t m;
+} dump_ctx;
+
+static int dump(const int *idx, double *v, void *vctx)
+{
+    dump_ctx *c = vctx;
+    int64_t k = 0;
+    for (int i = 0; i < 4 && i < HJ_BAND_DMAX; i++) k = k * 64 + idx[i];
+    c->k[c->m] = k;
+    c->v[c->m++] = *v;
+    return 0;
+}
+
+static void near_equals_head_search(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 4; d++) {
+        const int n = d == 2 ? 40 : d == 3 ? 12 : 6;
+        int64_t total = 1;
+        for (int i = 0; i < d; i++) total *= n;
+        for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+            hj_band *a, *b;
+            assert_int_equal(hj_band_new(&a, kind, d, n, NULL), HJ_OK);
+            assert_int_equal(hj_band_new(&b, kind, d, n, NULL), HJ_OK);
+            unsigned seed = 4242u + (unsigned)(d * 10 + kind);
+            for (int op = 0; op < 6000; op++) {
+                int idx[HJ_BAND_DMAX] = {0};
+                for (int i = 0; i < d; i++) idx[i] = (int)(rnd(&seed) % (unsigned)n);
+                const unsigned r = rnd(&seed) % 8;
+                if (r < 4) {
+                    assert_int_equal(hj_band_insert(a, idx, op, NULL), HJ_OK);
+                    assert_int_equal(hj_band_insert_near(b, idx, op, NULL), HJ_OK);
+                } else if (r < 6) {
+                    hj_band_remove(a, idx);
+                    hj_band_remove_near(b, idx);
+                } else {
+                    double *pa[3], *pb[3];
+                    hj_band_find_run(a, idx, 3, pa);
+                    hj_band_find_run(b, idx, 3, pb);
+                    for (int k = 0; k < 3; k++) assert_true((pa[k] == NULL) == (pb[k] == NULL));
+                }
+            }
+            assert_int_equal(hj_band_count(a), hj_band_count(b));
+            assert_int_equal(hj_band_bytes(a), hj_band_bytes(b));
+            dump_ctx ca = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0};
+            dump_ctx cb = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0};
+            assert_int_equal(hj_band_foreach(a, dump, &ca), 0);
+            assert_int_equal(hj_band_foreach(b, dump, &cb), 0);
+            assert_int_equal(ca.m, cb.m);
+            assert_memory_equal(ca.k, cb.k, ca.m * sizeof *ca.k);
+            assert_memory_equal(ca.v, cb.v, ca.m * sizeof *ca.v);
+            free(ca.k), free(ca.v), free(cb.k), free(cb.v);
+            hj_band_free(a);
+            hj_band_free(b);
+        }
+    }
+}
+
+/* hj_band_find_run copied HJ_BAND_DMAX indices from idx, which holds d:
+ * an array of two indices for a 2-D store was read past its end (the
+ * sanitizer build reports the overflow). */
+static void find_run_reads_d_indices(void **state)
+{
+    (void)state;
+    for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+        hj_band *s;
+        assert_int_equal(hj_band_new(&s, kind, 2, 8, NULL), HJ_OK);
+        const int at[2] = {3, 4};
+        assert_int_equal(hj_band_insert(s, at, -0.5, NULL), HJ_OK);
+        double *p[3];
+        const int *from = (const int[2]){3, 3}; /* exactly d = 2 ints */
+        hj_band_find_run(s, from, 3, p);
+        assert_non_null(p[1]);
+        assert_true(*p[1] == -0.5);
+        if (kind != HJ_BAND_FS) assert_null(p[0]), assert_null(p[2]);
+        hj_band_free(s);
+    }
+}
+
+HJ_TEST_MAIN("hj_band", NULL, NULL, cmocka_unit_test(find_run_reads_d_indices), cmocka_unit_test(random_sequence_all_kinds), cmocka_unit_test(near_equals_head_search),
              cmocka_unit_test(find_run_equals_find), cmocka_unit_test(full_storage_holds_every_node),
              cmocka_unit_test(out_of_memory_and_bad_args), cmocka_unit_test(append_equals_insert))

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hj_ub.h"
 #include "hj_ub_dense.h"
@@ -190,7 +191,19 @@ static void errors_recover_unstored_lines(void **state)
     pb.bbox_hi[1] = 2;
     hj_ub_solver sv;
     assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, NULL), HJ_OK);
-    assert_true(hj_band_count(sv.s) < 41 * 4);
+    /* the lines inside the set (x < 0.13 less a cell and a half) store no
+     * node; the +1 cells on the grid's edge do (they border the boundary
+     * value) */
+    int lines_empty = 0;
+    for (int i = 0; i < 41; i++) {
+        if (-2 + (i + 1.5) * sv.dx[0] >= 0.13) break;
+        double *p[41];
+        hj_band_find_run(sv.s, (int[]){i, 0}, 41, p);
+        int none = 1;
+        for (int j = 0; j < 41; j++) none &= p[j] == NULL;
+        lines_empty += none;
+    }
+    assert_int_equal(lines_empty, 20);
     double l1, haus;
     assert_int_equal(hj_ub_errors(&sv, inside_left, NULL, &l1, &haus, NULL), HJ_OK);
     assert_true(l1 == 0);
@@ -318,20 +331,102 @@ static void bad_parameters(void **state)
 
 /* A bounding box far beyond the domain (finite) is clamped to the grid
  * before the conversion to int, which overflowed (undefined behaviour:
- * caught by the sanitizer build): the box over the whole domain and a box
- * wholly outside it both start. */
+ * caught by the sanitizer build): the box over the whole domain starts,
+ * and so does a box wholly outside it around a set outside it too.  A box
+ * wholly outside the domain around a set inside it started an empty band
+ * and the run went on with the set lost; it is refused, by name. */
 static void huge_bounding_box(void **state)
 {
     (void)state;
-    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < 3; k++) {
+        box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+        if (k == 2) c.lo[0] = 1.5e10, c.hi[0] = 1.6e10; /* the set outside the domain too */
         hj_ub_problem pb = square_problem(&c, 41);
         for (int d = 0; d < 2; d++) pb.bbox_lo[d] = k ? 1e10 : -1e10, pb.bbox_hi[d] = k ? 2e10 : 1e10;
         hj_ub_solver sv;
         hj_error err = {0};
-        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+        assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), k == 1 ? HJ_EINVAL : HJ_OK);
+        if (k == 1) assert_non_null(strstr(err.msg, "lies outside the domain"));
+        else assert_int_equal(hj_band_count(sv.s), k ? 0 : 120);
         hj_ub_free(&sv);
     }
+}
+
+/* The scan of hj_ub_init inserted each cell of D^0 by hj_band_insert,
+ * which searches a list line of SSD or CRS from its head: a face of the
+ * set lying along a line (m band cells on one list) cost O(m^2), 1.6 s at
+ * n = 1e5 on a face of 2e4 cells, several minutes here (faces of 3e5
+ * cells).  The scan goes in lexicographic order, so the cells are
+ * appended (O(1) each): well under a second here (about 20 s under
+ * valgrind).  The alarm stops the test where it would hang. */
+static void init_linear_in_the_band(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.6, -0.6}, .hi = {0.6, 0.6}, .vel = {1, 0.5, 0}, .kind = 0};
+    hj_ub_problem pb = square_problem(&c, 1000000);
+    hj_ub_solver sv;
+    hj_error err = {0};
+    alarm(120);
+    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+    alarm(0);
+    /* the square's 4 faces, each 3 cells by 3e5 */
+    assert_true(hj_band_count(sv.s) > 3500000 && hj_band_count(sv.s) < 3700000);
+    hj_ub_free(&sv);
+}
+
+/* The step inserted the new band nodes and removed the old ones by the
+ * search from each list line's head: a face of the set along a line of m
+ * cells cost O(m^2) per step once the face moved across lines (1.7 s per
+ * step at n = 1e5 with faces of 2e4 cells, 94 % in the list search; a few
+ * minutes here, faces of 2e5 cells).  The inserts and removals now search
+ * from the cell last looked up (hj_band_insert_near, _remove_near), the
+ * same store: a fraction of a second here.  The alarm stops the test
+ * where it would hang. */
+static void step_linear_in_the_band(void **state)
+{
+    (void)state;
+    /* a strip along the last index, moved across the lines */
+    box_case c = {.lo = {-0.05, -1.9}, .hi = {0.05, 1.9}, .vel = {1, 0, 0}, .kind = 0};
+    hj_ub_problem pb = square_problem(&c, 200000);
+    hj_ub_solver sv;
+    hj_error err = {0};
+    alarm(120);
+    assert_int_equal(hj_ub_init(&sv, &pb, HJ_BAND_SSD, &err), HJ_OK);
+    const size_t n0 = hj_band_count(sv.s);
+    assert_int_equal(hj_ub_step(&sv, 1, &err), HJ_OK);
+    alarm(0);
+    assert_true(n0 > 1000000 && hj_band_count(sv.s) > n0); /* the long faces, 3 cells by 1.9e5 */
+    hj_ub_free(&sv);
+}
+
+/* boundary = -1: outside the domain is inside the set, which flows in
+ * through the edges the flow enters by.  The +1 cells on the domain's
+ * edge differ from their outside neighbour, so they belong to D^0, but
+ * the scan of the bounding box never saw them: every store but FS
+ * stopped at the first step ("band invariant violated").  Now every store
+ * gives FS's values, bit for bit (a constant flow: the same steps). */
+static void boundary_inside_the_set(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.3}, .hi = {0.2, 0.4}, .vel = {1, 0.5, 0}, .kind = 0};
+    const int n = 41;
+    double *ref = malloc((size_t)n * n * sizeof *ref), *v = malloc((size_t)n * n * sizeof *v);
+    for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+        hj_ub_problem pb = square_problem(&c, n);
+        pb.boundary = -1;
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, (hj_band_kind)kind, &err), HJ_OK);
+        assert_int_equal(hj_ub_run(&sv, 0.7, &err), HJ_OK);
+        assert_int_equal(hj_ub_values(&sv, kind ? v : ref, &err), HJ_OK);
+        if (kind) assert_memory_equal(v, ref, (size_t)n * n * sizeof *v);
+        hj_ub_free(&sv);
+    }
+    /* the strips that came in: x < -2 + 0.7 and y < -2 + 0.35 */
+    assert_true(ref[0] == -1 && ref[(size_t)5 * n + 20] == -1 && ref[(size_t)20 * n + 2] == -1);
+    assert_true(ref[(size_t)20 * n + 40] == 1 && ref[(size_t)40 * n + 40] == 1);
+    free(ref);
+    free(v);
 }
 
 /* A bounding box that does not hold Omega_0 cut the set without a word:
@@ -362,6 +457,8 @@ static void bounding_box_must_hold_the_set(void **state)
 }
 
 HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box),
+             cmocka_unit_test(init_linear_in_the_band), cmocka_unit_test(step_linear_in_the_band),
+             cmocka_unit_test(boundary_inside_the_set),
              cmocka_unit_test(bounding_box_must_hold_the_set), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),

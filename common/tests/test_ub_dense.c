@@ -8,6 +8,7 @@
  * dynamics computed once with the same time steps. */
 #include "hj_test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -320,6 +321,74 @@ static void bad_input(void **state)
     hj_ub_dense_free(&ws);
 }
 
+/* A NaN or infinite f somewhere: the maximum of |f| skipped a NaN, so
+ * hj_ub_dense_dt gave an ordinary step and hj_ub_dense_step filled V with
+ * NaN without an error (an infinite f gave dt = 0 and "dt must be > 0").
+ * Now dt is NaN and the step refuses, HJ_ENONFINITE naming f's component,
+ * the node, the control and the time, with V untouched. */
+static int bad_f; /* 1: f_0 NaN where x_0 > 0.5; 2: f_1 infinite everywhere */
+static void dyn_bad(double t, const double *x, int a, double *f, void *vctx)
+{
+    dyn(t, x, a, f, vctx);
+    if (bad_f == 1 && x[0] > 0.5) f[0] = NAN;
+    if (bad_f == 2) f[1] = INFINITY;
+}
+
+static void nonfinite_dynamics(void **state)
+{
+    (void)state;
+    dcase c = {2, 3, {0.3, -0.5, 0, 0}, {1.1, 0.5, 0, 0}};
+    for (bad_f = 1; bad_f <= 2; bad_f++)
+        for (int autonomous = 0; autonomous <= 1; autonomous++) {
+            hj_ub_problem pb = problem(&c, 21);
+            pb.dyn = dyn_bad;
+            hj_ub_dense ws;
+            hj_error err = {0};
+            assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_OK);
+            ws.autonomous = autonomous;
+            double v[21 * 21];
+            for (size_t l = 0; l < ws.total; l++) v[l] = l % 5 < 2 ? -1 : 1;
+            const double dt = hj_ub_dense_dt(&ws, 0, 1);
+            assert_true(isnan(dt));
+            assert_int_equal(hj_ub_dense_step(&ws, v, 0, dt, &err), HJ_ENONFINITE);
+            assert_non_null(strstr(err.msg, bad_f == 1 ? "f_0 = nan" : "f_1 = inf"));
+            assert_non_null(strstr(err.msg, bad_f == 1 ? "x = (0.6, -2)" : "x = (-2, -2)"));
+            /* a step of one's own is refused as well, and V is untouched */
+            assert_int_equal(hj_ub_dense_step(&ws, v, 0, 0.01, &err), HJ_ENONFINITE);
+            for (size_t l = 0; l < ws.total; l++) assert_true(v[l] == (l % 5 < 2 ? -1 : 1));
+            hj_ub_dense_free(&ws);
+        }
+    bad_f = 0;
+}
+
+/* A step above the scheme's limit (Courant number max |f_k| dt / dx_k > 1)
+ * was taken without a word, and its values stayed within [-1, 1] (the
+ * limiter clips the fluxes), so nothing showed it.  Where the rate is
+ * known (autonomous f, or hj_ub_dense_dt at the same t) it is refused;
+ * the step at the limit itself (cfl = 1) is taken. */
+static void step_above_the_limit(void **state)
+{
+    (void)state;
+    dcase c = {2, 1, {0.3, -0.5, 0, 0}, {1.1, 0.5, 0, 0}};
+    for (int autonomous = 0; autonomous <= 1; autonomous++) {
+        hj_ub_problem pb = problem(&c, 21);
+        pb.cfl = 1;
+        hj_ub_dense ws;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_dense_init(&ws, &pb, NULL, &err), HJ_OK);
+        ws.autonomous = autonomous;
+        double v[21 * 21];
+        for (size_t l = 0; l < ws.total; l++) v[l] = l % 5 < 2 ? -1 : 1;
+        const double dt = hj_ub_dense_dt(&ws, 0, 10);
+        assert_true(dt > 0 && dt < 10);
+        assert_int_equal(hj_ub_dense_step(&ws, v, 0, 1.5 * dt, &err), HJ_EINVAL);
+        assert_non_null(strstr(err.msg, "above the scheme's limit"));
+        assert_int_equal(hj_ub_dense_step(&ws, v, 0, dt, &err), HJ_OK);
+        assert_true(isnan(hj_ub_dense_dt(&ws, 0, NAN)));
+        hj_ub_dense_free(&ws);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -329,6 +398,8 @@ int main(void)
         cmocka_unit_test(random_levels),
         cmocka_unit_test(autonomous_rate),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(nonfinite_dynamics),
+        cmocka_unit_test(step_above_the_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
