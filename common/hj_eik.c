@@ -1132,6 +1132,83 @@ static void sweep_blocks(const eik_work *w, long block, long par_min, long B[3])
     }
 }
 
+/* Parallel or serial sweeps, whichever runs faster where the solve runs.
+ * The hyperplane blocks need a barrier per hyperplane, and a thread that
+ * waits for one whose core is busy with other work waits for the
+ * scheduler: with one other busy process on the 2 cores, the 2-thread
+ * solve of an 81^3 volume took 4.2 s of wall time at order 1 (6.2 s at
+ * order 3) where one thread took 1.2 s (1.6 s), the waiting threads
+ * spinning (libgomp's default policy); idle, two threads took 0.94 s and
+ * one 1.19 s.  So each iteration times itself (wall clock per unit of
+ * work: a local solve, or 1/16 for a node only checked for activity),
+ * the first of a phase serially (the whole grid as one block: a slow
+ * parallel probe costs more than a slow serial one), the second in
+ * parallel, then the cheaper of the two, the other one measured
+ * again every TUNE_PROBE iterations (the machine's load changes).  Every
+ * block layout gives the same bits (see sweep), so the choice changes
+ * the time, never the result.  Off (always the blocks of sweep_blocks)
+ * with one thread, a block size given by the caller, always_parallel, or
+ * without OpenMP. */
+enum { TUNE_PROBE = 8 };
+typedef struct {
+    long Bp[3], Bs[3]; /* the parallel blocks (sweep_blocks) and the whole grid */
+    int on, mode;      /* mode of this iteration: 0 parallel, 1 serial */
+    double cost[2];    /* seconds per unit of work, last measured (0: none yet) */
+    long it;           /* iterations of this phase */
+    double t0, u0;     /* the iteration's start */
+} sweep_tuner;
+
+static double tune_clock(void)
+{
+#ifdef _OPENMP
+    return omp_get_wtime();
+#else
+    return 0;
+#endif
+}
+
+static void tuner_init(sweep_tuner *t, const eik_work *w, long block, int always, const long Bp[3])
+{
+    int nb = 1;
+    for (int d = 0; d < 3; d++) {
+        t->Bp[d] = Bp[d];
+        t->Bs[d] = d < w->dim ? w->n[d] : 1;
+        nb = nb && Bp[d] == t->Bs[d];
+    }
+    t->on = !always && block <= 0 && !nb; /* sweep_blocks cut the grid: more than one thread */
+#ifndef _OPENMP
+    t->on = 0;
+#endif
+    t->mode = 0, t->it = 0, t->cost[0] = t->cost[1] = 0, t->t0 = t->u0 = 0;
+}
+
+/* A new phase (other costs per unit of work): measure both again. */
+static void tuner_reset(sweep_tuner *t) { t->it = 0, t->cost[0] = t->cost[1] = 0; }
+
+/* The blocks of the next iteration; work: the units done so far. */
+static const long *tuner_begin(sweep_tuner *t, double work)
+{
+    if (!t->on) return t->Bp;
+    const int better = t->cost[1] < t->cost[0];
+    t->mode = t->cost[1] == 0 ? 1 : t->cost[0] == 0 ? 0 : t->it % TUNE_PROBE == 0 ? !better : better;
+    t->t0 = tune_clock(), t->u0 = work;
+    return t->mode ? t->Bs : t->Bp;
+}
+
+static void tuner_end(sweep_tuner *t, double work)
+{
+    if (!t->on) return;
+    const double dt = tune_clock() - t->t0, du = work - t->u0;
+    if (du > 0 && dt > 0) t->cost[t->mode] = dt / du;
+    t->it++;
+}
+
+/* The units of work done: local solves, and 1/16 for each node visited. */
+static double tune_work(const hj_eik_stats *st, size_t np)
+{
+    return (double)st->updates + (double)st->sweeps * (double)np / 16;
+}
+
 /* Polynomial extrapolation of tau (degree deg, from deg+1 interior nodes)
  * into the ghost layers along each dimension, so that the WENO stencils
  * at the boundary keep their order (hj_fsm does the same with degree 2).
@@ -1655,6 +1732,8 @@ static int check_input(const hj_eik_grid *g, const hj_eik_source *src, int nsrc,
     if (!(opt->tol >= 0) || !isfinite(opt->tol)) return hj_error_set(err, HJ_EINVAL, "tolerance %g: must be finite and >= 0", opt->tol);
     if (opt->max_iter < 1) return hj_error_set(err, HJ_EINVAL, "max_iter %ld: must be >= 1", opt->max_iter);
     if (opt->block < 0) return hj_error_set(err, HJ_EINVAL, "block %ld: must be >= 0 (0: chosen by the solver)", opt->block);
+    if (opt->always_parallel != 0 && opt->always_parallel != 1)
+        return hj_error_set(err, HJ_EINVAL, "always_parallel %d: must be 0 or 1", opt->always_parallel);
     if (opt->parallel_min < 0)
         return hj_error_set(err, HJ_EINVAL, "parallel_min %ld: must be >= 0 (0: the default)", opt->parallel_min);
     if (nsrc < 0) return hj_error_set(err, HJ_EINVAL, "sources: count %d: must be >= 0", nsrc);
@@ -1951,6 +2030,8 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
     long B[3];
     sweep_blocks(&w, opt->block, par_min, B);
     const long all_lo[3] = {0, 0, 0}, all_hi[3] = {w.n[0], w.n[1], w.n[2]};
+    sweep_tuner tun;
+    tuner_init(&tun, &w, opt->block, opt->always_parallel, B);
 
     /* First order sweeps to convergence. */
     int q = 1;
@@ -1959,8 +2040,9 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
     double scale = 0;
     for (long it = 1; it <= opt->max_iter; it++) {
         double change = 0;
+        const long *Bi = tuner_begin(&tun, tune_work(st, np));
         for (int s = 0; s < nsw; s++, q++) {
-            const double c = sweep(&w, s, all_lo, all_hi, 1, q, 1, par_min, B, &st->updates);
+            const double c = sweep(&w, s, all_lo, all_hi, 1, q, 1, par_min, Bi, &st->updates);
             if (c > change) change = c;
         }
         scale = 0;
@@ -1971,6 +2053,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
             }
         st->iterations = st->fo_iterations = it;
         st->sweeps += nsw;
+        tuner_end(&tun, tune_work(st, np));
         st->change = scale > 0 ? change / scale : change;
         if (opt->progress) opt->progress(it, st->change, opt->progress_ctx);
         if (change <= opt->tol * scale) {
@@ -2058,8 +2141,10 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
         double orth[2] = {0, 0}; /* the orthant passes' own stall blocks, like blk */
         int north = 0;
         /* max_iter bounds the total, the first order start included */
+        tuner_reset(&tun);
         for (long it = 1; it <= opt->max_iter - st->fo_iterations; it++) {
             double change = 0;
+            const long *Bi = tuner_begin(&tun, tune_work(st, np));
             if (w.chg) memset(w.chg, 0, np * sizeof(float));
             if (causal) {
                 /* each node in the sweep of its orientation (causal_sides),
@@ -2070,7 +2155,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                     for (int d = 0; d < w.dim; d++) empty = empty || cbox[s][0][d] >= cbox[s][1][d];
                     if (empty) continue;
                     fill_ghosts(&w, deg, q);
-                    const double c = sweep(&w, s, cbox[s][0], cbox[s][1], opt->order, q, 0, par_min, B, &st->updates);
+                    const double c = sweep(&w, s, cbox[s][0], cbox[s][1], opt->order, q, 0, par_min, Bi, &st->updates);
                     if (c > change) change = c;
                 }
                 st->sweeps++;
@@ -2089,7 +2174,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                     }
                     if (empty) continue;
                     fill_ghosts(&w, deg, q);
-                    const double c = sweep(&w, s, lo, hi, opt->order, q, 0, par_min, B, &st->updates);
+                    const double c = sweep(&w, s, lo, hi, opt->order, q, 0, par_min, Bi, &st->updates);
                     if (c > change) change = c;
                 }
                 q++;
@@ -2098,11 +2183,12 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                 for (int s = 0; s < nsw; s++, q++) {
                     fill_ghosts(&w, deg, q);
                     w.q0 = q;
-                    const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, B, &st->updates);
+                    const double c = sweep(&w, s, all_lo, all_hi, opt->order, q, 0, par_min, Bi, &st->updates);
                     if (c > change) change = c;
                 }
                 st->sweeps += nsw;
             }
+            tuner_end(&tun, tune_work(st, np));
             scale = 0;
             for (size_t k = 0; k < np; k++)
                 if (w.state[k] == ST_FREE || w.state[k] == ST_FIXED) {
@@ -2130,6 +2216,7 @@ static int solve_joint(const hj_eik_grid *g, const double *f, double f_const, co
                         rnd[0] = rnd[1] = blk[0] = blk[1] = cyc[0] = cyc[1] = 0;
                         nrnd = nblk = ncyc = 0;
                         st->orthant_stalled = st->iterations;
+                        tuner_reset(&tun);
                         continue;
                     }
                     orth[0] = orth[1];

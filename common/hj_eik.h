@@ -62,6 +62,21 @@ typedef struct {
                          * automatic: the whole grid with one thread;
                          * 1: node hyperplanes); the result does not
                          * depend on it */
+    int always_parallel; /* 0 (default): where the solver cuts the grid
+                          * into blocks for the threads (block 0, more
+                          * than one thread, 16 parallel_min nodes or
+                          * more), each iteration sweeps with the
+                          * threads or on one of them, whichever it
+                          * measured faster in the iterations before
+                          * (both are timed at the start of each phase
+                          * and the slower one again every 8
+                          * iterations): a thread that waits at a
+                          * block hyperplane for one whose core is busy
+                          * with other work waits for the scheduler
+                          * (an 81^3 solve on 2 cores beside one busy
+                          * process: 2.9 s with 2 threads against 1.8 s
+                          * on one); 1: always with the threads.  The
+                          * result is the same bits either way */
     int separate_sources; /* 1: with two or more sources (the fixed data
                            * counting as one more), solve each alone and
                            * take the node-wise minimum (see

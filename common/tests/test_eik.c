@@ -54,7 +54,10 @@ static long one_sweep_iterations(const hj_eik_stats *st, int dim)
 }
 
 /* Solve with one thread into a, with two into b, and require the same
- * bits; st gets the two-thread solve's statistics. */
+ * bits; st gets the two-thread solve's statistics.  With two threads the
+ * solve runs twice: as o says, and with always_parallel set (o's
+ * always_parallel 0: the solver's first iteration of each phase runs on
+ * one thread, the second with both, see sweep_tuner in hj_eik.c). */
 static void solve_one_two_threads(const hj_eik_grid *g, const double *f, const unsigned char *ob,
                                   const hj_eik_source *s, int ns, const double *fx, const hj_eik_options *o, double *a,
                                   double *b, hj_eik_stats *st)
@@ -67,6 +70,15 @@ static void solve_one_two_threads(const hj_eik_grid *g, const double *f, const u
         assert_int_equal(hj_eik_solve(g, f, 0, ob, s, ns, fx, o, th == 1 ? a : b, st, &e), HJ_OK);
     }
     assert_memory_equal(a, b, nodes(g) * sizeof *a);
+    if (!o->always_parallel) {
+        hj_eik_options p = *o;
+        hj_eik_stats sp;
+        p.always_parallel = 1;
+        memset(b, 0, nodes(g) * sizeof *b);
+        assert_int_equal(hj_eik_solve(g, f, 0, ob, s, ns, fx, &p, b, &sp, &e), HJ_OK);
+        assert_memory_equal(a, b, nodes(g) * sizeof *a);
+        assert_int_equal(sp.iterations, st->iterations);
+    }
 }
 
 /* The same solve with block edges 1, 3 and 7 (into b) gives a's bits. */
@@ -230,6 +242,10 @@ static void bad_input(void **state)
     assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
     assert_non_null(strstr(e.msg, "parallel_min -1"));
     o.parallel_min = 0;
+    o.always_parallel = 2;
+    assert_int_equal(solve_err(&g, f, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
+    assert_non_null(strstr(e.msg, "always_parallel 2"));
+    o.always_parallel = 0;
     progress_calls = 0;
 
     assert_int_equal(solve_err(&g, NULL, 0, NULL, &s, 1, NULL, &o, &e), HJ_EINVAL);
