@@ -1144,7 +1144,8 @@ static void sweep_blocks(const eik_work *w, long block, long par_min, long B[3])
  * the first of a phase serially (the whole grid as one block: a slow
  * parallel probe costs more than a slow serial one), the second in
  * parallel, then the cheaper of the two, the other one measured
- * again every TUNE_PROBE iterations (the machine's load changes).  Every
+ * again every TUNE_PROBE iterations (the machine's load changes); the
+ * higher order phase starts from the first order phase's ratio.  Every
  * block layout gives the same bits (see sweep), so the choice changes
  * the time, never the result.  Off (always the blocks of sweep_blocks)
  * with one thread, a block size given by the caller, always_parallel, or
@@ -1156,6 +1157,7 @@ typedef struct {
     double cost[2];    /* seconds per unit of work, last measured (0: none yet) */
     long it;           /* iterations of this phase */
     double t0, u0;     /* the iteration's start */
+    double ratio;      /* cost[0] / cost[1] of the phase before (0: none) */
 } sweep_tuner;
 
 static double tune_clock(void)
@@ -1179,18 +1181,26 @@ static void tuner_init(sweep_tuner *t, const eik_work *w, long block, int always
 #ifndef _OPENMP
     t->on = 0;
 #endif
-    t->mode = 0, t->it = 0, t->cost[0] = t->cost[1] = 0, t->t0 = t->u0 = 0;
+    t->mode = 0, t->it = 0, t->cost[0] = t->cost[1] = 0, t->t0 = t->u0 = 0, t->ratio = 0;
 }
 
-/* A new phase (other costs per unit of work): measure both again. */
-static void tuner_reset(sweep_tuner *t) { t->it = 0, t->cost[0] = t->cost[1] = 0; }
+/* A new phase: other costs per unit of work, but the ratio of the two
+ * (the machine's) carries over; the first iteration runs in the faster
+ * mode and the other one's cost is taken from the ratio until it is
+ * measured again (every TUNE_PROBE iterations). */
+static void tuner_reset(sweep_tuner *t)
+{
+    t->ratio = t->cost[0] > 0 && t->cost[1] > 0 ? t->cost[0] / t->cost[1] : 0;
+    t->it = 0, t->cost[0] = t->cost[1] = 0;
+}
 
 /* The blocks of the next iteration; work: the units done so far. */
 static const long *tuner_begin(sweep_tuner *t, double work)
 {
     if (!t->on) return t->Bp;
     const int better = t->cost[1] < t->cost[0];
-    t->mode = t->cost[1] == 0 ? 1 : t->cost[0] == 0 ? 0 : t->it % TUNE_PROBE == 0 ? !better : better;
+    if (t->cost[0] == 0 && t->cost[1] == 0 && t->ratio > 0) t->mode = t->ratio > 1;
+    else t->mode = t->cost[1] == 0 ? 1 : t->cost[0] == 0 ? 0 : t->it % TUNE_PROBE == 0 ? !better : better;
     t->t0 = tune_clock(), t->u0 = work;
     return t->mode ? t->Bs : t->Bp;
 }
@@ -1199,7 +1209,12 @@ static void tuner_end(sweep_tuner *t, double work)
 {
     if (!t->on) return;
     const double dt = tune_clock() - t->t0, du = work - t->u0;
-    if (du > 0 && dt > 0) t->cost[t->mode] = dt / du;
+    if (du > 0 && dt > 0) {
+        t->cost[t->mode] = dt / du;
+        /* the other mode's from the phase before's ratio */
+        if (t->ratio > 0 && t->cost[!t->mode] == 0)
+            t->cost[!t->mode] = t->mode ? t->cost[1] * t->ratio : t->cost[0] / t->ratio;
+    }
     t->it++;
 }
 
