@@ -56,8 +56,9 @@ static long one_sweep_iterations(const hj_eik_stats *st, int dim)
 /* Solve with one thread into a, with two into b, and require the same
  * bits; st gets the two-thread solve's statistics.  With two threads the
  * solve runs twice: as o says, and with always_parallel set (o's
- * always_parallel 0: the solver's first iteration of each phase runs on
- * one thread, the second with both, see sweep_tuner in hj_eik.c). */
+ * always_parallel 0: the first order phase's first iteration runs on one
+ * thread, its second with both, later iterations in the mode measured
+ * faster and every 8th in the other, see sweep_tuner in hj_eik.c). */
 static void solve_one_two_threads(const hj_eik_grid *g, const double *f, const unsigned char *ob,
                                   const hj_eik_source *s, int ns, const double *fx, const hj_eik_options *o, double *a,
                                   double *b, hj_eik_stats *st)
