@@ -1135,11 +1135,12 @@ static void sweep_blocks(const eik_work *w, long block, long par_min, long B[3])
 /* Parallel or serial sweeps, whichever runs faster where the solve runs.
  * The hyperplane blocks need a barrier per hyperplane, and a thread that
  * waits for one whose core is busy with other work waits for the
- * scheduler: with one other busy process on the 2 cores, the 2-thread
- * solve of an 81^3 volume took 4.2 s of wall time at order 1 (6.2 s at
- * order 3) where one thread took 1.2 s (1.6 s), the waiting threads
- * spinning (libgomp's default policy); idle, two threads took 0.94 s and
- * one 1.19 s.  So each iteration times itself (wall clock per unit of
+ * scheduler: beside other busy processes on the 2 cores, the 2-thread
+ * solve of an 81^3 volume took 2.2 to 7 s of wall time at order 1 where
+ * one thread took 1.2 s, the waiting threads spinning (libgomp's default
+ * policy); idle, two threads took 0.92 s and one 1.19 s.  With the
+ * choice below: 1.36-1.44 s beside one busy process, 0.89-0.96 s idle
+ * (161^3, order 3, idle: 9.2-9.6 s against 9.0 s always parallel).  So each iteration times itself (wall clock per unit of
  * work: a local solve, or 1/16 for a node only checked for activity),
  * the first of a phase serially (the whole grid as one block: a slow
  * parallel probe costs more than a slow serial one), the second in

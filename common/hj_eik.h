@@ -73,10 +73,12 @@ typedef struct {
                           * iterations): a thread that waits at a
                           * block hyperplane for one whose core is busy
                           * with other work waits for the scheduler
-                          * (an 81^3 solve on 2 cores beside one busy
-                          * process: 2.9 s with 2 threads against 1.8 s
-                          * on one); 1: always with the threads.  The
-                          * result is the same bits either way */
+                          * (an 81^3 order 1 solve on 2 cores beside one
+                          * busy process: 2.2-2.5 s with the threads
+                          * always, 1.4 s with the choice, 1.2-1.3 s on
+                          * one thread; idle the choice costs 0 to 6 %);
+                          * 1: always with the threads.  The result is
+                          * the same bits either way */
     int separate_sources; /* 1: with two or more sources (the fixed data
                            * counting as one more), solve each alone and
                            * take the node-wise minimum (see
