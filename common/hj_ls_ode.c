@@ -17,6 +17,7 @@ void hj_ls_ode_defaults(hj_ls_ode_opts *o)
     o->post_ctx = NULL;
     o->single_step = 0;
     o->blowup_factor = 1e6;
+    o->always_parallel = 0;
 }
 
 static double wall(void)
@@ -221,6 +222,60 @@ static int still_at_end(const hj_ls_grid *g, const hj_ls_term *term, double t, d
  * the same address modulo 4 KB, and a load of one then waits on the store
  * to another still in flight (a row's fused stage reads y0 and u and
  * writes dst at the same k).  *base is what to free. */
+/* Threads per step (hj_ls_ode_opts.always_parallel): the wall time of
+ * each step in its mode, 0 with the threads, 1 on one of them; the first
+ * step on one, the second with all, then the mode of the smaller time,
+ * the other one timed again TUNE_GAP steps later, the gap doubled (up to
+ * TUNE_GAP_MAX) each time the choice stands.  Every term's result is the
+ * same bits for any thread count, so only the time changes. */
+enum { TUNE_GAP = 8, TUNE_GAP_MAX = 256 };
+typedef struct {
+    int on, nth, mode;
+    double cost[2]; /* wall seconds of a step (0: not yet timed) */
+    long it, probe, gap;
+    double t0;
+} step_tuner;
+
+static void tuner_init(step_tuner *t, const hj_ls_ode_opts *o)
+{
+    memset(t, 0, sizeof *t);
+    t->nth = hj_sys_max_threads();
+    t->on = t->nth > 1 && !o->always_parallel && !o->single_step;
+    t->gap = TUNE_GAP;
+}
+
+static void tuner_begin(step_tuner *t)
+{
+    if (!t->on) return;
+    const int best = t->cost[1] < t->cost[0];
+    t->mode = t->cost[1] == 0 ? 1 : t->cost[0] == 0 ? 0 : t->it == t->probe ? !best : best;
+#ifdef _OPENMP
+    omp_set_num_threads(t->mode ? 1 : t->nth);
+#endif
+    t->t0 = wall();
+}
+
+/* After the step's stages: the caller's thread count back (its callbacks
+ * and the rest of the program see it), the step's time recorded. */
+static void tuner_end(step_tuner *t)
+{
+    if (!t->on) return;
+#ifdef _OPENMP
+    omp_set_num_threads(t->nth);
+#endif
+    const double dt = wall() - t->t0;
+    const int best = t->cost[1] < t->cost[0];
+    /* the mode in use smoothed (one step may be preempted), a probe taken as it is */
+    if (t->it == t->probe || t->cost[t->mode] == 0) t->cost[t->mode] = dt;
+    else t->cost[t->mode] = 0.75 * t->cost[t->mode] + 0.25 * dt;
+    if (t->cost[0] > 0 && t->cost[1] > 0 && t->it >= t->probe) {
+        const int now = t->cost[1] < t->cost[0];
+        if (t->it > 1) t->gap = now == best ? (t->gap * 2 < TUNE_GAP_MAX ? t->gap * 2 : TUNE_GAP_MAX) : TUNE_GAP;
+        t->probe = t->it + t->gap;
+    }
+    t->it++;
+}
+
 static double *stage_alloc(const hj_ls_grid *g, int slot, double **base)
 {
     const size_t shift = (size_t)slot * 1024 / sizeof(double);
@@ -271,6 +326,8 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     if (!(o.max_step > 0)) return hj_error_set(err, HJ_EINVAL, "MaxStep must be positive, got %g", o.max_step);
     if (!(o.blowup_factor >= 0))
         return hj_error_set(err, HJ_EINVAL, "the blow-up factor must be >= 0 (0: no bound), got %g", o.blowup_factor);
+    if (o.always_parallel != 0 && o.always_parallel != 1)
+        return hj_error_set(err, HJ_EINVAL, "always_parallel must be 0 or 1, got %d", o.always_parallel);
     /* calloc refuses only a block beyond memory and swap: stage arrays
      * that fit one by one but not with the state would page, or the
      * first step's writes be killed; refuse before reading y */
@@ -286,6 +343,8 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
     const double limit = o.blowup_factor > 0 ? o.blowup_factor * blowup_scale(g, y) : INFINITY;
 
     hj_ls_ode_stats st = {0, 0, 0, tspan[0], 0};
+    step_tuner tun;
+    tuner_init(&tun, &o);
     const double start = wall();
     double *fbase = NULL, *ubase = NULL; /* what to free: u and f trade places */
     double *f = stage_alloc(g, 1, &fbase), *u = order > 1 ? stage_alloc(g, 2, &ubase) : NULL;
@@ -312,6 +371,7 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
             double b, dt;
             int last = 0, bad, fused, guessed = 0;
             double amax;
+            tuner_begin(&tun);
             if (hold) hold--;
             /* an infinite bound is never guessed: its step needs still_at_end */
             const int try_guess = guess && same >= 2 && !hold && bprev < INFINITY;
@@ -398,6 +458,7 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
                 st.evals++;
                 st.cfl_violations += b < dt / o.factor_cfl;
             }
+            tuner_end(&tun);
             if (g->dist) {
                 double v[2] = {amax, bad};
                 hj_ls_grid_reduce(g, v, 2, HJ_LS_REDUCE_MAX);
@@ -439,6 +500,9 @@ int hj_ls_ode(int order, const hj_ls_grid *g, const hj_ls_term *term, const doub
         }
     }
 done:
+#ifdef _OPENMP
+    if (tun.on) omp_set_num_threads(tun.nth); /* the caller's thread count back (a step that failed) */
+#endif
     if (ys != y) {
         hj_ls_copy(g, y, ys);
         u = ys;

@@ -82,6 +82,18 @@ typedef struct {
     double blowup_factor; /* a step that leaves max |y| above this many times
                            * max(max |y0|, the domain's diameter) is a
                            * blow-up (default 1e6; 0: no bound) */
+    int always_parallel;  /* 0 (default): with more than one OpenMP thread
+                           * (and without single_step) each step runs with
+                           * the threads or on one of them, whichever the
+                           * steps before measured faster (the first on
+                           * one, the second with all, then the faster,
+                           * the other timed again after 8, 16, .. 256
+                           * steps): on a small grid every stage's
+                           * parallel region costs a wake-up of the
+                           * threads, and on cores busy with other work a
+                           * thread waits for the scheduler at every
+                           * barrier; 1: always with the threads.  The
+                           * result is the same bits either way. */
 } hj_ls_ode_opts;
 
 /* Stats (the library does not print them; the caller may). */

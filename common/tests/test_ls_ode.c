@@ -284,6 +284,10 @@ static void error_reports(void **state)
     /* with MaxStep an infinite bound is fine */
     hj_ls_ode_opts o;
     hj_ls_ode_defaults(&o);
+    o.always_parallel = -1;
+    assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_EINVAL);
+    assert_has(err.msg, "always_parallel must be 0 or 1, got -1");
+    o.always_parallel = 0;
     o.max_step = 0.25;
     for (int j = 0; j < 4; j++) y[g.offset + (size_t)j] = 0;
     assert_int_equal(hj_ls_ode(1, &g, &c.base, span, 2, y, &o, NULL, NULL, NULL, &err), HJ_OK);
@@ -353,8 +357,24 @@ static void swirl(double t, const double *x, double dx0, long n, int d, double *
     }
 }
 
+static int fail_at_step3(double t, double *y, void *ctx, hj_error *err)
+{
+    (void)t, (void)y;
+    return ++*(int *)ctx == 3 ? hj_error_set(err, HJ_EINVAL, "stop") : HJ_OK;
+}
+
+/* swirl with NaN: the integration fails inside its first step (run on one thread) */
+static void swirl_nan(double t, const double *x, double dx0, long n, int d, double *v, void *ctx)
+{
+    swirl(t, x, dx0, n, d, v, ctx);
+    for (long j = 0; j < n; j++) v[j] = NAN;
+}
+
 /* WENO5 + RK3 convection and normal motion on 2-D with 1 and 2 threads:
- * bitwise the same state. */
+ * bitwise the same state, with the threads chosen per step by their
+ * measured time (the first step on one thread, the second on both) and
+ * with always_parallel; the caller's thread count is back after the
+ * run, also after one that fails. */
 static void threads_bitwise(void **state)
 {
     (void)state;
@@ -374,18 +394,37 @@ static void threads_bitwise(void **state)
     const hj_ls_term *terms[2] = {&c.base, &nm.base};
     hj_ls_sum sum;
     assert_int_equal(hj_ls_sum_init(&sum, &g, terms, 2, NULL), HJ_OK);
-    for (int th = 1; th <= 2; th++) {
+    for (int run = 0; run < 3; run++) {
+        const int th = run ? 2 : 1;
         omp_set_num_threads(th);
         assert_int_equal(omp_get_max_threads(), th);
         double *y = th == 1 ? a : b;
         hj_ls_fill(&g, y, bump, NULL);
-        assert_int_equal(hj_ls_ode(3, &g, &sum.base, span, 2, y, NULL, NULL, NULL, NULL, NULL), HJ_OK);
+        hj_ls_ode_opts o;
+        hj_ls_ode_defaults(&o);
+        o.always_parallel = run == 2;
+        hj_ls_ode_stats st;
+        assert_int_equal(hj_ls_ode(3, &g, &sum.base, span, 2, y, &o, NULL, NULL, &st, NULL), HJ_OK);
+        assert_true(st.steps > 2);
+        assert_int_equal(omp_get_max_threads(), th);
+        long idx[2];
+        for (size_t r = 0; run && r < g.rows; r++) {
+            size_t k = hj_ls_row(&g, r, idx);
+            assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
+        }
     }
-    long idx[2];
-    for (size_t r = 0; r < g.rows; r++) {
-        size_t k = hj_ls_row(&g, r, idx);
-        assert_memory_equal(a + k, b + k, sizeof(double) * (size_t)g.N[0]);
-    }
+    hj_ls_ode_opts o;
+    hj_ls_ode_defaults(&o);
+    int calls = 0;
+    o.post = fail_at_step3, o.post_ctx = &calls;
+    hj_error e;
+    hj_ls_fill(&g, b, bump, NULL);
+    assert_int_equal(hj_ls_ode(3, &g, &sum.base, span, 2, b, &o, NULL, NULL, NULL, &e), HJ_EINVAL);
+    assert_int_equal(omp_get_max_threads(), 2);
+    c.velocity_fn = swirl_nan;
+    hj_ls_fill(&g, b, bump, NULL);
+    assert_int_not_equal(hj_ls_ode(3, &g, &c.base, span, 2, b, NULL, NULL, NULL, NULL, &e), HJ_OK);
+    assert_int_equal(omp_get_max_threads(), 2);
     omp_set_num_threads(1);
     hj_ls_sum_free(&sum);
     hj_ls_free(a), hj_ls_free(b);
