@@ -212,7 +212,9 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
 /* The closed-form travel time from s to x in the linear velocity field
  * v(y) = v0 + g . y (|grad T| = 1 / v), dim 1 to 3: T = acosh(1 + |g|^2
  * |x - s|^2 / (2 v(s) v(x))) / |g| (Fomel, Luo & Zhao 2009), |x - s| / v0
- * for g = 0.  The reference solution of the convergence studies and a check
+ * for g = 0; evaluated as 2 asinh(|g| |x - s| / (2 sqrt(v(s) v(x)))) / |g|,
+ * the same value without the loss of digits in 1 + e where |g| |x - s| / v
+ * is small.  The reference solution of the convergence studies and a check
  * for a user's own solver.  NaN where v(s) or v(x) is not positive (the
  * field has no travel time there) or dim is out of range. */
 double hj_eik_linear_time(int dim, double v0, const double *g, const double *s, const double *x);

@@ -1580,6 +1580,24 @@ static void linear_time_closed_form(void **state)
     assert_true(isnan(hj_eik_linear_time(4, V0, G, s, s)));
 }
 
+/* The closed form keeps its relative accuracy where |g| |x - s| / v is
+ * small: acosh(1 + e) lost the digits of e in 1 + e (T = 0 for g = 1e-9
+ * at distance 1, 1 % off for g = 1e-7, 4e-5 relative at r = 1e-6 with
+ * g = 0.5).  In 1-D T = log(1 + g x / v0) / g exactly. */
+static void linear_time_small_arguments(void **state)
+{
+    (void)state;
+    const double s[3] = {0, 0, 0};
+    const double gs[] = {1e-12, 1e-9, 1e-7, 1e-5, 1e-3, 0.1, 0.5};
+    const double xs[] = {1e-8, 1e-6, 1e-3, 1, 3};
+    for (size_t i = 0; i < sizeof gs / sizeof *gs; i++)
+        for (size_t j = 0; j < sizeof xs / sizeof *xs; j++) {
+            const double g[3] = {gs[i], 0, 0}, x[3] = {xs[j], 0, 0};
+            const double t = hj_eik_linear_time(1, 1.0, g, s, x), ex = log1p(gs[i] * xs[j]) / gs[i];
+            if (!(fabs(t - ex) <= 1e-14 * ex)) fail_msg("g %g x %g: T = %.17g, exact %.17g", gs[i], xs[j], t, ex);
+        }
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), cmocka_unit_test(fixed_line_inside_is_exact), cmocka_unit_test(obstacle_not_crossed),
                         cmocka_unit_test(bad_input), cmocka_unit_test(noconv_keeps_iterate),
                         cmocka_unit_test(noconv_in_first_order_start),
@@ -1597,4 +1615,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(causal_sweeps_same_solution),
                         cmocka_unit_test(causal_sweeps_bitwise), cmocka_unit_test(separate_sources_order),
                         cmocka_unit_test(separate_sources_min_bitwise), cmocka_unit_test(separate_sources_bad_input),
-                        cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form))
+                        cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form),
+                        cmocka_unit_test(linear_time_small_arguments))
