@@ -2420,6 +2420,9 @@ static int solve_separate(const hj_eik_grid *g, const double *f, double f_const,
         st->fo_iterations += sc.fo_iterations;
         st->updates += sc.updates;
         st->sweeps += sc.sweeps;
+        /* the first solve whose orthant passes stalled, in the summed count */
+        if (sc.orthant_stalled > 0 && st->orthant_stalled == 0)
+            st->orthant_stalled = st->iterations - sc.iterations + sc.orthant_stalled;
         st->change = sc.change > st->change ? sc.change : st->change;
         st->converged = st->converged && sc.converged;
         pctx.offset = st->iterations;

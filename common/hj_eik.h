@@ -164,7 +164,10 @@ typedef struct {
     long orthant_stalled; /* the iteration after which the orthant
                            * passes stalled and full sweeps took over
                            * (arrivals coming back toward the source
-                           * along an axis, as head waves do); 0: never */
+                           * along an axis, as head waves do); 0: never.
+                           * With separate_sources: the first solve's
+                           * that stalled, counted in the summed
+                           * iterations */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);

@@ -1598,6 +1598,34 @@ static void linear_time_small_arguments(void **state)
         }
 }
 
+/* With separate_sources each source is solved alone, by orthant passes:
+ * where they stall (head waves), hj_eik_stats.orthant_stalled says so as
+ * for one source (it stayed 0, "never", while both solves switched to full
+ * sweeps: 168 iterations, 2 x 84). */
+static void head_waves_stall_reported_with_separate_sources(void **state)
+{
+    (void)state;
+    const double h = 0.75;
+    hj_eik_grid g = {2, {400, 266, 1}, {0, 0, 0}, {h, h, 1}};
+    const size_t n = nodes(&g);
+    double *f = malloc(n * sizeof *f), *T = malloc(n * sizeof *T);
+    for (size_t u = 0; u < n; u++) f[u] = (double)(u / (size_t)g.n[0]) * h > 99.5 ? 1 : 0.5;
+    const hj_eik_source s[2] = {{{50.3, 150.6, 0}, 0}, {{250.3, 150.6, 0}, 0}};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 3;
+    hj_eik_stats one, two;
+    hj_error e;
+    assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 1, NULL, &o, T, &one, &e), HJ_OK);
+    assert_true(one.orthant_stalled > 0);
+    o.separate_sources = 1;
+    assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 2, NULL, &o, T, &two, &e), HJ_OK);
+    /* the first source's solve is the single solve above */
+    if (two.orthant_stalled != one.orthant_stalled)
+        fail_msg("separate solves: full sweeps after %ld (one source alone: after %ld)", two.orthant_stalled,
+                 one.orthant_stalled);
+    free(f), free(T);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), cmocka_unit_test(fixed_line_inside_is_exact), cmocka_unit_test(obstacle_not_crossed),
                         cmocka_unit_test(bad_input), cmocka_unit_test(noconv_keeps_iterate),
                         cmocka_unit_test(noconv_in_first_order_start),
@@ -1616,4 +1644,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(causal_sweeps_bitwise), cmocka_unit_test(separate_sources_order),
                         cmocka_unit_test(separate_sources_min_bitwise), cmocka_unit_test(separate_sources_bad_input),
                         cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form),
-                        cmocka_unit_test(linear_time_small_arguments))
+                        cmocka_unit_test(linear_time_small_arguments),
+                        cmocka_unit_test(head_waves_stall_reported_with_separate_sources))
