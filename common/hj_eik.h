@@ -68,8 +68,10 @@ typedef struct {
                           * more), each iteration sweeps with the
                           * threads or on one of them, whichever it
                           * measured faster in the iterations before
-                          * (both are timed at the start of each phase
-                          * and the slower one again every 8
+                          * (both are timed at the start of the first
+                          * order phase; a later phase starts in the
+                          * faster one by the ratio measured before; the
+                          * slower one is timed again every 8
                           * iterations): a thread that waits at a
                           * block hyperplane for one whose core is busy
                           * with other work waits for the scheduler
