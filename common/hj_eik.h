@@ -68,8 +68,10 @@ typedef struct {
                           * more), each iteration sweeps with the
                           * threads or on one of them, whichever it
                           * measured faster in the iterations before
-                          * (both are timed at the start of each phase
-                          * and the slower one again every 8
+                          * (both are timed at the start of the first
+                          * order phase; a later phase starts in the
+                          * faster one by the ratio measured before; the
+                          * slower one is timed again every 8
                           * iterations): a thread that waits at a
                           * block hyperplane for one whose core is busy
                           * with other work waits for the scheduler
@@ -166,7 +168,10 @@ typedef struct {
     long orthant_stalled; /* the iteration after which the orthant
                            * passes stalled and full sweeps took over
                            * (arrivals coming back toward the source
-                           * along an axis, as head waves do); 0: never */
+                           * along an axis, as head waves do); 0: never.
+                           * With separate_sources: the first solve's
+                           * that stalled, counted in the summed
+                           * iterations */
 } hj_eik_stats;
 
 hj_eik_options hj_eik_default_options(void);
@@ -214,7 +219,9 @@ int hj_eik_solve(const hj_eik_grid *g, const double *f, double f_const,
 /* The closed-form travel time from s to x in the linear velocity field
  * v(y) = v0 + g . y (|grad T| = 1 / v), dim 1 to 3: T = acosh(1 + |g|^2
  * |x - s|^2 / (2 v(s) v(x))) / |g| (Fomel, Luo & Zhao 2009), |x - s| / v0
- * for g = 0.  The reference solution of the convergence studies and a check
+ * for g = 0; evaluated as 2 asinh(|g| |x - s| / (2 sqrt(v(s) v(x)))) / |g|,
+ * the same value without the loss of digits in 1 + e where |g| |x - s| / v
+ * is small.  The reference solution of the convergence studies and a check
  * for a user's own solver.  NaN where v(s) or v(x) is not positive (the
  * field has no travel time there) or dim is out of range. */
 double hj_eik_linear_time(int dim, double v0, const double *g, const double *s, const double *x);

@@ -378,7 +378,7 @@ int hj_ub_problem_check_values(const hj_ub_problem *pb, hj_error *err)
     return HJ_OK;
 }
 
-int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
+static int ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
 {
     memset(sv, 0, sizeof *sv);
     sv->pb = pb;
@@ -465,6 +465,15 @@ int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_
                                     pb->bbox_lo[k], pb->bbox_hi[k], k + 1, v, side ? "upper" : "lower");
         }
     return init_edges(sv, kind, lo, hi, 1, err);
+}
+
+/* A refusal after the store was made (the bounding box's checks, out of
+ * memory in the scan) frees it: sv is left as hj_ub_free leaves it. */
+int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err)
+{
+    const int rc = ub_init(sv, pb, kind, err);
+    if (rc) hj_ub_free(sv);
+    return rc;
 }
 
 /* ---- one step ---------------------------------------------------------------- */

@@ -116,7 +116,9 @@ int hj_ub_problem_check_shape(const hj_ub_problem *pb, int need_data, hj_error *
  * lies inside the domain (the cells beyond the box are never looked at,
  * so the set would be cut there); a box wholly outside the domain is taken
  * only when avg0 is 1 over the whole domain (Omega_0 misses it).  The
- * cells are appended in scan order (lexicographic), O(1) each. */
+ * cells are appended in scan order (lexicographic), O(1) each.  On an
+ * error nothing stays allocated (sv as hj_ub_free leaves it; calling
+ * hj_ub_free on it is harmless). */
 int hj_ub_init(hj_ub_solver *sv, const hj_ub_problem *pb, hj_band_kind kind, hj_error *err);
 void hj_ub_free(hj_ub_solver *sv);
 

@@ -671,17 +671,19 @@ int main(int argc, char **argv)
 
     /* ---- output ---- */
     const int fmt = format ? format : dim == 3 ? 3 : 1;
-    char title[320], fell[96] = "";
+    char title[512], fell[96] = "";
     if (st.first_order > 0)
         snprintf(fell, sizeof fell, ", %zu node%s at first order (map not resolved there)", st.first_order,
                  hj_plural((long)st.first_order));
     /* the solves: one, or with --separate-sources one per source and
      * one for the polyline (the counts below are their sums) */
     const long nsolves = opt.separate_sources ? npts + (fixed_any != 0) : 1;
-    char sep[96] = "";
-    if (nsolves > 1) snprintf(sep, sizeof sep, ", %ld separate solves (sums)", nsolves);
-    else if (st.orthant_stalled > 0) /* arrivals came back toward the source (hj_eik.h) */
-        snprintf(sep, sizeof sep, ", full sweeps after iteration %ld (the orthant passes stalled)", st.orthant_stalled);
+    char sep[160] = "";
+    int at = 0;
+    if (nsolves > 1) at = snprintf(sep, sizeof sep, ", %ld separate solves (sums)", nsolves);
+    if (st.orthant_stalled > 0) /* arrivals came back toward the source (hj_eik.h) */
+        snprintf(sep + at, sizeof sep - (size_t)at, ", full sweeps after iteration %ld (the orthant passes stalled)",
+                 st.orthant_stalled);
     snprintf(title, sizeof title,
              "eikonal: T, order %d%s, %ld iteration%s (%ld grid sweep%s)%s%s, change %.3g of max |T|", opt.order, fell,
              st.iterations, hj_plural(st.iterations), st.sweeps, hj_plural(st.sweeps), sep,

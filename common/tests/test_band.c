@@ -234,13 +234,14 @@ typedef struct {
     int64_t *k;
     double *v;
     size_t m;
+    int d; /* the store's dimension: foreach sets idx[0..d-1] only */
 } dump_ctx;
 
 static int dump(const int *idx, double *v, void *vctx)
 {
     dump_ctx *c = vctx;
     int64_t k = 0;
-    for (int i = 0; i < 4 && i < HJ_BAND_DMAX; i++) k = k * 64 + idx[i];
+    for (int i = 0; i < c->d; i++) k = k * 64 + idx[i];
     c->k[c->m] = k;
     c->v[c->m++] = *v;
     return 0;
@@ -277,8 +278,8 @@ static void near_equals_head_search(void **state)
             }
             assert_int_equal(hj_band_count(a), hj_band_count(b));
             assert_int_equal(hj_band_bytes(a), hj_band_bytes(b));
-            dump_ctx ca = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0};
-            dump_ctx cb = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0};
+            dump_ctx ca = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0, d};
+            dump_ctx cb = {malloc((size_t)total * sizeof(int64_t)), malloc((size_t)total * sizeof(double)), 0, d};
             assert_int_equal(hj_band_foreach(a, dump, &ca), 0);
             assert_int_equal(hj_band_foreach(b, dump, &cb), 0);
             assert_int_equal(ca.m, cb.m);

@@ -1580,6 +1580,52 @@ static void linear_time_closed_form(void **state)
     assert_true(isnan(hj_eik_linear_time(4, V0, G, s, s)));
 }
 
+/* The closed form keeps its relative accuracy where |g| |x - s| / v is
+ * small: acosh(1 + e) lost the digits of e in 1 + e (T = 0 for g = 1e-9
+ * at distance 1, 1 % off for g = 1e-7, 4e-5 relative at r = 1e-6 with
+ * g = 0.5).  In 1-D T = log(1 + g x / v0) / g exactly. */
+static void linear_time_small_arguments(void **state)
+{
+    (void)state;
+    const double s[3] = {0, 0, 0};
+    const double gs[] = {1e-12, 1e-9, 1e-7, 1e-5, 1e-3, 0.1, 0.5};
+    const double xs[] = {1e-8, 1e-6, 1e-3, 1, 3};
+    for (size_t i = 0; i < sizeof gs / sizeof *gs; i++)
+        for (size_t j = 0; j < sizeof xs / sizeof *xs; j++) {
+            const double g[3] = {gs[i], 0, 0}, x[3] = {xs[j], 0, 0};
+            const double t = hj_eik_linear_time(1, 1.0, g, s, x), ex = log1p(gs[i] * xs[j]) / gs[i];
+            if (!(fabs(t - ex) <= 1e-14 * ex)) fail_msg("g %g x %g: T = %.17g, exact %.17g", gs[i], xs[j], t, ex);
+        }
+}
+
+/* With separate_sources each source is solved alone, by orthant passes:
+ * where they stall (head waves), hj_eik_stats.orthant_stalled says so as
+ * for one source (it stayed 0, "never", while both solves switched to full
+ * sweeps: 168 iterations, 2 x 84). */
+static void head_waves_stall_reported_with_separate_sources(void **state)
+{
+    (void)state;
+    const double h = 0.75;
+    hj_eik_grid g = {2, {400, 266, 1}, {0, 0, 0}, {h, h, 1}};
+    const size_t n = nodes(&g);
+    double *f = malloc(n * sizeof *f), *T = malloc(n * sizeof *T);
+    for (size_t u = 0; u < n; u++) f[u] = (double)(u / (size_t)g.n[0]) * h > 99.5 ? 1 : 0.5;
+    const hj_eik_source s[2] = {{{50.3, 150.6, 0}, 0}, {{250.3, 150.6, 0}, 0}};
+    hj_eik_options o = hj_eik_default_options();
+    o.order = 3;
+    hj_eik_stats one, two;
+    hj_error e;
+    assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 1, NULL, &o, T, &one, &e), HJ_OK);
+    assert_true(one.orthant_stalled > 0);
+    o.separate_sources = 1;
+    assert_int_equal(hj_eik_solve(&g, f, 0, NULL, s, 2, NULL, &o, T, &two, &e), HJ_OK);
+    /* the first source's solve is the single solve above */
+    if (two.orthant_stalled != one.orthant_stalled)
+        fail_msg("separate solves: full sweeps after %ld (one source alone: after %ld)", two.orthant_stalled,
+                 one.orthant_stalled);
+    free(f), free(T);
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), cmocka_unit_test(fixed_line_inside_is_exact), cmocka_unit_test(obstacle_not_crossed),
                         cmocka_unit_test(bad_input), cmocka_unit_test(noconv_keeps_iterate),
                         cmocka_unit_test(noconv_in_first_order_start),
@@ -1597,4 +1643,6 @@ HJ_TEST_MAIN_ONE_THREAD("hj_eik", NULL, NULL, cmocka_unit_test(ramp_is_exact), c
                         cmocka_unit_test(threads_bitwise), cmocka_unit_test(causal_sweeps_same_solution),
                         cmocka_unit_test(causal_sweeps_bitwise), cmocka_unit_test(separate_sources_order),
                         cmocka_unit_test(separate_sources_min_bitwise), cmocka_unit_test(separate_sources_bad_input),
-                        cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form))
+                        cmocka_unit_test(start_from_coarse), cmocka_unit_test(linear_time_closed_form),
+                        cmocka_unit_test(linear_time_small_arguments),
+                        cmocka_unit_test(head_waves_stall_reported_with_separate_sources))

@@ -456,9 +456,28 @@ static void bounding_box_must_hold_the_set(void **state)
     }
 }
 
+/* A refusal of hj_ub_init after the store was made (here the bounding box
+ * wholly outside the domain around a set inside it) kept the store: a
+ * caller that took the error for "nothing to free" leaked it.  Now sv is
+ * left empty, as hj_ub_free leaves it. */
+static void refused_init_keeps_nothing(void **state)
+{
+    (void)state;
+    box_case c = {.lo = {-0.5, -0.5}, .hi = {0.5, 0.5}, .vel = {1, 0.5, 0}, .kind = 0};
+    hj_ub_problem pb = square_problem(&c, 41);
+    for (int d = 0; d < 2; d++) pb.bbox_lo[d] = 1e10, pb.bbox_hi[d] = 2e10;
+    for (int kind = HJ_BAND_FS; kind < HJ_BAND_NKINDS; kind++) {
+        hj_ub_solver sv;
+        hj_error err = {0};
+        assert_int_equal(hj_ub_init(&sv, &pb, (hj_band_kind)kind, &err), HJ_EINVAL);
+        assert_null(sv.s);
+        hj_ub_free(&sv); /* harmless */
+    }
+}
+
 HJ_TEST_MAIN("hj_ub", NULL, NULL, cmocka_unit_test(bad_parameters), cmocka_unit_test(huge_bounding_box),
              cmocka_unit_test(init_linear_in_the_band), cmocka_unit_test(step_linear_in_the_band),
-             cmocka_unit_test(boundary_inside_the_set),
+             cmocka_unit_test(boundary_inside_the_set), cmocka_unit_test(refused_init_keeps_nothing),
              cmocka_unit_test(bounding_box_must_hold_the_set), cmocka_unit_test(flux_constant_and_step), cmocka_unit_test(exact_advection_table6),
              cmocka_unit_test(band_equals_full_grid), cmocka_unit_test(errors_recover_unstored_lines),
              cmocka_unit_test(averages), cmocka_unit_test(field_errors_equal_solver_errors),

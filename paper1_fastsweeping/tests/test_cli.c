@@ -585,6 +585,35 @@ static void out_of_memory(void **state)
 }
 #endif
 
+/* Head waves (a source in a slow layer over a fast one, README): the
+ * orthant passes stall and the header says after which iteration the
+ * full sweeps took over, also with --separate-sources (it said nothing
+ * there, though each source's solve had switched). */
+static void eikonal_names_the_stall(void **state)
+{
+    (void)state;
+    char path[256], out[256], cmd[1024], head[512] = "";
+    snprintf(path, sizeof path, "%s/layers.txt", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    for (int j = 199; j >= 0; j--) /* the first row is the top, y = 199 */
+        for (int i = 0; i < 300; i++) fprintf(f, "%s%c", j > 99.5 ? "1" : "2", i == 299 ? '\n' : ' ');
+    fclose(f);
+    snprintf(out, sizeof out, "%s/layers.tsv", dir);
+    for (int sep = 0; sep < 2; sep++) {
+        snprintf(cmd, sizeof cmd,
+                 "OMP_NUM_THREADS=1 " P1 "eikonal --speed %s --source 50.3,150.6 %s --order 3 --out %s", path,
+                 sep ? "--source 200.3,150.6 --separate-sources" : "", out);
+        assert_int_equal(run(cmd), 0);
+        FILE *t = fopen(out, "r");
+        assert_non_null(t);
+        assert_non_null(fgets(head, sizeof head, t));
+        fclose(t);
+        if (!strstr(head, "full sweeps after iteration 72 (the orthant passes stalled)"))
+            fail_msg("%s: header %s", sep ? "separate solves" : "one source", head);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -594,6 +623,7 @@ int main(void)
         cmocka_unit_test(exclusion_distance_measures_more),
         cmocka_unit_test(eikonal_says_what_it_wrote),
         cmocka_unit_test(eikonal_coordinates_precise),
+        cmocka_unit_test(eikonal_names_the_stall),
 #if !defined(__SANITIZE_ADDRESS__)
         cmocka_unit_test(out_of_memory),
 #endif
