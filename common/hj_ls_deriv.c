@@ -143,8 +143,14 @@ static inline __attribute__((always_inline)) double blend3(double a1, double a2,
 
 /* Both WENO5 values of the window w0..w4 whose largest square is m: *L
  * from the candidates l1..l3 (c1 of the stencil farthest upwind), *R from
- * r1..r3.  eps is the caller's (epsg >= 0, the toolbox's 'maxOverGrid')
- * or 1e-6 m + 1e-99 (3.38).  alpha_k = d_k / (S_k + eps)^2 is multiplied
+ * r1..r3.  eps is the caller's (epsg >= 0, the toolbox's 'maxOverGrid'),
+ * at least 1e-54 (1e-6 m + 1e-99), or 1e-6 m + 1e-99 (3.38).  The floor
+ * keeps q_k below 3e61 and the products below 1e246: a caller's eps of
+ * 1e-80 (or 0) on data of order 1 overflowed them, NaN at every node;
+ * 1e-60 m is below the round-off of any S_k it could change (that S_k
+ * is then below 1e-44 m, a linear stretch, whose stencil takes the
+ * weight either way), and no eps the library forms reaches it
+ * (hj_ls_weno_eps_grid: at least 1e-6 of every window's m).  alpha_k = d_k / (S_k + eps)^2 is multiplied
  * through by the product of the three (S_k + eps)^2, scaled by a power of
  * two near 1/eps^6 (exact): the weights take one division, and since
  * S_k <= 21 m and eps >= 1e-6 m, each q_k is in [1, 5e7]: no overflow,
@@ -153,7 +159,7 @@ static inline __attribute__((always_inline)) void weno5_pair(double w0, double w
                                                             double m, double epsg, double l1, double l2, double l3,
                                                             double r1, double r2, double r3, double *L, double *R)
 {
-    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, epsg, el);
+    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, max2(epsg, 1e-54 * el), el);
     const double k = pow2_inv(eps), e = eps * k;
     double q1 = smooth_end(w0, w1, w2) * k + e, q2 = smooth_mid(w1, w2, w3) * k + e,
            q3 = smooth_end(w4, w3, w2) * k + e;
@@ -211,7 +217,7 @@ static inline __attribute__((always_inline)) void weno5a_pair(double w0, double 
                                                              double m, double epsg, double *L, double *R)
 {
     const double a = w1 - w0, b = w2 - w1, c = w3 - w2, d = w4 - w3;
-    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, epsg, el);
+    const double el = 1e-6 * m + 1e-99, eps = sel(epsg >= 0, max2(epsg, 1e-54 * el), el);
     const double k = pow2_inv(eps), e = eps * k, k4 = 0.25 * k;
     /* the t's also give T1 = (a - b) - (b - c) and T2 = (b - c) + (d - c) */
     const double s1 = a - b, s2 = b - c, s3 = d - c;

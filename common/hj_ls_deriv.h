@@ -82,8 +82,10 @@ void hj_ls_upwind_row(int scheme, const double *p, ptrdiff_t s, long n, double d
  * the largest squared first difference of the five a node's stencil uses
  * (+1e-99), what hj_ls_upwind_row does; eps >= 0 is used at every node
  * (ToolboxLS's upwindFirstWENO5a takes 1e-6 times the largest over the
- * whole grid, its 'maxOverGrid': hj_ls_weno_eps_grid).  Other schemes
- * ignore eps. */
+ * whole grid, its 'maxOverGrid': hj_ls_weno_eps_grid), but not below
+ * 1e-60 times the node's largest squared difference (+1e-153): a smaller
+ * one, 0 included, overflowed the weights (NaN at every node).  Other
+ * schemes ignore eps. */
 void hj_ls_upwind_row_eps(int scheme, const double *p, ptrdiff_t s, long n, double dx, double eps, double *dl,
                           double *dr, double *w);
 

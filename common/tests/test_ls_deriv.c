@@ -646,6 +646,30 @@ static void gradient_norm(void **state)
     hj_ls_free(phi), hj_ls_free(work), hj_ls_free(out);
 }
 
+/* A caller's WENO5 epsilon far below the data's scale, 0 included: the
+ * weights' products overflowed (NaN at every node); now the floor of
+ * 1e-60 times the window's largest square holds them, and the values
+ * are those of eps = 1e-40 to round-off. */
+static void weno5_tiny_eps(void **state)
+{
+    (void)state;
+    enum { N = 34 };
+    double buf[N + 6], ref[2][N], dl[N], dr[N], w[4 * N + 64];
+    for (int i = 0; i < N + 6; i++) buf[i] = sin(0.3 * (i - 3)) + (i > 20 ? 1 : 0);
+    const double eps[3] = {0, 1e-80, 1e-200};
+    for (int sch = HJ_LS_WENO5A; sch <= HJ_LS_WENO5B; sch++) {
+        hj_ls_upwind_row_eps(sch, buf + 3, 1, N, 0.1, 1e-40, ref[0], ref[1], w);
+        for (int e = 0; e < 3; e++) {
+            hj_ls_upwind_row_eps(sch, buf + 3, 1, N, 0.1, eps[e], dl, dr, w);
+            for (int i = 0; i < N; i++) {
+                if (!(fabs(dl[i] - ref[0][i]) <= 1e-13 && fabs(dr[i] - ref[1][i]) <= 1e-13))
+                    fail_msg("scheme %d eps %g node %d: %g %g against %g %g", sch, eps[e], i, dl[i], dr[i],
+                             ref[0][i], ref[1][i]);
+            }
+        }
+    }
+}
+
 HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_orders),
                         cmocka_unit_test(strided_equals_contiguous), cmocka_unit_test(six_dimensions),
                         cmocka_unit_test(forms_agree), cmocka_unit_test(weno5_against_reference),
@@ -654,4 +678,5 @@ HJ_TEST_MAIN_ONE_THREAD("hj_ls_deriv", NULL, NULL, cmocka_unit_test(smooth_order
                         cmocka_unit_test(weno5_next_rows_bitwise), cmocka_unit_test(weno5_transport2_bitwise),
                         cmocka_unit_test(centered_orders), cmocka_unit_test(curvature_order),
                         cmocka_unit_test(rows_mean_block_bitwise),
-                        cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm))
+                        cmocka_unit_test(bad_arguments), cmocka_unit_test(gradient_norm),
+                        cmocka_unit_test(weno5_tiny_eps))
