@@ -353,7 +353,7 @@ int main(int argc, char **argv)
         {.name = "--sources", .type = HJ_OPT_STRING, .value = &sources_file, .metavar = "FILE",
          .help = "point sources, one per line: x y [z] [t0] ('#' comments)"},
         {.name = "--polyline", .type = HJ_OPT_STRING, .value = &poly_file, .metavar = "FILE",
-         .help = "a polyline, one vertex per line: x y [z] T; nodes within half a cell of it are fixed"},
+         .help = "a polyline, one vertex per line: x y [z] T; nodes within half a cell of it are fixed (near several segments: the least time, as with several sources)"},
         {.name = "--order", .type = HJ_OPT_CHOICE, .value = &order_i, .metavar = "P", .choices = order_w,
          .help = "order of the sweeping scheme"},
         {.name = "--tol", .type = HJ_OPT_DOUBLE, .value = &opt.tol, .min = 1e-300, .max = 1, .metavar = "X",
